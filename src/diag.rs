@@ -1,0 +1,166 @@
+//! Diagnostics: every problem the parser, the machine or the setup finds is a
+//! value with a severity, a stable code, a message and a place in the text.
+//! Nothing in the core panics on bad input; it reports one of these instead.
+
+use serde::Serialize;
+
+/// How bad a diagnostic is. An error stops execution at that block (a control
+/// raises an alarm); a warning never stops anything.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Severity {
+    /// Execution stops here.
+    Error,
+    /// Worth knowing; execution goes on.
+    Warning,
+}
+
+impl Severity {
+    /// The lower-case name used in JSON and in `check` output.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Severity::Error => "error",
+            Severity::Warning => "warning",
+        }
+    }
+}
+
+/// A byte range of the program text and the 1-based line it starts on.
+/// Blocks and words never span lines, so one line number is enough.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Span {
+    /// Byte offset of the first byte.
+    pub start: u32,
+    /// Byte offset one past the last byte.
+    pub end: u32,
+    /// 1-based line number of `start`.
+    pub line: u32,
+}
+
+impl Span {
+    /// A span from byte offsets and a line number.
+    pub fn new(start: usize, end: usize, line: u32) -> Span {
+        Span {
+            start: clamp_u32(start),
+            end: clamp_u32(end),
+            line,
+        }
+    }
+
+    /// 1-based columns (in characters) of the start and the end of the span on
+    /// its line. `text` must be the text the span was made from.
+    pub fn columns(&self, text: &str) -> (u32, u32) {
+        let bytes = text.as_bytes();
+        let start = (self.start as usize).min(bytes.len());
+        let end = (self.end as usize).clamp(start, bytes.len());
+        let line_start = bytes[..start]
+            .iter()
+            .rposition(|&b| b == b'\n' || b == b'\r')
+            .map_or(0, |p| p + 1);
+        let col = count_chars(&bytes[line_start..start]) + 1;
+        let end_col = col + count_chars(&bytes[start..end]);
+        (clamp_u32(col), clamp_u32(end_col))
+    }
+}
+
+/// Characters in a byte slice that may start or end inside a UTF-8 sequence
+/// (continuation bytes are not counted).
+fn count_chars(bytes: &[u8]) -> usize {
+    bytes.iter().filter(|&&b| (b & 0xC0) != 0x80).count()
+}
+
+fn clamp_u32(n: usize) -> u32 {
+    u32::try_from(n).unwrap_or(u32::MAX)
+}
+
+/// One problem found in a program or its setup.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Diagnostic {
+    /// Error or warning.
+    pub severity: Severity,
+    /// Stable identifier (kebab-case); tools and tests match on it.
+    pub code: &'static str,
+    /// A sentence for a person, saying what is wrong and how to write it.
+    pub message: String,
+    /// 1-based line (0 for problems that belong to no line, such as setup).
+    pub line: u32,
+    /// 1-based column of the first character, in characters.
+    pub column: u32,
+    /// 1-based column one past the last character.
+    pub end_column: u32,
+    /// Where in the text (bytes).
+    #[serde(skip)]
+    pub span: Span,
+}
+
+impl Diagnostic {
+    /// An error at `span`. Columns are filled in by [`Diagnostic::locate`].
+    pub fn error(code: &'static str, span: Span, message: impl Into<String>) -> Diagnostic {
+        Diagnostic::new(Severity::Error, code, span, message)
+    }
+
+    /// A warning at `span`.
+    pub fn warning(code: &'static str, span: Span, message: impl Into<String>) -> Diagnostic {
+        Diagnostic::new(Severity::Warning, code, span, message)
+    }
+
+    fn new(severity: Severity, code: &'static str, span: Span, message: impl Into<String>) -> Self {
+        Diagnostic {
+            severity,
+            code,
+            message: message.into(),
+            line: span.line,
+            column: 0,
+            end_column: 0,
+            span,
+        }
+    }
+
+    /// Fills in line and columns from the text the span refers to.
+    pub fn locate(&mut self, text: &str) {
+        if self.span.line == 0 {
+            return;
+        }
+        let (column, end_column) = self.span.columns(text);
+        self.line = self.span.line;
+        self.column = column;
+        self.end_column = end_column;
+    }
+
+    /// True for errors.
+    pub fn is_error(&self) -> bool {
+        self.severity == Severity::Error
+    }
+}
+
+/// Sorts diagnostics by place, errors first at the same place, and fills in
+/// their columns.
+pub fn finish(diagnostics: &mut [Diagnostic], text: &str) {
+    for d in diagnostics.iter_mut() {
+        d.locate(text);
+    }
+    diagnostics.sort_by(|a, b| {
+        (a.span.line, a.span.start, a.severity).cmp(&(b.span.line, b.span.start, b.severity))
+    });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn columns_count_characters_not_bytes() {
+        let text = "(µm)\nG01 X1.";
+        // "X1." starts at byte 10 on line 2 (µ is two bytes): column 5.
+        let span = Span::new(10, 13, 2);
+        assert_eq!(span.columns(text), (5, 8));
+        let span = Span::new(1, 3, 1);
+        assert_eq!(span.columns(text), (2, 3));
+    }
+
+    #[test]
+    fn columns_after_cr_line_end() {
+        let text = "G00\rX1.";
+        assert_eq!(Span::new(4, 7, 2).columns(text), (1, 4));
+    }
+}

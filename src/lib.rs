@@ -1,0 +1,36 @@
+//! offsetlab: a CNC tool-offset interpreter.
+//!
+//! It parses Fanuc/YASNAC-style G-code, runs it on a model mill or lathe with
+//! a tool offset table, and reports for every block where the program says the
+//! tool goes (the *programmed* path) and where it really goes (the *actual*
+//! path) with the reason for every difference: tool length offset G43/G44/G49,
+//! tool position offset G45–G48, and lathe T-code offsets.
+//!
+//! ```
+//! use offsetlab::{Setup, run};
+//!
+//! let mut setup = Setup::default();
+//! setup.set_register("01=6.0").unwrap();
+//! let program = "G91 G00 G46 X30. Y20. D01;";
+//! let result = run(program, &setup);
+//! let block = &result.blocks[0];
+//! assert_eq!(block.state.programmed, [30.0, 20.0, 0.0]);
+//! assert_eq!(block.state.actual, [24.0, 14.0, 0.0]);
+//! ```
+#![deny(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod diag;
+pub mod machine;
+pub mod offsets;
+pub mod report;
+mod run;
+pub mod setup;
+pub mod syntax;
+pub mod view;
+
+pub use diag::{Diagnostic, Severity, Span};
+pub use report::{BlockReport, End, Event, Move, MoveKind, Run};
+pub use run::{MAX_MOVES, RunOptions, run, run_with};
+pub use setup::{MachineKind, Setup, Units};
+pub use syntax::{ParseOptions, Program, parse};

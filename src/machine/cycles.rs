@@ -1,0 +1,314 @@
+//! Canned cycles of the mill: G73, G74, G76, G81–G89 with G98/G99, R, Z, Q,
+//! P and K/L repeats; G80 cancels (spec 2, Fanuc/YASNAC M). Each cycle is
+//! reported as its moves: rapid to the hole, rapid to R, the drilling legs,
+//! the retract. The tool length offset applies to the Z levels.
+
+use super::modal::{Cycle, Distance};
+use super::{AXES, Machine, Out};
+use crate::diag::Diagnostic;
+use crate::report::{EventKind, MoveKind};
+use crate::syntax::{Address, Block};
+
+/// Most pecks one G73/G83 hole may take.
+pub const MAX_PECKS: f64 = 10_000.0;
+
+/// The modal data of a canned cycle, kept from block to block until G80.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct CycleData {
+    /// The drilling-axis position when the cycle mode started (programmed).
+    initial: f64,
+    /// R as written (mm) and whether it was written in G91 (then it is the
+    /// distance from the initial level).
+    r: Option<(f64, bool)>,
+    /// Z as written (mm) and whether in G91 (then the distance from R).
+    z: Option<(f64, bool)>,
+    /// Q: peck depth (G73/G83) or shift (G76/G87), mm.
+    q: Option<f64>,
+    /// P: dwell at the bottom, ms.
+    p: f64,
+}
+
+impl Machine<'_> {
+    /// G73–G89: enters or changes the canned cycle mode.
+    pub(super) fn start_cycle(&mut self, code: u16) {
+        if !self.state.modal.cycle.active() {
+            let (_, _, n) = self.state.modal.plane.axes();
+            self.cycle = CycleData {
+                initial: self.state.programmed[n],
+                ..CycleData::default()
+            };
+        }
+        self.state.modal.cycle = Cycle(code);
+    }
+
+    /// G80, or a group 01 code: leaves the canned cycle mode.
+    pub(super) fn cancel_cycle(&mut self) {
+        self.state.modal.cycle = Cycle::NONE;
+    }
+
+    /// A block in canned-cycle mode.
+    pub(super) fn cycle_block(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+        length_changed: bool,
+    ) -> Result<(), Diagnostic> {
+        let code = self.state.modal.cycle.0;
+        let (ia, ib, n) = self.state.modal.plane.axes();
+        let incremental = self.state.modal.distance == Distance::Incremental;
+        let depth_addr = AXES[n].0;
+        if let Some(r) = b.value(Address::R) {
+            self.cycle.r = Some((self.mm(r), incremental));
+        }
+        if let Some(z) = b.value(depth_addr) {
+            self.cycle.z = Some((self.mm(z), incremental));
+        }
+        if let Some(q) = b.get(Address::Q) {
+            let v = self.mm(q.value);
+            if v <= 0.0 && matches!(code, 73 | 83) {
+                return Err(self.error(
+                    "cycle-q",
+                    q.span,
+                    format!("G{code} needs a positive peck depth Q"),
+                ));
+            }
+            self.cycle.q = Some(v.abs());
+        }
+        if let Some(p) = b.value(Address::P) {
+            self.cycle.p = p;
+        }
+        let drills = [ia, ib, n].iter().any(|&i| b.has(AXES[i].0)) || b.has(Address::R);
+        if !drills {
+            if length_changed {
+                // An offset change without a hole: made as offset motion at rapid,
+                // the cycles' positioning rate.
+                let old = self.state.length;
+                let start = self.mark();
+                if self.setup.settings.length_offset_without_z
+                    == crate::setup::LengthOffsetWithoutZ::Move
+                {
+                    self.state.length.vector = self.state.length.target;
+                }
+                self.length_note(old, None, out);
+                self.emit(out, start, MoveKind::Offset, false, None);
+            }
+            return Ok(());
+        }
+        let Some(z) = self.cycle.z else {
+            return Err(self.error(
+                "cycle-without-depth",
+                b.span,
+                format!("G{code} needs {}, the hole bottom", AXES[n].1),
+            ));
+        };
+        if code == 87 && self.state.modal.return_to_r {
+            return Err(self.error(
+                "cycle-return",
+                b.span,
+                "G87 (back boring) returns to the initial level only: use G98",
+            ));
+        }
+        let repeats = b
+            .value(Address::K)
+            .or_else(|| b.value(Address::L))
+            .map_or(1, |k| k as u32);
+        let words = [ia, ib].map(|i| b.value(AXES[i].0).map(|v| self.mm(v)));
+        let old_length = self.state.length;
+        for _ in 0..repeats {
+            // 1. Position over the hole at the current level.
+            let start = self.mark();
+            for (k, &axis) in [ia, ib].iter().enumerate() {
+                if let Some(v) = words[k] {
+                    self.state.programmed[axis] = self.target(axis, v, incremental);
+                }
+            }
+            self.emit(out, start, MoveKind::Rapid, false, None);
+            // The length offset applies to the Z levels of the cycle.
+            if n == 2 {
+                self.state.length.vector = self.state.length.target;
+            }
+            let initial = self.cycle.initial;
+            let r_level = match self.cycle.r {
+                Some((r, true)) => initial + r,
+                Some((r, false)) => r,
+                None => initial,
+            };
+            let bottom = match z {
+                (z, true) => r_level + z,
+                (z, false) => z,
+            };
+            self.drill(code, n, ia, initial, r_level, bottom, out)?;
+        }
+        let l = self.state.length;
+        if n == 2 && (l.vector != old_length.vector || l.target != old_length.target) {
+            out.notes.push(format!(
+                "the cycle's Z levels carry the tool length offset H{:02} ({})",
+                l.h,
+                self.fmt_signed(l.vector)
+            ));
+        }
+        Ok(())
+    }
+
+    fn level(&mut self, out: &mut Out, axis: usize, to: f64, kind: MoveKind) {
+        let start = self.mark();
+        self.state.programmed[axis] = to;
+        self.emit(out, start, kind, kind == MoveKind::Feed, None);
+    }
+
+    fn shift(&mut self, out: &mut Out, axis: usize, by: f64) {
+        let start = self.mark();
+        self.state.programmed[axis] += by;
+        self.emit(out, start, MoveKind::Rapid, false, None);
+    }
+
+    /// The legs of one hole after positioning (Fanuc M cycle descriptions).
+    #[allow(clippy::too_many_arguments)]
+    fn drill(
+        &mut self,
+        code: u16,
+        n: usize,
+        shift_axis: usize,
+        initial: f64,
+        r: f64,
+        bottom: f64,
+        out: &mut Out,
+    ) -> Result<(), Diagnostic> {
+        use MoveKind::{Feed, Rapid};
+        let ret = if self.state.modal.return_to_r {
+            r
+        } else {
+            initial
+        };
+        let dwell = self.cycle.p / 1000.0;
+        let q = self.cycle.q.unwrap_or(0.0);
+        let down = if bottom <= r { -1.0 } else { 1.0 };
+        let pecks = |q: f64| ((bottom - r).abs() / q).ceil();
+        if code != 87 {
+            self.level(out, n, r, Rapid);
+        }
+        match code {
+            73 | 83 => {
+                if q <= 0.0 {
+                    return Err(self.error(
+                        "cycle-q",
+                        self.span,
+                        format!("G{code} needs a positive peck depth Q"),
+                    ));
+                }
+                if pecks(q) > MAX_PECKS {
+                    return Err(self.error(
+                        "cycle-pecks",
+                        self.span,
+                        format!("peck depth Q makes more than {MAX_PECKS} pecks in one hole"),
+                    ));
+                }
+                let clearance = self.setup.peck_retract_mm();
+                let mut depth = r;
+                loop {
+                    let next = if (bottom - depth).abs() <= q {
+                        bottom
+                    } else {
+                        depth + down * q
+                    };
+                    self.level(out, n, next, Feed);
+                    depth = next;
+                    if depth == bottom {
+                        break;
+                    }
+                    if code == 73 {
+                        // High-speed peck: back off by d, then feed on.
+                        self.level(out, n, depth - down * clearance, Rapid);
+                    } else {
+                        // Deep hole peck: out to R, back in to d above the last depth.
+                        self.level(out, n, r, Rapid);
+                        self.level(out, n, depth - down * clearance, Rapid);
+                    }
+                }
+                self.level(out, n, ret, Rapid);
+            }
+            74 | 84 => {
+                self.level(out, n, bottom, Feed);
+                if dwell > 0.0 {
+                    self.event(out, EventKind::Dwell { seconds: dwell });
+                }
+                // Tapping reverses the spindle at the bottom and feeds out.
+                let (rev, fwd) = if code == 84 {
+                    (EventKind::SpindleCcw, EventKind::SpindleCw)
+                } else {
+                    (EventKind::SpindleCw, EventKind::SpindleCcw)
+                };
+                self.event(out, rev);
+                self.level(out, n, r, Feed);
+                self.event(out, fwd);
+                self.level(out, n, ret, Rapid);
+            }
+            76 => {
+                self.level(out, n, bottom, Feed);
+                if dwell > 0.0 {
+                    self.event(out, EventKind::Dwell { seconds: dwell });
+                }
+                // Oriented stop and a shift by Q off the wall before retracting
+                // (shift direction +X: the usual parameter setting).
+                self.event(out, EventKind::SpindleOrient);
+                self.shift(out, shift_axis, q);
+                self.level(out, n, ret, Rapid);
+                self.shift(out, shift_axis, -q);
+                self.event(out, EventKind::SpindleCw);
+            }
+            87 => {
+                // Back boring: in shifted, down to R (below the part), back
+                // centre, bore up to Z, shift out and return to the initial level.
+                self.event(out, EventKind::SpindleOrient);
+                self.shift(out, shift_axis, q);
+                self.level(out, n, r, Rapid);
+                self.shift(out, shift_axis, -q);
+                self.event(out, EventKind::SpindleCw);
+                self.level(out, n, bottom, Feed);
+                self.event(out, EventKind::SpindleOrient);
+                self.shift(out, shift_axis, q);
+                self.level(out, n, initial, Rapid);
+                self.shift(out, shift_axis, -q);
+                self.event(out, EventKind::SpindleCw);
+            }
+            85 | 89 => {
+                self.level(out, n, bottom, Feed);
+                if code == 89 && dwell > 0.0 {
+                    self.event(out, EventKind::Dwell { seconds: dwell });
+                }
+                self.level(out, n, r, Feed);
+                self.level(out, n, ret, Rapid);
+            }
+            86 => {
+                self.level(out, n, bottom, Feed);
+                self.event(out, EventKind::SpindleStop);
+                self.level(out, n, ret, Rapid);
+                self.event(out, EventKind::SpindleCw);
+            }
+            88 => {
+                self.level(out, n, bottom, Feed);
+                if dwell > 0.0 {
+                    self.event(out, EventKind::Dwell { seconds: dwell });
+                }
+                self.event(out, EventKind::SpindleStop);
+                // The operator jogs out by hand; drawn as a rapid to the return level.
+                self.event(out, EventKind::ManualRetract);
+                self.level(out, n, ret, Rapid);
+                self.event(out, EventKind::SpindleCw);
+            }
+            82 => {
+                self.level(out, n, bottom, Feed);
+                if dwell > 0.0 {
+                    self.event(out, EventKind::Dwell { seconds: dwell });
+                }
+                self.level(out, n, ret, Rapid);
+            }
+            _ => {
+                // G81: drill, rapid out.
+                self.level(out, n, bottom, Feed);
+                self.level(out, n, ret, Rapid);
+            }
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,419 @@
+//! The lathe's block (spec 5): X as a diameter and Z, U/W incremental, G50,
+//! G00–G03 in the ZX plane, the G90/G92/G94 single cycles (G-code system A),
+//! and T-code tool position offset (seed 004).
+
+use super::modal::Motion;
+use super::{ArcRequest, Codes, Machine, Mark, Out};
+use crate::diag::Diagnostic;
+use crate::offsets::lathe as toffset;
+use crate::report::{EventKind, MoveKind, Xyz};
+use crate::syntax::codes::Group;
+use crate::syntax::{Address, Block};
+
+/// The lathe's turning-cycle data, modal until another group 01 code.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct TurningData {
+    /// X target (diameter, mm).
+    x: Option<f64>,
+    /// Z target (mm).
+    z: Option<f64>,
+    /// Taper R (mm; radius value for G90/G92, Z for G94).
+    r: f64,
+}
+
+impl Machine<'_> {
+    pub(super) fn lathe_block(
+        &mut self,
+        b: &Block,
+        c: &Codes,
+        out: &mut Out,
+    ) -> Result<(), Diagnostic> {
+        for w in &b.words {
+            if matches!(w.address, Address::Y | Address::J | Address::D | Address::H) {
+                let why = match w.address {
+                    Address::D | Address::H => {
+                        "the lathe takes its offsets from T codes (seed 004)"
+                    }
+                    _ => "the lathe has the axes X (diameter) and Z, with U and W incremental",
+                };
+                return Err(self.error(
+                    "mill-address",
+                    w.span,
+                    format!("{}: {why}", w.address.letter()),
+                ));
+            }
+        }
+        self.common_words(b, c, out);
+        let nonmodal = c.get(Group::NonModal);
+        if nonmodal == Some(4) {
+            return self.dwell(b, out);
+        }
+        for (abs, inc) in [(Address::X, Address::U), (Address::Z, Address::W)] {
+            if let (Some(_), Some(w)) = (b.get(abs), b.get(inc)) {
+                return Err(self.error(
+                    "axis-conflict",
+                    w.span,
+                    format!(
+                        "{} and {} both set the {} target in one block: write one of them",
+                        abs.letter(),
+                        inc.letter(),
+                        abs.letter()
+                    ),
+                ));
+            }
+        }
+        if let Some(m) = c.get(Group::Motion) {
+            self.state.modal.motion =
+                Motion::from_code(self.setup.machine, m).unwrap_or(Motion::Rapid);
+            if matches!(m, 90 | 92 | 94) {
+                self.turning = TurningData::default();
+            }
+        }
+        match nonmodal {
+            Some(50) => return self.g50(b),
+            Some(28) => return self.lathe_g28(b, out),
+            _ => {}
+        }
+        let t_changed = self.t_code(b, out);
+        let motion = self.state.modal.motion;
+        let any_axis = [Address::X, Address::U, Address::Z, Address::W]
+            .iter()
+            .any(|a| b.has(*a));
+        let cycle = matches!(
+            motion,
+            Motion::TurningCycle | Motion::ThreadingCycle | Motion::FacingCycle
+        );
+        let arc_words = motion.is_arc()
+            && [Address::I, Address::K, Address::R]
+                .iter()
+                .any(|a| b.has(*a));
+        if cycle && (any_axis || b.has(Address::R)) {
+            return self.turning_cycle(b, out, t_changed);
+        }
+        if !any_axis && !arc_words {
+            if t_changed {
+                if motion.is_arc() || cycle {
+                    return Err(self.error(
+                        "offset-motion-mode",
+                        self.word_span(b, Address::T),
+                        format!(
+                            "a T offset change with no move is made at rapid (G00) or feed (G01); {} is active: command G00 or G01 with it",
+                            motion.gcode()
+                        ),
+                    ));
+                }
+                let start = self.mark();
+                let old = self.state.lathe.vector;
+                self.state.lathe.vector = self.state.lathe.target;
+                let at_feed = motion == Motion::Linear;
+                let d = self.sub_xz(self.state.lathe.vector, old);
+                out.notes.push(self.t_motion_note(d, at_feed));
+                self.emit(out, start, MoveKind::Offset, at_feed, None);
+            }
+            return Ok(());
+        }
+        let start = self.mark();
+        let mut target = self.state.programmed;
+        if let Some(x) = b.value(Address::X) {
+            target[0] = self.mm(x);
+        }
+        if let Some(u) = b.value(Address::U) {
+            target[0] += self.mm(u);
+        }
+        if let Some(z) = b.value(Address::Z) {
+            target[2] = self.mm(z);
+        }
+        if let Some(w) = b.value(Address::W) {
+            target[2] += self.mm(w);
+        }
+        let moved = [
+            b.has(Address::X) || b.has(Address::U),
+            false,
+            b.has(Address::Z) || b.has(Address::W),
+        ];
+        // Spec 5.2: with a T code the move lands on the new offset on both
+        // axes; otherwise each axis that moves carries the active offset
+        // (after G28 an axis regains it when it next moves).
+        let old_vector = self.state.lathe.vector;
+        let mut vector = old_vector;
+        for axis in [0, 2] {
+            if t_changed || moved[axis] {
+                vector[axis] = self.state.lathe.target[axis];
+            }
+        }
+        if motion.is_arc() {
+            let mut req = ArcRequest {
+                target,
+                actual_end: add_xz(target, vector),
+                ccw: motion == Motion::ArcCcw,
+                ..ArcRequest::default()
+            };
+            if let Some(r) = b.value(Address::R) {
+                req.radius = Some((self.mm(r), 0.0));
+            } else {
+                if !(b.has(Address::I) || b.has(Address::K)) {
+                    return Err(self.error(
+                        "arc-without-center",
+                        b.span,
+                        format!(
+                            "{} needs R or the centre words I (radius) and K",
+                            motion.gcode()
+                        ),
+                    ));
+                }
+                // I is a radius value on the lathe: the arc geometry works in
+                // radius space.
+                req.center[0] = self.mm(b.value(Address::I).unwrap_or(0.0));
+                req.center[2] = self.mm(b.value(Address::K).unwrap_or(0.0));
+            }
+            let info = self.arc_geometry(b, &req)?;
+            self.state.programmed = target;
+            self.state.lathe.vector = vector;
+            let kind = if info.sweep > 0.0 {
+                MoveKind::ArcCcw
+            } else {
+                MoveKind::ArcCw
+            };
+            if t_changed {
+                out.notes
+                    .push(self.t_move_note(self.sub_xz(vector, old_vector), true));
+            }
+            self.emit(out, start, kind, true, Some(info));
+            return Ok(());
+        }
+        self.state.programmed = target;
+        self.state.lathe.vector = vector;
+        let at_feed = motion == Motion::Linear;
+        if t_changed {
+            out.notes
+                .push(self.t_move_note(self.sub_xz(vector, old_vector), at_feed));
+        }
+        let kind = if at_feed {
+            MoveKind::Feed
+        } else {
+            MoveKind::Rapid
+        };
+        self.emit(out, start, kind, at_feed, None);
+        Ok(())
+    }
+
+    fn sub_xz(&self, a: Xyz, b: Xyz) -> Xyz {
+        [a[0] - b[0], 0.0, a[2] - b[2]]
+    }
+
+    /// The T word (spec 5): selects tool and offset; returns true if the
+    /// offset vector the machine should carry changed.
+    fn t_code(&mut self, b: &Block, out: &mut Out) -> bool {
+        let Some(t) = b.get(Address::T) else {
+            return false;
+        };
+        let (tool, offset) = toffset::split(t.int());
+        let old = self.state.lathe;
+        if tool != old.tool {
+            // Spec 5.6: a new tool number indexes the turret.
+            self.event(out, EventKind::ToolIndex { tool });
+            out.notes.push(format!(
+                "tool {:02} → {tool:02}: the turret indexes (spec 5.6)",
+                old.tool
+            ));
+        }
+        let reg = self.setup.lathe_register(offset);
+        let target = if offset == 0 {
+            [0.0; 3]
+        } else {
+            toffset::vector(&reg, self.setup.settings.lathe_x_offset, self.units().mm())
+        };
+        self.state.lathe.tool = tool;
+        self.state.lathe.offset = offset;
+        self.state.lathe.target = target;
+        target != old.vector || offset != old.offset
+    }
+
+    fn t_label(&self) -> String {
+        let l = self.state.lathe;
+        if l.offset == 0 {
+            format!("T{:02}00 cancels the tool position offset", l.tool)
+        } else {
+            format!(
+                "T{:02}{:02}: offset {:02} (X {}, Z {})",
+                l.tool,
+                l.offset,
+                l.offset,
+                self.fmt(l.target[0]),
+                self.fmt(l.target[2])
+            )
+        }
+    }
+
+    fn t_motion_note(&self, d: Xyz, at_feed: bool) -> String {
+        let rate = if at_feed {
+            "at the cutting feed (G01)"
+        } else {
+            "at rapid (G00)"
+        };
+        let what = if self.state.lathe.offset == 0 {
+            "only the cancel motion is made"
+        } else {
+            "offset motion"
+        };
+        format!(
+            "{}: {what}, X {} Z {}, {rate} (seed 004)",
+            self.t_label(),
+            self.fmt_signed(d[0]),
+            self.fmt_signed(d[2])
+        )
+    }
+
+    fn t_move_note(&self, d: Xyz, at_feed: bool) -> String {
+        if self.state.lathe.offset == 0 {
+            return format!(
+                "{}: the tool goes to the programmed position (seed 004)",
+                self.t_label()
+            );
+        }
+        let mut s = format!(
+            "{}: the end point moves by X {} Z {} with this move",
+            self.t_label(),
+            self.fmt_signed(d[0]),
+            self.fmt_signed(d[2])
+        );
+        if at_feed && (d[0] != 0.0 || d[2] != 0.0) {
+            s.push_str(" (seed 004: a new offset in a feed move corrects the taper angle)");
+        }
+        s
+    }
+
+    /// G50 X… Z…: coordinate system setting; the T offset is kept, so the
+    /// position before offset becomes the commanded value (Fanuc T).
+    fn g50(&mut self, b: &Block) -> Result<(), Diagnostic> {
+        let mut any = false;
+        for (axis, abs, inc) in [(0, Address::X, Address::U), (2, Address::Z, Address::W)] {
+            let value = match (b.value(abs), b.value(inc)) {
+                (Some(v), _) => self.mm(v),
+                (None, Some(d)) => self.state.programmed[axis] + self.mm(d),
+                (None, None) => continue,
+            };
+            any = true;
+            self.set_coordinate(axis, value, false);
+        }
+        if !any && !b.has(Address::S) {
+            return Err(self.error(
+                "g50-without-axis",
+                b.span,
+                "G50 needs X and Z (coordinate system setting) or S (spindle speed limit)",
+            ));
+        }
+        Ok(())
+    }
+
+    /// Lathe G28: through the intermediate point to the reference position;
+    /// the T vector is cleared on the axes that reach it and applies again at
+    /// their next move.
+    fn lathe_g28(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+        let mut named = [false; 3];
+        let start = self.mark();
+        for (axis, abs, inc) in [(0, Address::X, Address::U), (2, Address::Z, Address::W)] {
+            let p = self.state.programmed[axis];
+            let to = match (b.value(abs), b.value(inc)) {
+                (Some(v), _) => self.mm(v),
+                (None, Some(d)) => p + self.mm(d),
+                (None, None) => continue,
+            };
+            named[axis] = true;
+            self.state.programmed[axis] = to;
+        }
+        if !named.iter().any(|n| *n) {
+            return Err(self.error(
+                "g28-without-axis",
+                b.span,
+                "G28 needs the axes to return (for example G28 U0 W0)",
+            ));
+        }
+        self.emit(out, start, MoveKind::Rapid, false, None);
+        let start = self.mark();
+        let reference = self.setup.reference.to_array();
+        for axis in [0, 2] {
+            if named[axis] {
+                self.state.lathe.vector[axis] = 0.0;
+                self.state.programmed[axis] =
+                    self.setup.units.mm() * reference[axis] - self.origin[axis];
+            }
+        }
+        self.emit(out, start, MoveKind::Rapid, false, None);
+        Ok(())
+    }
+
+    /// G90 / G92 / G94 single cycles (system A): four legs from the start
+    /// point and back to it.
+    fn turning_cycle(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+        t_changed: bool,
+    ) -> Result<(), Diagnostic> {
+        let motion = self.state.modal.motion;
+        let (x0, z0) = (self.state.programmed[0], self.state.programmed[2]);
+        if let Some(x) = b.value(Address::X) {
+            self.turning.x = Some(self.mm(x));
+        }
+        if let Some(u) = b.value(Address::U) {
+            self.turning.x = Some(x0 + self.mm(u));
+        }
+        if let Some(z) = b.value(Address::Z) {
+            self.turning.z = Some(self.mm(z));
+        }
+        if let Some(w) = b.value(Address::W) {
+            self.turning.z = Some(z0 + self.mm(w));
+        }
+        if let Some(r) = b.value(Address::R) {
+            self.turning.r = self.mm(r);
+        }
+        let (Some(x1), Some(z1)) = (self.turning.x, self.turning.z) else {
+            return Err(self.error(
+                "cycle-without-target",
+                b.span,
+                format!("{} needs X (or U) and Z (or W)", motion.gcode()),
+            ));
+        };
+        let r = self.turning.r;
+        let old_vector = self.state.lathe.vector;
+        let legs: [(f64, f64, MoveKind); 4] = match motion {
+            Motion::TurningCycle => [
+                (x1 + 2.0 * r, z0, MoveKind::Rapid),
+                (x1, z1, MoveKind::Feed),
+                (x0, z1, MoveKind::Feed),
+                (x0, z0, MoveKind::Rapid),
+            ],
+            Motion::ThreadingCycle => [
+                (x1 + 2.0 * r, z0, MoveKind::Rapid),
+                (x1, z1, MoveKind::Feed),
+                (x0, z1, MoveKind::Rapid),
+                (x0, z0, MoveKind::Rapid),
+            ],
+            _ => [
+                (x0, z1 + r, MoveKind::Rapid),
+                (x1, z1, MoveKind::Feed),
+                (x1, z0, MoveKind::Feed),
+                (x0, z0, MoveKind::Rapid),
+            ],
+        };
+        for (i, (x, z, kind)) in legs.into_iter().enumerate() {
+            let start: Mark = self.mark();
+            if i == 0 {
+                self.state.lathe.vector = self.state.lathe.target;
+            }
+            self.state.programmed[0] = x;
+            self.state.programmed[2] = z;
+            self.emit(out, start, kind, kind == MoveKind::Feed, None);
+        }
+        if t_changed {
+            out.notes
+                .push(self.t_move_note(self.sub_xz(self.state.lathe.vector, old_vector), false));
+        }
+        Ok(())
+    }
+}
+
+fn add_xz(a: Xyz, v: Xyz) -> Xyz {
+    [a[0] + v[0], 0.0, a[2] + v[2]]
+}

@@ -1,0 +1,612 @@
+//! The milling machine's block: linear and circular motion, G28, G92, and the
+//! two mill offsets — tool length (G43/G44/G49, spec 3) and tool position
+//! (G45–G48, spec 4).
+
+use super::modal::{Distance, Motion};
+use super::{AXES, ArcRequest, Codes, Machine, Out};
+use crate::diag::Diagnostic;
+use crate::offsets::position;
+use crate::report::{LengthState, MoveKind, Xyz};
+use crate::setup::LengthOffsetWithoutZ;
+use crate::syntax::Address;
+use crate::syntax::Block;
+use crate::syntax::codes::Group;
+
+impl Machine<'_> {
+    pub(super) fn mill_block(
+        &mut self,
+        b: &Block,
+        c: &Codes,
+        out: &mut Out,
+    ) -> Result<(), Diagnostic> {
+        for w in &b.words {
+            if matches!(w.address, Address::U | Address::W) {
+                return Err(self.error(
+                    "lathe-address",
+                    w.span,
+                    format!(
+                        "{}: U and W are the lathe's incremental axes; the mill uses X, Y, Z and G91",
+                        w.address.letter()
+                    ),
+                ));
+            }
+        }
+        self.common_words(b, c, out);
+        if let Some(t) = b.get(Address::T) {
+            self.state.next_tool = t.int();
+        }
+        if let Some(d) = b.get(Address::D) {
+            let n = d.int() as u16;
+            self.state.position.d = n;
+            self.state.position.value = self.mm(self.setup.mill_value(n));
+        }
+
+        let motion = c.get(Group::Motion);
+        let cycle = c.get(Group::Cycle);
+        if let (Some(m), Some(cy)) = (motion, cycle)
+            && cy != 80
+        {
+            return Err(self.error(
+                "motion-and-cycle",
+                c.span(Group::Cycle),
+                format!("G{m:02} and G{cy} in one block: a group 01 code cancels the canned cycle"),
+            ));
+        }
+        if let Some(m) = motion {
+            self.state.modal.motion =
+                Motion::from_code(self.setup.machine, m).unwrap_or(Motion::Rapid);
+            // A group 01 code cancels the canned cycle (Fanuc/YASNAC M).
+            self.cancel_cycle();
+        }
+        if let Some(cy) = cycle {
+            if cy == 80 {
+                self.cancel_cycle();
+            } else {
+                self.start_cycle(cy);
+            }
+        }
+
+        match c.get(Group::NonModal) {
+            Some(4) => return self.dwell(b, out),
+            Some(92) => return self.g92(b),
+            Some(28) => return self.g28(b, c, out),
+            Some(code @ 45..=48) => return self.position_offset_block(b, c, code, out),
+            _ => {}
+        }
+        let length_changed = self.length_words(b, c, out)?;
+        if self.state.modal.cycle.active() {
+            self.cycle_block(b, out, length_changed)
+        } else {
+            self.mill_motion(b, out, length_changed, None)
+        }
+    }
+
+    /// G43/G44/G49 and H (spec 3). Returns true if the vector the mode asks
+    /// for changed.
+    fn length_words(&mut self, b: &Block, c: &Codes, out: &mut Out) -> Result<bool, Diagnostic> {
+        let code = c.get(Group::Length);
+        let h = b.get(Address::H);
+        if code.is_none() && h.is_none() {
+            return Ok(false);
+        }
+        let old = self.state.length;
+        if self.state.modal.motion.is_arc() && (code.is_some() || old.sign != 0) {
+            // Spec 3.7 (YASNAC J50M): no length offset change in G02/G03 mode.
+            let span =
+                code.map_or_else(|| self.word_span(b, Address::H), |_| c.span(Group::Length));
+            return Err(self.error(
+                "length-offset-in-arc",
+                span,
+                format!(
+                    "the tool length offset cannot change while {} is active (spec 3.7): command G00 or G01 first",
+                    self.state.modal.motion.gcode()
+                ),
+            ));
+        }
+        let h = h.map(|w| {
+            let n = w.int() as u16;
+            (n, self.mm(self.setup.mill_value(n)))
+        });
+        self.state.length.command(code, h);
+        if let Some(cd) = code {
+            self.state.modal.length = cd;
+        }
+        let l = self.state.length;
+        if l.sign != 0 && l.h == 0 && code.is_some_and(|cd| cd != 49) {
+            // Not an error (H00 reads 0), but rarely what was meant.
+            out.warnings.push(Diagnostic::warning(
+                "length-offset-h00",
+                c.span(Group::Length),
+                format!(
+                    "G{} with H00: register 00 reads 0, so no length offset applies",
+                    code.unwrap_or(43)
+                ),
+            ));
+        }
+        Ok(l.target != old.target || l.sign != old.sign || l.h != old.h)
+    }
+
+    /// The motion of a block without G28/G92/G04 and outside canned cycles,
+    /// with the position offset `pos` (G45–G48) when the block holds one.
+    fn mill_motion(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+        length_changed: bool,
+        pos: Option<u16>,
+    ) -> Result<(), Diagnostic> {
+        let motion = self.state.modal.motion;
+        let incremental = self.state.modal.distance == Distance::Incremental;
+        let words: [Option<f64>; 3] = AXES.map(|(a, _)| b.value(a));
+        let any_axis = words.iter().any(Option::is_some);
+        let centre_words = [Address::I, Address::J, Address::K].map(|a| b.value(a));
+        let arc_words =
+            motion.is_arc() && (centre_words.iter().any(Option::is_some) || b.has(Address::R));
+        let old_length = self.state.length;
+        let setting = self.setup.settings.length_offset_without_z;
+
+        if !any_axis && !arc_words {
+            if length_changed {
+                let start = self.mark();
+                if setting == LengthOffsetWithoutZ::Move {
+                    self.state.length.vector = self.state.length.target;
+                }
+                self.length_note(old_length, None, out);
+                let at_feed = motion == Motion::Linear;
+                self.emit(out, start, MoveKind::Offset, at_feed, None);
+            }
+            return Ok(());
+        }
+
+        let start = self.mark();
+        let mut target = self.state.programmed;
+        let mut amount = [0.0; 3];
+        for (axis, w) in words.iter().enumerate() {
+            if let Some(v) = w {
+                target[axis] = self.target(axis, self.mm(*v), incremental);
+                amount[axis] = target[axis] - self.state.programmed[axis];
+            }
+        }
+
+        // Spec 4.1–4.6: every axis word's amount changed on its own.
+        let mut delta = [0.0; 3];
+        let mut register = 0.0;
+        if let Some(code) = pos {
+            let d = self.state.position.d;
+            register = self.mm(self.setup.mill_value(d));
+            self.state.position.value = register;
+            for (axis, w) in words.iter().enumerate() {
+                if w.is_some() {
+                    delta[axis] = position::change(
+                        code,
+                        amount[axis],
+                        register,
+                        incremental,
+                        self.mirror[axis],
+                    );
+                    let note = self.position_note(
+                        code,
+                        AXES[axis].1,
+                        amount[axis],
+                        delta[axis],
+                        d,
+                        register,
+                        incremental,
+                    );
+                    out.notes.push(note);
+                }
+            }
+        }
+
+        // Spec 3: a Z word lands on the offset target; otherwise a changed
+        // target moves Z now (setting `move`) or waits for the next Z move.
+        let new_length =
+            if words[2].is_some() || (length_changed && setting == LengthOffsetWithoutZ::Move) {
+                self.state.length.target
+            } else {
+                self.state.length.vector
+            };
+
+        if motion.is_arc() {
+            let mut req = ArcRequest {
+                target,
+                ..ArcRequest::default()
+            };
+            let (ia, ib, _) = self.state.modal.plane.axes();
+            req.ccw = (motion == Motion::ArcCcw) != (self.mirror[ia] != self.mirror[ib]);
+            let mut pv = self.state.position.vector;
+            for i in 0..3 {
+                pv[i] += delta[i];
+            }
+            let mut end = [target[0] + pv[0], target[1] + pv[1], target[2] + pv[2]];
+            end[2] += new_length;
+            req.actual_end = end;
+            if let Some(r) = b.get(Address::R) {
+                if centre_words.iter().any(Option::is_some) {
+                    out.warnings.push(Diagnostic::warning(
+                        "arc-r-and-center",
+                        r.span,
+                        "R and I/J/K in one arc: R is used and I/J/K are ignored (Fanuc)",
+                    ));
+                }
+                let (ia, ib, _) = self.state.modal.plane.axes();
+                let p0 = [self.state.programmed[ia], self.state.programmed[ib]];
+                if super::arc::same_point(p0, [target[ia], target[ib]]) {
+                    out.warnings.push(Diagnostic::warning(
+                        "arc-r-no-motion",
+                        b.span,
+                        "an R arc whose end is its start makes no circle (a full circle needs I/J/K); only the axis across the plane moves",
+                    ));
+                    let z_word = words[2].is_some();
+                    return self.finish_line(
+                        out,
+                        start,
+                        target,
+                        delta,
+                        new_length,
+                        MoveKind::Feed,
+                        old_length,
+                        z_word,
+                    );
+                }
+                let r_mm = self.mm(r.value);
+                let dr = pos.map_or(0.0, |code| position::radius_change(code, r_mm, register));
+                if let Some(code) = pos {
+                    out.notes.push(format!(
+                        "{}: R {} becomes {} (R changed as a radius)",
+                        gname(code),
+                        self.fmt(r_mm),
+                        self.fmt(r_mm + dr)
+                    ));
+                }
+                req.radius = Some((r_mm, dr));
+            } else {
+                let (ia, ib, _) = self.state.modal.plane.axes();
+                let in_plane = |i: usize| i == ia || i == ib;
+                if !(0..3).any(|i| in_plane(i) && centre_words[i].is_some()) {
+                    let names = match self.state.modal.plane {
+                        super::modal::Plane::XY => "I/J",
+                        super::modal::Plane::ZX => "K/I",
+                        super::modal::Plane::YZ => "J/K",
+                    };
+                    return Err(self.error(
+                        "arc-without-center",
+                        b.span,
+                        format!(
+                            "{} needs R or the centre words {names} of the {} plane",
+                            motion.gcode(),
+                            self.state.modal.plane.gcode()
+                        ),
+                    ));
+                }
+                for (i, w) in centre_words.iter().enumerate() {
+                    let Some(v) = w else { continue };
+                    if !in_plane(i) {
+                        out.warnings.push(Diagnostic::warning(
+                            "arc-center-word",
+                            self.word_span(b, [Address::I, Address::J, Address::K][i]),
+                            format!(
+                                "{} is not a centre word of the {} plane and is ignored",
+                                ['I', 'J', 'K'][i],
+                                self.state.modal.plane.gcode()
+                            ),
+                        ));
+                        continue;
+                    }
+                    let mut off = self.mm(*v);
+                    if self.mirror[i] {
+                        off = -off;
+                    }
+                    req.center[i] = off;
+                    if let Some(code) = pos {
+                        // Spec 4.8: I/J/K are incremental amounts, changed like axis words.
+                        let dc = position::change(code, off, register, true, self.mirror[i]);
+                        req.center_change[i] = dc;
+                        out.notes.push(format!(
+                            "{}: {} {} becomes {}",
+                            gname(code),
+                            ['I', 'J', 'K'][i],
+                            self.fmt(off),
+                            self.fmt(off + dc)
+                        ));
+                    }
+                }
+            }
+            let info = self.arc_geometry(b, &req)?;
+            self.state.programmed = target;
+            self.state.position.vector = pv;
+            self.state.length.vector = new_length;
+            self.length_note(
+                old_length,
+                Some(amount[2]).filter(|_| words[2].is_some()),
+                out,
+            );
+            let kind = if info.sweep > 0.0 {
+                MoveKind::ArcCcw
+            } else {
+                MoveKind::ArcCw
+            };
+            self.emit(out, start, kind, true, Some(info));
+            return Ok(());
+        }
+
+        let kind = if motion == Motion::Linear {
+            MoveKind::Feed
+        } else {
+            MoveKind::Rapid
+        };
+        self.finish_line(
+            out,
+            start,
+            target,
+            delta,
+            new_length,
+            kind,
+            old_length,
+            words[2].is_some(),
+        )
+    }
+
+    /// Ends a straight move: updates the position and the vectors, notes
+    /// what the length offset did and records the move.
+    #[allow(clippy::too_many_arguments)]
+    fn finish_line(
+        &mut self,
+        out: &mut Out,
+        start: super::Mark,
+        target: Xyz,
+        delta: Xyz,
+        new_length: f64,
+        kind: MoveKind,
+        old_length: LengthState,
+        z_word: bool,
+    ) -> Result<(), Diagnostic> {
+        let z_amount = z_word.then_some(target[2] - start.prog[2]);
+        self.state.programmed = target;
+        for (i, d) in delta.iter().enumerate() {
+            self.state.position.vector[i] += d;
+        }
+        self.state.length.vector = new_length;
+        self.length_note(old_length, z_amount, out);
+        self.emit(out, start, kind, kind == MoveKind::Feed, None);
+        Ok(())
+    }
+
+    /// A block with G45–G48 (spec 4.9, 4.10).
+    fn position_offset_block(
+        &mut self,
+        b: &Block,
+        c: &Codes,
+        code: u16,
+        out: &mut Out,
+    ) -> Result<(), Diagnostic> {
+        for (group, n, span) in c.present() {
+            let allowed = [Group::NonModal, Group::Motion, Group::Distance]
+                .iter()
+                .any(|g| g.index() == group);
+            if !allowed {
+                return Err(self.error(
+                    "position-offset-g-code",
+                    span,
+                    format!(
+                        "G{n:02} cannot share a block with G{code}: only G00–G03 and G90/G91 may (seed 003: an input error occurs)"
+                    ),
+                ));
+            }
+        }
+        if self.state.modal.cycle.active() {
+            return Err(self.error(
+                "position-offset-in-cycle",
+                c.span(Group::NonModal),
+                format!(
+                    "G{code} cannot be programmed while canned cycle {} is active (seed 003): cancel it with G80 first",
+                    self.state.modal.codes(self.setup.machine).cycle.unwrap_or("G80")
+                ),
+            ));
+        }
+        if !AXES.iter().any(|(a, _)| b.has(*a)) {
+            return Err(self.error(
+                "position-offset-without-axis",
+                c.span(Group::NonModal),
+                format!(
+                    "G{code} needs an axis word to extend or reduce (spec 4.9); for a move by the offset alone write X0 in G91 (seed 003)"
+                ),
+            ));
+        }
+        let length_changed = self.length_words(b, c, out)?;
+        self.mill_motion(b, out, length_changed, Some(code))
+    }
+
+    /// G92 X… Y… Z…: sets the programmed position; the G45–G48 vector on each
+    /// named axis is cancelled first (spec 4.7, seed 003).
+    fn g92(&mut self, b: &Block) -> Result<(), Diagnostic> {
+        if !AXES.iter().any(|(a, _)| b.has(*a)) {
+            return Err(self.error(
+                "g92-without-axis",
+                b.span,
+                "G92 needs the axes whose coordinates it sets",
+            ));
+        }
+        for (axis, (a, _)) in AXES.iter().enumerate() {
+            if let Some(v) = b.value(*a) {
+                let v = self.mm(v);
+                self.set_coordinate(axis, v, true);
+            }
+        }
+        Ok(())
+    }
+
+    /// G28: to the intermediate point, then to the reference position on the
+    /// named axes; the length and position vectors are cleared on the axes
+    /// that reach it, and G43/G44 applies again at the next Z move (spec 2).
+    fn g28(&mut self, b: &Block, c: &Codes, out: &mut Out) -> Result<(), Diagnostic> {
+        if !AXES.iter().any(|(a, _)| b.has(*a)) {
+            return Err(self.error(
+                "g28-without-axis",
+                b.span,
+                "G28 needs the axes to return (for example G91 G28 Z0)",
+            ));
+        }
+        // A length offset commanded here applies at the next Z move: the
+        // return clears the Z vector anyway.
+        self.length_words(b, c, out)?;
+        let incremental = self.state.modal.distance == Distance::Incremental;
+        let start = self.mark();
+        let mut named = [false; 3];
+        for (axis, (a, _)) in AXES.iter().enumerate() {
+            if let Some(v) = b.value(*a) {
+                named[axis] = true;
+                self.state.programmed[axis] = self.target(axis, self.mm(v), incremental);
+            }
+        }
+        self.emit(out, start, MoveKind::Rapid, false, None);
+        let start = self.mark();
+        let reference = self.setup.reference.to_array();
+        let mut cleared = Vec::new();
+        for axis in 0..3 {
+            if !named[axis] {
+                continue;
+            }
+            let had = self.state.position.vector[axis] != 0.0
+                || (axis == 2 && self.state.length.vector != 0.0);
+            self.state.position.vector[axis] = 0.0;
+            if axis == 2 {
+                self.state.length.vector = 0.0;
+            }
+            self.state.programmed[axis] =
+                self.setup.units.mm() * reference[axis] - self.origin[axis];
+            if had {
+                cleared.push(AXES[axis].1.to_string());
+            }
+        }
+        self.emit(out, start, MoveKind::Rapid, false, None);
+        if !cleared.is_empty() {
+            let mut note = format!(
+                "G28: offset vectors cleared on {} at the reference position",
+                cleared.join(", ")
+            );
+            if named[2] && self.state.length.target != 0.0 {
+                note.push_str(&format!(
+                    "; G4{} H{:02} stays active and applies again at the next Z move",
+                    if self.state.length.sign > 0 { 3 } else { 4 },
+                    self.state.length.h
+                ));
+            }
+            out.notes.push(note);
+        }
+        Ok(())
+    }
+
+    /// The sentence for one axis changed by G45–G48 (spec 6's example:
+    /// "G47: X move 50.000 extended by 2 × D01 (6.000) to 62.000").
+    #[allow(clippy::too_many_arguments)]
+    fn position_note(
+        &self,
+        code: u16,
+        axis: char,
+        m: f64,
+        delta: f64,
+        d: u16,
+        v: f64,
+        incremental: bool,
+    ) -> String {
+        let g = gname(code);
+        if delta == 0.0 && !incremental && m.abs() <= 1e-9 {
+            return format!(
+                "{g}: {axis} target is the current position, so {axis} is not changed (spec 4.5)"
+            );
+        }
+        let verb = if position::factor(code) > 0.0 {
+            "extended"
+        } else {
+            "reduced"
+        };
+        let twice = if position::factor(code).abs() == 2.0 {
+            "2 × "
+        } else {
+            ""
+        };
+        let mut s = format!(
+            "{g}: {axis} move {} {verb} by {twice}D{d:02} ({}) to {}",
+            self.fmt(m),
+            self.fmt(v),
+            self.fmt(m + delta)
+        );
+        if m.abs() <= 1e-9 {
+            s.push_str(" (a zero move goes by the offset alone, seed 003)");
+        } else if (m + delta) * m < 0.0 {
+            s.push_str(" — the move reverses (spec 4.3)");
+        }
+        s
+    }
+
+    /// The sentence for what the length offset did in this block (spec 3).
+    /// `z_amount` is the programmed Z movement when the block moved along Z.
+    pub(super) fn length_note(&self, old: LengthState, z_amount: Option<f64>, out: &mut Out) {
+        let new = self.state.length;
+        let mode_changed = new.sign != old.sign || new.h != old.h || new.target != old.target;
+        let vector_change = new.vector - old.vector;
+        if !mode_changed && vector_change == 0.0 {
+            return;
+        }
+        let label = if mode_changed {
+            if new.target == 0.0 && old.target != 0.0 {
+                if new.sign == 0 {
+                    "G49 cancels the tool length offset".to_string()
+                } else {
+                    "H00 cancels the tool length offset".to_string()
+                }
+            } else if new.sign == 0 {
+                "G49: no tool length offset".to_string()
+            } else {
+                let g = if new.sign > 0 { "G43" } else { "G44" };
+                let how = if new.sign > 0 { "adds" } else { "subtracts" };
+                if old.sign == new.sign && old.h != new.h && old.h != 0 {
+                    format!(
+                        "H{:02} → H{:02} while {g} is active ({} → {})",
+                        old.h,
+                        new.h,
+                        self.fmt(old.value),
+                        self.fmt(new.value)
+                    )
+                } else {
+                    format!("{g} {how} H{:02} ({})", new.h, self.fmt(new.value))
+                }
+            }
+        } else {
+            format!(
+                "this Z move applies the pending length offset H{:02} ({})",
+                new.h,
+                self.fmt_signed(new.target)
+            )
+        };
+        let effect = match z_amount {
+            Some(m) if self.state.modal.distance == Distance::Incremental => {
+                format!("the Z move {} becomes {}", self.fmt(m), self.fmt(m + vector_change))
+            }
+            Some(_) => format!(
+                "Z target {} lands at {}",
+                self.fmt(self.state.programmed[2]),
+                self.fmt(self.actual()[2])
+            ),
+            None if vector_change != 0.0 => {
+                if old.vector != 0.0 && new.vector != 0.0 {
+                    format!("no Z word: Z moves by the difference, {} (seed 001)", self.fmt_signed(vector_change))
+                } else {
+                    format!("no Z word: Z moves by {} (seed 001)", self.fmt_signed(vector_change))
+                }
+            }
+            None if new.target != new.vector => {
+                "no Z word: no motion now; the next Z move lands offset (setting length_offset_without_z = next_z)"
+                    .to_string()
+            }
+            None => "no motion".to_string(),
+        };
+        out.notes.push(format!("{label}: {effect}"));
+    }
+}
+
+/// "G45" … "G48" with the manual's meaning.
+fn gname(code: u16) -> String {
+    format!("G{code} ({})", position::meaning(code))
+}

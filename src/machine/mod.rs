@@ -1,0 +1,550 @@
+//! The interpreter: modal state, positions, motion and coordinates (spec 2).
+//!
+//! The machine tracks per axis the **programmed position** (what the program
+//! commands, in the current work coordinate system) and the offset vectors;
+//! the **actual position** is programmed + length vector + position vector
+//! (mill) or + T-offset vector (lathe). Everything is kept in millimetres and
+//! converted when reported. The offset rules themselves are in
+//! [`crate::offsets`]; this module applies them block by block and owns the
+//! positions.
+
+pub mod arc;
+mod cycles;
+mod lathe;
+mod mill;
+pub mod modal;
+
+use crate::diag::{Diagnostic, Span};
+use crate::report::{
+    ArcInfo, BlockState, EventKind, LatheState, LengthState, Move, MoveKind, PositionState, Xyz,
+    to_units,
+};
+use crate::setup::{MachineKind, Setup, Units};
+use crate::syntax::codes::{Group, g_group};
+use crate::syntax::{Address, Block};
+use arc::{ArcError, Circle};
+use modal::{Modal, Plane};
+
+/// What happens after a block.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Flow {
+    /// Go on with the next block.
+    Continue,
+    /// M02/M30: the program ends.
+    End,
+}
+
+/// What one block produced besides the state change.
+#[derive(Debug, Default)]
+pub(crate) struct Out {
+    pub moves: Vec<Move>,
+    pub events: Vec<EventKind>,
+    pub notes: Vec<String>,
+    pub warnings: Vec<Diagnostic>,
+}
+
+impl Out {
+    pub fn clear(&mut self) {
+        self.moves.clear();
+        self.events.clear();
+        self.notes.clear();
+        self.warnings.clear();
+    }
+}
+
+/// The G codes of a block, one per group (the parser has refused blocks with
+/// two of a group or an unknown code).
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Codes([Option<(u16, Span)>; Group::COUNT]);
+
+impl Codes {
+    fn of(block: &Block, machine: MachineKind) -> Codes {
+        let mut c = Codes::default();
+        for (g, w) in block.gcodes() {
+            if let Ok(group) = g_group(machine, g) {
+                c.0[group.index()] = Some((g.major, w.span));
+            }
+        }
+        c
+    }
+    pub fn get(&self, group: Group) -> Option<u16> {
+        self.0[group.index()].map(|(n, _)| n)
+    }
+    pub fn span(&self, group: Group) -> Span {
+        self.0[group.index()].map(|(_, s)| s).unwrap_or_default()
+    }
+    /// The codes present, with their groups.
+    pub fn present(&self) -> impl Iterator<Item = (usize, u16, Span)> + '_ {
+        self.0
+            .iter()
+            .enumerate()
+            .filter_map(|(i, c)| c.map(|(n, s)| (i, n, s)))
+    }
+}
+
+/// Programmed and actual position at one moment, to start a move from.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Mark {
+    prog: Xyz,
+    act: Xyz,
+}
+
+/// The interpreter's state between blocks.
+pub struct Machine<'s> {
+    setup: &'s Setup,
+    pub(crate) state: BlockState,
+    /// Zero of the current work coordinate system in machine coordinates (mm),
+    /// G92/G50 shift included.
+    origin: Xyz,
+    /// The G92/G50 shift, kept across G54–G59 changes.
+    shift: Xyz,
+    /// Mirror image switches per axis.
+    mirror: [bool; 3],
+    /// The point movements are mirrored about, in machine coordinates.
+    mirror_center: Xyz,
+    cycle: cycles::CycleData,
+    turning: lathe::TurningData,
+    feed_warned: bool,
+    index: u32,
+    line: u32,
+    span: Span,
+}
+
+fn add(a: Xyz, b: Xyz) -> Xyz {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+}
+
+fn sub(a: Xyz, b: Xyz) -> Xyz {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+fn scale(a: Xyz, k: f64) -> Xyz {
+    [a[0] * k, a[1] * k, a[2] * k]
+}
+
+const AXES: [(Address, char); 3] = [(Address::X, 'X'), (Address::Y, 'Y'), (Address::Z, 'Z')];
+
+impl<'s> Machine<'s> {
+    /// A machine at the setup's start position, in its start state (spec 2).
+    pub fn new(setup: &'s Setup) -> Machine<'s> {
+        let unit = setup.units.mm();
+        let origin = scale(setup.work_offsets.get(0).to_array(), unit);
+        let start = scale(setup.start.to_array(), unit);
+        let start = match setup.machine {
+            MachineKind::Mill => start,
+            MachineKind::Lathe => [start[0], 0.0, start[2]],
+        };
+        let state = BlockState {
+            machine: setup.machine,
+            programmed: start,
+            actual: start,
+            modal: Modal::start(setup.machine, setup.units),
+            feed: None,
+            spindle: None,
+            tool: 0,
+            next_tool: 0,
+            length: LengthState::default(),
+            position: PositionState::default(),
+            lathe: LatheState::default(),
+        };
+        Machine {
+            setup,
+            state,
+            origin,
+            shift: [0.0; 3],
+            mirror: if setup.machine == MachineKind::Mill {
+                setup.settings.mirror.axes()
+            } else {
+                [false; 3]
+            },
+            mirror_center: add(start, origin),
+            cycle: cycles::CycleData::default(),
+            turning: lathe::TurningData::default(),
+            feed_warned: false,
+            index: 0,
+            line: 0,
+            span: Span::default(),
+        }
+    }
+
+    /// The state after the last block.
+    pub fn state(&self) -> &BlockState {
+        &self.state
+    }
+
+    /// Runs one block. On error the block has no effect that matters: the
+    /// run stops there (spec 2).
+    pub(crate) fn execute(
+        &mut self,
+        block: &Block,
+        index: u32,
+        out: &mut Out,
+    ) -> Result<Flow, Diagnostic> {
+        self.index = index;
+        self.line = block.span.line;
+        self.span = block.span;
+        let codes = Codes::of(block, self.setup.machine);
+        match self.setup.machine {
+            MachineKind::Mill => self.mill_block(block, &codes, out)?,
+            MachineKind::Lathe => self.lathe_block(block, &codes, out)?,
+        }
+        self.state.actual = self.actual();
+        for v in self.state.actual.iter().chain(&self.state.programmed) {
+            if !v.is_finite() || v.abs() > 1e9 {
+                return Err(self.error(
+                    "numeric-overflow",
+                    block.span,
+                    "this block takes the tool beyond any machine's travel",
+                ));
+            }
+        }
+        let end = block.mcodes().any(|(m, _)| m == 2 || m == 30);
+        Ok(if end { Flow::End } else { Flow::Continue })
+    }
+
+    // ----- small helpers -------------------------------------------------
+
+    fn units(&self) -> Units {
+        self.state.modal.units
+    }
+
+    /// A program value in the current units, in mm.
+    fn mm(&self, v: f64) -> f64 {
+        v * self.units().mm()
+    }
+
+    /// A length in mm written in the current units with the control's decimals.
+    fn fmt(&self, mm: f64) -> String {
+        let d = self.units().decimals();
+        format!("{:.d$}", to_units(mm, self.units()))
+    }
+
+    /// Like [`Machine::fmt`] with a sign.
+    fn fmt_signed(&self, mm: f64) -> String {
+        let d = self.units().decimals();
+        format!("{:+.d$}", to_units(mm, self.units()))
+    }
+
+    fn error(&self, code: &'static str, span: Span, msg: impl Into<String>) -> Diagnostic {
+        Diagnostic::error(code, span, msg)
+    }
+
+    fn word_span(&self, b: &Block, a: Address) -> Span {
+        b.get(a).map_or(b.span, |w| w.span)
+    }
+
+    /// The actual position: programmed + every offset vector.
+    fn actual(&self) -> Xyz {
+        let s = &self.state;
+        let mut a = add(s.programmed, s.position.vector);
+        a[2] += s.length.vector;
+        add(a, s.lathe.vector)
+    }
+
+    fn mark(&self) -> Mark {
+        Mark {
+            prog: self.state.programmed,
+            act: self.actual(),
+        }
+    }
+
+    /// Records the motion from `from` to the current position. Line moves
+    /// that go nowhere (on both paths) are not recorded.
+    fn emit(
+        &mut self,
+        out: &mut Out,
+        from: Mark,
+        kind: MoveKind,
+        at_feed: bool,
+        arc: Option<ArcInfo>,
+    ) {
+        let to = self.actual();
+        let prog = self.state.programmed;
+        if arc.is_none() && from.act == to && from.prog == prog {
+            return;
+        }
+        let feed = matches!(kind, MoveKind::Feed | MoveKind::ArcCw | MoveKind::ArcCcw)
+            || (kind == MoveKind::Offset && at_feed);
+        if feed && self.state.feed.is_none() && !self.feed_warned {
+            self.feed_warned = true;
+            out.warnings.push(Diagnostic::warning(
+                "missing-feed",
+                self.span,
+                "feed move before any F word: a control would stop here with an alarm",
+            ));
+        }
+        out.moves.push(Move {
+            kind,
+            at_feed,
+            block: self.index,
+            line: self.line,
+            units: self.units(),
+            from: from.act,
+            to,
+            programmed_from: from.prog,
+            programmed_to: prog,
+            arc,
+        });
+    }
+
+    fn event(&self, out: &mut Out, kind: EventKind) {
+        out.events.push(kind);
+    }
+
+    /// The programmed target of an axis word (value in mm): absolute or
+    /// incremental, reversed about the mirror centre when mirror image is on
+    /// for the axis (spec 2).
+    fn target(&self, axis: usize, word_mm: f64, incremental: bool) -> f64 {
+        let p = self.state.programmed[axis];
+        if self.mirror[axis] {
+            let c = self.mirror_center[axis] - self.origin[axis];
+            if incremental {
+                p - word_mm
+            } else {
+                2.0 * c - word_mm
+            }
+        } else if incremental {
+            p + word_mm
+        } else {
+            word_mm
+        }
+    }
+
+    /// Sets the programmed coordinate of `axis` to `value` without moving the
+    /// tool (G92 / G50). With `clear_position` the axis's G45–G48 vector is
+    /// cancelled first (spec 4.7, seed 003).
+    fn set_coordinate(&mut self, axis: usize, value: f64, clear_position: bool) {
+        let before = self.actual()[axis];
+        if clear_position {
+            self.state.position.vector[axis] = 0.0;
+        }
+        self.state.programmed[axis] = value;
+        let after = self.actual()[axis];
+        let moved = before - after;
+        self.origin[axis] += moved;
+        self.shift[axis] += moved;
+        if self.mirror[axis] {
+            // Mirror about the point where the coordinate was set.
+            self.mirror_center[axis] = self.state.programmed[axis] + self.origin[axis];
+        }
+    }
+
+    /// G54–G59: the tool stays; its coordinates change to the new system.
+    fn select_work(&mut self, work: u8) {
+        let unit = self.setup.units.mm();
+        let new_origin = add(
+            scale(
+                self.setup.work_offsets.get(usize::from(work)).to_array(),
+                unit,
+            ),
+            self.shift,
+        );
+        let delta = sub(self.origin, new_origin);
+        self.state.programmed = add(self.state.programmed, delta);
+        if self.setup.machine == MachineKind::Lathe {
+            self.state.programmed[1] = 0.0;
+        }
+        self.origin = new_origin;
+        self.state.modal.work = work;
+    }
+
+    /// Codes, words and M functions every block may carry: units, plane,
+    /// distance, feed mode, return level, work system, F, S, M codes.
+    fn common_words(&mut self, b: &Block, c: &Codes, out: &mut Out) {
+        let machine = self.setup.machine;
+        if let Some(u) = c.get(Group::Units) {
+            self.state.modal.units = if u == 20 { Units::Inch } else { Units::Mm };
+        }
+        if let Some(p) = c.get(Group::Plane) {
+            self.state.modal.plane = match p {
+                17 => Plane::XY,
+                18 => Plane::ZX,
+                _ => Plane::YZ,
+            };
+        }
+        if let Some(d) = c.get(Group::Distance) {
+            self.state.modal.distance = if d == 91 {
+                modal::Distance::Incremental
+            } else {
+                modal::Distance::Absolute
+            };
+        }
+        if let Some(f) = c.get(Group::FeedMode) {
+            self.state.modal.feed_per_rev = f == 95 || (machine == MachineKind::Lathe && f == 99);
+        }
+        if let Some(r) = c.get(Group::Return) {
+            self.state.modal.return_to_r = r == 99;
+        }
+        if let Some(s) = c.get(Group::SurfaceSpeed) {
+            self.state.modal.surface_speed = s == 96;
+        }
+        if let Some(w) = c.get(Group::Work) {
+            self.select_work((w - 54) as u8);
+        }
+        if let Some(f) = b.value(Address::F) {
+            self.state.feed = Some(f);
+        }
+        if let Some(s) = b.value(Address::S) {
+            // G50 S on the lathe is the spindle speed limit, not a speed.
+            if !(machine == MachineKind::Lathe && c.get(Group::NonModal) == Some(50)) {
+                self.state.spindle = Some(s);
+            }
+        }
+        for (m, _) in b.mcodes() {
+            let kind = match m {
+                0 => EventKind::ProgramStop,
+                1 => EventKind::OptionalStop,
+                2 | 30 => EventKind::ProgramEnd { m },
+                3 => EventKind::SpindleCw,
+                4 => EventKind::SpindleCcw,
+                5 => EventKind::SpindleStop,
+                19 => EventKind::SpindleOrient,
+                6 if machine == MachineKind::Mill => {
+                    self.state.tool = self.state.next_tool;
+                    EventKind::ToolChange {
+                        tool: self.state.tool,
+                    }
+                }
+                7 | 8 => EventKind::CoolantOn { m },
+                9 => EventKind::CoolantOff,
+                other => EventKind::Auxiliary { m: other },
+            };
+            self.event(out, kind);
+        }
+    }
+
+    /// G04: dwell P (ms) or X/U (s) (spec 2).
+    fn dwell(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+        let p = b.get(Address::P);
+        let time_word = b.get(Address::X).or_else(|| b.get(Address::U));
+        let seconds = match (p, time_word) {
+            (Some(_), Some(t)) => {
+                return Err(self.error(
+                    "dwell-words",
+                    t.span,
+                    "G04 takes the dwell time once: P in milliseconds or X in seconds",
+                ));
+            }
+            (Some(p), None) => p.value / 1000.0,
+            (None, Some(t)) => {
+                if t.value < 0.0 {
+                    return Err(self.error("dwell-words", t.span, "a dwell time is not negative"));
+                }
+                t.value
+            }
+            (None, None) => 0.0,
+        };
+        for a in [Address::Y, Address::Z, Address::W] {
+            if let Some(w) = b.get(a) {
+                return Err(self.error(
+                    "dwell-words",
+                    w.span,
+                    format!("G04 is a dwell and takes no {} word", a.letter()),
+                ));
+            }
+        }
+        self.event(out, EventKind::Dwell { seconds });
+        Ok(())
+    }
+
+    /// Builds the circle of an arc move for both paths (spec 2, 4.8).
+    fn arc_geometry(&self, b: &Block, req: &ArcRequest) -> Result<ArcInfo, Diagnostic> {
+        let plane = self.state.modal.plane;
+        let (ia, ib, _) = plane.axes();
+        let lathe = self.setup.machine == MachineKind::Lathe;
+        // The lathe's X is a diameter: its arcs are drawn in radius space.
+        let s = |axis: usize| if lathe && axis == 0 { 0.5 } else { 1.0 };
+        let to_plane = |p: Xyz| [p[ia] * s(ia), p[ib] * s(ib)];
+        let from_plane = |c: arc::P2, at: Xyz| {
+            let mut p = at;
+            p[ia] = c[0] / s(ia);
+            p[ib] = c[1] / s(ib);
+            p
+        };
+        let ccw = req.ccw;
+        let tol = match self.units() {
+            Units::Mm => 0.01,
+            Units::Inch => 0.0005 * 25.4,
+        };
+        let prog0 = self.state.programmed;
+        let act0 = self.actual();
+        let (p0, p1, a0, a1) = (
+            to_plane(prog0),
+            to_plane(req.target),
+            to_plane(act0),
+            to_plane(req.actual_end),
+        );
+        let (prog, act) = match req.radius {
+            Some((r, dr)) => (
+                arc::from_radius(p0, p1, r, ccw, tol),
+                arc::from_radius(a0, a1, r + dr, ccw, tol),
+            ),
+            None => {
+                let c = req.center;
+                let dc = req.center_change;
+                let pc = [p0[0] + c[ia], p0[1] + c[ib]];
+                let ac = [a0[0] + c[ia] + dc[ia], a0[1] + c[ib] + dc[ib]];
+                (
+                    arc::from_center(p0, p1, pc, ccw, tol),
+                    arc::from_center(a0, a1, ac, ccw, tol),
+                )
+            }
+        };
+        let unit = self.units();
+        let say = |e: ArcError, path: &str| -> String {
+            let d = unit.decimals();
+            let f = |v: f64| format!("{:.d$}", to_units(v, unit));
+            match e {
+                ArcError::RadiusMismatch { start, end } => format!(
+                    "the {path} arc's start is {} from its centre and its end {} (difference {} > {})",
+                    f(start),
+                    f(end),
+                    f((start - end).abs()),
+                    f(tol)
+                ),
+                ArcError::RadiusTooSmall { radius, half_chord } => format!(
+                    "the {path} arc's radius {} is less than half the distance from start to end ({})",
+                    f(radius),
+                    f(half_chord)
+                ),
+                ArcError::ZeroRadius => format!("the {path} arc's centre is its start point"),
+            }
+        };
+        let prog: Circle =
+            prog.map_err(|e| self.error("arc-radius", b.span, say(e, "programmed")))?;
+        let act: Circle = act.map_err(|e| {
+            let mut m = say(e, "actual");
+            m.push_str(
+                ": the offsets make this arc impossible (seed 003: build the arc from quarter circles whose ends lie on the axes through the centre)",
+            );
+            self.error("arc-radius", b.span, m)
+        })?;
+        Ok(ArcInfo {
+            plane,
+            center: from_plane(act.center, act0),
+            programmed_center: from_plane(prog.center, prog0),
+            radius: act.radius,
+            programmed_radius: prog.radius,
+            sweep: act.sweep,
+            programmed_sweep: prog.sweep,
+            diameter_x: lathe,
+        })
+    }
+}
+
+/// What an arc block asks for, after offsets changed its words.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct ArcRequest {
+    /// Programmed end point.
+    target: Xyz,
+    /// Actual end point.
+    actual_end: Xyz,
+    /// Counter-clockwise in the plane's frame (after mirror image).
+    ccw: bool,
+    /// Centre offsets I, J, K (mm, X/Y/Z order, after mirror image).
+    center: Xyz,
+    /// Changes G45–G48 made to I, J, K.
+    center_change: Xyz,
+    /// R (mm) and the change G45–G48 made to it.
+    radius: Option<(f64, f64)>,
+}

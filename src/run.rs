@@ -1,0 +1,135 @@
+//! The driver: pulls blocks from the streaming parser, runs them on the
+//! machine, and collects the report. Parse errors are reported for the whole
+//! program; execution stops at the first error, parse or run, the way a
+//! control stops at an alarm (spec 2).
+
+use crate::diag::{self, Diagnostic};
+use crate::machine::{Flow, Machine, Out};
+use crate::report::{BlockReport, End, Event, Run};
+use crate::setup::Setup;
+use crate::syntax::{Block, Blocks, ParseOptions};
+
+/// Most moves one run records; past this the run stops with an error.
+pub const MAX_MOVES: usize = 20_000_000;
+
+/// What to keep of a run.
+#[derive(Clone, Copy, Debug)]
+pub struct RunOptions {
+    /// Keep a report per block (the `check` fast path does not need them).
+    pub keep_blocks: bool,
+}
+
+impl Default for RunOptions {
+    fn default() -> Self {
+        RunOptions { keep_blocks: true }
+    }
+}
+
+/// Runs a program with a setup, keeping every block report.
+pub fn run(text: &str, setup: &Setup) -> Run {
+    run_with(text, setup, RunOptions::default())
+}
+
+/// Runs a program with a setup.
+pub fn run_with(text: &str, setup: &Setup, options: RunOptions) -> Run {
+    let mut result = Run {
+        machine: setup.machine,
+        units: setup.units,
+        blocks: Vec::new(),
+        moves: Vec::new(),
+        events: Vec::new(),
+        diagnostics: Vec::new(),
+        block_count: 0,
+        end: End::Completed,
+    };
+    let setup_problems = setup.validate();
+    if !setup_problems.is_empty() {
+        result.diagnostics = setup_problems;
+        result.end = End::Error { line: 0 };
+        return result;
+    }
+    let mut parser = Blocks::new(text, ParseOptions::from(setup));
+    let mut machine = Machine::new(setup);
+    let mut block = Block::default();
+    let mut out = Out::default();
+    let mut run_diagnostics: Vec<Diagnostic> = Vec::new();
+    let mut stopped = false;
+    let mut units_known = false;
+    while parser.next_into(&mut block) {
+        if stopped {
+            continue;
+        }
+        if block.error {
+            stopped = true;
+            result.end = End::Error {
+                line: block.span.line,
+            };
+            continue;
+        }
+        if block.skip && setup.settings.block_skip {
+            continue;
+        }
+        out.clear();
+        let index = result.block_count;
+        let flow = match machine.execute(&block, index, &mut out) {
+            Ok(flow) => flow,
+            Err(d) => {
+                result.end = End::Error {
+                    line: d.span.line.max(block.span.line),
+                };
+                run_diagnostics.push(d);
+                stopped = true;
+                continue;
+            }
+        };
+        if result.moves.len() + out.moves.len() > MAX_MOVES {
+            run_diagnostics.push(Diagnostic::error(
+                "too-many-moves",
+                block.span,
+                format!("the program makes more than {MAX_MOVES} moves; the run stops here"),
+            ));
+            result.end = End::Error {
+                line: block.span.line,
+            };
+            stopped = true;
+            continue;
+        }
+        if !units_known && !out.moves.is_empty() {
+            units_known = true;
+            result.units = machine.state().modal.units;
+        }
+        let first_move = result.moves.len() as u32;
+        result.moves.extend_from_slice(&out.moves);
+        result.events.extend(out.events.drain(..).map(|kind| Event {
+            block: index,
+            line: block.span.line,
+            kind,
+        }));
+        run_diagnostics.append(&mut out.warnings);
+        if options.keep_blocks {
+            result.blocks.push(BlockReport {
+                index,
+                span: block.span,
+                state: *machine.state(),
+                notes: std::mem::take(&mut out.notes),
+                first_move,
+                move_count: out.moves.len() as u32,
+            });
+        }
+        result.block_count += 1;
+        if flow == Flow::End {
+            stopped = true;
+            result.end = End::ProgramEnd {
+                line: block.span.line,
+            };
+        }
+    }
+    if !units_known {
+        result.units = machine.state().modal.units;
+    }
+    let mut diagnostics = parser.into_diagnostics();
+    diagnostics.append(&mut run_diagnostics);
+    diag::finish(&mut diagnostics, text);
+    result.diagnostics = diagnostics;
+    result
+}

@@ -1,0 +1,822 @@
+//! Program text → blocks of typed words, each with its span (spec 1).
+//!
+//! The grammar of one block (words, numbers, comments) is in [`lexer`], written
+//! with nom; this module splits the text into blocks, types every word, checks
+//! ranges and modal groups, and keeps going after an error so that every parse
+//! error of the whole program is reported.
+//!
+//! Parsing is streaming ([`Blocks`]): the interpreter pulls one block at a
+//! time into a reused buffer, so a million-block program is never held as a
+//! tree. [`parse`] collects the blocks for tools and tests.
+
+pub mod codes;
+mod lexer;
+
+use serde::Serialize;
+
+use crate::diag::{Diagnostic, Span};
+use crate::setup::{DecimalInput, MachineKind, Setup, Units};
+use codes::{GCode, Group, g_group, m_group};
+use lexer::{Number, NumberError};
+
+/// Most diagnostics one program reports; past this one more says so.
+pub const MAX_DIAGNOSTICS: usize = 1000;
+
+/// Largest value of words that are always integers (eight digits).
+const MAX_INTEGER: u64 = 99_999_999;
+
+/// Largest repeat count (K/L) of a canned cycle.
+pub const MAX_REPEATS: u64 = 9999;
+
+/// The address letters offsetlab reads.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[allow(missing_docs)]
+pub enum Address {
+    D,
+    F,
+    G,
+    H,
+    I,
+    J,
+    K,
+    L,
+    M,
+    N,
+    O,
+    P,
+    Q,
+    R,
+    S,
+    T,
+    U,
+    W,
+    X,
+    Y,
+    Z,
+}
+
+/// How a word's number is read.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum WordKind {
+    /// Always an integer, no decimal point (G M N O T D H S P L; spec 1).
+    Integer,
+    /// Feed rate: read in units with or without a decimal point (spec 1).
+    Feed,
+    /// Dimension words X Y Z U W I J K R Q: decimal input applies (spec 1).
+    Dimension,
+}
+
+impl Address {
+    /// The address for an upper-case letter, if offsetlab reads it.
+    pub fn from_letter(c: u8) -> Option<Address> {
+        use Address::*;
+        Some(match c {
+            b'D' => D,
+            b'F' => F,
+            b'G' => G,
+            b'H' => H,
+            b'I' => I,
+            b'J' => J,
+            b'K' => K,
+            b'L' => L,
+            b'M' => M,
+            b'N' => N,
+            b'O' => O,
+            b'P' => P,
+            b'Q' => Q,
+            b'R' => R,
+            b'S' => S,
+            b'T' => T,
+            b'U' => U,
+            b'W' => W,
+            b'X' => X,
+            b'Y' => Y,
+            b'Z' => Z,
+            _ => return None,
+        })
+    }
+
+    /// The letter.
+    pub fn letter(self) -> char {
+        use Address::*;
+        match self {
+            D => 'D',
+            F => 'F',
+            G => 'G',
+            H => 'H',
+            I => 'I',
+            J => 'J',
+            K => 'K',
+            L => 'L',
+            M => 'M',
+            N => 'N',
+            O => 'O',
+            P => 'P',
+            Q => 'Q',
+            R => 'R',
+            S => 'S',
+            T => 'T',
+            U => 'U',
+            W => 'W',
+            X => 'X',
+            Y => 'Y',
+            Z => 'Z',
+        }
+    }
+
+    /// How the number of this address is read.
+    pub fn kind(self) -> WordKind {
+        use Address::*;
+        match self {
+            G | M | N | O | T | D | H | S | P | L => WordKind::Integer,
+            F => WordKind::Feed,
+            X | Y | Z | U | W | I | J | K | R | Q => WordKind::Dimension,
+        }
+    }
+
+    fn bit(self) -> u32 {
+        1 << (self as u32)
+    }
+}
+
+/// One word: an address and its value.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Word {
+    /// The address letter.
+    pub address: Address,
+    /// The value: dimension words in program units after decimal input;
+    /// integers exact; a G code's tenths digit after the point.
+    pub value: f64,
+    /// A decimal point was written.
+    pub point: bool,
+    /// Where the word is (letter through number).
+    pub span: Span,
+}
+
+impl Word {
+    /// The value of an integer word (the parser has checked its range).
+    pub fn int(&self) -> u32 {
+        self.value as u32
+    }
+
+    /// The code of a G word.
+    pub fn gcode(&self) -> GCode {
+        let major = self.value.trunc();
+        GCode {
+            major: major as u16,
+            minor: ((self.value - major) * 10.0).round() as u8,
+        }
+    }
+}
+
+/// One block: the words between two end-of-block characters.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Block {
+    /// The block's text, from its first to its last non-blank character.
+    pub span: Span,
+    /// The block starts with `/` (optional block skip).
+    pub skip: bool,
+    /// The words, in text order.
+    pub words: Vec<Word>,
+    /// A parse error was reported in this block: execution stops here.
+    pub error: bool,
+}
+
+impl Block {
+    /// The word with this address (for G and M, the first one).
+    pub fn get(&self, address: Address) -> Option<&Word> {
+        self.words.iter().find(|w| w.address == address)
+    }
+
+    /// The value of the word with this address.
+    pub fn value(&self, address: Address) -> Option<f64> {
+        self.get(address).map(|w| w.value)
+    }
+
+    /// True if the block has a word with this address.
+    pub fn has(&self, address: Address) -> bool {
+        self.get(address).is_some()
+    }
+
+    /// The G codes of the block with their words.
+    pub fn gcodes(&self) -> impl Iterator<Item = (GCode, &Word)> {
+        self.words
+            .iter()
+            .filter(|w| w.address == Address::G)
+            .map(|w| (w.gcode(), w))
+    }
+
+    /// The M codes of the block with their words.
+    pub fn mcodes(&self) -> impl Iterator<Item = (u32, &Word)> {
+        self.words
+            .iter()
+            .filter(|w| w.address == Address::M)
+            .map(|w| (w.int(), w))
+    }
+}
+
+/// What the parser needs to know from the setup.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ParseOptions {
+    /// Which G codes exist and what they mean.
+    pub machine: MachineKind,
+    /// Units at program start (G20/G21 in the text change them).
+    pub units: Units,
+    /// Dimension words without a decimal point.
+    pub decimal_input: DecimalInput,
+    /// Highest D/H/T offset number.
+    pub table_size: u16,
+    /// Skipped blocks (`/`) do not change the parser's G20/G21 state.
+    pub block_skip: bool,
+}
+
+impl Default for ParseOptions {
+    fn default() -> Self {
+        ParseOptions::from(&Setup::default())
+    }
+}
+
+impl From<&Setup> for ParseOptions {
+    fn from(s: &Setup) -> Self {
+        ParseOptions {
+            machine: s.machine,
+            units: s.units,
+            decimal_input: s.settings.decimal_input,
+            table_size: s.table_size,
+            block_skip: s.settings.block_skip,
+        }
+    }
+}
+
+/// A parsed program: its blocks and every parse diagnostic.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Program {
+    /// Blocks with at least one word or a parse error, in order.
+    pub blocks: Vec<Block>,
+    /// Parse diagnostics, with line and column.
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+/// Parses a whole program.
+pub fn parse(text: &str, options: &ParseOptions) -> Program {
+    let mut blocks = Blocks::new(text, *options);
+    let mut out = Vec::new();
+    let mut block = Block::default();
+    while blocks.next_into(&mut block) {
+        out.push(block.clone());
+    }
+    let mut diagnostics = blocks.into_diagnostics();
+    crate::diag::finish(&mut diagnostics, text);
+    Program {
+        blocks: out,
+        diagnostics,
+    }
+}
+
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Tape {
+    /// No `%` and no block seen yet.
+    Before,
+    /// Reading blocks.
+    Reading,
+    /// A closing `%` was read: nothing after it is part of the program.
+    Ended,
+}
+
+/// A word as lexed, before it is typed.
+#[derive(Clone, Copy)]
+struct RawWord {
+    letter: u8,
+    number: Result<Number, NumberError>,
+    start: usize,
+    end: usize,
+}
+
+/// Streaming parser: yields one block at a time and collects diagnostics.
+pub struct Blocks<'a> {
+    text: &'a str,
+    pos: usize,
+    line: u32,
+    options: ParseOptions,
+    /// G20/G21 as last written (decimal input depends on it).
+    units: Units,
+    /// A mill canned cycle is active (K is then a repeat count).
+    in_cycle: bool,
+    tape: Tape,
+    warned_integer: bool,
+    diagnostics: Vec<Diagnostic>,
+    dropped: usize,
+    raw: Vec<RawWord>,
+}
+
+impl<'a> Blocks<'a> {
+    /// Starts parsing `text`.
+    pub fn new(text: &'a str, options: ParseOptions) -> Blocks<'a> {
+        Blocks {
+            text,
+            pos: 0,
+            line: 1,
+            units: options.units,
+            options,
+            in_cycle: false,
+            tape: Tape::Before,
+            warned_integer: false,
+            diagnostics: Vec::new(),
+            dropped: 0,
+            raw: Vec::with_capacity(16),
+        }
+    }
+
+    /// The diagnostics so far (without columns; see [`crate::diag::finish`]).
+    pub fn diagnostics(&self) -> &[Diagnostic] {
+        &self.diagnostics
+    }
+
+    /// Every diagnostic, once parsing is done.
+    pub fn into_diagnostics(mut self) -> Vec<Diagnostic> {
+        if self.dropped > 0 {
+            let span = self.diagnostics.last().map(|d| d.span).unwrap_or_default();
+            self.diagnostics.push(Diagnostic::warning(
+                "too-many-diagnostics",
+                span,
+                format!(
+                    "{} more diagnostics were not reported (at most {MAX_DIAGNOSTICS} are)",
+                    self.dropped
+                ),
+            ));
+        }
+        self.diagnostics
+    }
+
+    /// The current line (1-based): after the last block, the line it ended on.
+    pub fn line(&self) -> u32 {
+        self.line
+    }
+
+    /// Byte offset of the next unread character.
+    pub fn offset(&self) -> usize {
+        self.pos
+    }
+
+    fn report(&mut self, d: Diagnostic) {
+        if self.diagnostics.len() < MAX_DIAGNOSTICS {
+            self.diagnostics.push(d);
+        } else {
+            self.dropped += 1;
+        }
+    }
+
+    /// Reads the next block into `block`. Returns false at the end of the
+    /// program. Blank and comment-only lines yield nothing.
+    pub fn next_into(&mut self, block: &mut Block) -> bool {
+        let bytes = self.text.as_bytes();
+        while self.pos < bytes.len() && self.tape != Tape::Ended {
+            let start = self.pos;
+            let mut i = start;
+            let mut in_comment = false;
+            while i < bytes.len() {
+                let c = bytes[i];
+                if c == b'\n' || c == b'\r' {
+                    break;
+                }
+                if in_comment {
+                    in_comment = c != b')';
+                } else if c == b'(' {
+                    in_comment = true;
+                } else if c == b';' {
+                    break;
+                }
+                i += 1;
+            }
+            let line = self.line;
+            self.pos = match bytes.get(i) {
+                None => i,
+                Some(b'\r') if bytes.get(i + 1) == Some(&b'\n') => {
+                    self.line += 1;
+                    i + 2
+                }
+                Some(b'\n' | b'\r') => {
+                    self.line += 1;
+                    i + 1
+                }
+                Some(_) => i + 1,
+            };
+            if self.parse_block(start, i, line, block) {
+                return true;
+            }
+        }
+        if self.tape == Tape::Ended {
+            let rest = &self.text[self.pos.min(self.text.len())..];
+            if let Some(off) = rest.find(|c: char| !c.is_whitespace()) {
+                let at = self.pos + off;
+                let line = self.line + count_lines(&bytes[self.pos..at]);
+                self.report(Diagnostic::warning(
+                    "text-after-tape-end",
+                    Span::new(at, at + 1, line),
+                    "text after the closing % is not read: % marks the end of the tape",
+                ));
+            }
+            self.pos = bytes.len();
+        }
+        false
+    }
+
+    /// Parses the block text `start..end` (without its end-of-block
+    /// character). Returns true if it is a block to execute.
+    fn parse_block(&mut self, start: usize, end: usize, line: u32, block: &mut Block) -> bool {
+        let bytes = &self.text.as_bytes()[..end];
+        let mut i = start
+            + (lexer::blanks(&bytes[start..]).as_ptr() as usize - bytes[start..].as_ptr() as usize);
+        if i >= end {
+            return false;
+        }
+        if bytes[i] == b'%' {
+            // Tape start before any block, tape end after (spec 1).
+            self.tape = if self.tape == Tape::Before {
+                Tape::Reading
+            } else {
+                Tape::Ended
+            };
+            return false;
+        }
+        let mut last = end;
+        while last > i && matches!(bytes[last - 1], b' ' | b'\t') {
+            last -= 1;
+        }
+        block.span = Span::new(i, last, line);
+        block.skip = false;
+        block.words.clear();
+        block.error = false;
+        self.raw.clear();
+
+        if bytes[i] == b'/' {
+            block.skip = true;
+            i += 1;
+            // `/1`…`/9` name a skip switch; offsetlab has one switch for all.
+            if i < end && (b'1'..=b'9').contains(&bytes[i]) {
+                i += 1;
+            }
+        }
+
+        // Lex: comments, words, and anything else as an error.
+        while i < end {
+            let rest = lexer::blanks(&bytes[i..]);
+            i = end - rest.len();
+            if i >= end {
+                break;
+            }
+            let c = bytes[i];
+            if c == b'(' {
+                let (after, closed) = lexer::comment(&bytes[i..]).unwrap_or((&[], false));
+                if !closed {
+                    self.error_at(
+                        block,
+                        "unclosed-comment",
+                        i,
+                        end,
+                        line,
+                        "this comment is not closed with `)` before the end of the block",
+                    );
+                }
+                i = end - after.len();
+            } else if c.is_ascii_alphabetic() {
+                let (after, num) = lexer::number_text(&bytes[i + 1..]);
+                let word_end = end - after.len();
+                self.raw.push(RawWord {
+                    letter: c.to_ascii_uppercase(),
+                    number: Number::read(num),
+                    start: i,
+                    end: word_end,
+                });
+                i = word_end;
+            } else {
+                // Skip to the next thing that can start a word or a comment.
+                let mut j = i + 1;
+                while j < end && !bytes[j].is_ascii_alphabetic() && bytes[j] != b'(' {
+                    j += 1;
+                }
+                let ch = self.text[i..].chars().next().unwrap_or('?');
+                let message = unexpected_message(ch);
+                self.error_at(block, "unexpected-character", i, j, line, &message);
+                i = j;
+            }
+        }
+
+        // First pass: G codes that change how this block's numbers are read.
+        let raw = std::mem::take(&mut self.raw);
+        let counts = !(block.skip && self.options.block_skip);
+        for w in raw.iter().filter(|w| w.letter == b'G') {
+            if let (Ok(n), true) = (w.number, counts) {
+                self.note_context(n);
+            }
+        }
+        // Second pass: type every word.
+        let mut seen = 0u32;
+        let mut groups: [Option<usize>; Group::COUNT] = [None; Group::COUNT];
+        let mut m_groups: [(u32, usize); 8] = [(0, 0); 8];
+        let mut m_count = 0;
+        for w in &raw {
+            if let Some(word) = self.type_word(w, line, block) {
+                let a = word.address;
+                let idx = block.words.len();
+                match a {
+                    Address::G => match g_group(self.options.machine, word.gcode()) {
+                        Ok(group) => {
+                            if let Some(other) = groups[group.index()] {
+                                let first = block.words[other].gcode();
+                                let msg = format!(
+                                    "{first} and {} are both in group {}; a block may hold one of them{}",
+                                    word.gcode(),
+                                    group.label(),
+                                    conflict_hint(self.options.machine, group)
+                                );
+                                self.error_word(block, "modal-conflict", &word, &msg);
+                                continue;
+                            }
+                            groups[group.index()] = Some(idx);
+                        }
+                        Err(why) => {
+                            self.error_word(block, "unsupported-g-code", &word, &why);
+                            continue;
+                        }
+                    },
+                    Address::M => {
+                        let g = m_group(word.int());
+                        if let Some(&(_, other)) =
+                            m_groups[..m_count].iter().find(|(gr, _)| *gr == g)
+                        {
+                            let msg = format!(
+                                "M{:02} and M{:02} exclude each other; a block may hold one of them",
+                                block.words[other].int(),
+                                word.int()
+                            );
+                            self.error_word(block, "modal-conflict", &word, &msg);
+                            continue;
+                        }
+                        if m_count < m_groups.len() {
+                            m_groups[m_count] = (g, idx);
+                            m_count += 1;
+                        }
+                    }
+                    _ => {
+                        if seen & a.bit() != 0 {
+                            let first = block.get(a).map(|f| f.span).unwrap_or(word.span);
+                            let msg = format!(
+                                "{} appears twice in this block ({} and {}); each address may appear once",
+                                a.letter(),
+                                &self.text[first.start as usize..first.end as usize],
+                                &self.text[word.span.start as usize..word.span.end as usize],
+                            );
+                            self.error_word(block, "duplicate-address", &word, &msg);
+                            continue;
+                        }
+                        seen |= a.bit();
+                    }
+                }
+                block.words.push(word);
+            }
+        }
+        self.raw = raw;
+        if self.tape == Tape::Before {
+            self.tape = Tape::Reading;
+        }
+        !block.words.is_empty() || block.error
+    }
+
+    /// Tracks the G codes that change how numbers are read: G20/G21 (least
+    /// increment) and mill canned cycles (K is then a repeat count).
+    fn note_context(&mut self, n: Number) {
+        if n.frac_digits != 0 || n.negative {
+            return;
+        }
+        match (self.options.machine, n.mantissa) {
+            (_, 20) => self.units = Units::Inch,
+            (_, 21) => self.units = Units::Mm,
+            (MachineKind::Mill, 73 | 74 | 76 | 81..=89) => self.in_cycle = true,
+            (MachineKind::Mill, 0..=3 | 80) => self.in_cycle = false,
+            _ => {}
+        }
+    }
+
+    /// Types one lexed word, reporting what is wrong with it.
+    fn type_word(&mut self, w: &RawWord, line: u32, block: &mut Block) -> Option<Word> {
+        let span = Span::new(w.start, w.end, line);
+        let text = &self.text[w.start..w.end];
+        let letter = w.letter as char;
+        let Some(address) = Address::from_letter(w.letter) else {
+            let msg = match letter {
+                'A' | 'B' | 'C' => format!("{letter}: rotary axes are not modelled by offsetlab"),
+                'E' => "E (thread lead) is not supported".to_string(),
+                _ => format!("{letter} is not an address offsetlab reads"),
+            };
+            self.error_span(block, "unsupported-address", span, &msg);
+            return None;
+        };
+        let n = match w.number {
+            Ok(n) => n,
+            Err(NumberError::Missing) => {
+                let msg = format!("{letter} has no number: an address letter needs a value");
+                self.error_span(block, "missing-number", span, &msg);
+                return None;
+            }
+            Err(NumberError::Malformed) => {
+                let msg = format!("{text}: `{}` is not a number", text[1..].trim());
+                self.error_span(block, "malformed-number", span, &msg);
+                return None;
+            }
+            Err(NumberError::TooLong) => {
+                let msg = format!("{text}: too many digits for a control to read");
+                self.error_span(block, "out-of-range", span, &msg);
+                return None;
+            }
+        };
+        let kind = if address == Address::K && self.in_cycle {
+            WordKind::Integer
+        } else {
+            address.kind()
+        };
+        let value = match kind {
+            WordKind::Integer if address == Address::G => {
+                if n.negative || n.frac_digits > 1 || (n.point && n.frac_digits == 0) {
+                    let msg = format!("{text}: a G code is a number such as G01 or G05.1");
+                    self.error_span(block, "malformed-number", span, &msg);
+                    return None;
+                }
+                n.value()
+            }
+            WordKind::Integer => {
+                if n.point {
+                    let msg = format!(
+                        "{text}: {letter} takes a whole number, written without a decimal point"
+                    );
+                    self.error_span(block, "decimal-point", span, &msg);
+                    return None;
+                }
+                let limit = integer_limit(self.options, address, self.in_cycle);
+                if n.negative && n.mantissa != 0 || n.mantissa > limit {
+                    let msg = integer_range_message(text, letter, address, limit, self.options);
+                    self.error_span(block, "out-of-range", span, &msg);
+                    return None;
+                }
+                if address == Address::T
+                    && self.options.machine == MachineKind::Lathe
+                    && n.mantissa % 100 > u64::from(self.options.table_size)
+                {
+                    let msg = format!(
+                        "{text}: offset number {:02} is beyond the offset table (00 to {:02})",
+                        n.mantissa % 100,
+                        self.options.table_size
+                    );
+                    self.error_span(block, "out-of-range", span, &msg);
+                    return None;
+                }
+                n.mantissa as f64
+            }
+            WordKind::Feed => {
+                let v = n.value();
+                if !(0.0..=999_999.0).contains(&v) {
+                    let msg = format!("{text}: a feed rate is 0 to 999999");
+                    self.error_span(block, "out-of-range", span, &msg);
+                    return None;
+                }
+                v
+            }
+            WordKind::Dimension => {
+                let units = self.units;
+                let v = if n.point || self.options.decimal_input == DecimalInput::Calculator {
+                    n.value()
+                } else {
+                    n.scaled(units.decimals() as u8)
+                };
+                let max = units.max_dimension();
+                if v.abs() > max + 1e-9 {
+                    let msg = format!(
+                        "{text} is outside ±{max:.*} {} (spec 1)",
+                        units.decimals(),
+                        units.as_str()
+                    );
+                    self.error_span(block, "out-of-range", span, &msg);
+                    return None;
+                }
+                if !n.point
+                    && n.mantissa != 0
+                    && self.options.decimal_input == DecimalInput::Increment
+                    && !self.warned_integer
+                {
+                    self.warned_integer = true;
+                    let d = units.decimals();
+                    let msg = format!(
+                        "{text} has no decimal point: read as {v:.d$} {u} (least input increment {inc:.d$} {u}); \
+                         write {letter}{v:.d$} for {v:.d$} {u}, or {text}. for {whole} {u} (setting decimal_input)",
+                        u = units.as_str(),
+                        inc = units.increment(),
+                        whole = n.value(),
+                    );
+                    self.report(Diagnostic::warning("integer-dimension", span, msg));
+                }
+                v
+            }
+        };
+        Some(Word {
+            address,
+            value,
+            point: n.point,
+            span,
+        })
+    }
+
+    fn error_span(&mut self, block: &mut Block, code: &'static str, span: Span, msg: &str) {
+        block.error = true;
+        self.report(Diagnostic::error(code, span, msg));
+    }
+
+    fn error_word(&mut self, block: &mut Block, code: &'static str, word: &Word, msg: &str) {
+        self.error_span(block, code, word.span, msg);
+    }
+
+    fn error_at(
+        &mut self,
+        block: &mut Block,
+        code: &'static str,
+        start: usize,
+        end: usize,
+        line: u32,
+        msg: &str,
+    ) {
+        self.error_span(block, code, Span::new(start, end, line), msg);
+    }
+}
+
+fn count_lines(bytes: &[u8]) -> u32 {
+    let mut n = 0u32;
+    let mut i = 0;
+    while i < bytes.len() {
+        match bytes[i] {
+            b'\r' if bytes.get(i + 1) == Some(&b'\n') => {
+                n += 1;
+                i += 1;
+            }
+            b'\n' | b'\r' => n += 1,
+            _ => {}
+        }
+        i += 1;
+    }
+    n
+}
+
+fn integer_limit(options: ParseOptions, address: Address, in_cycle: bool) -> u64 {
+    match address {
+        Address::D | Address::H => u64::from(options.table_size),
+        Address::T if options.machine == MachineKind::Lathe => 9999,
+        Address::L => MAX_REPEATS,
+        Address::K if in_cycle => MAX_REPEATS,
+        _ => MAX_INTEGER,
+    }
+}
+
+fn integer_range_message(
+    text: &str,
+    letter: char,
+    address: Address,
+    limit: u64,
+    options: ParseOptions,
+) -> String {
+    match address {
+        Address::D | Address::H => format!(
+            "{text}: offset number is beyond the offset table (00 to {:02})",
+            options.table_size
+        ),
+        Address::T if options.machine == MachineKind::Lathe => {
+            format!("{text}: a lathe T code is Tttoo, tool tt and offset oo (at most T9999)")
+        }
+        _ => format!("{text}: {letter} is a whole number from 0 to {limit}"),
+    }
+}
+
+fn conflict_hint(machine: MachineKind, group: Group) -> &'static str {
+    match (machine, group) {
+        (MachineKind::Lathe, Group::Motion) => {
+            " (on the lathe, G-code system A, G90/G92/G94 are turning cycles; X/Z are absolute and U/W incremental)"
+        }
+        (_, Group::NonModal) => " (one-shot codes such as G45–G48 take one per block, seed 003)",
+        _ => "",
+    }
+}
+
+fn unexpected_message(ch: char) -> String {
+    match ch {
+        '#' | '[' | ']' | '=' => {
+            format!(
+                "`{ch}` is not part of a word: macro variables and expressions are not supported"
+            )
+        }
+        '/' => "`/` (optional block skip) must start the block".to_string(),
+        '%' => "`%` marks the tape start or end and must be alone on its line".to_string(),
+        ')' => "`)` closes no comment".to_string(),
+        c if c.is_control() => format!("character {:?} is not part of a program", c),
+        c => format!("`{c}` is not part of a word"),
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,333 @@
+//! Parser tests: every rule and every error of spec section 1.
+
+use super::*;
+use crate::setup::{DecimalInput, MachineKind, Units};
+
+fn p(text: &str) -> Program {
+    parse(text, &ParseOptions::default())
+}
+
+fn p_with(text: &str, f: impl FnOnce(&mut ParseOptions)) -> Program {
+    let mut o = ParseOptions::default();
+    f(&mut o);
+    parse(text, &o)
+}
+
+fn codes(prog: &Program) -> Vec<&'static str> {
+    prog.diagnostics.iter().map(|d| d.code).collect()
+}
+
+fn value(b: &Block, a: Address) -> f64 {
+    b.value(a).unwrap_or_else(|| panic!("no {a:?} in {b:?}"))
+}
+
+#[test]
+fn spec1_blocks_end_at_newline_or_semicolon() {
+    let prog = p("G00 X1.;G01 Y2.\r\nG00 Z3.\rX4.\nX5.");
+    assert!(prog.diagnostics.is_empty(), "{:?}", prog.diagnostics);
+    let lines: Vec<u32> = prog.blocks.iter().map(|b| b.span.line).collect();
+    // Two blocks on one line both belong to that line.
+    assert_eq!(lines, vec![1, 1, 2, 3, 4]);
+    assert_eq!(value(&prog.blocks[1], Address::Y), 2.0);
+    assert_eq!(value(&prog.blocks[3], Address::X), 4.0);
+}
+
+#[test]
+fn spec1_tape_marks_program_numbers_sequence_numbers_and_comments() {
+    let prog = p("%\nO1234 (PART 7)\nN10 G01 X1. (MOVE) Y2. F100.\n(ONLY A COMMENT)\n\n%\n");
+    assert!(prog.diagnostics.is_empty(), "{:?}", prog.diagnostics);
+    assert_eq!(prog.blocks.len(), 2);
+    assert_eq!(value(&prog.blocks[0], Address::O), 1234.0);
+    assert_eq!(value(&prog.blocks[1], Address::N), 10.0);
+    assert_eq!(value(&prog.blocks[1], Address::Y), 2.0);
+    assert_eq!(prog.blocks[1].span.line, 3);
+}
+
+#[test]
+fn spec1_semicolon_inside_a_comment_does_not_end_the_block() {
+    let prog = p("G00 X1. (A; B) Y2.");
+    assert_eq!(prog.blocks.len(), 1);
+    assert_eq!(value(&prog.blocks[0], Address::Y), 2.0);
+}
+
+#[test]
+fn spec1_spaces_inside_words_and_lower_case() {
+    let prog = p("g0 1 x 1 2 . 5 y-.5 f 100");
+    assert!(prog.diagnostics.is_empty(), "{:?}", prog.diagnostics);
+    let b = &prog.blocks[0];
+    assert_eq!(b.get(Address::G).unwrap().gcode(), GCode::new(1));
+    assert_eq!(value(b, Address::X), 12.5);
+    assert_eq!(value(b, Address::Y), -0.5);
+    assert_eq!(value(b, Address::F), 100.0);
+}
+
+#[test]
+fn spec1_block_skip_marks_the_block() {
+    let prog = p("/G00 X1.\n /2 G00 X2.\nG00 X3.");
+    assert!(prog.diagnostics.is_empty(), "{:?}", prog.diagnostics);
+    let skips: Vec<bool> = prog.blocks.iter().map(|b| b.skip).collect();
+    assert_eq!(skips, vec![true, true, false]);
+}
+
+#[test]
+fn spec1_misplaced_block_skip_is_an_error() {
+    let prog = p("G00 /X1.");
+    assert_eq!(codes(&prog), vec!["unexpected-character"]);
+    assert_eq!(prog.diagnostics[0].column, 5);
+}
+
+#[test]
+fn spec1_same_address_twice_is_an_error() {
+    let prog = p("G01 X10. X20.");
+    assert_eq!(codes(&prog), vec!["duplicate-address"]);
+    let d = &prog.diagnostics[0];
+    assert_eq!((d.line, d.column, d.end_column), (1, 10, 14));
+    assert!(d.message.contains("X10. and X20."), "{}", d.message);
+    assert!(prog.blocks[0].error);
+    let prog = p("G45 X1. D1 D2");
+    assert_eq!(codes(&prog), vec!["duplicate-address"]);
+}
+
+#[test]
+fn spec1_two_g_codes_of_one_group_is_an_error() {
+    let prog = p("G43 G44 Z1. H1\nG00 G01 X1.");
+    assert_eq!(codes(&prog), vec!["modal-conflict", "modal-conflict"]);
+    assert_eq!(prog.diagnostics[0].column, 5);
+    assert!(prog.diagnostics[0].message.contains("group 08"));
+    assert_eq!(prog.diagnostics[1].line, 2);
+    // Codes of different groups are fine.
+    assert!(
+        p("G90 G00 G17 G21 G40 G49 G80 X0 Y0")
+            .diagnostics
+            .is_empty()
+    );
+}
+
+#[test]
+fn spec4_9_two_position_offset_codes_in_one_block_is_an_error() {
+    let prog = p("G91 G45 G46 X10. D1");
+    assert_eq!(codes(&prog), vec!["modal-conflict"]);
+}
+
+#[test]
+fn spec1_letter_without_number_is_an_error() {
+    let prog = p("G01 X;\nG01 X Y1.");
+    assert_eq!(codes(&prog), vec!["missing-number", "missing-number"]);
+    assert_eq!(prog.diagnostics[0].column, 5);
+    assert_eq!(prog.diagnostics[1].line, 2);
+}
+
+#[test]
+fn spec1_malformed_numbers_are_errors() {
+    let prog = p("X1.2.3\nX--1\nX-\nX1-2");
+    assert_eq!(
+        codes(&prog),
+        vec![
+            "malformed-number",
+            "malformed-number",
+            "malformed-number",
+            "malformed-number"
+        ]
+    );
+    assert!(
+        prog.diagnostics[0]
+            .message
+            .contains("`1.2.3` is not a number")
+    );
+}
+
+#[test]
+fn spec1_unknown_g_code_is_an_error() {
+    let prog = p("G07 X1.\nG41 D1 X1.\nG05.1 Q1.");
+    assert_eq!(
+        codes(&prog),
+        vec![
+            "unsupported-g-code",
+            "unsupported-g-code",
+            "unsupported-g-code"
+        ]
+    );
+    assert_eq!(prog.diagnostics[1].line, 2);
+}
+
+#[test]
+fn spec1_parsing_continues_after_an_error() {
+    let prog = p("X1.2.3\nG01 X1. Y\nG00 X5.");
+    assert_eq!(prog.blocks.len(), 3);
+    assert!(prog.blocks[0].error && prog.blocks[1].error && !prog.blocks[2].error);
+    assert_eq!(value(&prog.blocks[1], Address::X), 1.0);
+    assert_eq!(value(&prog.blocks[2], Address::X), 5.0);
+}
+
+#[test]
+fn spec1_decimal_input_increment_is_the_default() {
+    let prog = p("X12345 Y1.5 Z0");
+    let b = &prog.blocks[0];
+    assert_eq!(value(b, Address::X), 12.345);
+    assert_eq!(value(b, Address::Y), 1.5);
+    assert_eq!(value(b, Address::Z), 0.0);
+    // The first integer dimension word gets a warning saying how it was read.
+    assert_eq!(codes(&prog), vec!["integer-dimension"]);
+    let d = &prog.diagnostics[0];
+    assert_eq!(d.severity, crate::diag::Severity::Warning);
+    assert!(d.message.contains("read as 12.345 mm"), "{}", d.message);
+    assert!(d.message.contains("X12.345"), "{}", d.message);
+    // Only the first.
+    let prog = p("X12345\nY100");
+    assert_eq!(codes(&prog), vec!["integer-dimension"]);
+    // A zero reads the same either way: no warning.
+    assert!(p("G91 X0 Y0").diagnostics.is_empty());
+}
+
+#[test]
+fn spec1_decimal_input_increment_in_inch() {
+    let prog = p("G20\nX12345");
+    assert_eq!(value(&prog.blocks[1], Address::X), 1.2345);
+    let prog = p_with("X12345", |o| o.units = Units::Inch);
+    assert_eq!(value(&prog.blocks[0], Address::X), 1.2345);
+}
+
+#[test]
+fn spec1_decimal_input_calculator() {
+    let prog = p_with("X12345 Y1.5", |o| {
+        o.decimal_input = DecimalInput::Calculator
+    });
+    assert_eq!(value(&prog.blocks[0], Address::X), 12345.0);
+    assert_eq!(value(&prog.blocks[0], Address::Y), 1.5);
+    assert!(prog.diagnostics.is_empty());
+}
+
+#[test]
+fn spec1_integer_words_are_not_affected_by_decimal_input() {
+    let prog = p("N10 G04 P1000\nT0101 M06 D01 H02 S800 F100");
+    assert!(prog.diagnostics.is_empty(), "{:?}", prog.diagnostics);
+    let b = &prog.blocks[1];
+    assert_eq!(value(b, Address::T), 101.0);
+    assert_eq!(value(b, Address::D), 1.0);
+    assert_eq!(value(b, Address::H), 2.0);
+    assert_eq!(value(b, Address::S), 800.0);
+    // F is read in units either way.
+    assert_eq!(value(b, Address::F), 100.0);
+    assert_eq!(value(&prog.blocks[0], Address::P), 1000.0);
+}
+
+#[test]
+fn spec1_integer_words_refuse_a_decimal_point() {
+    let prog = p("G01 X1. D1.");
+    assert_eq!(codes(&prog), vec!["decimal-point"]);
+}
+
+#[test]
+fn spec1_ranges() {
+    let prog = p("X99999.999\nX100000.\nY-100000.");
+    assert_eq!(codes(&prog), vec!["out-of-range", "out-of-range"]);
+    let prog = p("G20\nX9999.9999\nX10000.");
+    assert_eq!(codes(&prog), vec!["out-of-range"]);
+    assert_eq!(prog.diagnostics[0].line, 3);
+    // Offset numbers 00 to the table size.
+    let prog = p("D00 H99\nD100\nH-1");
+    assert_eq!(codes(&prog), vec!["out-of-range", "out-of-range"]);
+    let prog = p_with("D12", |o| o.table_size = 10);
+    assert_eq!(codes(&prog), vec!["out-of-range"]);
+    assert!(prog.diagnostics[0].message.contains("00 to 10"));
+}
+
+#[test]
+fn spec5_lathe_t_codes_are_checked_against_the_table() {
+    let lathe = |o: &mut ParseOptions| o.machine = MachineKind::Lathe;
+    assert!(p_with("T0108", lathe).diagnostics.is_empty());
+    assert_eq!(codes(&p_with("T10000", lathe)), vec!["out-of-range"]);
+    let prog = p_with("T0150", |o| {
+        o.machine = MachineKind::Lathe;
+        o.table_size = 40;
+    });
+    assert_eq!(codes(&prog), vec!["out-of-range"]);
+}
+
+#[test]
+fn spec1_unclosed_comment_is_an_error() {
+    let prog = p("G00 X1. (OPEN\nG00 X2.");
+    assert_eq!(codes(&prog), vec!["unclosed-comment"]);
+    assert_eq!(prog.blocks.len(), 2);
+    assert_eq!(prog.diagnostics[0].column, 9);
+}
+
+#[test]
+fn spec1_characters_outside_words_are_errors() {
+    let prog = p("#100=1.\nG00 X[1+2]\nG00 X1. @");
+    assert_eq!(
+        codes(&prog),
+        vec![
+            "unexpected-character",
+            "missing-number",
+            "unexpected-character",
+            "unexpected-character",
+        ]
+    );
+    assert!(prog.diagnostics[0].message.contains("macro"));
+}
+
+#[test]
+fn spec1_unsupported_addresses_are_errors() {
+    let prog = p("G01 A90. X1.");
+    assert_eq!(codes(&prog), vec!["unsupported-address"]);
+    assert!(prog.diagnostics[0].message.contains("rotary"));
+}
+
+#[test]
+fn spec1_text_after_the_closing_percent_is_not_read() {
+    let prog = p("%\nG00 X1.\n%\nG00 X2.\n");
+    assert_eq!(prog.blocks.len(), 1);
+    assert_eq!(codes(&prog), vec!["text-after-tape-end"]);
+    assert_eq!(prog.diagnostics[0].line, 4);
+    // A closing % alone at the end is normal.
+    assert!(p("%\nG00 X1.\n%\n\n").diagnostics.is_empty());
+}
+
+#[test]
+fn spec1_k_in_a_canned_cycle_is_a_repeat_count() {
+    let prog = p("G81 X1. Y1. Z-5. R1. K3 F100.\nG80\nG02 X1. K1");
+    assert_eq!(value(&prog.blocks[0], Address::K), 3.0);
+    assert_eq!(value(&prog.blocks[2], Address::K), 0.001);
+}
+
+#[test]
+fn spec1_lathe_uses_system_a_g_codes() {
+    let lathe = |o: &mut ParseOptions| o.machine = MachineKind::Lathe;
+    let prog = p_with("G90 G00 X1.", lathe);
+    assert_eq!(codes(&prog), vec!["modal-conflict"]);
+    assert!(prog.diagnostics[0].message.contains("turning cycles"));
+    assert_eq!(codes(&p_with("G91 U1.", lathe)), vec!["unsupported-g-code"]);
+    assert_eq!(codes(&p_with("G43 H1", lathe)), vec!["unsupported-g-code"]);
+}
+
+#[test]
+fn spec1_word_spans() {
+    let prog = p("N10 G01 X12.5");
+    let x = prog.blocks[0].get(Address::X).unwrap();
+    assert_eq!((x.span.start, x.span.end, x.span.line), (8, 13, 1));
+    assert_eq!(prog.blocks[0].span, Span::new(0, 13, 1));
+}
+
+#[test]
+fn spec1_binary_junk_is_reported_not_fatal() {
+    let text = "G00\u{0}\u{7}X1.\u{1b}[0m\nG00 X\u{FFFD}";
+    let prog = p(text);
+    assert!(!prog.diagnostics.is_empty());
+    assert!(
+        prog.diagnostics
+            .iter()
+            .all(|d| d.line >= 1 && d.column >= 1)
+    );
+}
+
+#[test]
+fn too_many_diagnostics_are_capped() {
+    let text = "X1.2.3\n".repeat(MAX_DIAGNOSTICS + 50);
+    let prog = p(&text);
+    assert_eq!(prog.diagnostics.len(), MAX_DIAGNOSTICS + 1);
+    assert_eq!(
+        prog.diagnostics.last().unwrap().code,
+        "too-many-diagnostics"
+    );
+}

@@ -1,0 +1,321 @@
+//! The serialisable face of a run: the JSON the CLI prints and the objects
+//! the page receives through serde-wasm-bindgen are the same structures, so
+//! the two never disagree. Positions are converted to the block's units and
+//! rounded to a millionth; a lathe position has `x` (diameter) and `z` only.
+
+use serde::Serialize;
+use serde::ser::{SerializeStruct, Serializer};
+
+use crate::diag::{Diagnostic, Severity};
+use crate::machine::modal::ModalCodes;
+use crate::report::{BlockReport, End, Event, Move, MoveKind, Run, Xyz, round6, to_units};
+use crate::setup::{MachineKind, Units};
+
+/// A position in the units of its block.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Pos {
+    /// X (a diameter on the lathe).
+    pub x: f64,
+    /// Y (absent on the lathe).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub y: Option<f64>,
+    /// Z.
+    pub z: f64,
+}
+
+/// Converts a position (mm) for reporting.
+pub fn pos(p: Xyz, units: Units, machine: MachineKind) -> Pos {
+    Pos {
+        x: to_units(p[0], units),
+        y: (machine == MachineKind::Mill).then(|| to_units(p[1], units)),
+        z: to_units(p[2], units),
+    }
+}
+
+/// Tool length offset of a block (mill).
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct LengthView {
+    /// G43, G44 or G49.
+    pub mode: &'static str,
+    /// Active H number.
+    pub h: u16,
+    /// Value of register H.
+    pub value: f64,
+    /// The Z vector in the actual position.
+    pub vector: f64,
+    /// The Z vector the mode asks for (differs from `vector` until the next Z
+    /// move after G28 Z or with `length_offset_without_z = next_z`).
+    pub target: f64,
+}
+
+/// Tool position offset of a block (mill).
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct PositionView {
+    /// Active (modal) D number.
+    pub d: u16,
+    /// Value of register D.
+    pub value: f64,
+    /// The accumulated position-offset vector (seed 003: offset distance
+    /// from the programmed end point).
+    pub vector: Pos,
+}
+
+/// Lathe T-code offset of a block.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct LatheView {
+    /// Tool number.
+    pub tool: u32,
+    /// Offset number.
+    pub offset: u16,
+    /// The vector of the active offset (X diameter, Z).
+    pub value: Pos,
+    /// The vector in the actual position.
+    pub vector: Pos,
+}
+
+/// One block as reported.
+#[derive(Clone, Debug, Serialize)]
+pub struct BlockView<'a> {
+    /// Index in the run's blocks.
+    pub index: u32,
+    /// 1-based line.
+    pub line: u32,
+    /// 1-based column of the block's first character.
+    pub column: u32,
+    /// Column one past its last character.
+    pub end_column: u32,
+    /// The block's text.
+    pub text: &'a str,
+    /// Units of the block ("mm" or "inch").
+    pub units: &'static str,
+    /// Programmed position after the block.
+    pub programmed: Pos,
+    /// Actual position after the block.
+    pub actual: Pos,
+    /// Modal codes after the block.
+    pub modal: ModalCodes,
+    /// Modal feed.
+    pub feed: Option<f64>,
+    /// Spindle speed word.
+    pub spindle: Option<f64>,
+    /// Tool (mill: in the spindle after M06; lathe: of the T code).
+    pub tool: u32,
+    /// Mill: tool length offset.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub length_offset: Option<LengthView>,
+    /// Mill: tool position offset.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub position_offset: Option<PositionView>,
+    /// Lathe: T-code offset.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lathe_offset: Option<LatheView>,
+    /// What the offsets did (spec 6).
+    pub explanation: String,
+    /// Index of the block's first move.
+    pub first_move: u32,
+    /// Number of moves of the block.
+    pub move_count: u32,
+}
+
+/// Builds the report of one block.
+pub fn block_view<'a>(b: &BlockReport, text: &'a str) -> BlockView<'a> {
+    let s = &b.state;
+    let u = s.modal.units;
+    let m = s.machine;
+    let (column, end_column) = b.span.columns(text);
+    let mill = m == MachineKind::Mill;
+    let start = (b.span.start as usize).min(text.len());
+    let end = (b.span.end as usize).clamp(start, text.len());
+    BlockView {
+        index: b.index,
+        line: b.span.line,
+        column,
+        end_column,
+        text: text.get(start..end).unwrap_or(""),
+        units: u.as_str(),
+        programmed: pos(s.programmed, u, m),
+        actual: pos(s.actual, u, m),
+        modal: s.modal.codes(m),
+        feed: s.feed,
+        spindle: s.spindle,
+        tool: if mill { s.tool } else { s.lathe.tool },
+        length_offset: mill.then(|| LengthView {
+            mode: match s.length.sign {
+                1 => "G43",
+                -1 => "G44",
+                _ => "G49",
+            },
+            h: s.length.h,
+            value: to_units(s.length.value, u),
+            vector: to_units(s.length.vector, u),
+            target: to_units(s.length.target, u),
+        }),
+        position_offset: mill.then(|| PositionView {
+            d: s.position.d,
+            value: to_units(s.position.value, u),
+            vector: pos(s.position.vector, u, m),
+        }),
+        lathe_offset: (!mill).then(|| LatheView {
+            tool: s.lathe.tool,
+            offset: s.lathe.offset,
+            value: pos(s.lathe.target, u, m),
+            vector: pos(s.lathe.vector, u, m),
+        }),
+        explanation: b.explanation(),
+        first_move: b.first_move,
+        move_count: b.move_count,
+    }
+}
+
+/// The circle of an arc move as reported.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct ArcView {
+    /// G17, G18 or G19.
+    pub plane: &'static str,
+    /// "cw" or "ccw" (of the actual arc).
+    pub direction: &'static str,
+    /// Centre of the actual arc.
+    pub center: Pos,
+    /// Radius of the actual arc.
+    pub radius: f64,
+    /// Centre of the programmed arc.
+    pub programmed_center: Pos,
+    /// Radius of the programmed arc.
+    pub programmed_radius: f64,
+    /// Swept angle of the actual arc, degrees (positive counter-clockwise).
+    pub sweep_degrees: f64,
+}
+
+/// One move as reported.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct MoveView {
+    /// 1-based line of its block.
+    pub line: u32,
+    /// Index of its block.
+    pub block: u32,
+    /// rapid, feed, arc_cw, arc_ccw or offset.
+    pub kind: MoveKind,
+    /// For offset motion: "rapid" (G00 mode) or "feed" (G01 mode).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rate: Option<&'static str>,
+    /// Actual start.
+    pub from: Pos,
+    /// Actual end.
+    pub to: Pos,
+    /// Programmed start.
+    pub programmed_from: Pos,
+    /// Programmed end.
+    pub programmed_to: Pos,
+    /// Arc geometry.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub arc: Option<ArcView>,
+}
+
+/// Builds the report of one move.
+pub fn move_view(m: &Move, machine: MachineKind) -> MoveView {
+    let u = m.units;
+    let p = |x: Xyz| pos(x, u, machine);
+    MoveView {
+        line: m.line,
+        block: m.block,
+        kind: m.kind,
+        rate: (m.kind == MoveKind::Offset).then_some(if m.at_feed { "feed" } else { "rapid" }),
+        from: p(m.from),
+        to: p(m.to),
+        programmed_from: p(m.programmed_from),
+        programmed_to: p(m.programmed_to),
+        arc: m.arc.map(|a| ArcView {
+            plane: a.plane.gcode(),
+            direction: if a.sweep > 0.0 { "ccw" } else { "cw" },
+            center: p(a.center),
+            radius: to_units(a.radius, u),
+            programmed_center: p(a.programmed_center),
+            programmed_radius: to_units(a.programmed_radius, u),
+            sweep_degrees: round6(a.sweep.to_degrees()),
+        }),
+    }
+}
+
+/// Bounds of the actual path.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct BoundsView {
+    /// Smallest coordinates.
+    pub min: Pos,
+    /// Largest coordinates.
+    pub max: Pos,
+}
+
+/// Counts and bounds of a run.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct Summary {
+    /// Mill or lathe.
+    pub machine: MachineKind,
+    /// Units of the drawing and of the bounds.
+    pub units: Units,
+    /// Executed blocks.
+    pub blocks: u32,
+    /// Moves.
+    pub moves: usize,
+    /// Error diagnostics.
+    pub errors: usize,
+    /// Warning diagnostics.
+    pub warnings: usize,
+    /// Why execution ended.
+    pub end: End,
+    /// Bounds of the actual and programmed paths together.
+    pub bounds: Option<BoundsView>,
+}
+
+/// The summary of a run.
+pub fn summary(run: &Run) -> Summary {
+    let count = |s: Severity| run.diagnostics.iter().filter(|d| d.severity == s).count();
+    Summary {
+        machine: run.machine,
+        units: run.units,
+        blocks: run.block_count,
+        moves: run.moves.len(),
+        errors: count(Severity::Error),
+        warnings: count(Severity::Warning),
+        end: run.end,
+        bounds: run.bounds().map(|b| BoundsView {
+            min: pos(b.min, run.units, run.machine),
+            max: pos(b.max, run.units, run.machine),
+        }),
+    }
+}
+
+/// The whole run as the CLI's JSON object; blocks and moves are serialised
+/// one at a time, never collected.
+pub struct RunView<'a> {
+    /// The run.
+    pub run: &'a Run,
+    /// The program text it was made from.
+    pub text: &'a str,
+}
+
+struct Blocks<'a>(&'a Run, &'a str);
+struct Moves<'a>(&'a Run);
+
+impl Serialize for Blocks<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_seq(self.0.blocks.iter().map(|b| block_view(b, self.1)))
+    }
+}
+
+impl Serialize for Moves<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_seq(self.0.moves.iter().map(|m| move_view(m, self.0.machine)))
+    }
+}
+
+impl Serialize for RunView<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut st = s.serialize_struct("Run", 6)?;
+        st.serialize_field("summary", &summary(self.run))?;
+        st.serialize_field("blocks", &Blocks(self.run, self.text))?;
+        st.serialize_field("moves", &Moves(self.run))?;
+        st.serialize_field("events", &self.run.events as &[Event])?;
+        st.serialize_field("diagnostics", &self.run.diagnostics as &[Diagnostic])?;
+        st.end()
+    }
+}
