@@ -27,6 +27,7 @@ pub mod report;
 mod run;
 pub mod setup;
 pub mod syntax;
+pub mod toolpath;
 pub mod view;
 
 pub use diag::{Diagnostic, Severity, Span};
@@ -34,3 +35,4 @@ pub use report::{BlockReport, End, Event, Move, MoveKind, Run};
 pub use run::{MAX_MOVES, RunOptions, run, run_with};
 pub use setup::{MachineKind, Setup, Units};
 pub use syntax::{ParseOptions, Program, parse};
+pub use toolpath::Toolpath;

@@ -1,0 +1,198 @@
+//! The toolpath for drawing: struct-of-arrays, one run of vertices per move,
+//! arcs tessellated within [`CHORD_TOLERANCE_MM`]. The actual and the
+//! programmed path have the same number of vertices per move, so vertex `i`
+//! of one corresponds to vertex `i` of the other. Coordinates are in the
+//! run's display units ([`Run::units`]); on the lathe X stays a diameter.
+//!
+//! This is what crosses the wasm boundary as typed arrays, never one object
+//! per move.
+
+use crate::machine::arc::{CHORD_TOLERANCE_MM, Circle};
+use crate::report::{ArcInfo, Move, Run, Xyz};
+use crate::setup::{MachineKind, Units};
+
+pub use crate::machine::arc::CHORD_TOLERANCE_MM as CHORD_TOLERANCE;
+
+/// Drawable toolpath.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Toolpath {
+    /// Units of every coordinate.
+    pub units: Units,
+    /// Mill or lathe (the lathe's X is a diameter).
+    pub machine: MachineKind,
+    /// Actual path vertices, x y z interleaved.
+    pub actual: Vec<f64>,
+    /// Programmed path vertices, x y z interleaved, same count as `actual`.
+    pub programmed: Vec<f64>,
+    /// Index of each move's first vertex, plus one final entry: the vertex
+    /// count. Move `i` spans vertices `starts[i]..starts[i + 1]`.
+    pub starts: Vec<u32>,
+    /// Per move: [`crate::MoveKind::code`] (0 rapid, 1 feed, 2 arc cw,
+    /// 3 arc ccw, 4 offset at rapid, 5 offset at feed).
+    pub kinds: Vec<u8>,
+    /// Per move: index of its block.
+    pub blocks: Vec<u32>,
+    /// Per move: 1-based source line.
+    pub lines: Vec<u32>,
+}
+
+impl Toolpath {
+    /// Builds the toolpath of a run.
+    pub fn from_run(run: &Run) -> Toolpath {
+        let mut t = Toolpath {
+            units: run.units,
+            machine: run.machine,
+            ..Toolpath::default()
+        };
+        let k = 1.0 / run.units.mm();
+        for m in &run.moves {
+            t.starts.push(t.vertex_count() as u32);
+            t.kinds.push(m.kind.code(m.at_feed));
+            t.blocks.push(m.block);
+            t.lines.push(m.line);
+            match &m.arc {
+                None => {
+                    t.push(m.from, m.programmed_from, k);
+                    t.push(m.to, m.programmed_to, k);
+                }
+                Some(a) => t.push_arc(m, a, k),
+            }
+        }
+        t.starts.push(t.vertex_count() as u32);
+        t
+    }
+
+    /// Number of moves.
+    pub fn len(&self) -> usize {
+        self.kinds.len()
+    }
+
+    /// True without moves.
+    pub fn is_empty(&self) -> bool {
+        self.kinds.is_empty()
+    }
+
+    /// Number of vertices.
+    pub fn vertex_count(&self) -> usize {
+        self.actual.len() / 3
+    }
+
+    fn push(&mut self, actual: Xyz, programmed: Xyz, k: f64) {
+        self.actual.extend(actual.map(|v| v * k));
+        self.programmed.extend(programmed.map(|v| v * k));
+    }
+
+    fn push_arc(&mut self, m: &Move, a: &ArcInfo, k: f64) {
+        let (ia, ib, n) = a.plane.axes();
+        let s = |i: usize| if a.diameter_x && i == 0 { 0.5 } else { 1.0 };
+        let circle = |c: Xyz, r: f64, from: Xyz, sweep: f64| {
+            let center = [c[ia] * s(ia), c[ib] * s(ib)];
+            Circle {
+                center,
+                radius: r,
+                start_angle: (from[ib] * s(ib) - center[1]).atan2(from[ia] * s(ia) - center[0]),
+                sweep,
+            }
+        };
+        let act = circle(a.center, a.radius, m.from, a.sweep);
+        let prog = circle(
+            a.programmed_center,
+            a.programmed_radius,
+            m.programmed_from,
+            a.programmed_sweep,
+        );
+        let count = act
+            .segments(CHORD_TOLERANCE_MM)
+            .max(prog.segments(CHORD_TOLERANCE_MM));
+        let point = |c: &Circle, from: Xyz, to: Xyz, i: usize| -> Xyz {
+            if i == count {
+                return to;
+            }
+            let t = i as f64 / count as f64;
+            let q = c.point(t);
+            let mut p = from;
+            p[ia] = q[0] / s(ia);
+            p[ib] = q[1] / s(ib);
+            p[n] = from[n] + (to[n] - from[n]) * t;
+            p
+        };
+        for i in 0..=count {
+            let pa = if i == 0 { m.from } else { point(&act, m.from, m.to, i) };
+            let pp = if i == 0 {
+                m.programmed_from
+            } else {
+                point(&prog, m.programmed_from, m.programmed_to, i)
+            };
+            self.push(pa, pp, k);
+        }
+    }
+
+    /// Bounds of both paths: (min, max), or None without moves.
+    pub fn bounds(&self) -> Option<(Xyz, Xyz)> {
+        if self.actual.is_empty() {
+            return None;
+        }
+        let mut min = [f64::INFINITY; 3];
+        let mut max = [f64::NEG_INFINITY; 3];
+        for chunk in self.actual.chunks_exact(3).chain(self.programmed.chunks_exact(3)) {
+            for i in 0..3 {
+                min[i] = min[i].min(chunk[i]);
+                max[i] = max[i].max(chunk[i]);
+            }
+        }
+        Some((min, max))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Setup, run};
+
+    #[test]
+    fn one_vertex_run_per_move_and_equal_lengths() {
+        let mut setup = Setup::default();
+        setup.set_register("01=6").unwrap();
+        let r = run(
+            "G91 G00 G46 X30. Y20. D01\nG01 G47 X80. F200.\nG03 X-10. Y10. I-10. F100.",
+            &setup,
+        );
+        assert!(!r.has_errors(), "{:?}", r.diagnostics);
+        let t = Toolpath::from_run(&r);
+        assert_eq!(t.len(), 3);
+        assert_eq!(t.starts.len(), 4);
+        assert_eq!(t.actual.len(), t.programmed.len());
+        assert_eq!(*t.starts.last().unwrap() as usize, t.vertex_count());
+        assert_eq!(&t.actual[3..6], &[24.0, 14.0, 0.0]);
+        assert_eq!(t.kinds, vec![0, 1, 3]);
+        // The arc ends exactly where the move ends.
+        let last = &t.programmed[t.programmed.len() - 3..];
+        assert_eq!(last, &[100.0, 30.0, 0.0]);
+        assert!(t.starts[3] - t.starts[2] > 10, "arcs are tessellated");
+    }
+
+    #[test]
+    fn arc_vertices_lie_on_the_circle_within_tolerance() {
+        let r = run("G02 X20. Y0 I10. J0 F100.", &Setup::default());
+        let t = Toolpath::from_run(&r);
+        for p in t.actual.chunks_exact(3) {
+            let d = ((p[0] - 10.0).powi(2) + p[1].powi(2)).sqrt();
+            assert!((d - 10.0).abs() < 1e-9);
+        }
+        // Chord midpoints stay within the tolerance.
+        let v: Vec<&[f64]> = t.actual.chunks_exact(3).collect();
+        for w in v.windows(2) {
+            let mx = (w[0][0] + w[1][0]) / 2.0 - 10.0;
+            let my = (w[0][1] + w[1][1]) / 2.0;
+            assert!(10.0 - (mx * mx + my * my).sqrt() <= CHORD_TOLERANCE + 1e-12);
+        }
+    }
+
+    #[test]
+    fn inch_runs_are_drawn_in_inches() {
+        let r = run("G20\nG01 X1. F10.", &Setup::default());
+        let t = Toolpath::from_run(&r);
+        assert_eq!(t.units, Units::Inch);
+        assert!((t.actual[3] - 1.0).abs() < 1e-12);
+    }
+}
