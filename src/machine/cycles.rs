@@ -51,7 +51,7 @@ impl Machine<'_> {
         &mut self,
         b: &Block,
         out: &mut Out,
-        length_changed: bool,
+        old_length: crate::report::LengthState,
     ) -> Result<(), Diagnostic> {
         let code = self.state.modal.cycle.0;
         let (ia, ib, n) = self.state.modal.plane.axes();
@@ -79,17 +79,16 @@ impl Machine<'_> {
         }
         let drills = [ia, ib, n].iter().any(|&i| b.has(AXES[i].0)) || b.has(Address::R);
         if !drills {
-            if length_changed {
+            if super::mill::changed(&old_length, &self.state.length) {
                 // An offset change without a hole: made as offset motion at rapid,
                 // the cycles' positioning rate.
-                let old = self.state.length;
                 let start = self.mark();
                 if self.setup.settings.length_offset_without_z
                     == crate::setup::LengthOffsetWithoutZ::Move
                 {
                     self.state.length.vector = self.state.length.target;
                 }
-                self.length_note(old, None, out);
+                self.length_note(old_length, None, out);
                 self.emit(out, start, MoveKind::Offset, false, None);
             }
             return Ok(());
@@ -113,7 +112,6 @@ impl Machine<'_> {
             .or_else(|| b.value(Address::L))
             .map_or(1, |k| k as u32);
         let words = [ia, ib].map(|i| b.value(AXES[i].0).map(|v| self.mm(v)));
-        let old_length = self.state.length;
         for _ in 0..repeats {
             // 1. Position over the hole at the current level.
             let start = self.mark();

@@ -73,23 +73,27 @@ impl Machine<'_> {
             Some(code @ 45..=48) => return self.position_offset_block(b, c, code, out),
             _ => {}
         }
-        let length_changed = self.length_words(b, c, out)?;
+        let old_length = self.length_words(b, c, out)?;
         if self.state.modal.cycle.active() {
-            self.cycle_block(b, out, length_changed)
+            self.cycle_block(b, out, old_length)
         } else {
-            self.mill_motion(b, out, length_changed, None)
+            self.mill_motion(b, out, old_length, None)
         }
     }
 
-    /// G43/G44/G49 and H (spec 3). Returns true if the vector the mode asks
-    /// for changed.
-    fn length_words(&mut self, b: &Block, c: &Codes, out: &mut Out) -> Result<bool, Diagnostic> {
+    /// G43/G44/G49 and H (spec 3). Returns the state before the block.
+    fn length_words(
+        &mut self,
+        b: &Block,
+        c: &Codes,
+        out: &mut Out,
+    ) -> Result<LengthState, Diagnostic> {
         let code = c.get(Group::Length);
         let h = b.get(Address::H);
-        if code.is_none() && h.is_none() {
-            return Ok(false);
-        }
         let old = self.state.length;
+        if code.is_none() && h.is_none() {
+            return Ok(old);
+        }
         if self.state.modal.motion.is_arc() && (code.is_some() || old.sign != 0) {
             // Spec 3.7 (YASNAC J50M): no length offset change in G02/G03 mode.
             let span =
@@ -123,7 +127,7 @@ impl Machine<'_> {
                 ),
             ));
         }
-        Ok(l.target != old.target || l.sign != old.sign || l.h != old.h)
+        Ok(old)
     }
 
     /// The motion of a block without G28/G92/G04 and outside canned cycles,
@@ -132,9 +136,10 @@ impl Machine<'_> {
         &mut self,
         b: &Block,
         out: &mut Out,
-        length_changed: bool,
+        old_length: LengthState,
         pos: Option<u16>,
     ) -> Result<(), Diagnostic> {
+        let length_changed = changed(&old_length, &self.state.length);
         let motion = self.state.modal.motion;
         let incremental = self.state.modal.distance == Distance::Incremental;
         let words: [Option<f64>; 3] = AXES.map(|(a, _)| b.value(a));
@@ -142,7 +147,6 @@ impl Machine<'_> {
         let centre_words = [Address::I, Address::J, Address::K].map(|a| b.value(a));
         let arc_words =
             motion.is_arc() && (centre_words.iter().any(Option::is_some) || b.has(Address::R));
-        let old_length = self.state.length;
         let setting = self.setup.settings.length_offset_without_z;
 
         if !any_axis && !arc_words {
@@ -413,8 +417,8 @@ impl Machine<'_> {
                 ),
             ));
         }
-        let length_changed = self.length_words(b, c, out)?;
-        self.mill_motion(b, out, length_changed, Some(code))
+        let old_length = self.length_words(b, c, out)?;
+        self.mill_motion(b, out, old_length, Some(code))
     }
 
     /// G92 X… Y… Z…: sets the programmed position; the G45–G48 vector on each
@@ -604,6 +608,11 @@ impl Machine<'_> {
         };
         out.notes.push(format!("{label}: {effect}"));
     }
+}
+
+/// True if a block changed the length offset mode, number or target.
+pub(super) fn changed(old: &LengthState, new: &LengthState) -> bool {
+    old.target != new.target || old.sign != new.sign || old.h != new.h
 }
 
 /// "G45" … "G48" with the manual's meaning.

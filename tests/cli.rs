@@ -1,0 +1,283 @@
+//! The CLI contract (issue 2, item 4): `run --format json`, `run --format
+//! table`, `check`, options, and exit statuses — by running the binary.
+#![cfg(not(target_arch = "wasm32"))]
+
+use std::io::Write;
+use std::process::{Command, Output, Stdio};
+
+use serde_json::Value;
+
+const SQUARE: &str = "(SEED 000 SQUARE)\nG90 G00 X-30. Y-20.;\nG91 G00 G46 X30. Y20. D01;\nG01 G47 X80. F200.;\nG47 Y50.;\nG47 X-80.;\nG47 Y-50.;\nG00 G46 X-30. Y-20.;\n";
+
+fn offsetlab(args: &[&str], stdin: &[u8]) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_offsetlab"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("binary runs");
+    child.stdin.take().unwrap().write_all(stdin).unwrap();
+    child.wait_with_output().unwrap()
+}
+
+fn json(args: &[&str], stdin: &str) -> (Value, i32) {
+    let out = offsetlab(args, stdin.as_bytes());
+    let v: Value = serde_json::from_slice(&out.stdout)
+        .unwrap_or_else(|e| panic!("not JSON ({e}): {}", String::from_utf8_lossy(&out.stdout)));
+    (v, out.status.code().unwrap())
+}
+
+fn temp_file(name: &str, content: &[u8]) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("offsetlab-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join(name);
+    std::fs::write(&p, content).unwrap();
+    p
+}
+
+#[test]
+fn run_json_has_blocks_moves_and_diagnostics() {
+    let (v, code) = json(
+        &["run", "--format", "json", "--offset", "01=6.0", "-"],
+        SQUARE,
+    );
+    assert_eq!(code, 0);
+    let blocks = v["blocks"].as_array().unwrap();
+    // One entry per executed block: the comment line has none.
+    assert_eq!(blocks.len(), 7);
+    let b = &blocks[1];
+    assert_eq!(b["line"], 3);
+    assert_eq!(
+        b["programmed"],
+        serde_json::json!({"x": 0.0, "y": 0.0, "z": 0.0})
+    );
+    assert_eq!(
+        b["actual"],
+        serde_json::json!({"x": -6.0, "y": -6.0, "z": 0.0})
+    );
+    assert!(
+        b["explanation"]
+            .as_str()
+            .unwrap()
+            .contains("reduced by D01 (6.000)")
+    );
+    assert_eq!(b["position_offset"]["vector"]["x"], -6.0);
+    let moves = v["moves"].as_array().unwrap();
+    assert_eq!(moves.len(), 7);
+    assert_eq!(moves[0]["kind"], "rapid");
+    assert_eq!(moves[2]["kind"], "feed");
+    assert_eq!(moves[2]["line"], 4);
+    assert_eq!(
+        moves[2]["from"],
+        serde_json::json!({"x": -6.0, "y": -6.0, "z": 0.0})
+    );
+    assert_eq!(
+        moves[2]["to"],
+        serde_json::json!({"x": 86.0, "y": -6.0, "z": 0.0})
+    );
+    assert_eq!(
+        moves[2]["programmed_to"],
+        serde_json::json!({"x": 80.0, "y": 0.0, "z": 0.0})
+    );
+    assert_eq!(v["diagnostics"], serde_json::json!([]));
+}
+
+#[test]
+fn run_json_two_blocks_on_one_line_share_the_line() {
+    let (v, _) = json(
+        &["run", "--format", "json", "-"],
+        "G00 X1.;G00 X2.\nG00 X3.",
+    );
+    let lines: Vec<i64> = v["blocks"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|b| b["line"].as_i64().unwrap())
+        .collect();
+    assert_eq!(lines, vec![1, 1, 2]);
+}
+
+#[test]
+fn run_json_diagnostics_have_severity_code_message_line_column() {
+    let (v, code) = json(
+        &["run", "--format", "json", "-"],
+        "G00 X1.\nG01 X1.2.3 F100.",
+    );
+    assert_eq!(code, 1);
+    let d = &v["diagnostics"][0];
+    assert_eq!(d["severity"], "error");
+    assert_eq!(d["code"], "malformed-number");
+    assert_eq!(d["line"], 2);
+    assert_eq!(d["column"], 5);
+    assert!(d["message"].as_str().unwrap().contains("1.2.3"));
+    assert_eq!(v["blocks"].as_array().unwrap().len(), 1);
+}
+
+#[test]
+fn run_json_arcs_and_offset_moves() {
+    let (v, _) = json(
+        &["run", "--format", "json", "--offset", "2=15", "-"],
+        "G90 G00 Z50.\nG43 H02\nG01 X10. F100.\nG02 X20. R5.\nG03 X30. R5.",
+    );
+    let kinds: Vec<&str> = v["moves"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|m| m["kind"].as_str().unwrap())
+        .collect();
+    assert_eq!(kinds, vec!["rapid", "offset", "feed", "arc_cw", "arc_ccw"]);
+    assert_eq!(v["moves"][1]["rate"], "rapid");
+    let arc = &v["moves"][3]["arc"];
+    assert_eq!(
+        arc["center"],
+        serde_json::json!({"x": 15.0, "y": 0.0, "z": 65.0})
+    );
+    assert_eq!(arc["direction"], "cw");
+}
+
+#[test]
+fn run_json_lathe_positions_have_x_and_z() {
+    let (v, code) = json(
+        &[
+            "run",
+            "--format",
+            "json",
+            "--machine",
+            "lathe",
+            "--offset",
+            "08=X0.4,Z-0.2",
+            "-",
+        ],
+        "G50 X120. Z60.;\nG00 S800 M03 T0108;\nX50. Z3.;\nT0100;",
+    );
+    assert_eq!(code, 0);
+    let b = &v["blocks"][1];
+    assert_eq!(b["actual"], serde_json::json!({"x": 120.4, "z": 59.8}));
+    assert_eq!(
+        v["blocks"][2]["actual"],
+        serde_json::json!({"x": 50.4, "z": 2.8})
+    );
+    assert_eq!(
+        v["blocks"][3]["actual"],
+        serde_json::json!({"x": 50.0, "z": 3.0})
+    );
+}
+
+#[test]
+fn run_table_is_readable() {
+    let out = offsetlab(&["run", "--offset", "01=6", "-"], SQUARE.as_bytes());
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8(out.stdout).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert!(
+        lines[0].contains("LINE") && lines[0].contains("PROGRAMMED") && lines[0].contains("ACTUAL")
+    );
+    assert!(lines[2].contains("G91 G00 G46 X30. Y20. D01"));
+    assert!(lines[2].contains("X-6.000 Y-6.000 Z0.000"));
+    assert!(lines[3].contains("2 × D01 (6.000)"));
+}
+
+#[test]
+fn check_prints_file_line_col_and_a_summary() {
+    let path = temp_file("bad.nc", b"G00 X10.\nG01 X1.2.3\nG01 Y\n");
+    let out = offsetlab(&["check", path.to_str().unwrap()], b"");
+    assert_eq!(out.status.code(), Some(1));
+    let text = String::from_utf8(out.stdout).unwrap();
+    let p = path.display();
+    assert!(
+        text.contains(&format!("{p}:2:5: error[malformed-number]:")),
+        "{text}"
+    );
+    assert!(
+        text.contains(&format!("{p}:3:5: error[missing-number]:")),
+        "{text}"
+    );
+    let last = text.lines().last().unwrap();
+    assert!(
+        last.contains("1 blocks") && last.contains("1 moves") && last.contains("2 errors"),
+        "{last}"
+    );
+}
+
+#[test]
+fn check_clean_program_exits_zero_with_bounds() {
+    let out = offsetlab(&["check", "--offset", "01=6", "-"], SQUARE.as_bytes());
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(
+        text.trim(),
+        "<stdin>: 7 blocks, 7 moves, bounds X-30.000..86.000 Y-20.000..56.000 Z0.000..0.000 mm; 0 errors, 0 warnings"
+    );
+}
+
+#[test]
+fn check_warnings_do_not_fail() {
+    let out = offsetlab(&["check", "-"], b"G01 X12345\n");
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        text.contains("<stdin>:1:5: warning[integer-dimension]"),
+        "{text}"
+    );
+    assert!(
+        text.contains("<stdin>:1:1: warning[missing-feed]"),
+        "{text}"
+    );
+}
+
+#[test]
+fn setup_file_is_read_and_options_override_it() {
+    let setup = temp_file(
+        "setup.json",
+        br#"{"version": 1, "machine": "mill", "offsets": {"01": {"geometry": 5.0, "wear": 1.0}}}"#,
+    );
+    let s = setup.to_str().unwrap();
+    let (v, _) = json(
+        &["run", "--format", "json", "--setup", s, "-"],
+        "G91 G45 X10. D01",
+    );
+    assert_eq!(v["blocks"][0]["actual"]["x"], 16.0);
+    let (v, _) = json(
+        &[
+            "run", "--format", "json", "--setup", s, "--offset", "1=2", "-",
+        ],
+        "G91 G45 X10. D01",
+    );
+    assert_eq!(v["blocks"][0]["actual"]["x"], 12.0);
+}
+
+#[test]
+fn bad_usage_and_unreadable_input_exit_2() {
+    let cases: Vec<(Vec<&str>, &[u8], &str)> = vec![
+        (vec!["run", "--bogus", "-"], b"", "unexpected argument"),
+        (vec!["run"], b"", "PROGRAM"),
+        (vec!["run", "--offset", "01", "-"], b"", "NN=VALUE"),
+        (vec!["run", "--offset", "01=1000", "-"], b"", "999.999"),
+        (vec!["run", "/nonexistent/file.nc"], b"", "cannot read"),
+        (
+            vec!["run", "--setup", "/nonexistent.json", "-"],
+            b"",
+            "cannot read setup",
+        ),
+        (vec!["run", "-"], b"G00 X1.\n\xff\xfe", "offset 8"),
+    ];
+    for (args, stdin, msg) in cases {
+        let out = offsetlab(&args, stdin);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(msg), "{args:?}: {err}");
+        assert!(!err.contains("panicked"), "{err}");
+    }
+    let setup = temp_file("bad-setup.json", br#"{"versoin": 1}"#);
+    let out = offsetlab(&["check", "--setup", setup.to_str().unwrap(), "-"], b"");
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("unknown field `versoin`"));
+}
+
+#[test]
+fn empty_program_is_fine() {
+    let out = offsetlab(&["check", "-"], b"");
+    assert_eq!(out.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("0 blocks, 0 moves, no motion"));
+}

@@ -1,0 +1,81 @@
+//! Helpers shared by the native integration tests.
+#![allow(dead_code)]
+
+use offsetlab::report::{Run, Xyz};
+use offsetlab::view::{BlockView, block_view};
+use offsetlab::{MachineKind, Setup, run};
+
+/// A mill setup with registers `(number, value)`.
+pub fn mill(registers: &[(u16, f64)]) -> Setup {
+    let mut s = Setup::default();
+    for (n, v) in registers {
+        s.set_register(&format!("{n}={v}")).unwrap();
+    }
+    s
+}
+
+/// A lathe setup with registers `(number, x, z)`.
+pub fn lathe(registers: &[(u16, f64, f64)]) -> Setup {
+    let mut s = Setup {
+        machine: MachineKind::Lathe,
+        ..Setup::default()
+    };
+    for (n, x, z) in registers {
+        s.set_register(&format!("{n}=X{x},Z{z}")).unwrap();
+    }
+    s
+}
+
+/// Runs and asserts that no error was reported.
+pub fn ok(text: &str, setup: &Setup) -> Run {
+    let r = run(text, setup);
+    assert!(!r.has_errors(), "unexpected errors: {:#?}", r.diagnostics);
+    r
+}
+
+/// Runs and returns the error codes (errors only).
+pub fn errors(text: &str, setup: &Setup) -> Vec<&'static str> {
+    run(text, setup)
+        .diagnostics
+        .iter()
+        .filter(|d| d.is_error())
+        .map(|d| d.code)
+        .collect()
+}
+
+/// The report of the block on `line` (the last one if two share it).
+pub fn at_line<'a>(r: &'a Run, text: &'a str, line: u32) -> BlockView<'a> {
+    let b = r
+        .blocks
+        .iter()
+        .rev()
+        .find(|b| b.span.line == line)
+        .unwrap_or_else(|| panic!("no block on line {line}"));
+    block_view(b, text)
+}
+
+/// Asserts two positions are equal to a micrometre.
+#[track_caller]
+pub fn same(got: Xyz, want: Xyz) {
+    for i in 0..3 {
+        assert!(
+            (got[i] - want[i]).abs() < 1e-6,
+            "got {got:?}, want {want:?}"
+        );
+    }
+}
+
+/// Actual position after block `i` (mm).
+pub fn actual(r: &Run, i: usize) -> Xyz {
+    r.blocks[i].state.actual
+}
+
+/// Programmed position after block `i` (mm).
+pub fn programmed(r: &Run, i: usize) -> Xyz {
+    r.blocks[i].state.programmed
+}
+
+/// The explanation of block `i`.
+pub fn explain(r: &Run, i: usize) -> String {
+    r.blocks[i].explanation()
+}
