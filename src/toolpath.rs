@@ -117,7 +117,11 @@ impl Toolpath {
             p
         };
         for i in 0..=count {
-            let pa = if i == 0 { m.from } else { point(&act, m.from, m.to, i) };
+            let pa = if i == 0 {
+                m.from
+            } else {
+                point(&act, m.from, m.to, i)
+            };
             let pp = if i == 0 {
                 m.programmed_from
             } else {
@@ -134,7 +138,11 @@ impl Toolpath {
         }
         let mut min = [f64::INFINITY; 3];
         let mut max = [f64::NEG_INFINITY; 3];
-        for chunk in self.actual.chunks_exact(3).chain(self.programmed.chunks_exact(3)) {
+        for chunk in self
+            .actual
+            .chunks_exact(3)
+            .chain(self.programmed.chunks_exact(3))
+        {
             for i in 0..3 {
                 min[i] = min[i].min(chunk[i]);
                 max[i] = max[i].max(chunk[i]);
