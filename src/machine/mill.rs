@@ -604,6 +604,7 @@ impl Machine<'_> {
                 "no Z word: no motion now; the next Z move lands offset (setting length_offset_without_z = next_z)"
                     .to_string()
             }
+            None if old.vector == 0.0 => "no motion (no length vector was applied)".to_string(),
             None => "no motion".to_string(),
         };
         out.notes.push(format!("{label}: {effect}"));
