@@ -9,19 +9,25 @@ use crate::report::{BlockReport, End, Event, Run};
 use crate::setup::Setup;
 use crate::syntax::{Block, Blocks, ParseOptions};
 
-/// Most moves one run records; past this the run stops with an error.
-pub const MAX_MOVES: usize = 20_000_000;
+/// Most moves one run records by default; past this the run stops with an
+/// error (a move is about 200 bytes: 5 million is about 1 GB).
+pub const MAX_MOVES: usize = 5_000_000;
 
 /// What to keep of a run.
 #[derive(Clone, Copy, Debug)]
 pub struct RunOptions {
     /// Keep a report per block (the `check` fast path does not need them).
     pub keep_blocks: bool,
+    /// Most moves to record before stopping with `too-many-moves`.
+    pub max_moves: usize,
 }
 
 impl Default for RunOptions {
     fn default() -> Self {
-        RunOptions { keep_blocks: true }
+        RunOptions {
+            keep_blocks: true,
+            max_moves: MAX_MOVES,
+        }
     }
 }
 
@@ -71,6 +77,7 @@ pub fn run_with(text: &str, setup: &Setup, options: RunOptions) -> Run {
         }
         out.clear();
         let index = result.block_count;
+        machine.moves_left = options.max_moves.saturating_sub(result.moves.len());
         let flow = match machine.execute(&block, index, &mut out) {
             Ok(flow) => flow,
             Err(d) => {
@@ -82,18 +89,6 @@ pub fn run_with(text: &str, setup: &Setup, options: RunOptions) -> Run {
                 continue;
             }
         };
-        if result.moves.len() + out.moves.len() > MAX_MOVES {
-            run_diagnostics.push(Diagnostic::error(
-                "too-many-moves",
-                block.span,
-                format!("the program makes more than {MAX_MOVES} moves; the run stops here"),
-            ));
-            result.end = End::Error {
-                line: block.span.line,
-            };
-            stopped = true;
-            continue;
-        }
         if !units_known && !out.moves.is_empty() {
             units_known = true;
             result.units = machine.state().modal.units;

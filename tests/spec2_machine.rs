@@ -458,3 +458,24 @@ fn spec2_a_setup_start_position_and_bad_setup() {
     assert_eq!(r.diagnostics[0].code, "setup-range");
     assert_eq!(r.block_count, 0);
 }
+
+#[test]
+fn limits_a_block_that_would_make_too_many_moves_stops_with_an_error() {
+    let options = offsetlab::RunOptions {
+        max_moves: 100,
+        ..offsetlab::RunOptions::default()
+    };
+    let text = "G90 G00 Z10.\nG91 G81 X1. Z-5. R-8. K9999 F100.\nG00 X0";
+    let r = offsetlab::run_with(text, &mill(&[]), options);
+    assert_eq!(r.end, End::Error { line: 2 });
+    assert!(r.moves.len() <= 100);
+    assert_eq!(r.diagnostics.last().unwrap().code, "too-many-moves");
+    // Pecks are limited per hole as well.
+    assert_eq!(
+        errors(
+            "G90 G00 Z10.\nG83 X0 Y0 Z-99999. R1. Q0.001 F100.",
+            &mill(&[])
+        ),
+        vec!["cycle-pecks"]
+    );
+}

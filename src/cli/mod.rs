@@ -94,7 +94,14 @@ fn execute(cli: Cli) -> Result<ExitCode, Fatal> {
     let mut out = BufWriter::new(stdout.lock());
     let result = match format {
         Some(format) => {
-            let run = run_with(&text, &setup, RunOptions { keep_blocks: true });
+            let run = run_with(
+                &text,
+                &setup,
+                RunOptions {
+                    keep_blocks: true,
+                    ..RunOptions::default()
+                },
+            );
             let written = match format {
                 Format::Json => serde_json::to_writer(
                     &mut out,
@@ -110,7 +117,14 @@ fn execute(cli: Cli) -> Result<ExitCode, Fatal> {
             (written, run.has_errors())
         }
         None => {
-            let run = run_with(&text, &setup, RunOptions { keep_blocks: false });
+            let run = run_with(
+                &text,
+                &setup,
+                RunOptions {
+                    keep_blocks: false,
+                    ..RunOptions::default()
+                },
+            );
             (check(&mut out, &name, &run), run.has_errors())
         }
     };

@@ -113,6 +113,9 @@ impl Machine<'_> {
             .map_or(1, |k| k as u32);
         let words = [ia, ib].map(|i| b.value(AXES[i].0).map(|v| self.mm(v)));
         for _ in 0..repeats {
+            if self.overflow {
+                break;
+            }
             // 1. Position over the hole at the current level.
             let start = self.mark();
             for (k, &axis) in [ia, ib].iter().enumerate() {
@@ -203,7 +206,7 @@ impl Machine<'_> {
                 }
                 let clearance = self.setup.peck_retract_mm();
                 let mut depth = r;
-                loop {
+                while !self.overflow {
                     let next = if (bottom - depth).abs() <= q {
                         bottom
                     } else {

@@ -108,6 +108,12 @@ pub struct Machine<'s> {
     index: u32,
     line: u32,
     span: Span,
+    /// Moves this run may still record; a block that would make more stops
+    /// with an error instead of filling memory (one G83 block with a tiny Q
+    /// and K9999 could otherwise make hundreds of millions).
+    pub(crate) moves_left: usize,
+    /// Set when a block ran out of `moves_left`.
+    overflow: bool,
 }
 
 fn add(a: Xyz, b: Xyz) -> Xyz {
@@ -164,6 +170,8 @@ impl<'s> Machine<'s> {
             index: 0,
             line: 0,
             span: Span::default(),
+            moves_left: usize::MAX,
+            overflow: false,
         }
     }
 
@@ -183,10 +191,18 @@ impl<'s> Machine<'s> {
         self.index = index;
         self.line = block.span.line;
         self.span = block.span;
+        self.overflow = false;
         let codes = Codes::of(block, self.setup.machine);
         match self.setup.machine {
             MachineKind::Mill => self.mill_block(block, &codes, out)?,
             MachineKind::Lathe => self.lathe_block(block, &codes, out)?,
+        }
+        if self.overflow {
+            return Err(self.error(
+                "too-many-moves",
+                block.span,
+                "the program makes more moves than the run may record (see the limits in the README); the run stops here",
+            ));
         }
         self.state.actual = self.actual();
         for v in self.state.actual.iter().chain(&self.state.programmed) {
@@ -261,6 +277,10 @@ impl<'s> Machine<'s> {
         let to = self.actual();
         let prog = self.state.programmed;
         if arc.is_none() && from.act == to && from.prog == prog {
+            return;
+        }
+        if out.moves.len() >= self.moves_left {
+            self.overflow = true;
             return;
         }
         let feed = matches!(kind, MoveKind::Feed | MoveKind::ArcCw | MoveKind::ArcCcw)

@@ -9,14 +9,15 @@
 //! time into a reused buffer, so a million-block program is never held as a
 //! tree. [`parse`] collects the blocks for tools and tests.
 
+mod block;
 pub mod codes;
 mod lexer;
 
-use serde::Serialize;
+pub use block::{Address, Block, Word, WordKind};
 
 use crate::diag::{Diagnostic, Span};
 use crate::setup::{DecimalInput, MachineKind, Setup, Units};
-use codes::{GCode, Group, g_group, m_group};
+use codes::{Group, g_group, m_group};
 use lexer::{Number, NumberError};
 
 /// Most diagnostics one program reports; past this one more says so.
@@ -27,193 +28,6 @@ const MAX_INTEGER: u64 = 99_999_999;
 
 /// Largest repeat count (K/L) of a canned cycle.
 pub const MAX_REPEATS: u64 = 9999;
-
-/// The address letters offsetlab reads.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
-#[allow(missing_docs)]
-pub enum Address {
-    D,
-    F,
-    G,
-    H,
-    I,
-    J,
-    K,
-    L,
-    M,
-    N,
-    O,
-    P,
-    Q,
-    R,
-    S,
-    T,
-    U,
-    W,
-    X,
-    Y,
-    Z,
-}
-
-/// How a word's number is read.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum WordKind {
-    /// Always an integer, no decimal point (G M N O T D H S P L; spec 1).
-    Integer,
-    /// Feed rate: read in units with or without a decimal point (spec 1).
-    Feed,
-    /// Dimension words X Y Z U W I J K R Q: decimal input applies (spec 1).
-    Dimension,
-}
-
-impl Address {
-    /// The address for an upper-case letter, if offsetlab reads it.
-    pub fn from_letter(c: u8) -> Option<Address> {
-        use Address::*;
-        Some(match c {
-            b'D' => D,
-            b'F' => F,
-            b'G' => G,
-            b'H' => H,
-            b'I' => I,
-            b'J' => J,
-            b'K' => K,
-            b'L' => L,
-            b'M' => M,
-            b'N' => N,
-            b'O' => O,
-            b'P' => P,
-            b'Q' => Q,
-            b'R' => R,
-            b'S' => S,
-            b'T' => T,
-            b'U' => U,
-            b'W' => W,
-            b'X' => X,
-            b'Y' => Y,
-            b'Z' => Z,
-            _ => return None,
-        })
-    }
-
-    /// The letter.
-    pub fn letter(self) -> char {
-        use Address::*;
-        match self {
-            D => 'D',
-            F => 'F',
-            G => 'G',
-            H => 'H',
-            I => 'I',
-            J => 'J',
-            K => 'K',
-            L => 'L',
-            M => 'M',
-            N => 'N',
-            O => 'O',
-            P => 'P',
-            Q => 'Q',
-            R => 'R',
-            S => 'S',
-            T => 'T',
-            U => 'U',
-            W => 'W',
-            X => 'X',
-            Y => 'Y',
-            Z => 'Z',
-        }
-    }
-
-    /// How the number of this address is read.
-    pub fn kind(self) -> WordKind {
-        use Address::*;
-        match self {
-            G | M | N | O | T | D | H | S | P | L => WordKind::Integer,
-            F => WordKind::Feed,
-            X | Y | Z | U | W | I | J | K | R | Q => WordKind::Dimension,
-        }
-    }
-
-    fn bit(self) -> u32 {
-        1 << (self as u32)
-    }
-}
-
-/// One word: an address and its value.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Word {
-    /// The address letter.
-    pub address: Address,
-    /// The value: dimension words in program units after decimal input;
-    /// integers exact; a G code's tenths digit after the point.
-    pub value: f64,
-    /// A decimal point was written.
-    pub point: bool,
-    /// Where the word is (letter through number).
-    pub span: Span,
-}
-
-impl Word {
-    /// The value of an integer word (the parser has checked its range).
-    pub fn int(&self) -> u32 {
-        self.value as u32
-    }
-
-    /// The code of a G word.
-    pub fn gcode(&self) -> GCode {
-        let major = self.value.trunc();
-        GCode {
-            major: major as u16,
-            minor: ((self.value - major) * 10.0).round() as u8,
-        }
-    }
-}
-
-/// One block: the words between two end-of-block characters.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Block {
-    /// The block's text, from its first to its last non-blank character.
-    pub span: Span,
-    /// The block starts with `/` (optional block skip).
-    pub skip: bool,
-    /// The words, in text order.
-    pub words: Vec<Word>,
-    /// A parse error was reported in this block: execution stops here.
-    pub error: bool,
-}
-
-impl Block {
-    /// The word with this address (for G and M, the first one).
-    pub fn get(&self, address: Address) -> Option<&Word> {
-        self.words.iter().find(|w| w.address == address)
-    }
-
-    /// The value of the word with this address.
-    pub fn value(&self, address: Address) -> Option<f64> {
-        self.get(address).map(|w| w.value)
-    }
-
-    /// True if the block has a word with this address.
-    pub fn has(&self, address: Address) -> bool {
-        self.get(address).is_some()
-    }
-
-    /// The G codes of the block with their words.
-    pub fn gcodes(&self) -> impl Iterator<Item = (GCode, &Word)> {
-        self.words
-            .iter()
-            .filter(|w| w.address == Address::G)
-            .map(|w| (w.gcode(), w))
-    }
-
-    /// The M codes of the block with their words.
-    pub fn mcodes(&self) -> impl Iterator<Item = (u32, &Word)> {
-        self.words
-            .iter()
-            .filter(|w| w.address == Address::M)
-            .map(|w| (w.int(), w))
-    }
-}
 
 /// What the parser needs to know from the setup.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -2,6 +2,7 @@
 
 use super::*;
 use crate::setup::{DecimalInput, MachineKind, Units};
+use crate::syntax::codes::GCode;
 
 fn p(text: &str) -> Program {
     parse(text, &ParseOptions::default())
