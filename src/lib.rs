@@ -23,12 +23,15 @@
 pub mod diag;
 pub mod machine;
 pub mod offsets;
+pub mod render;
 pub mod report;
 mod run;
 pub mod setup;
 pub mod syntax;
 pub mod toolpath;
 pub mod view;
+#[cfg(target_arch = "wasm32")]
+pub mod wasm;
 
 pub use diag::{Diagnostic, Severity, Span};
 pub use report::{BlockReport, End, Event, Move, MoveKind, Run};

@@ -1,0 +1,352 @@
+//! SVG backend: the renderer's drawing as a standalone SVG document (for
+//! export and for native tests of the renderer). Every text is escaped;
+//! coordinates are written with two decimals.
+
+use std::fmt::Write;
+
+use super::style::{Align, FONT_FAMILY, Font, Stroke};
+use super::{Rect, Surface};
+use crate::toolpath::Toolpath;
+
+/// Collects SVG elements into a string.
+#[derive(Debug, Default)]
+pub struct SvgSurface {
+    body: String,
+    path: String,
+    stroke: Option<Stroke>,
+    depth: usize,
+}
+
+impl SvgSurface {
+    /// An empty drawing.
+    pub fn new() -> SvgSurface {
+        SvgSurface::default()
+    }
+
+    /// The finished document, `width` x `height` CSS pixels.
+    pub fn finish(mut self, width: f64, height: f64) -> String {
+        while self.depth > 0 {
+            self.end_group();
+        }
+        let mut out = String::with_capacity(self.body.len() + 256);
+        let _ = writeln!(
+            out,
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" \
+             viewBox=\"0 0 {w} {h}\" font-family=\"{family}\">",
+            w = num(width),
+            h = num(height),
+            family = escape(FONT_FAMILY),
+        );
+        out.push_str(&self.body);
+        out.push_str("</svg>\n");
+        out
+    }
+}
+
+/// Draws a toolpath fitted to `width` x `height` and returns the SVG text.
+pub fn render(toolpath: &Toolpath, width: f64, height: f64) -> String {
+    let mut surface = SvgSurface::new();
+    let frame = super::draw(&mut surface, toolpath, width, height);
+    surface.finish(frame.width, frame.height)
+}
+
+impl Surface for SvgSurface {
+    fn clear(&mut self, width: f64, height: f64, color: &str) {
+        let _ = writeln!(
+            self.body,
+            "<rect class=\"background\" x=\"0\" y=\"0\" width=\"{}\" height=\"{}\" fill=\"{}\"/>",
+            num(width),
+            num(height),
+            escape(color)
+        );
+    }
+
+    fn begin_group(&mut self, name: &str) {
+        let _ = writeln!(self.body, "<g class=\"{}\">", escape(name));
+        self.depth += 1;
+    }
+
+    fn end_group(&mut self) {
+        if self.depth > 0 {
+            self.body.push_str("</g>\n");
+            self.depth -= 1;
+        }
+    }
+
+    fn begin_path(&mut self, stroke: &Stroke) {
+        self.path.clear();
+        self.stroke = Some(*stroke);
+    }
+
+    fn move_to(&mut self, x: f64, y: f64) {
+        let _ = write!(self.path, "M{} {}", num(x), num(y));
+    }
+
+    fn line_to(&mut self, x: f64, y: f64) {
+        let _ = write!(self.path, "L{} {}", num(x), num(y));
+    }
+
+    fn stroke(&mut self) {
+        let Some(stroke) = self.stroke.take() else {
+            return;
+        };
+        if self.path.is_empty() {
+            return;
+        }
+        let _ = write!(
+            self.body,
+            "<path d=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{}\" \
+             stroke-linecap=\"round\" stroke-linejoin=\"round\"",
+            self.path,
+            escape(stroke.color),
+            num(stroke.width)
+        );
+        if !stroke.dash.is_empty() {
+            let dash: Vec<String> = stroke.dash.iter().map(|d| num(*d)).collect();
+            let _ = write!(self.body, " stroke-dasharray=\"{}\"", dash.join(" "));
+        }
+        self.body.push_str("/>\n");
+        self.path.clear();
+    }
+
+    fn fill_rect(&mut self, rect: Rect, fill: &str, border: Option<&str>) {
+        let _ = write!(
+            self.body,
+            "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"{}\"",
+            num(rect.x),
+            num(rect.y),
+            num(rect.w),
+            num(rect.h),
+            escape(fill)
+        );
+        if let Some(border) = border {
+            let _ = write!(
+                self.body,
+                " stroke=\"{}\" stroke-width=\"1\"",
+                escape(border)
+            );
+        }
+        self.body.push_str("/>\n");
+    }
+
+    fn fill_text(&mut self, text: &str, x: f64, y: f64, font: &Font) {
+        let anchor = match font.align {
+            Align::Start => "start",
+            Align::Middle => "middle",
+            Align::End => "end",
+        };
+        let _ = write!(
+            self.body,
+            "<text x=\"{}\" y=\"{}\" font-size=\"{}\" fill=\"{}\" text-anchor=\"{anchor}\"",
+            num(x),
+            num(y),
+            num(font.size),
+            escape(font.color)
+        );
+        if font.bold {
+            self.body.push_str(" font-weight=\"bold\"");
+        }
+        let _ = writeln!(self.body, ">{}</text>", escape(text));
+    }
+}
+
+/// A number with at most two decimals, without trailing zeros.
+fn num(v: f64) -> String {
+    if !v.is_finite() {
+        return "0".to_string();
+    }
+    let s = format!("{v:.2}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" || s.is_empty() {
+        "0".to_string()
+    } else {
+        s.to_string()
+    }
+}
+
+/// Escapes text for element content and attribute values.
+pub fn escape(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&#39;"),
+            // Control characters are not allowed in XML 1.0.
+            c if (c as u32) < 0x20 && !matches!(c, '\t' | '\n' | '\r') => {}
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::style;
+    use crate::{Setup, run};
+
+    /// Seed 000: the G45–G48 square, register 01 = 6 (spec's worked example).
+    const SQUARE: &str = "(SEED 000: SQUARE WITH G45-G48, REGISTER 01 = 6.)
+G90 G00 X-30. Y-20.;
+G91 G00 G46 X30. Y20. D01;
+G01 G47 X80. F200.;
+G47 Y50.;
+G47 X-80.;
+G47 Y-50.;
+G00 G46 X-30. Y-20.;
+M30;
+";
+
+    fn square() -> Toolpath {
+        let mut setup = Setup::default();
+        setup.set_register("01=6.0").unwrap();
+        let r = run(SQUARE, &setup);
+        assert!(!r.has_errors(), "{:?}", r.diagnostics);
+        Toolpath::from_run(&r)
+    }
+
+    /// The text between `<g class="name">` and its `</g>` (groups do not nest
+    /// in the renderer's output).
+    fn group<'a>(svg: &'a str, name: &str) -> &'a str {
+        let open = format!("<g class=\"{name}\">");
+        let start = svg.find(&open).expect("group present") + open.len();
+        let end = svg[start..].find("</g>").expect("group closed") + start;
+        &svg[start..end]
+    }
+
+    #[test]
+    fn square_draws_both_paths_as_groups_with_their_styles() {
+        let svg = render(&square(), 800.0, 500.0);
+        assert!(svg.starts_with("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"800\""));
+        assert!(svg.ends_with("</svg>\n"));
+        assert_eq!(svg.matches("<g class=\"actual\">").count(), 1);
+        assert_eq!(svg.matches("<g class=\"programmed\">").count(), 1);
+        assert_eq!(svg.matches("<g").count(), svg.matches("</g>").count());
+        let actual = group(&svg, "actual");
+        let programmed = group(&svg, "programmed");
+        // Rapid and feed moves: one path each, in their own colours.
+        assert_eq!(actual.matches("<path").count(), 2);
+        assert_eq!(programmed.matches("<path").count(), 2);
+        assert!(actual.contains(style::ACTUAL_FEED.color));
+        assert!(actual.contains(style::ACTUAL_RAPID.color));
+        assert!(programmed.contains(style::PROGRAMMED_FEED.color));
+        assert!(programmed.contains(style::PROGRAMMED_RAPID.color));
+        // Programmed thin and dashed, actual solid and wider.
+        assert!(!actual.contains("stroke-dasharray"));
+        assert_eq!(programmed.matches("stroke-dasharray=\"6 4\"").count(), 2);
+        assert!(programmed.contains("stroke-width=\"1.5\""));
+        assert!(actual.contains("stroke-width=\"2.25\""));
+        // The legend names both, the scale bar has a length and units.
+        let legend = group(&svg, "legend");
+        assert!(legend.contains(">actual, feed</text>"));
+        assert!(legend.contains(">programmed, rapid</text>"));
+        assert!(legend.contains("mill · XY · mm"));
+        let scale = group(&svg, "scale");
+        assert!(scale.contains(" mm</text>"), "{scale}");
+        let axes = group(&svg, "axes");
+        assert!(axes.contains(">X</text>") && axes.contains(">Y</text>"));
+    }
+
+    #[test]
+    fn actual_square_is_offset_outward_on_screen() {
+        // Programmed square 0..80 x 0..50, actual -6..86 x -6..56: the actual
+        // feed path spans more pixels than the programmed one.
+        let svg = render(&square(), 800.0, 500.0);
+        let span = |group_text: &str, color: &str| {
+            let path = group_text
+                .split("<path ")
+                .find(|p| p.contains(color))
+                .expect("path");
+            let d = &path[path.find("d=\"").unwrap() + 3..];
+            let d = &d[..d.find('"').unwrap()];
+            let xs: Vec<f64> = d
+                .split(['M', 'L'])
+                .filter(|s| !s.is_empty())
+                .map(|p| p.split(' ').next().unwrap().parse().unwrap())
+                .collect();
+            let min = xs.iter().cloned().fold(f64::INFINITY, f64::min);
+            let max = xs.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
+            max - min
+        };
+        let actual = span(group(&svg, "actual"), style::ACTUAL_FEED.color);
+        let programmed = span(group(&svg, "programmed"), style::PROGRAMMED_FEED.color);
+        let ratio = actual / programmed;
+        assert!(
+            (ratio - 92.0 / 80.0).abs() < 0.01,
+            "{actual} / {programmed}"
+        );
+    }
+
+    #[test]
+    fn path_fits_inside_the_surface() {
+        let svg = render(&square(), 640.0, 480.0);
+        for group_name in ["actual", "programmed"] {
+            let g = group(&svg, group_name);
+            for token in g.split(['M', 'L']).skip(1) {
+                let mut it = token.split([' ', '"']);
+                let x: f64 = it.next().unwrap().parse().unwrap();
+                let y: f64 = it.next().unwrap().parse().unwrap();
+                assert!((0.0..=640.0).contains(&x) && (0.0..=480.0).contains(&y));
+            }
+        }
+    }
+
+    #[test]
+    fn lathe_is_drawn_in_zx_with_a_centre_line() {
+        let setup = Setup {
+            machine: crate::MachineKind::Lathe,
+            ..Setup::default()
+        };
+        let r = run("G50 X120. Z60.\nG00 X50. Z3.\nG01 Z-20. F0.2\n", &setup);
+        assert!(!r.has_errors(), "{:?}", r.diagnostics);
+        let svg = render(&Toolpath::from_run(&r), 600.0, 400.0);
+        assert!(svg.contains("lathe · ZX, X as radius · mm"));
+        assert!(svg.contains(">X (radius)</text>"));
+        assert!(svg.contains(">centre line</text>"));
+        assert!(svg.contains(style::CENTRE_STROKE.color));
+    }
+
+    #[test]
+    fn empty_run_draws_grid_axes_and_legend_but_no_path() {
+        let r = run("", &Setup::default());
+        let svg = render(&Toolpath::from_run(&r), 300.0, 200.0);
+        assert!(group(&svg, "actual").trim().is_empty());
+        assert!(group(&svg, "grid").contains("<path"));
+        assert!(group(&svg, "axes").contains("<path"));
+    }
+
+    #[test]
+    fn tiny_and_odd_surfaces_never_panic() {
+        let t = square();
+        for (w, h) in [
+            (0.0, 0.0),
+            (1.0, 1.0),
+            (5.0, 300.0),
+            (300.0, 5.0),
+            (f64::NAN, 10.0),
+        ] {
+            let svg = render(&t, w, h);
+            assert!(svg.ends_with("</svg>\n"));
+        }
+    }
+
+    #[test]
+    fn text_is_escaped() {
+        assert_eq!(escape("<a & \"b\">'"), "&lt;a &amp; &quot;b&quot;&gt;&#39;");
+        let mut s = SvgSurface::new();
+        s.fill_text("<script>", 0.0, 0.0, &style::LABEL_FONT);
+        let out = s.finish(10.0, 10.0);
+        assert!(out.contains("&lt;script&gt;") && !out.contains("<script>"));
+    }
+
+    #[test]
+    fn numbers_are_short() {
+        assert_eq!(num(1.0), "1");
+        assert_eq!(num(1.256), "1.26");
+        assert_eq!(num(-0.001), "0");
+        assert_eq!(num(f64::NAN), "0");
+    }
+}
