@@ -1,0 +1,324 @@
+//! Wasm contract tests: the core runs in Chromium (`wasm-pack test --headless
+//! --chrome -- --test wasm`) and these pin the shape JavaScript sees — field
+//! names, `null` (never `undefined`) for absent values, typed array classes
+//! and lengths — so the page and the core cannot drift apart silently.
+#![cfg(target_arch = "wasm32")]
+
+use js_sys::{Array, Float64Array, Function, JSON, Reflect, Uint8Array, Uint32Array};
+use offsetlab::wasm::Session;
+use wasm_bindgen::{JsCast, JsValue};
+use wasm_bindgen_test::{wasm_bindgen_test, wasm_bindgen_test_configure};
+use web_sys::OffscreenCanvas;
+
+wasm_bindgen_test_configure!(run_in_browser);
+
+/// Seed 000 (spec's worked example): the G45–G48 square, register 01 = 6.
+const SQUARE: &str = "(SEED 000: SQUARE WITH G45-G48, REGISTER 01 = 6.)
+G90 G00 X-30. Y-20.;
+G91 G00 G46 X30. Y20. D01;
+G01 G47 X80. F200.;
+G47 Y50.;
+G47 X-80.;
+G47 Y-50.;
+G00 G46 X-30. Y-20.;
+M30;
+";
+
+fn json(text: &str) -> JsValue {
+    JSON::parse(text).expect("test JSON parses")
+}
+
+fn get(value: &JsValue, key: &str) -> JsValue {
+    Reflect::get(value, &JsValue::from_str(key)).expect("object")
+}
+
+fn has(value: &JsValue, key: &str) -> bool {
+    Reflect::has(value, &JsValue::from_str(key)).expect("object")
+}
+
+fn num(value: &JsValue, key: &str) -> f64 {
+    get(value, key)
+        .as_f64()
+        .unwrap_or_else(|| panic!("`{key}` is a number"))
+}
+
+fn string(value: &JsValue, key: &str) -> String {
+    get(value, key)
+        .as_string()
+        .unwrap_or_else(|| panic!("`{key}` is a string"))
+}
+
+/// Asserts that a plain object has every key in `keys`.
+fn assert_keys(value: &JsValue, keys: &[&str]) {
+    assert!(value.is_object(), "an object");
+    for key in keys {
+        assert!(has(value, key), "missing key `{key}`");
+        assert!(!get(value, key).is_undefined(), "`{key}` is undefined");
+    }
+}
+
+fn array(value: &JsValue) -> Array {
+    assert!(Array::is_array(value), "an array");
+    value.clone().unchecked_into()
+}
+
+fn square_setup() -> JsValue {
+    json(r#"{"offsets":{"01":6.0}}"#)
+}
+
+#[wasm_bindgen_test]
+fn run_returns_summary_and_diagnostics() {
+    let mut s = Session::new();
+    let result = s.run(SQUARE, square_setup()).expect("run");
+    assert_keys(&result, &["summary", "diagnostics"]);
+    let summary = get(&result, "summary");
+    assert_keys(
+        &summary,
+        &[
+            "machine", "units", "blocks", "moves", "errors", "warnings", "end", "bounds",
+        ],
+    );
+    assert_eq!(string(&summary, "machine"), "mill");
+    assert_eq!(string(&summary, "units"), "mm");
+    assert_eq!(num(&summary, "blocks"), 8.0);
+    assert_eq!(num(&summary, "errors"), 0.0);
+    let end = get(&summary, "end");
+    assert_eq!(string(&end, "reason"), "program_end");
+    assert_eq!(num(&end, "line"), 9.0);
+    let bounds = get(&summary, "bounds");
+    assert_eq!(num(&get(&bounds, "min"), "x"), -30.0);
+    assert_eq!(num(&get(&bounds, "max"), "y"), 56.0);
+    assert_eq!(array(&get(&result, "diagnostics")).length(), 0);
+    assert_eq!(s.block_count(), 8);
+}
+
+#[wasm_bindgen_test]
+fn block_shape_uses_null_for_absent_values() {
+    let mut s = Session::new();
+    s.run(SQUARE, square_setup()).expect("run");
+    // Block 1 is line 3: G91 G00 G46 X30. Y20. D01 from (-30, -20): the
+    // programmed point is the origin, the actual one 6 short of it (seed 000).
+    let b = s.block(1).expect("block");
+    assert_keys(
+        &b,
+        &[
+            "index",
+            "line",
+            "column",
+            "end_column",
+            "text",
+            "units",
+            "programmed",
+            "actual",
+            "modal",
+            "tool",
+            "length_offset",
+            "position_offset",
+            "explanation",
+            "first_move",
+            "move_count",
+        ],
+    );
+    assert_eq!(num(&b, "line"), 3.0);
+    assert_eq!(string(&b, "text"), "G91 G00 G46 X30. Y20. D01");
+    // No F word yet: `feed` is present and null, not undefined; so is the spindle.
+    assert!(has(&b, "feed") && get(&b, "feed").is_null());
+    assert!(has(&b, "spindle") && get(&b, "spindle").is_null());
+    let actual = get(&b, "actual");
+    assert_eq!(num(&actual, "x"), -6.0);
+    assert_eq!(num(&actual, "y"), -6.0);
+    assert_eq!(num(&actual, "z"), 0.0);
+    assert_eq!(num(&get(&b, "programmed"), "x"), 0.0);
+    let modal = get(&b, "modal");
+    assert_eq!(string(&modal, "motion"), "G00");
+    assert_eq!(string(&modal, "distance"), "G91");
+    let position = get(&b, "position_offset");
+    assert_eq!(num(&position, "d"), 1.0);
+    assert_eq!(num(&position, "value"), 6.0);
+    assert_eq!(num(&get(&position, "vector"), "x"), -6.0);
+    // A mill block has no lathe offset key at all.
+    assert!(!has(&b, "lathe_offset"));
+    // After F200. the feed is a number.
+    assert_eq!(num(&s.block(2).expect("block"), "feed"), 200.0);
+    // Out of range: null.
+    assert!(s.block(8).expect("block").is_null());
+    assert!(s.block(u32::MAX).expect("block").is_null());
+}
+
+#[wasm_bindgen_test]
+fn toolpath_is_flat_typed_arrays() {
+    let mut s = Session::new();
+    s.run(SQUARE, square_setup()).expect("run");
+    let t = s.toolpath().expect("toolpath");
+    assert_keys(
+        &t,
+        &[
+            "units",
+            "machine",
+            "actual",
+            "programmed",
+            "starts",
+            "kinds",
+            "blocks",
+            "lines",
+        ],
+    );
+    assert_eq!(string(&t, "units"), "mm");
+    assert_eq!(string(&t, "machine"), "mill");
+    let actual: Float64Array = get(&t, "actual").dyn_into().expect("Float64Array");
+    let programmed: Float64Array = get(&t, "programmed").dyn_into().expect("Float64Array");
+    let starts: Uint32Array = get(&t, "starts").dyn_into().expect("Uint32Array");
+    let kinds: Uint8Array = get(&t, "kinds").dyn_into().expect("Uint8Array");
+    let blocks: Uint32Array = get(&t, "blocks").dyn_into().expect("Uint32Array");
+    let lines: Uint32Array = get(&t, "lines").dyn_into().expect("Uint32Array");
+    let moves = kinds.length();
+    assert_eq!(moves, 7, "seed 000 makes seven moves");
+    assert_eq!(starts.length(), moves + 1);
+    assert_eq!(blocks.length(), moves);
+    assert_eq!(lines.length(), moves);
+    let vertices = starts.get_index(starts.length() - 1);
+    assert_eq!(actual.length(), 3 * vertices);
+    assert_eq!(programmed.length(), 3 * vertices);
+    // Rapid, rapid, then four feeds, then the rapid home (kinds 0 and 1).
+    assert_eq!(kinds.to_vec(), vec![0, 0, 1, 1, 1, 1, 0]);
+    assert_eq!(lines.get_index(2), 4);
+    // The second move ends at the actual point (-6, -6), the programmed
+    // one at the origin.
+    let end = 3 * (starts.get_index(2) as usize - 1);
+    assert_eq!(&actual.to_vec()[end..end + 3], &[-6.0, -6.0, 0.0]);
+    assert_eq!(&programmed.to_vec()[end..end + 3], &[0.0, 0.0, 0.0]);
+    // A copy: a later run does not change arrays JS already holds.
+    s.run("G00 X1.", JsValue::NULL).expect("run");
+    assert_eq!(kinds.length(), 7);
+}
+
+#[wasm_bindgen_test]
+fn a_syntax_error_is_a_diagnostic_with_line_and_column() {
+    let mut s = Session::new();
+    let result = s
+        .run("G00 X10.\nG01 X1.2.3 F100.\n", JsValue::UNDEFINED)
+        .expect("run");
+    let diagnostics = array(&get(&result, "diagnostics"));
+    assert_eq!(diagnostics.length(), 1);
+    let d = diagnostics.get(0);
+    assert_keys(
+        &d,
+        &[
+            "severity",
+            "code",
+            "message",
+            "line",
+            "column",
+            "end_column",
+        ],
+    );
+    assert_eq!(string(&d, "severity"), "error");
+    assert_eq!(string(&d, "code"), "malformed-number");
+    assert_eq!(num(&d, "line"), 2.0);
+    assert_eq!(num(&d, "column"), 5.0);
+    assert!(!has(&d, "span"), "the byte span stays inside");
+    let summary = get(&result, "summary");
+    assert_eq!(num(&summary, "errors"), 1.0);
+    assert_eq!(string(&get(&summary, "end"), "reason"), "error");
+    // The block before the error ran.
+    assert_eq!(s.block_count(), 1);
+}
+
+#[wasm_bindgen_test]
+fn a_bad_setup_gives_diagnostics_not_an_exception() {
+    let cases = [
+        json(r#"{"machine":"drill"}"#),
+        json(r#"{"offsets":{"01":5000}}"#),
+        json(r#"{"no_such_field":1}"#),
+        JsValue::from_str("{ not json"),
+        JsValue::from_f64(3.0),
+        js_sys::BigInt::from(1u32).into(),
+    ];
+    for setup in cases {
+        let mut s = Session::new();
+        let result = s.run(SQUARE, setup).expect("never throws");
+        let diagnostics = array(&get(&result, "diagnostics"));
+        assert!(diagnostics.length() >= 1);
+        for d in diagnostics.iter() {
+            assert!(string(&d, "code").starts_with("setup-"), "{:?}", d);
+            assert_eq!(num(&d, "line"), 0.0);
+            assert_eq!(string(&d, "severity"), "error");
+        }
+        let t = s.toolpath().expect("toolpath");
+        assert_eq!(get(&t, "kinds").unchecked_into::<Uint8Array>().length(), 0);
+        assert_eq!(s.block_count(), 0);
+        assert!(get(&get(&result, "summary"), "bounds").is_null());
+    }
+}
+
+#[wasm_bindgen_test]
+fn setup_may_be_json_text() {
+    let mut s = Session::new();
+    let result = s
+        .run(SQUARE, JsValue::from_str(r#"{"offsets":{"01":6.0}}"#))
+        .expect("run");
+    assert_eq!(num(&get(&result, "summary"), "errors"), 0.0);
+    let setup = s.setup().expect("setup");
+    assert_eq!(num(&get(&setup, "offsets"), "01"), 6.0);
+    assert_eq!(string(&setup, "machine"), "mill");
+}
+
+#[wasm_bindgen_test]
+fn lathe_positions_have_x_and_z_only() {
+    let mut s = Session::new();
+    let setup = json(r#"{"machine":"lathe","lathe_offsets":{"08":{"x":0.4,"z":-0.2}}}"#);
+    let result = s
+        .run(
+            "G50 X120. Z60.\nG00 S800 M03 T0108;\nX50. Z3.;\nT0100;",
+            setup,
+        )
+        .expect("run");
+    assert_eq!(num(&get(&result, "summary"), "errors"), 0.0);
+    assert_eq!(string(&get(&result, "summary"), "machine"), "lathe");
+    let b = s.block(1).expect("block");
+    let actual = get(&b, "actual");
+    assert_eq!(num(&actual, "x"), 120.4);
+    assert_eq!(num(&actual, "z"), 59.8);
+    assert!(!has(&actual, "y"), "a lathe position has no y");
+    assert!(!has(&get(&b, "programmed"), "y"));
+    assert_eq!(num(&b, "spindle"), 800.0);
+    let lathe = get(&b, "lathe_offset");
+    assert_eq!(num(&lathe, "offset"), 8.0);
+    assert_eq!(num(&get(&lathe, "value"), "x"), 0.4);
+    assert!(!has(&b, "length_offset") && !has(&b, "position_offset"));
+    let t = s.toolpath().expect("toolpath");
+    assert_eq!(string(&t, "machine"), "lathe");
+    // The svg backend draws the lathe's ZX view with its centre line.
+    let svg = s.render_svg(400, 300);
+    assert!(svg.contains("centre line"));
+}
+
+#[wasm_bindgen_test]
+fn render_draws_on_an_offscreen_canvas_at_device_pixels() {
+    let mut s = Session::new();
+    s.run(SQUARE, square_setup()).expect("run");
+    // Without a canvas, render does nothing and does not throw.
+    s.render(300, 200, 2.0).expect("render without canvas");
+    let canvas = OffscreenCanvas::new(10, 10).expect("OffscreenCanvas");
+    s.attach_canvas(canvas.clone()).expect("attach");
+    s.render(300, 200, 2.0).expect("render");
+    assert_eq!((canvas.width(), canvas.height()), (600, 400));
+    // Read the pixels back through the same 2D context.
+    let ctx = canvas.get_context("2d").expect("ctx").expect("2d");
+    let get_image_data: Function = get(&ctx, "getImageData").dyn_into().expect("function");
+    let args = Array::of4(&0.into(), &0.into(), &600.into(), &400.into());
+    let image = get_image_data.apply(&ctx, &args).expect("image data");
+    let data = get(&image, "data")
+        .unchecked_into::<js_sys::Uint8ClampedArray>()
+        .to_vec();
+    let painted = data
+        .chunks_exact(4)
+        .filter(|p| p[0] < 200 || p[1] < 200 || p[2] < 200)
+        .count();
+    assert!(painted > 2000, "only {painted} dark pixels");
+    // Odd sizes and silly ratios are clamped, never a panic.
+    s.render(0, 0, f64::NAN).expect("render");
+    assert_eq!((canvas.width(), canvas.height()), (1, 1));
+    let svg = s.render_svg(300, 200);
+    assert!(svg.contains("<g class=\"actual\">") && svg.contains("<g class=\"programmed\">"));
+}
