@@ -78,8 +78,10 @@ pub struct Frame {
 
 impl Frame {
     /// Lays out a surface and fits the toolpath (both paths) into it. The
-    /// legend takes a column on the right of a wide surface and a band at
-    /// the top of a tall one, so it never covers the path.
+    /// legend sits in the top right corner; the path gets the whole surface
+    /// less the margins when it clears the legend there, otherwise the larger
+    /// of the area beside the legend and the area below it, so the legend
+    /// never covers the path.
     pub fn fit(toolpath: &Toolpath, plane: Plane, width: f64, height: f64) -> Frame {
         let width = if width.is_finite() {
             width.max(1.0)
@@ -95,24 +97,31 @@ impl Frame {
         let legend_h = rows * LEGEND_ROW + 2.0 * LEGEND_PAD;
         let legend = Rect::new(width - LEGEND_WIDTH - 10.0, 10.0, LEGEND_WIDTH, legend_h);
         let (l, r, t, b) = MARGIN;
-        let mut plot = Rect::new(l, t, width - l - r, height - t - b);
-        if plot.w - LEGEND_WIDTH >= plot.h && plot.w - LEGEND_WIDTH > 80.0 {
-            plot.w -= LEGEND_WIDTH;
-        } else if plot.h - legend_h > 80.0 {
-            plot.y = legend.bottom() + 8.0;
-            plot.h = height - b - plot.y;
-        }
-        plot.w = plot.w.max(1.0);
-        plot.h = plot.h.max(1.0);
+        let full = Rect::new(l, t, (width - l - r).max(1.0), (height - t - b).max(1.0));
+        let beside = Rect::new(l, t, legend.x - 12.0 - l, full.h);
+        let below_top = legend.bottom() + 8.0;
+        let below = Rect::new(l, below_top, full.w, height - b - below_top);
         let min_size = 10.0 / toolpath.units.mm();
-        let extent = path_extent(toolpath, plane).unwrap_or_else(|| {
+        let (extent, min_size) = match path_extent(toolpath, plane) {
+            Some(extent) => (extent, min_size),
             // Nothing drawn: show the origin and a few grid cells around it.
-            Extent::point(0.0, 0.0)
-        });
-        let min_size = if toolpath.is_empty() {
-            10.0 * min_size
-        } else {
-            min_size
+            None => (Extent::point(0.0, 0.0), 10.0 * min_size),
+        };
+        let fit = |plot: Rect| (plot, Transform::fit(extent, plot, min_size));
+        let (plot, transform) = {
+            let (plot, t) = fit(full);
+            let drawn = t.screen_rect(&extent);
+            let inflated = Rect::new(drawn.x - 4.0, drawn.y - 4.0, drawn.w + 8.0, drawn.h + 8.0);
+            if !inflated.intersects(&legend) {
+                (plot, t)
+            } else {
+                [beside, below]
+                    .into_iter()
+                    .filter(|p| p.w > 40.0 && p.h > 40.0)
+                    .map(fit)
+                    .max_by(|a, b| a.1.scale.total_cmp(&b.1.scale))
+                    .unwrap_or((plot, t))
+            }
         };
         Frame {
             width,
@@ -120,8 +129,24 @@ impl Frame {
             plane,
             plot,
             legend,
-            transform: Transform::fit(extent, plot, min_size),
+            transform,
         }
+    }
+
+    /// Where the scale bar goes and the length it stands for, or None
+    /// when it would not fit.
+    pub fn scale_bar(&self) -> Option<(Rect, f64)> {
+        let length = nice_step(MIN_SCALE_PX / self.transform.scale);
+        let px = length * self.transform.scale;
+        if !px.is_finite() || px > self.width * 0.6 {
+            return None;
+        }
+        let right = self.width - MARGIN.1;
+        let y = self.height - 30.0;
+        Some((
+            Rect::new(right - px - 6.0, y - 20.0, px + 12.0, 28.0),
+            length,
+        ))
     }
 }
 
@@ -189,7 +214,10 @@ fn draw_path(s: &mut impl Surface, f: &Frame, tp: &Toolpath, vertices: &[f64], a
             (false, true) => &style::PROGRAMMED_RAPID,
             (false, false) => &style::PROGRAMMED_FEED,
         };
+        // `pen` is the last point drawn, `pending` the last vertex passed
+        // over for being too close to it; ends of runs are always drawn.
         let mut pen: Option<(f64, f64)> = None;
+        let mut pending: Option<(f64, f64)> = None;
         let mut begun = false;
         for (m, &kind) in tp.kinds.iter().enumerate() {
             if is_rapid(kind) != rapid {
@@ -198,40 +226,44 @@ fn draw_path(s: &mut impl Surface, f: &Frame, tp: &Toolpath, vertices: &[f64], a
             let (Some(&a), Some(&b)) = (tp.starts.get(m), tp.starts.get(m + 1)) else {
                 continue;
             };
-            let (a, b) = (a as usize, b as usize);
-            let Some(points) = vertices.get(a * 3..b * 3) else {
+            let Some(points) = vertices.get(a as usize * 3..b as usize * 3) else {
                 continue;
             };
             if !begun {
                 s.begin_path(stroke);
                 begun = true;
             }
-            let last = points.len() / 3;
             for (i, p) in points.chunks_exact(3).enumerate() {
                 let (u, v) = f.plane.project(p);
                 let (x, y) = f.transform.to_screen(u, v);
                 if !(x.is_finite() && y.is_finite()) {
                     continue;
                 }
-                match pen {
-                    Some((px, py)) if i == 0 => {
-                        if (x - px).hypot(y - py) > 0.01 {
-                            s.move_to(x, y);
-                        } else {
-                            continue;
-                        }
+                if i == 0 {
+                    // A move that starts where the last one ended continues
+                    // the line; any other starts a new sub-path.
+                    let last = pending.or(pen);
+                    if last.is_some_and(|(lx, ly)| (x - lx).hypot(y - ly) <= 0.01) {
+                        continue;
                     }
-                    None => s.move_to(x, y),
-                    Some((px, py)) => {
-                        let near = (x - px).hypot(y - py) < MIN_SEGMENT_PX;
-                        if near && i + 1 < last {
-                            continue;
-                        }
-                        s.line_to(x, y);
+                    if let Some((px, py)) = pending.take() {
+                        s.line_to(px, py);
                     }
+                    s.move_to(x, y);
+                    pen = Some((x, y));
+                    continue;
                 }
+                if pen.is_some_and(|(px, py)| (x - px).hypot(y - py) < MIN_SEGMENT_PX) {
+                    pending = Some((x, y));
+                    continue;
+                }
+                s.line_to(x, y);
                 pen = Some((x, y));
+                pending = None;
             }
+        }
+        if let Some((px, py)) = pending {
+            s.line_to(px, py);
         }
         if begun {
             s.stroke();
@@ -324,6 +356,31 @@ fn index_of(v: f64, step: f64) -> i64 {
     (v / step).round() as i64
 }
 
+/// The approximate box of a label (no text metrics on an SVG surface).
+fn text_box(text: &str, x: f64, y: f64, font: &Font) -> Rect {
+    let w = text.chars().count() as f64 * font.size * 0.62;
+    let left = match font.align {
+        Align::Start => x,
+        Align::Middle => x - w / 2.0,
+        Align::End => x - w,
+    };
+    Rect::new(left, y - font.size, w, font.size * 1.3)
+}
+
+/// The first of `spots` (anchor and font) where a label overlaps none of
+/// `taken`, else the first.
+fn free_spot(text: &str, spots: &[(f64, f64, Font)], taken: &[Rect]) -> (f64, f64, Font) {
+    spots
+        .iter()
+        .copied()
+        .find(|(x, y, font)| {
+            !taken
+                .iter()
+                .any(|r| text_box(text, *x, *y, font).intersects(r))
+        })
+        .unwrap_or(spots[0])
+}
+
 /// `v` limited to `[lo, hi]`, preferring `lo` when the range is empty (on
 /// tiny surfaces); unlike `f64::clamp` it never panics.
 fn clamp(v: f64, lo: f64, hi: f64) -> f64 {
@@ -363,16 +420,33 @@ fn draw_axes(s: &mut impl Surface, f: &Frame) {
         bold: true,
         ..style::LABEL_FONT
     };
-    // Axis names sit at the positive ends, kept on the surface when the
-    // origin is off it.
-    let name_y = clamp(y0, f.plot.y + 14.0, f.height - 30.0) - 6.0;
+    // Axis names sit at the positive ends of the axes (at the surface's
+    // edge when the origin is off it), moved aside from the legend and the
+    // scale bar.
+    let mut taken = vec![f.legend];
+    if let Some((area, _)) = f.scale_bar() {
+        taken.push(area);
+    }
     let right = Font {
         align: Align::End,
         ..bold
     };
-    s.fill_text(h_name, f.plot.right() + MARGIN.1 - 6.0, name_y, &right);
-    let name_x = clamp(x0, MARGIN.0, f.plot.right()) + 6.0;
-    s.fill_text(v_name, name_x, f.plot.y.max(14.0) + 4.0, &bold);
+    let edge = f.width - 8.0;
+    let y = clamp(y0, 30.0, f.height - 24.0);
+    let mut h_spots = vec![(edge, y - 6.0, right), (edge, y + 16.0, right)];
+    if let Some((area, _)) = f.scale_bar() {
+        h_spots.push((area.x - 8.0, y - 6.0, right));
+    }
+    let (hx, hy, font) = free_spot(h_name, &h_spots, &taken);
+    s.fill_text(h_name, hx, hy, &font);
+    let x = clamp(x0, MARGIN.0, f.width - 40.0);
+    let v_spots = [
+        (x + 6.0, 16.0, bold),
+        (x + 6.0, f.legend.bottom() + 16.0, bold),
+        (x - 6.0, 16.0, right),
+    ];
+    let (vx, vy, font) = free_spot(v_name, &v_spots, &taken);
+    s.fill_text(v_name, vx, vy, &font);
     if f.plane.has_centre_line() && inside_y {
         let font = Font {
             color: style::CENTRE_LINE,
@@ -391,21 +465,13 @@ fn units_name(tp: &Toolpath) -> &'static str {
 }
 
 fn draw_scale_bar(s: &mut impl Surface, f: &Frame, tp: &Toolpath) {
-    let t = &f.transform;
-    let length = nice_step(MIN_SCALE_PX / t.scale);
-    let px = length * t.scale;
-    if !px.is_finite() || px > f.width * 0.6 {
+    let Some((area, length)) = f.scale_bar() else {
         return;
-    }
-    let right = f.width - MARGIN.1;
-    let left = right - px;
-    let y = f.height - 30.0;
+    };
+    let (left, right) = (area.x + 6.0, area.right() - 6.0);
+    let y = area.y + 20.0;
     s.begin_group("scale");
-    s.fill_rect(
-        Rect::new(left - 6.0, y - 20.0, px + 12.0, 28.0),
-        style::BACKGROUND,
-        None,
-    );
+    s.fill_rect(area, style::SCALE_FILL, None);
     s.begin_path(&style::SCALE_STROKE);
     s.move_to(left, y - 5.0);
     s.line_to(left, y);
@@ -463,4 +529,110 @@ fn draw_legend(s: &mut impl Surface, f: &Frame, tp: &Toolpath) {
         s.fill_text(label, r.x + LEGEND_PAD + 38.0, y, &style::LABEL_FONT);
     }
     s.end_group();
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Setup, run};
+
+    fn toolpath(program: &str) -> Toolpath {
+        let mut setup = Setup::default();
+        setup.set_register("01=6.0").unwrap();
+        let r = run(program, &setup);
+        assert!(!r.has_errors(), "{:?}", r.diagnostics);
+        Toolpath::from_run(&r)
+    }
+
+    #[test]
+    fn path_never_runs_under_the_legend_and_stays_on_the_surface() {
+        let tp = toolpath(
+            "G90 G00 X-30. Y-20.\nG91 G46 X30. Y20. D01\nG01 G47 X80. F200.\nG47 Y50.\nG47 X-80.\nG47 Y-50.",
+        );
+        let extent = path_extent(&tp, Plane::Xy).unwrap();
+        for (w, h) in [
+            (800.0, 500.0),
+            (500.0, 800.0),
+            (904.0, 820.0),
+            (400.0, 300.0),
+            (1600.0, 400.0),
+        ] {
+            let f = Frame::fit(&tp, Plane::Xy, w, h);
+            let drawn = f.transform.screen_rect(&extent);
+            assert!(
+                !drawn.intersects(&f.legend),
+                "{w}x{h}: {drawn:?} under {:?}",
+                f.legend
+            );
+            assert!(drawn.x >= 0.0 && drawn.y >= 0.0, "{w}x{h}: {drawn:?}");
+            assert!(
+                drawn.right() <= w && drawn.bottom() <= h,
+                "{w}x{h}: {drawn:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_path_clear_of_the_legend_gets_the_whole_surface() {
+        // A wide, flat path stays below the legend when fitted to the full
+        // width: no room is given away beside the legend.
+        let tp = toolpath("G01 X100. F100.");
+        let f = Frame::fit(&tp, Plane::Xy, 800.0, 600.0);
+        assert_eq!(f.plot.w, 800.0 - MARGIN.0 - MARGIN.1);
+    }
+
+    #[test]
+    fn grid_spacing_is_at_least_the_minimum_and_one_two_five() {
+        for scale in [0.013, 0.5, 1.0, 3.7, 40.0, 1234.0] {
+            let t = Transform {
+                scale,
+                origin_x: 0.0,
+                origin_y: 0.0,
+            };
+            let step = grid_step(&t);
+            assert!(step * scale >= MIN_GRID_PX * (1.0 - 1e-9));
+            assert!(step * scale < MIN_GRID_PX * 5.0 + 1e-9, "not too sparse");
+            let mantissa = step / 10f64.powf(step.log10().floor());
+            assert!(
+                [1.0, 2.0, 5.0].iter().any(|m| (mantissa - m).abs() < 1e-9),
+                "{step}"
+            );
+        }
+    }
+
+    #[test]
+    fn level_of_detail_skips_sub_pixel_vertices_but_keeps_ends() {
+        #[derive(Default)]
+        struct Count {
+            lines: usize,
+            last: (f64, f64),
+        }
+        impl Surface for Count {
+            fn clear(&mut self, _: f64, _: f64, _: &str) {}
+            fn begin_path(&mut self, _: &Stroke) {}
+            fn move_to(&mut self, _: f64, _: f64) {}
+            fn line_to(&mut self, x: f64, y: f64) {
+                self.lines += 1;
+                self.last = (x, y);
+            }
+            fn stroke(&mut self) {}
+            fn fill_rect(&mut self, _: Rect, _: &str, _: Option<&str>) {}
+            fn fill_text(&mut self, _: &str, _: f64, _: f64, _: &Font) {}
+        }
+        // 5000 feed moves of 0.001 mm after one long move: on a small
+        // surface almost all of them are below half a pixel.
+        let mut program = String::from("G91 G01 X100. F100.\n");
+        for _ in 0..5000 {
+            program.push_str("X0.001\n");
+        }
+        let tp = toolpath(&program);
+        let f = Frame::fit(&tp, Plane::Xy, 200.0, 200.0);
+        let mut count = Count::default();
+        draw_path(&mut count, &f, &tp, &tp.actual, true);
+        assert!(count.lines < 100, "{} segments drawn", count.lines);
+        // The very end (X105.) is drawn exactly.
+        let (u, v) = Plane::Xy.project(&tp.actual[tp.actual.len() - 3..]);
+        assert_eq!(count.last, f.transform.to_screen(u, v));
+        assert!((u - 105.0).abs() < 1e-9);
+    }
 }

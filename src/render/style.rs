@@ -58,8 +58,8 @@ pub const CENTRE_LINE: &str = "#5f3dc4";
 pub const LEGEND_FILL: &str = "#ffffff";
 /// Legend box border.
 pub const LEGEND_BORDER: &str = "#ced4da";
-/// The tool at the end of the run.
-pub const TOOL: &str = "#212529";
+/// Behind the scale bar, so grid lines do not run through its label.
+pub const SCALE_FILL: &str = "rgba(255, 255, 255, 0.85)";
 
 /// Actual path, feed moves (G01, arcs, offset motion in G01).
 pub const ACTUAL_FEED: Stroke = Stroke {

@@ -56,7 +56,7 @@ impl Plane {
             Plane::Xy => "XY",
             Plane::Xz => "XZ",
             Plane::Yz => "YZ",
-            Plane::LatheZx => "ZX, X as radius",
+            Plane::LatheZx => "ZX",
         }
     }
 
@@ -93,6 +93,14 @@ impl Rect {
     /// Bottom edge.
     pub fn bottom(&self) -> f64 {
         self.y + self.h
+    }
+
+    /// True when the two rectangles overlap (touching edges do not).
+    pub fn intersects(&self, other: &Rect) -> bool {
+        self.x < other.right()
+            && other.x < self.right()
+            && self.y < other.bottom()
+            && other.y < self.bottom()
     }
 }
 
@@ -206,6 +214,13 @@ impl Transform {
             (x - self.origin_x) / self.scale,
             (self.origin_y - y) / self.scale,
         )
+    }
+
+    /// The screen rectangle a world box covers.
+    pub fn screen_rect(&self, extent: &Extent) -> Rect {
+        let (x0, y0) = self.to_screen(extent.min_u, extent.max_v);
+        let (x1, y1) = self.to_screen(extent.max_u, extent.min_v);
+        Rect::new(x0, y0, x1 - x0, y1 - y0)
     }
 
     /// The world box a screen rectangle shows.
