@@ -1,0 +1,55 @@
+# offsetlab: two commands from a fresh clone.
+#   make serve  installs what is missing, builds the wasm, serves www/ on
+#               http://127.0.0.1:8000/ (PORT=... to change)
+#   make test   installs what is missing and runs every test layer
+SHELL := bash
+.SHELLFLAGS := -eu -o pipefail -c
+.NOTPARALLEL:
+.DEFAULT_GOAL := help
+
+export PATH := $(HOME)/.cargo/bin:$(PATH)
+PORT ?= 8000
+CHROMEDRIVER ?= /usr/bin/chromedriver
+TIMED := scripts/timed.sh
+
+.PHONY: help setup wasm serve test reset-logs lint test-native test-wasm test-e2e clean
+
+help:
+	@echo "make serve   install what is missing, build, serve http://127.0.0.1:$(PORT)/"
+	@echo "make test    install what is missing, run every test layer"
+
+setup:
+	@$(TIMED) setup bash scripts/setup.sh
+
+# The page's wasm package (www/pkg, generated, not committed).
+wasm: setup
+	@$(TIMED) wasm-build wasm-pack build --target web --out-dir www/pkg
+
+serve: wasm
+	node scripts/serve.mjs --port $(PORT)
+
+test: reset-logs setup lint test-native test-wasm wasm test-e2e
+	@bash scripts/summary.sh
+
+reset-logs:
+	@rm -rf test-results/logs
+
+lint: setup
+	@$(TIMED) fmt cargo fmt --check
+	@$(TIMED) clippy cargo clippy --all-targets -- -D warnings
+	@$(TIMED) clippy-wasm cargo clippy --target wasm32-unknown-unknown --lib --test wasm -- -D warnings
+
+# Parser, machine, renderer and CLI contract, natively.
+test-native: setup
+	@$(TIMED) native cargo test
+
+# The wasm contract: the same core in headless Chromium, JS shape pinned.
+test-wasm: setup
+	@$(TIMED) wasm-contract wasm-pack test --headless --chrome --chromedriver $(CHROMEDRIVER) -- --test wasm
+
+# The page end to end in headless Chromium (needs www/pkg: make wasm).
+test-e2e: setup
+	@$(TIMED) e2e npm run --silent test:e2e
+
+clean:
+	rm -rf www/pkg test-results
