@@ -141,6 +141,20 @@ describe('page', () => {
     });
   });
 
+  test('draws a lathe program in ZX with its centre line', async () => {
+    await withPage(async (page) => {
+      await page.locator('#setup-panel summary').click();
+      await page.locator('#setup').fill(
+        '{ "machine": "lathe", "lathe_offsets": { "08": { "x": 0.4, "z": -0.2 } } }',
+      );
+      await typeProgram(page, 'G50 X120. Z60.\nG00 S800 M03 T0108;\nX50. Z3.;\nG01 Z-20. F0.2;\nX80. Z-35.;\nG00 X120. Z60. T0100;\nM30;\n');
+      assert.match(await page.locator('#summary').textContent(), /0 errors · 0 warnings · lathe, mm/);
+      const { counts } = await shootCanvas(page, 'lathe', (c) => c.centreLine > 200 && c.actualFeed > 100);
+      assert.ok(counts.centreLine > 200, `centre line pixels: ${counts.centreLine}`);
+      assert.ok(counts.actualFeed > 100 && counts.programmedFeed > 50, JSON.stringify(counts));
+    });
+  });
+
   test('follows the canvas size and stays drawn on a narrow, low-DPI screen', async () => {
     await withPage(async (page) => {
       const { counts, png } = await shootCanvas(page, 'narrow', drawn);
