@@ -43,6 +43,8 @@ worker.addEventListener('message', (event) => {
     if (message.gen < requested) return; // stale: a newer request is on its way
     showResult(message);
     document.body.dataset.rendered = String(message.gen);
+  } else if (message.type === 'drawn') {
+    document.body.dataset.drawn = `${message.width}x${message.height}@${message.dpr}`;
   } else if (message.type === 'failure') {
     showFailure(message.message);
   }
@@ -90,6 +92,7 @@ watchPixelRatio();
 
 function requestRun() {
   clearTimeout(timer);
+  delete document.body.dataset.pending;
   requested += 1;
   document.body.dataset.requested = String(requested);
   worker.postMessage({
@@ -102,6 +105,8 @@ function requestRun() {
 
 function scheduleRun() {
   clearTimeout(timer);
+  // Tests (and anyone curious) can tell an edit waiting for its run.
+  document.body.dataset.pending = 'true';
   timer = setTimeout(requestRun, DEBOUNCE_MS);
 }
 

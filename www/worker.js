@@ -26,6 +26,7 @@ self.addEventListener('message', (event) => {
 
 function draw() {
   session.render(size.width, size.height, size.dpr);
+  self.postMessage({ type: 'drawn', ...size });
 }
 
 function handle(message) {

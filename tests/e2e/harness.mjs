@@ -106,11 +106,11 @@ export async function openPage(browser, url, { width = 1280, height = 800, scale
   return { context, page, problems };
 }
 
-/** Waits until the answer to the latest run request has been shown. */
+/** Waits until no edit is waiting and the answer to the latest run request is shown. */
 export async function waitForRun(page) {
   await page.waitForFunction(() => {
-    const { requested, rendered } = document.body.dataset;
-    return requested !== undefined && rendered === requested;
+    const { requested, rendered, pending } = document.body.dataset;
+    return pending === undefined && requested !== undefined && rendered === requested;
   }, null, { timeout: 20_000 });
 }
 

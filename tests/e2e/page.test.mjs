@@ -41,9 +41,7 @@ async function typeProgram(page, text) {
   await page.keyboard.press('ControlOrMeta+A');
   await page.keyboard.press('Delete');
   await editor.pressSequentially(text, { delay: 2 });
-  await page.waitForFunction(() => document.body.dataset.requested !== undefined);
   // Wait for the debounce to fire and the answer to come back.
-  await page.waitForTimeout(200);
   await waitForRun(page);
 }
 
@@ -126,7 +124,6 @@ describe('page', () => {
       await page.locator('#setup-panel summary').click();
       const setup = page.locator('#setup');
       await setup.fill('{ "offsets": { "01": "six" } }');
-      await page.waitForTimeout(200);
       await waitForRun(page);
       const item = page.locator('#diagnostics li.error').first();
       assert.equal(await item.locator('.loc').textContent(), 'setup');
@@ -134,7 +131,6 @@ describe('page', () => {
       assert.match(await page.locator('#summary').textContent(), /stopped: bad setup/);
       // Fixing it draws the square again.
       await setup.fill('{ "offsets": { "01": 6.0 } }');
-      await page.waitForTimeout(200);
       await waitForRun(page);
       assert.match(await page.locator('#summary').textContent(), /0 errors/);
       await shootCanvas(page, 'setup-fixed', drawn);
@@ -161,9 +157,14 @@ describe('page', () => {
       const box = await page.locator('#view').boundingBox();
       assert.equal(png.width, Math.round(box.width));
       assert.ok(counts.actualFeed > 150 && counts.programmedFeed > 50, JSON.stringify(counts));
-      // Resizing the window re-draws at the new size.
+      // Resizing the window re-draws at the new size (the worker reports
+      // the size it drew at).
       await page.setViewportSize({ width: 700, height: 900 });
-      await page.waitForTimeout(300);
+      const wanted = await page.locator('#view').evaluate((el) => {
+        const r = el.getBoundingClientRect();
+        return `${Math.round(r.width)}x${Math.round(r.height)}@${window.devicePixelRatio}`;
+      });
+      await page.waitForFunction((w) => document.body.dataset.drawn === w, wanted);
       const resized = await shootCanvas(page, 'resized', drawn);
       assert.ok(resized.png.width > png.width * 1.3, `${resized.png.width} vs ${png.width}`);
     }, { width: 480, height: 900, scale: 1 });
