@@ -104,7 +104,7 @@ if [ -f "$stamp" ] && cmp -s package-lock.json "$stamp"; then
   say "npm packages: present"
 else
   say "npm ci"
-  npm ci --no-audit --no-fund
+  npm ci --no-audit --no-fund --update-notifier=false
   cp package-lock.json "$stamp"
 fi
 
