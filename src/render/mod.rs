@@ -369,7 +369,7 @@ fn text_box(text: &str, x: f64, y: f64, font: &Font) -> Rect {
 
 /// The first of `spots` (anchor and font) where a label overlaps none of
 /// `taken`, else the first.
-fn free_spot(text: &str, spots: &[(f64, f64, Font)], taken: &[Rect]) -> (f64, f64, Font) {
+fn free_spot(text: &str, spots: &[(f64, f64, Font)], taken: &[Rect]) -> Option<(f64, f64, Font)> {
     spots
         .iter()
         .copied()
@@ -378,7 +378,7 @@ fn free_spot(text: &str, spots: &[(f64, f64, Font)], taken: &[Rect]) -> (f64, f6
                 .iter()
                 .any(|r| text_box(text, *x, *y, font).intersects(r))
         })
-        .unwrap_or(spots[0])
+        .or_else(|| spots.first().copied())
 }
 
 /// `v` limited to `[lo, hi]`, preferring `lo` when the range is empty (on
@@ -437,16 +437,18 @@ fn draw_axes(s: &mut impl Surface, f: &Frame) {
     if let Some((area, _)) = f.scale_bar() {
         h_spots.push((area.x - 8.0, y - 6.0, right));
     }
-    let (hx, hy, font) = free_spot(h_name, &h_spots, &taken);
-    s.fill_text(h_name, hx, hy, &font);
+    if let Some((x, y, font)) = free_spot(h_name, &h_spots, &taken) {
+        s.fill_text(h_name, x, y, &font);
+    }
     let x = clamp(x0, MARGIN.0, f.width - 40.0);
     let v_spots = [
         (x + 6.0, 16.0, bold),
         (x + 6.0, f.legend.bottom() + 16.0, bold),
         (x - 6.0, 16.0, right),
     ];
-    let (vx, vy, font) = free_spot(v_name, &v_spots, &taken);
-    s.fill_text(v_name, vx, vy, &font);
+    if let Some((x, y, font)) = free_spot(v_name, &v_spots, &taken) {
+        s.fill_text(v_name, x, y, &font);
+    }
     if f.plane.has_centre_line() && inside_y {
         let font = Font {
             color: style::CENTRE_LINE,

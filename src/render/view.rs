@@ -30,8 +30,10 @@ impl Plane {
     }
 
     /// Projects an x, y, z vertex onto the plane: (horizontal, vertical).
+    /// Missing coordinates read as 0.
     pub fn project(self, p: &[f64]) -> (f64, f64) {
-        let (x, y, z) = (p[0], p[1], p[2]);
+        let at = |i: usize| p.get(i).copied().unwrap_or(0.0);
+        let (x, y, z) = (at(0), at(1), at(2));
         match self {
             Plane::Xy => (x, y),
             Plane::Xz => (x, z),
