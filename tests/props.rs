@@ -113,8 +113,8 @@ proptest! {
         for b in &r.blocks {
             let st = &b.state;
             let mut want = st.programmed;
-            for i in 0..3 {
-                want[i] += st.position.vector[i];
+            for (w, v) in want.iter_mut().zip(st.position.vector) {
+                *w += v;
             }
             want[2] += st.length.vector;
             same(st.actual, want);

@@ -444,11 +444,13 @@ fn spec2_block_skip_setting() {
 
 #[test]
 fn spec2_a_setup_start_position_and_bad_setup() {
-    let mut s = Setup::default();
-    s.start = Position {
-        x: 1.0,
-        y: 2.0,
-        z: 3.0,
+    let mut s = Setup {
+        start: Position {
+            x: 1.0,
+            y: 2.0,
+            z: 3.0,
+        },
+        ..Setup::default()
     };
     let r = ok("G91 X1.", &s);
     same(programmed(&r, 0), [2.0, 2.0, 3.0]);
