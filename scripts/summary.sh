@@ -8,8 +8,8 @@ cargo_counts() { # passed and failed over every "test result:" line of a cargo l
   awk '/^test result:/ { for (i = 1; i <= NF; i++) { if ($(i) ~ /^passed;?$/) p += $(i-1); if ($(i) ~ /^failed;?$/) f += $(i-1) } }
        END { printf "%d %d\n", p, f }' "$1"
 }
-node_counts() {
-  awk '/^# pass / { p += $3 } /^# fail / { f += $3 } END { printf "%d %d\n", p, f }' "$1"
+node_counts() { # TAP ("# pass N", Node 20 when piped) or spec ("ℹ pass N", Node 23+)
+  awk '/^(# |ℹ )pass [0-9]+$/ { p += $3 } /^(# |ℹ )fail [0-9]+$/ { f += $3 } END { printf "%d %d\n", p, f }' "$1"
 }
 
 total_passed=0
