@@ -343,6 +343,9 @@ pub struct Run {
     pub block_count: u32,
     /// Why execution ended.
     pub end: End,
+    /// Offset registers the executed blocks name (mill: D and H numbers;
+    /// lathe: the offset part of T codes), ascending, without 00.
+    pub registers: Vec<u16>,
 }
 
 impl Run {

@@ -6,8 +6,8 @@
 use crate::diag::{self, Diagnostic};
 use crate::machine::{Flow, Machine, Out};
 use crate::report::{BlockReport, End, Event, Run};
-use crate::setup::Setup;
-use crate::syntax::{Block, Blocks, ParseOptions};
+use crate::setup::{MachineKind, Setup};
+use crate::syntax::{Address, Block, Blocks, ParseOptions};
 
 /// Most moves one run records by default; past this the run stops with an
 /// error (a move is about 200 bytes: 5 million is about 1 GB).
@@ -46,6 +46,7 @@ pub fn run_with(text: &str, setup: &Setup, options: RunOptions) -> Run {
         events: Vec::new(),
         diagnostics: Vec::new(),
         block_count: 0,
+        registers: Vec::new(),
         end: End::Completed,
     };
     let setup_problems = setup.validate();
@@ -61,6 +62,7 @@ pub fn run_with(text: &str, setup: &Setup, options: RunOptions) -> Run {
     let mut run_diagnostics: Vec<Diagnostic> = Vec::new();
     let mut stopped = false;
     let mut units_known = false;
+    let mut registers = std::collections::BTreeSet::new();
     while parser.next_into(&mut block) {
         if stopped {
             continue;
@@ -112,6 +114,16 @@ pub fn run_with(text: &str, setup: &Setup, options: RunOptions) -> Run {
             });
         }
         result.block_count += 1;
+        for w in &block.words {
+            let n = match (w.address, setup.machine) {
+                (Address::D | Address::H, MachineKind::Mill) => w.int() as u16,
+                (Address::T, MachineKind::Lathe) => (w.int() % 100) as u16,
+                _ => 0,
+            };
+            if n != 0 {
+                registers.insert(n);
+            }
+        }
         if flow == Flow::End {
             stopped = true;
             result.end = End::ProgramEnd {
@@ -122,6 +134,7 @@ pub fn run_with(text: &str, setup: &Setup, options: RunOptions) -> Run {
     if !units_known {
         result.units = machine.state().modal.units;
     }
+    result.registers = registers.into_iter().collect();
     let mut diagnostics = parser.into_diagnostics();
     diagnostics.append(&mut run_diagnostics);
     diag::finish(&mut diagnostics, text);

@@ -246,7 +246,7 @@ pub struct BoundsView {
 }
 
 /// Counts and bounds of a run.
-#[derive(Clone, Copy, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize)]
 pub struct Summary {
     /// Mill or lathe.
     pub machine: MachineKind,
@@ -264,6 +264,8 @@ pub struct Summary {
     pub end: End,
     /// Bounds of the actual and programmed paths together.
     pub bounds: Option<BoundsView>,
+    /// Offset registers the program names (mill D/H, lathe T offset numbers).
+    pub registers: Vec<u16>,
 }
 
 /// The summary of a run.
@@ -281,6 +283,7 @@ pub fn summary(run: &Run) -> Summary {
             min: pos(b.min, run.units, run.machine),
             max: pos(b.max, run.units, run.machine),
         }),
+        registers: run.registers.clone(),
     }
 }
 

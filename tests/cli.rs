@@ -281,3 +281,17 @@ fn empty_program_is_fine() {
     assert_eq!(out.status.code(), Some(0));
     assert!(String::from_utf8_lossy(&out.stdout).contains("0 blocks, 0 moves, no motion"));
 }
+
+#[test]
+fn summary_lists_the_registers_the_program_names() {
+    let (v, _) = json(
+        &["run", "--format", "json", "-"],
+        "G43 Z10. H02\nG91 G45 X1. D01\nD05\nH00",
+    );
+    assert_eq!(v["summary"]["registers"], serde_json::json!([1, 2, 5]));
+    let (v, _) = json(
+        &["run", "--format", "json", "--machine", "lathe", "-"],
+        "T0108\nT0200\nT0316",
+    );
+    assert_eq!(v["summary"]["registers"], serde_json::json!([8, 16]));
+}
