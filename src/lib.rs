@@ -21,12 +21,14 @@
 #![warn(missing_docs)]
 
 pub mod diag;
+pub mod document;
 pub mod machine;
 pub mod offsets;
 pub mod render;
 pub mod report;
 mod run;
 pub mod setup;
+pub mod share;
 pub mod syntax;
 pub mod toolpath;
 pub mod view;
@@ -34,6 +36,7 @@ pub mod view;
 pub mod wasm;
 
 pub use diag::{Diagnostic, Severity, Span};
+pub use document::Document;
 pub use report::{BlockReport, End, Event, Move, MoveKind, Run};
 pub use run::{MAX_MOVES, RunOptions, run, run_with};
 pub use setup::{MachineKind, Setup, Units};

@@ -187,14 +187,19 @@ impl<'de> Deserialize<'de> for Mirror {
 #[serde(deny_unknown_fields, default)]
 pub struct Settings {
     /// Dimension words without a decimal point (spec 1).
+    #[serde(skip_serializing_if = "is_default")]
     pub decimal_input: DecimalInput,
     /// Optional block skip switch: when on, blocks starting with `/` are skipped.
+    #[serde(skip_serializing_if = "is_default")]
     pub block_skip: bool,
     /// `G43 H…` with no Z word (spec 3.3).
+    #[serde(skip_serializing_if = "is_default")]
     pub length_offset_without_z: LengthOffsetWithoutZ,
     /// Lathe table X values: diameter or radius (spec 5).
+    #[serde(skip_serializing_if = "is_default")]
     pub lathe_x_offset: LatheXOffset,
     /// Mirror image switches (mill).
+    #[serde(skip_serializing_if = "is_default")]
     pub mirror: Mirror,
     /// Retract amount `d` of the G73/G83 peck cycles, in setup units
     /// (a machine parameter on a real control). Default 1 mm / 0.04 in.
@@ -225,22 +230,22 @@ impl Position {
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct WorkOffsets {
-    #[serde(rename = "G54")]
+    #[serde(rename = "G54", skip_serializing_if = "is_default")]
     #[allow(missing_docs)]
     pub g54: Position,
-    #[serde(rename = "G55")]
+    #[serde(rename = "G55", skip_serializing_if = "is_default")]
     #[allow(missing_docs)]
     pub g55: Position,
-    #[serde(rename = "G56")]
+    #[serde(rename = "G56", skip_serializing_if = "is_default")]
     #[allow(missing_docs)]
     pub g56: Position,
-    #[serde(rename = "G57")]
+    #[serde(rename = "G57", skip_serializing_if = "is_default")]
     #[allow(missing_docs)]
     pub g57: Position,
-    #[serde(rename = "G58")]
+    #[serde(rename = "G58", skip_serializing_if = "is_default")]
     #[allow(missing_docs)]
     pub g58: Position,
-    #[serde(rename = "G59")]
+    #[serde(rename = "G59", skip_serializing_if = "is_default")]
     #[allow(missing_docs)]
     pub g59: Position,
 }
@@ -355,6 +360,16 @@ fn is_zero(v: &f64) -> bool {
     *v == 0.0
 }
 
+/// Documents leave out what is at its default: shorter links, and a decoded
+/// document shows what its author changed.
+fn is_default<T: Default + PartialEq>(v: &T) -> bool {
+    *v == T::default()
+}
+
+fn is_default_table(n: &u16) -> bool {
+    *n == DEFAULT_TABLE_SIZE
+}
+
 impl LatheRegister {
     /// X value used (geometry + wear), as stored (diameter or radius).
     pub fn x_value(&self) -> f64 {
@@ -377,20 +392,25 @@ pub struct Setup {
     /// Units at program start (G20/G21 state) and of the setup's positions.
     pub units: Units,
     /// Settings where controls disagree.
+    #[serde(skip_serializing_if = "is_default")]
     pub settings: Settings,
     /// Number of offset registers (01 to this).
+    #[serde(skip_serializing_if = "is_default_table")]
     pub table_size: u16,
     /// Where the tool starts, in the G54 system.
+    #[serde(skip_serializing_if = "is_default")]
     pub start: Position,
     /// The reference position G28 returns to, in machine coordinates.
+    #[serde(skip_serializing_if = "is_default")]
     pub reference: Position,
     /// G54–G59 zero points in machine coordinates.
+    #[serde(skip_serializing_if = "is_default")]
     pub work_offsets: WorkOffsets,
     /// Mill registers read by D and H.
-    #[serde(with = "register_map")]
+    #[serde(with = "register_map", skip_serializing_if = "BTreeMap::is_empty")]
     pub offsets: BTreeMap<u16, MillRegister>,
     /// Lathe registers read by the offset part of T codes.
-    #[serde(with = "register_map")]
+    #[serde(with = "register_map", skip_serializing_if = "BTreeMap::is_empty")]
     pub lathe_offsets: BTreeMap<u16, LatheRegister>,
 }
 

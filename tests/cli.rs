@@ -295,3 +295,86 @@ fn summary_lists_the_registers_the_program_names() {
     );
     assert_eq!(v["summary"]["registers"], serde_json::json!([8, 16]));
 }
+
+#[test]
+fn link_round_trips_through_decode() {
+    let out = offsetlab(
+        &[
+            "link", "--offset", "01=6", "--step", "2", "--plane", "XY", "-",
+        ],
+        SQUARE.as_bytes(),
+    );
+    assert_eq!(out.status.code(), Some(0));
+    let link = String::from_utf8(out.stdout).unwrap().trim().to_string();
+    assert!(link.starts_with("http://127.0.0.1:8000/#v1."), "{link}");
+    let out = offsetlab(&["link", "--decode", &link], b"");
+    assert_eq!(out.status.code(), Some(0));
+    let doc: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(doc["program"], SQUARE);
+    assert_eq!(doc["offsets"]["01"], 6.0);
+    assert_eq!(doc["step"], 2);
+    assert_eq!(doc["view"]["plane"], "XY");
+    // The decoded document runs as a --setup file without PROGRAM.
+    let path = temp_file("decoded.json", &out.stdout);
+    let (v, code) = json(
+        &["run", "--format", "json", "--setup", path.to_str().unwrap()],
+        "",
+    );
+    assert_eq!(code, 0);
+    assert_eq!(v["blocks"][1]["actual"]["x"], -6.0);
+}
+
+#[test]
+fn link_plain_form_and_base() {
+    let out = offsetlab(
+        &[
+            "link",
+            "--plain",
+            "--embed",
+            "--base",
+            "https://example.org/play/",
+            "--machine",
+            "lathe",
+            "--offset",
+            "08=X0.4,Z-0.2",
+            "-",
+        ],
+        b"G50 X120. Z60.\nT0108\n",
+    );
+    let link = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        link.starts_with("https://example.org/play/#program=G50%20X120.%20Z60.%0AT0108%0A"),
+        "{link}"
+    );
+    assert!(
+        link.contains("machine=lathe")
+            && link.contains("offset=08:X0.4,Z-0.2")
+            && link.trim().ends_with("embed=1"),
+        "{link}"
+    );
+    let out = offsetlab(&["link", "--decode", link.trim()], b"");
+    assert_eq!(out.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("embed mode"));
+    let out = offsetlab(&["link", "--base", "javascript:alert(1)", "-"], b"G00 X1.");
+    assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
+fn link_decode_errors_exit_2_with_the_reason() {
+    for (link, code) in [
+        ("#v2.abc", "link-version"),
+        ("#v1.!!", "link-base64"),
+        ("#v1.AAAA", "link-deflate"),
+        ("#nonsense", "link-plain"),
+    ] {
+        let out = offsetlab(&["link", "--decode", link], b"");
+        assert_eq!(out.status.code(), Some(2), "{link}");
+        assert!(
+            String::from_utf8_lossy(&out.stderr).contains(code),
+            "{link}"
+        );
+    }
+    let out = offsetlab(&["run"], b"");
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("no PROGRAM"));
+}

@@ -1,4 +1,5 @@
-//! Command-line parsing (clap) and the two subcommands' output.
+//! Command-line parsing (clap) and the subcommands' output: `run`, `check`
+//! and `link`.
 
 mod table;
 
@@ -7,8 +8,10 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
+use offsetlab::document::{ViewPlane, ViewState};
+use offsetlab::share::{self, DEFAULT_BASE, LONG_LINK};
 use offsetlab::view::{RunView, summary};
-use offsetlab::{MachineKind, RunOptions, Setup, run_with};
+use offsetlab::{Document, MachineKind, RunOptions, run_with};
 
 #[derive(Parser)]
 #[command(
@@ -38,6 +41,32 @@ enum Command {
         #[command(flatten)]
         common: Common,
     },
+    /// Print a share link carrying the program with its offsets and settings,
+    /// or with --decode print the document a link carries.
+    Link {
+        #[command(flatten)]
+        common: Common,
+        /// The page the link opens (http or https).
+        #[arg(long, value_name = "URL", default_value = DEFAULT_BASE)]
+        base: String,
+        /// Write the plain, hand-writable form (#program=…&offset=…) instead
+        /// of the compact one (#v1.…).
+        #[arg(long)]
+        plain: bool,
+        /// Open the page in embed mode (view, steps and a read-only editor).
+        #[arg(long)]
+        embed: bool,
+        /// The block the page shows first (0 = the first executed block).
+        #[arg(long, value_name = "N")]
+        step: Option<u32>,
+        /// The view plane: XY, XZ, YZ (mill) or ZX (lathe).
+        #[arg(long, value_name = "PLANE")]
+        plane: Option<String>,
+        /// Decode LINK (a URL, a #fragment or the fragment) and print its
+        /// document as JSON instead.
+        #[arg(long, value_name = "LINK", conflicts_with_all = ["program", "base", "plain", "embed", "step", "plane"])]
+        decode: Option<String>,
+    },
 }
 
 #[derive(Args)]
@@ -49,12 +78,13 @@ struct Common {
     /// (08=X0.4,Z-0.2). Repeatable; applied after --setup.
     #[arg(long = "offset", value_name = "SPEC")]
     offsets: Vec<String>,
-    /// Setup document (JSON; see the README).
+    /// Setup document (JSON; see the README). A document that carries a
+    /// program (as `link --decode` prints) may stand in for PROGRAM.
     #[arg(long, value_name = "FILE")]
     setup: Option<PathBuf>,
     /// Program file, or - for standard input.
     #[arg(value_name = "PROGRAM")]
-    program: String,
+    program: Option<String>,
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -74,7 +104,14 @@ struct Fatal(String);
 
 pub fn main() -> ExitCode {
     let cli = Cli::parse();
-    match execute(cli) {
+    let stdout = io::stdout();
+    let mut out = BufWriter::new(stdout.lock());
+    let result = execute(cli, &mut out);
+    let flushed = out.flush();
+    match result.and_then(|code| match flushed {
+        Ok(()) => Ok(code),
+        Err(e) => written(Err(e)).map(|_| code),
+    }) {
         Ok(code) => code,
         Err(Fatal(msg)) => {
             let _ = writeln!(io::stderr(), "offsetlab: {msg}");
@@ -83,84 +120,144 @@ pub fn main() -> ExitCode {
     }
 }
 
-fn execute(cli: Cli) -> Result<ExitCode, Fatal> {
-    let (common, format) = match &cli.command {
-        Command::Run { common, format } => (common, Some(*format)),
-        Command::Check { common } => (common, None),
-    };
-    let setup = build_setup(common)?;
-    let (name, text) = read_program(&common.program)?;
-    let stdout = io::stdout();
-    let mut out = BufWriter::new(stdout.lock());
-    let result = match format {
-        Some(format) => {
-            let run = run_with(
-                &text,
-                &setup,
-                RunOptions {
-                    keep_blocks: true,
-                    ..RunOptions::default()
-                },
-            );
-            let written = match format {
+/// Output errors: a closed pipe (`| head`) is the reader's choice, not a
+/// failure; anything else is.
+fn written(r: io::Result<()>) -> Result<(), Fatal> {
+    match r {
+        Ok(()) => Ok(()),
+        Err(e) if e.kind() == io::ErrorKind::BrokenPipe => Ok(()),
+        Err(e) => Err(Fatal(format!("cannot write the output: {e}"))),
+    }
+}
+
+fn exit(errors: bool) -> ExitCode {
+    if errors {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    }
+}
+
+fn execute(cli: Cli, out: &mut impl Write) -> Result<ExitCode, Fatal> {
+    match cli.command {
+        Command::Run { common, format } => {
+            let (_, doc) = load(&common)?;
+            let options = RunOptions {
+                keep_blocks: true,
+                ..RunOptions::default()
+            };
+            let run = run_with(&doc.program, &doc.setup, options);
+            written(match format {
                 Format::Json => serde_json::to_writer(
-                    &mut out,
+                    &mut *out,
                     &RunView {
                         run: &run,
-                        text: &text,
+                        text: &doc.program,
                     },
                 )
                 .map_err(io::Error::from)
                 .and_then(|_| writeln!(out)),
-                Format::Table => table::write(&mut out, &run, &text),
+                Format::Table => table::write(out, &run, &doc.program),
+            })?;
+            Ok(exit(run.has_errors()))
+        }
+        Command::Check { common } => {
+            let (name, doc) = load(&common)?;
+            let options = RunOptions {
+                keep_blocks: false,
+                ..RunOptions::default()
             };
-            (written, run.has_errors())
+            let run = run_with(&doc.program, &doc.setup, options);
+            written(check(out, &name, &run))?;
+            Ok(exit(run.has_errors()))
         }
-        None => {
-            let run = run_with(
-                &text,
-                &setup,
-                RunOptions {
-                    keep_blocks: false,
-                    ..RunOptions::default()
-                },
-            );
-            (check(&mut out, &name, &run), run.has_errors())
+        Command::Link {
+            common,
+            base,
+            plain,
+            embed,
+            step,
+            plane,
+            decode,
+        } => {
+            if let Some(link) = decode {
+                let decoded = share::decode(&link).map_err(|e| Fatal(e.to_string()))?;
+                if decoded.embed {
+                    let _ = writeln!(io::stderr(), "offsetlab: the link opens in embed mode");
+                }
+                written(writeln!(out, "{}", decoded.document.to_json_pretty()))?;
+                return Ok(ExitCode::SUCCESS);
+            }
+            let (_, mut doc) = load(&common)?;
+            if let Some(p) = plane {
+                let plane = ViewPlane::parse(&p)
+                    .ok_or_else(|| Fatal(format!("--plane {p}: expected XY, XZ, YZ or ZX")))?;
+                doc.view.get_or_insert_with(ViewState::default).plane = plane;
+            }
+            if step.is_some() {
+                doc.step = step;
+            }
+            let doc = doc.validated().map_err(|e| Fatal(e.to_string()))?;
+            share::check_base(&base).map_err(|e| Fatal(e.message))?;
+            let text = if plain {
+                format!("{base}#{}", share::encode_plain(&doc, embed))
+            } else {
+                share::link(&base, &doc, embed).map_err(|e| Fatal(e.message))?
+            };
+            if text.len() > LONG_LINK {
+                let _ = writeln!(
+                    io::stderr(),
+                    "offsetlab: this link is {} characters; past {LONG_LINK} chat tools and some browsers may cut it — share the document file instead (offsetlab link --decode LINK > lesson.json)",
+                    text.len()
+                );
+            }
+            written(writeln!(out, "{text}"))?;
+            Ok(ExitCode::SUCCESS)
         }
-    };
-    let (written, errors) = result;
-    match written.and_then(|_| out.flush()) {
-        Ok(()) => {}
-        // A closed pipe (`| head`) is the reader's choice, not a failure.
-        Err(e) if e.kind() == io::ErrorKind::BrokenPipe => {}
-        Err(e) => return Err(Fatal(format!("cannot write the output: {e}"))),
     }
-    Ok(if errors {
-        ExitCode::from(1)
-    } else {
-        ExitCode::SUCCESS
-    })
 }
 
-fn build_setup(common: &Common) -> Result<Setup, Fatal> {
-    let mut setup = match &common.setup {
+/// The document a command works on: `--setup` (a setup document or a whole
+/// document), `--machine` and `--offset` on top, and the program from
+/// PROGRAM or, without it, from the document.
+fn load(common: &Common) -> Result<(String, Document), Fatal> {
+    let mut doc = match &common.setup {
         Some(path) => {
             let text = std::fs::read_to_string(path)
                 .map_err(|e| Fatal(format!("cannot read setup {}: {e}", path.display())))?;
-            Setup::from_json(&text).map_err(|e| Fatal(format!("setup {}: {e}", path.display())))?
+            Document::from_json(&text)
+                .map_err(|e| Fatal(format!("setup {}: {e}", path.display())))?
         }
-        None => Setup::default(),
+        None => Document::default(),
     };
     if let Some(m) = common.machine {
-        setup.machine = match m {
+        doc.setup.machine = match m {
             Machine::Mill => MachineKind::Mill,
             Machine::Lathe => MachineKind::Lathe,
         };
     }
     for spec in &common.offsets {
-        setup.set_register(spec).map_err(Fatal)?;
+        doc.setup.set_register(spec).map_err(Fatal)?;
     }
-    setup.validated().map_err(|e| Fatal(e.to_string()))
+    let mut doc = doc.validated().map_err(|e| Fatal(e.to_string()))?;
+    let name = match &common.program {
+        Some(path) => {
+            let (name, text) = read_program(path)?;
+            doc.program = text;
+            name
+        }
+        None if !doc.program.is_empty() => match &common.setup {
+            Some(p) => p.display().to_string(),
+            None => "<document>".to_string(),
+        },
+        None => {
+            return Err(Fatal(
+                "no PROGRAM given (a file, or - for standard input), and no program in the setup document"
+                    .to_string(),
+            ));
+        }
+    };
+    Ok((name, doc))
 }
 
 /// Reads the program; `-` is standard input. Invalid UTF-8 is refused with
