@@ -54,6 +54,7 @@ fn throughput(c: &mut Criterion) {
         });
         let check = RunOptions {
             keep_blocks: false,
+            keep_moves: false,
             ..RunOptions::default()
         };
         group.bench_with_input(BenchmarkId::new("parse+run", blocks), &text, |b, t| {

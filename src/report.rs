@@ -75,6 +75,11 @@ pub struct ArcInfo {
     pub sweep: f64,
     /// Signed sweep of the programmed arc.
     pub programmed_sweep: f64,
+    /// Angle of the actual arc's start point about its centre (radians, in
+    /// the plane's frame; radius space on the lathe).
+    pub start_angle: f64,
+    /// Angle of the programmed arc's start point.
+    pub programmed_start_angle: f64,
     /// X is a diameter (lathe): the geometry is in radius space.
     pub diameter_x: bool,
 }
@@ -346,6 +351,10 @@ pub struct Run {
     /// Offset registers the executed blocks name (mill: D and H numbers;
     /// lathe: the offset part of T codes), ascending, without 00.
     pub registers: Vec<u16>,
+    /// Number of moves (also when the moves are not kept).
+    pub move_count: usize,
+    /// Bounds of both paths (mm), kept as the moves are made.
+    pub bounds: Option<Bounds>,
 }
 
 impl Run {
@@ -356,55 +365,53 @@ impl Run {
 
     /// Bounds of the actual and programmed paths (mm), or None without moves.
     pub fn bounds(&self) -> Option<Bounds> {
-        let mut b: Option<Bounds> = None;
-        for m in &self.moves {
-            for p in [m.from, m.to, m.programmed_from, m.programmed_to] {
-                match &mut b {
-                    None => b = Some(Bounds { min: p, max: p }),
-                    Some(b) => b.include(p),
-                }
-            }
-            if let (Some(a), Some(b)) = (&m.arc, &mut b) {
-                for p in a.extremes(m) {
-                    b.include(p);
-                }
-            }
-        }
-        b
+        self.bounds
     }
 }
 
 impl ArcInfo {
-    /// The points where the actual and the programmed arc of `m` reach their
-    /// extremes along the plane's axes (for bounding boxes).
-    pub fn extremes(&self, m: &Move) -> Vec<Xyz> {
+    /// The actual arc in plane coordinates (radius space on the lathe).
+    pub fn circle(&self) -> Circle {
+        self.plane_circle(self.center, self.radius, self.start_angle, self.sweep)
+    }
+
+    /// The programmed arc in plane coordinates.
+    pub fn programmed_circle(&self) -> Circle {
+        self.plane_circle(
+            self.programmed_center,
+            self.programmed_radius,
+            self.programmed_start_angle,
+            self.programmed_sweep,
+        )
+    }
+
+    fn plane_circle(&self, c: Xyz, radius: f64, start_angle: f64, sweep: f64) -> Circle {
         let (ia, ib, _) = self.plane.axes();
         let s = |i: usize| if self.diameter_x && i == 0 { 0.5 } else { 1.0 };
-        let mut out = Vec::new();
-        for (c, r, from, sweep) in [
-            (self.center, self.radius, m.from, self.sweep),
-            (
-                self.programmed_center,
-                self.programmed_radius,
-                m.programmed_from,
-                self.programmed_sweep,
-            ),
+        Circle {
+            center: [c[ia] * s(ia), c[ib] * s(ib)],
+            radius,
+            start_angle,
+            sweep,
+        }
+    }
+
+    /// The points where the actual and the programmed arc of `m` reach their
+    /// extremes along the plane's axes (for bounding boxes).
+    pub fn each_extreme(&self, m: &Move, mut f: impl FnMut(Xyz)) {
+        let (ia, ib, _) = self.plane.axes();
+        let s = |i: usize| if self.diameter_x && i == 0 { 0.5 } else { 1.0 };
+        for (circle, from) in [
+            (self.circle(), m.from),
+            (self.programmed_circle(), m.programmed_from),
         ] {
-            let center = [c[ia] * s(ia), c[ib] * s(ib)];
-            let circle = Circle {
-                center,
-                radius: r,
-                start_angle: (from[ib] * s(ib) - center[1]).atan2(from[ia] * s(ia) - center[0]),
-                sweep,
-            };
             for e in circle.extremes() {
                 let mut p = from;
                 p[ia] = e[0] / s(ia);
                 p[ib] = e[1] / s(ib);
-                out.push(p);
+                f(p);
             }
         }
-        out
     }
 }
 
@@ -415,6 +422,20 @@ pub struct Bounds {
     pub min: Xyz,
     /// Largest X, Y, Z.
     pub max: Xyz,
+}
+
+/// Grows `b` to hold every point of a move, both paths, arcs included.
+pub fn include_move(b: &mut Option<Bounds>, m: &Move) {
+    let mut add = |p: Xyz| match b {
+        None => *b = Some(Bounds { min: p, max: p }),
+        Some(b) => b.include(p),
+    };
+    for p in [m.from, m.to, m.programmed_from, m.programmed_to] {
+        add(p);
+    }
+    if let Some(a) = &m.arc {
+        a.each_extreme(m, add);
+    }
 }
 
 impl Bounds {

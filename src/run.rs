@@ -5,7 +5,7 @@
 
 use crate::diag::{self, Diagnostic};
 use crate::machine::{Flow, Machine, Out};
-use crate::report::{BlockReport, End, Event, Run};
+use crate::report::{BlockReport, End, Event, Run, include_move};
 use crate::setup::{MachineKind, Setup};
 use crate::syntax::{Address, Block, Blocks, ParseOptions};
 
@@ -18,6 +18,9 @@ pub const MAX_MOVES: usize = 5_000_000;
 pub struct RunOptions {
     /// Keep a report per block (the `check` fast path does not need them).
     pub keep_blocks: bool,
+    /// Keep every move (the `check` fast path only counts them and keeps
+    /// their bounds).
+    pub keep_moves: bool,
     /// Most moves to record before stopping with `too-many-moves`.
     pub max_moves: usize,
 }
@@ -26,6 +29,7 @@ impl Default for RunOptions {
     fn default() -> Self {
         RunOptions {
             keep_blocks: true,
+            keep_moves: true,
             max_moves: MAX_MOVES,
         }
     }
@@ -47,6 +51,8 @@ pub fn run_with(text: &str, setup: &Setup, options: RunOptions) -> Run {
         diagnostics: Vec::new(),
         block_count: 0,
         registers: Vec::new(),
+        move_count: 0,
+        bounds: None,
         end: End::Completed,
     };
     let setup_problems = setup.validate();
@@ -79,7 +85,7 @@ pub fn run_with(text: &str, setup: &Setup, options: RunOptions) -> Run {
         }
         out.clear();
         let index = result.block_count;
-        machine.moves_left = options.max_moves.saturating_sub(result.moves.len());
+        machine.moves_left = options.max_moves.saturating_sub(result.move_count);
         let flow = match machine.execute(&block, index, &mut out) {
             Ok(flow) => flow,
             Err(d) => {
@@ -95,8 +101,14 @@ pub fn run_with(text: &str, setup: &Setup, options: RunOptions) -> Run {
             units_known = true;
             result.units = machine.state().modal.units;
         }
-        let first_move = result.moves.len() as u32;
-        result.moves.extend_from_slice(&out.moves);
+        let first_move = result.move_count as u32;
+        for m in &out.moves {
+            include_move(&mut result.bounds, m);
+        }
+        result.move_count += out.moves.len();
+        if options.keep_moves {
+            result.moves.extend_from_slice(&out.moves);
+        }
         result.events.extend(out.events.drain(..).map(|kind| Event {
             block: index,
             line: block.span.line,

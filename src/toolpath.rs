@@ -85,22 +85,8 @@ impl Toolpath {
     fn push_arc(&mut self, m: &Move, a: &ArcInfo, k: f64) {
         let (ia, ib, n) = a.plane.axes();
         let s = |i: usize| if a.diameter_x && i == 0 { 0.5 } else { 1.0 };
-        let circle = |c: Xyz, r: f64, from: Xyz, sweep: f64| {
-            let center = [c[ia] * s(ia), c[ib] * s(ib)];
-            Circle {
-                center,
-                radius: r,
-                start_angle: (from[ib] * s(ib) - center[1]).atan2(from[ia] * s(ia) - center[0]),
-                sweep,
-            }
-        };
-        let act = circle(a.center, a.radius, m.from, a.sweep);
-        let prog = circle(
-            a.programmed_center,
-            a.programmed_radius,
-            m.programmed_from,
-            a.programmed_sweep,
-        );
+        let act = a.circle();
+        let prog = a.programmed_circle();
         let count = act
             .segments(CHORD_TOLERANCE_MM)
             .max(prog.segments(CHORD_TOLERANCE_MM));

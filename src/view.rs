@@ -275,7 +275,7 @@ pub fn summary(run: &Run) -> Summary {
         machine: run.machine,
         units: run.units,
         blocks: run.block_count,
-        moves: run.moves.len(),
+        moves: run.move_count,
         errors: count(Severity::Error),
         warnings: count(Severity::Warning),
         end: run.end,

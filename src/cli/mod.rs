@@ -165,6 +165,7 @@ fn execute(cli: Cli, out: &mut impl Write) -> Result<ExitCode, Fatal> {
             let (name, doc) = load(&common)?;
             let options = RunOptions {
                 keep_blocks: false,
+                keep_moves: false,
                 ..RunOptions::default()
             };
             let run = run_with(&doc.program, &doc.setup, options);

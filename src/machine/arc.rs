@@ -173,17 +173,28 @@ impl Circle {
     /// The points of the arc that are extreme along either plane axis (those
     /// of the four quadrant points the sweep passes), for bounding boxes.
     pub fn extremes(&self) -> impl Iterator<Item = P2> + '_ {
-        (0..4).filter_map(move |q| {
-            let a = f64::from(q) * PI / 2.0;
-            let rel = if self.sweep >= 0.0 {
-                (a - self.start_angle).rem_euclid(TAU)
+        // Quadrant angles in [-π, π); each is passed if it (or it shifted by
+        // one turn towards the sweep) lies between the start and the end.
+        const QUADRANTS: [(f64, f64, f64); 4] = [
+            (-PI, -1.0, 0.0),
+            (-PI / 2.0, 0.0, -1.0),
+            (0.0, 1.0, 0.0),
+            (PI / 2.0, 0.0, 1.0),
+        ];
+        let a0 = self.start_angle;
+        let end = a0 + self.sweep;
+        QUADRANTS.into_iter().filter_map(move |(q, cx, cy)| {
+            let passed = if self.sweep >= 0.0 {
+                let q = if q >= a0 { q } else { q + TAU };
+                q <= end
             } else {
-                (self.start_angle - a).rem_euclid(TAU)
+                let q = if q <= a0 { q } else { q - TAU };
+                q >= end
             };
-            (rel <= self.sweep.abs()).then(|| {
+            passed.then(|| {
                 [
-                    self.center[0] + self.radius * a.cos(),
-                    self.center[1] + self.radius * a.sin(),
+                    self.center[0] + self.radius * cx,
+                    self.center[1] + self.radius * cy,
                 ]
             })
         })
@@ -252,9 +263,20 @@ mod tests {
     }
 
     #[test]
-    fn extremes_of_a_quarter_arc() {
+    fn extremes_of_arcs() {
         let c = from_center([10.0, 0.0], [0.0, 10.0], [0.0, 0.0], true, 0.01).unwrap();
         let e: Vec<P2> = c.extremes().collect();
-        assert_eq!(e.len(), 2);
+        assert_eq!(e, vec![[10.0, 0.0], [0.0, 10.0]]);
+        // Clockwise the long way round passes the other three.
+        let c = from_center([10.0, 0.0], [0.0, 10.0], [0.0, 0.0], false, 0.01).unwrap();
+        assert_eq!(c.extremes().count(), 4);
+        let c = from_center([0.0, -10.0], [0.0, 10.0], [0.0, 0.0], false, 0.01).unwrap();
+        assert_eq!(
+            c.extremes().collect::<Vec<_>>(),
+            vec![[-10.0, 0.0], [0.0, -10.0], [0.0, 10.0]]
+        );
+        // A full circle passes all four.
+        let c = from_center([10.0, 0.0], [10.0, 0.0], [0.0, 0.0], true, 0.01).unwrap();
+        assert_eq!(c.extremes().count(), 4);
     }
 }

@@ -547,6 +547,8 @@ impl<'s> Machine<'s> {
             programmed_radius: prog.radius,
             sweep: act.sweep,
             programmed_sweep: prog.sweep,
+            start_angle: act.start_angle,
+            programmed_start_angle: prog.start_angle,
             diameter_x: lathe,
         })
     }

@@ -45,6 +45,9 @@ pub enum WordKind {
 }
 
 impl Address {
+    /// Number of addresses.
+    pub const COUNT: usize = 21;
+
     /// The address for an upper-case letter, if offsetlab reads it.
     pub fn from_letter(c: u8) -> Option<Address> {
         use Address::*;
@@ -154,16 +157,38 @@ pub struct Block {
     pub span: Span,
     /// The block starts with `/` (optional block skip).
     pub skip: bool,
-    /// The words, in text order.
+    /// The words, in text order (add them with [`Block::push`], which keeps
+    /// the lookup by address).
     pub words: Vec<Word>,
     /// A parse error was reported in this block: execution stops here.
     pub error: bool,
+    /// Per address, 1 + the index of its (first) word, or 0: the machine
+    /// looks words up by address many times per block.
+    slots: [u8; Address::COUNT],
 }
 
 impl Block {
+    /// Empties the block for reuse.
+    pub fn clear(&mut self) {
+        self.words.clear();
+        self.slots = [0; Address::COUNT];
+    }
+
+    /// Appends a word.
+    pub fn push(&mut self, word: Word) {
+        let slot = &mut self.slots[word.address as usize];
+        if *slot == 0 && self.words.len() < usize::from(u8::MAX) {
+            *slot = self.words.len() as u8 + 1;
+        }
+        self.words.push(word);
+    }
+
     /// The word with this address (for G and M, the first one).
     pub fn get(&self, address: Address) -> Option<&Word> {
-        self.words.iter().find(|w| w.address == address)
+        match self.slots[address as usize] {
+            0 => None,
+            i => self.words.get(usize::from(i) - 1),
+        }
     }
 
     /// The value of the word with this address.

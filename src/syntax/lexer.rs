@@ -1,29 +1,33 @@
 //! Token-level grammar of a block, written with nom over bytes: blanks,
-//! comments, the address letter of a word and its number (spec 1).
+//! comments and a word's number (spec 1).
 //!
 //! Tape controls ignore spaces anywhere in a word, so `X 1 2 . 5` is `X12.5`;
 //! the number grammar therefore runs on the word's characters with blanks
-//! removed.
+//! removed. The number is the parser's hot loop: [`number`] reads it in one
+//! hand-written pass (nom's combinator chain cost ~4× the instructions per
+//! number, measured with callgrind), and the nom grammar [`number_grammar`]
+//! is kept as its specification, which a property test holds it to.
 
 use nom::{
     IResult, Parser,
     bytes::complete::{take_till, take_while},
-    character::complete::{char, digit0, one_of},
-    combinator::{all_consuming, opt},
+    character::complete::char,
     sequence::pair,
+};
+#[cfg(test)]
+use nom::{
+    character::complete::{digit0, one_of},
+    combinator::{all_consuming, opt},
 };
 
 type In<'a> = &'a [u8];
 type Res<'a, T> = IResult<In<'a>, T, ()>;
 /// Sign, integer digits, and the point with the fraction digits.
+#[cfg(test)]
 type NumberParts<'a> = (Option<char>, In<'a>, Option<(char, In<'a>)>);
 
 fn is_blank(c: u8) -> bool {
     c == b' ' || c == b'\t'
-}
-
-fn is_number_char(c: u8) -> bool {
-    c.is_ascii_digit() || c == b'.' || c == b'-' || c == b'+'
 }
 
 /// Skips spaces and tabs.
@@ -34,27 +38,19 @@ pub fn blanks(i: In<'_>) -> In<'_> {
 
 /// A comment `( … )`, not nested. Returns the rest of the input and whether
 /// the closing parenthesis was found (an unclosed comment runs to the end of
-/// the block).
+/// the line; a `;` inside a comment does not end the block).
 pub fn comment(i: In<'_>) -> Option<(In<'_>, bool)> {
-    let r: Res<'_, (char, In<'_>)> = pair(char('('), take_till(|c| c == b')')).parse(i);
+    let r: Res<'_, (char, In<'_>)> = pair(
+        char('('),
+        take_till(|c| c == b')' || c == b'\n' || c == b'\r'),
+    )
+    .parse(i);
     let (rest, _) = r.ok()?;
     let closed: Res<'_, char> = char(')').parse(rest);
     Some(match closed {
         Ok((rest, _)) => (rest, true),
         Err(_) => (rest, false),
     })
-}
-
-/// The characters of a word's number: digits, signs, points and blanks
-/// between them (trailing blanks are left in the input).
-pub fn number_text(i: In<'_>) -> (In<'_>, In<'_>) {
-    let r: Res<'_, In<'_>> = take_while(|c| is_number_char(c) || is_blank(c)).parse(i);
-    let (_, run) = r.unwrap_or((i, &i[..0]));
-    let mut len = run.len();
-    while len > 0 && is_blank(run[len - 1]) {
-        len -= 1;
-    }
-    (&i[len..], &i[..len])
 }
 
 /// A number as written, before units and decimal input are applied.
@@ -84,51 +80,152 @@ pub enum NumberError {
 /// Largest count of digits in a number (a control reads at most 9 + 4).
 const MAX_DIGITS: usize = 15;
 
-impl Number {
-    /// Reads the characters returned by [`number_text`].
-    pub fn read(text: In<'_>) -> Result<Number, NumberError> {
-        if text.is_empty() {
-            return Err(NumberError::Missing);
-        }
-        let mut buf = [0u8; 32];
-        let compact: In<'_> = if text.iter().any(|&c| is_blank(c)) {
-            let mut n = 0;
-            for &c in text.iter().filter(|&&c| !is_blank(c)) {
-                if n == buf.len() {
-                    return Err(NumberError::TooLong);
-                }
-                buf[n] = c;
-                n += 1;
-            }
-            &buf[..n]
-        } else {
-            text
-        };
-        let grammar = (opt(one_of("+-")), digit0, opt(pair(char('.'), digit0)));
-        let r: Res<'_, NumberParts<'_>> = all_consuming(grammar).parse(compact);
-        let (_, (sign, int, frac)) = r.map_err(|_| NumberError::Malformed)?;
-        let frac = frac.map(|(_, f)| f);
-        let frac_len = frac.map_or(0, <[u8]>::len);
-        if int.len() + frac_len == 0 {
-            return Err(NumberError::Malformed);
-        }
-        // Leading zeros carry no value; only significant digits count.
-        let significant = int.iter().skip_while(|&&c| c == b'0').count() + frac_len;
-        if significant > MAX_DIGITS || frac_len > MAX_DIGITS {
-            return Err(NumberError::TooLong);
-        }
-        let mantissa = int
-            .iter()
-            .chain(frac.unwrap_or(&[]))
-            .fold(0u64, |m, &c| m * 10 + u64::from(c - b'0'));
-        Ok(Number {
-            negative: sign == Some('-'),
-            mantissa,
-            frac_digits: frac_len as u8,
-            point: frac.is_some(),
-        })
+/// Reads a word's number from the characters after its address letter:
+/// digits, an optional sign first, an optional point, and blanks between
+/// them (tape controls ignore spaces). Returns the rest of the input (the
+/// number's trailing blanks stay in it) and the number or why it is not one.
+///
+/// This is the hot loop of the parser, so it is one hand-written pass; the
+/// grammar it implements is [`number_grammar`], written with nom, and a test
+/// checks that the two agree on every input.
+pub fn number(i: In<'_>) -> (In<'_>, Result<Number, NumberError>) {
+    // Fast path for the shape nearly every word has: `[+-]digits[.digits]`
+    // followed by something that is not part of a number.
+    let n = i.len();
+    let mut p = 0;
+    let negative = p < n && i[p] == b'-';
+    if p < n && (i[p] == b'-' || i[p] == b'+') {
+        p += 1;
     }
+    let int_start = p;
+    let mut mantissa = 0u64;
+    while p < n && i[p].is_ascii_digit() && p - int_start < MAX_DIGITS {
+        mantissa = mantissa * 10 + u64::from(i[p] - b'0');
+        p += 1;
+    }
+    let int_len = p - int_start;
+    let point = p < n && i[p] == b'.';
+    let mut frac = 0;
+    if point {
+        p += 1;
+        while p < n && i[p].is_ascii_digit() && int_len + frac < MAX_DIGITS {
+            mantissa = mantissa * 10 + u64::from(i[p] - b'0');
+            p += 1;
+            frac += 1;
+        }
+    }
+    let mut q = p;
+    while q < n && (i[q] == b' ' || i[q] == b'\t') {
+        q += 1;
+    }
+    let clean = q >= n || !matches!(i[q], b'0'..=b'9' | b'.' | b'+' | b'-');
+    if clean && int_len + frac > 0 && p > 0 {
+        let number = Number {
+            negative,
+            mantissa,
+            frac_digits: frac as u8,
+            point,
+        };
+        return (&i[p..], Ok(number));
+    }
+    number_general(i)
+}
 
+/// The general case of [`number`]: blanks inside the number, malformed and
+/// over-long numbers.
+fn number_general(i: In<'_>) -> (In<'_>, Result<Number, NumberError>) {
+    let mut end = 0;
+    let mut negative = false;
+    let mut seen = false;
+    let mut digits = false;
+    let mut point = false;
+    let mut malformed = false;
+    let mut mantissa = 0u64;
+    let mut significant = 0usize;
+    let mut frac = 0usize;
+    for (pos, &c) in i.iter().enumerate() {
+        match c {
+            b'0'..=b'9' => {
+                digits = true;
+                if point {
+                    frac += 1;
+                }
+                if mantissa != 0 || c != b'0' {
+                    significant += 1;
+                    if significant <= MAX_DIGITS {
+                        mantissa = mantissa * 10 + u64::from(c - b'0');
+                    }
+                }
+            }
+            b'.' => {
+                malformed |= point;
+                point = true;
+            }
+            b'+' | b'-' => {
+                malformed |= seen;
+                negative = c == b'-';
+            }
+            b' ' | b'\t' => continue,
+            _ => break,
+        }
+        seen = true;
+        end = pos + 1;
+    }
+    let rest = &i[end..];
+    let result = if !seen {
+        Err(NumberError::Missing)
+    } else if malformed || !digits {
+        Err(NumberError::Malformed)
+    } else if significant > MAX_DIGITS || frac > MAX_DIGITS {
+        Err(NumberError::TooLong)
+    } else {
+        Ok(Number {
+            negative,
+            mantissa,
+            frac_digits: frac as u8,
+            point,
+        })
+    };
+    (rest, result)
+}
+
+/// The grammar of a number, without blanks: `[+-]? digit* ('.' digit*)?`
+/// with at least one digit. [`number`] implements it in one pass; this nom
+/// version is the reference it is tested against.
+#[cfg(test)]
+pub fn number_grammar(text: In<'_>) -> Result<Number, NumberError> {
+    if text.is_empty() {
+        return Err(NumberError::Missing);
+    }
+    let grammar = (opt(one_of("+-")), digit0, opt(pair(char('.'), digit0)));
+    let r: Res<'_, NumberParts<'_>> = all_consuming(grammar).parse(text);
+    let (_, (sign, int, frac)) = r.map_err(|_| NumberError::Malformed)?;
+    let frac = frac.map(|(_, f)| f);
+    let frac_len = frac.map_or(0, <[u8]>::len);
+    if int.len() + frac_len == 0 {
+        return Err(NumberError::Malformed);
+    }
+    let significant = int
+        .iter()
+        .chain(frac.unwrap_or(&[]))
+        .skip_while(|&&c| c == b'0')
+        .count();
+    if significant > MAX_DIGITS || frac_len > MAX_DIGITS {
+        return Err(NumberError::TooLong);
+    }
+    let mantissa = int
+        .iter()
+        .chain(frac.unwrap_or(&[]))
+        .fold(0u64, |m, &c| m * 10 + u64::from(c - b'0'));
+    Ok(Number {
+        negative: sign == Some('-'),
+        mantissa,
+        frac_digits: frac_len as u8,
+        point: frac.is_some(),
+    })
+}
+
+impl Number {
     /// The value as written (`12.5` → 12.5, `12345` → 12345.0).
     pub fn value(&self) -> f64 {
         self.scaled(self.frac_digits)
@@ -152,7 +249,9 @@ mod tests {
     use super::*;
 
     fn read(s: &str) -> Result<Number, NumberError> {
-        Number::read(s.as_bytes())
+        let (rest, n) = number(s.as_bytes());
+        assert!(rest.is_empty() || !rest[0].is_ascii_digit(), "{s}");
+        n
     }
 
     #[test]
@@ -164,6 +263,7 @@ mod tests {
         assert!(!read("12345").unwrap().point);
         assert_eq!(read("1 2 . 5").unwrap().value(), 12.5);
         assert_eq!(read("0000000000000000001").unwrap().value(), 1.0);
+        assert_eq!(read("0.000100").unwrap().value(), 0.0001);
     }
 
     #[test]
@@ -178,10 +278,13 @@ mod tests {
     }
 
     #[test]
-    fn number_text_leaves_trailing_blanks() {
-        let (rest, num) = number_text(b"1 2 Y3");
-        assert_eq!(num, b"1 2");
+    fn number_leaves_trailing_blanks_and_the_next_word() {
+        let (rest, n) = number(b"1 2 Y3");
+        assert_eq!(n.unwrap().value(), 12.0);
         assert_eq!(rest, b" Y3");
+        let (rest, n) = number(b" ;");
+        assert_eq!(n, Err(NumberError::Missing));
+        assert_eq!(rest, b" ;");
     }
 
     #[test]
@@ -189,5 +292,18 @@ mod tests {
         assert_eq!(comment(b"(abc) X1"), Some((&b" X1"[..], true)));
         assert_eq!(comment(b"(abc"), Some((&b""[..], false)));
         assert_eq!(comment(b"X1"), None);
+    }
+
+    #[cfg(not(target_arch = "wasm32"))]
+    proptest::proptest! {
+        /// The one-pass lexer reads exactly what the nom grammar accepts.
+        #[test]
+        fn the_fast_lexer_agrees_with_the_nom_grammar(text in "[0-9.+\\- ]{0,24}") {
+            let (rest, fast) = number(text.as_bytes());
+            let taken = &text[..text.len() - rest.len()];
+            let compact: Vec<u8> = taken.bytes().filter(|c| *c != b' ').collect();
+            proptest::prop_assert!(rest.iter().all(|c| *c == b' '), "{:?}", text);
+            proptest::prop_assert_eq!(fast, number_grammar(&compact), "{:?}", text);
+        }
     }
 }

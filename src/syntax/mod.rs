@@ -185,37 +185,21 @@ impl<'a> Blocks<'a> {
     pub fn next_into(&mut self, block: &mut Block) -> bool {
         let bytes = self.text.as_bytes();
         while self.pos < bytes.len() && self.tape != Tape::Ended {
-            let start = self.pos;
-            let mut i = start;
-            let mut in_comment = false;
-            while i < bytes.len() {
-                let c = bytes[i];
-                if c == b'\n' || c == b'\r' {
-                    break;
-                }
-                if in_comment {
-                    in_comment = c != b')';
-                } else if c == b'(' {
-                    in_comment = true;
-                } else if c == b';' {
-                    break;
-                }
-                i += 1;
-            }
             let line = self.line;
-            self.pos = match bytes.get(i) {
-                None => i,
-                Some(b'\r') if bytes.get(i + 1) == Some(&b'\n') => {
+            let (end, found) = self.parse_block(self.pos, line, block);
+            self.pos = match bytes.get(end) {
+                None => end,
+                Some(b'\r') if bytes.get(end + 1) == Some(&b'\n') => {
                     self.line += 1;
-                    i + 2
+                    end + 2
                 }
                 Some(b'\n' | b'\r') => {
                     self.line += 1;
-                    i + 1
+                    end + 1
                 }
-                Some(_) => i + 1,
+                Some(_) => end + 1,
             };
-            if self.parse_block(start, i, line, block) {
+            if found {
                 return true;
             }
         }
@@ -235,31 +219,35 @@ impl<'a> Blocks<'a> {
         false
     }
 
-    /// Parses the block text `start..end` (without its end-of-block
-    /// character). Returns true if it is a block to execute.
-    fn parse_block(&mut self, start: usize, end: usize, line: u32, block: &mut Block) -> bool {
-        let bytes = &self.text.as_bytes()[..end];
-        let mut i = start
-            + (lexer::blanks(&bytes[start..]).as_ptr() as usize - bytes[start..].as_ptr() as usize);
-        if i >= end {
-            return false;
+    /// Parses the block that starts at `start`, up to its end-of-block
+    /// character (newline or `;` outside a comment). Returns the position of
+    /// that character (or the end of the text) and whether it is a block to
+    /// execute.
+    fn parse_block(&mut self, start: usize, line: u32, block: &mut Block) -> (usize, bool) {
+        let bytes = self.text.as_bytes();
+        let n = bytes.len();
+        let is_end = |c: u8| c == b'\n' || c == b'\r' || c == b';';
+        let mut i = n - lexer::blanks(&bytes[start..]).len();
+        if i >= n || is_end(bytes[i]) {
+            return (i, false);
         }
         if bytes[i] == b'%' {
-            // Tape start before any block, tape end after (spec 1).
+            // Tape start before any block, tape end after (spec 1); the rest
+            // of the line is not read.
             self.tape = if self.tape == Tape::Before {
                 Tape::Reading
             } else {
                 Tape::Ended
             };
-            return false;
+            while i < n && bytes[i] != b'\n' && bytes[i] != b'\r' {
+                i += 1;
+            }
+            return (i, false);
         }
-        let mut last = end;
-        while last > i && matches!(bytes[last - 1], b' ' | b'\t') {
-            last -= 1;
-        }
-        block.span = Span::new(i, last, line);
+        let first = i;
+        let mut last = i;
         block.skip = false;
-        block.words.clear();
+        block.clear();
         block.error = false;
         self.raw.clear();
 
@@ -267,46 +255,51 @@ impl<'a> Blocks<'a> {
             block.skip = true;
             i += 1;
             // `/1`…`/9` name a skip switch; offsetlab has one switch for all.
-            if i < end && (b'1'..=b'9').contains(&bytes[i]) {
+            if i < n && (b'1'..=b'9').contains(&bytes[i]) {
                 i += 1;
             }
+            last = i;
         }
 
         // Lex: comments, words, and anything else as an error.
-        while i < end {
-            let rest = lexer::blanks(&bytes[i..]);
-            i = end - rest.len();
-            if i >= end {
+        loop {
+            i = n - lexer::blanks(&bytes[i..]).len();
+            if i >= n || is_end(bytes[i]) {
                 break;
             }
             let c = bytes[i];
-            if c == b'(' {
+            if c.is_ascii_alphabetic() {
+                let (after, number) = lexer::number(&bytes[i + 1..]);
+                let word_end = n - after.len();
+                self.raw.push(RawWord {
+                    letter: c.to_ascii_uppercase(),
+                    number,
+                    start: i,
+                    end: word_end,
+                });
+                i = word_end;
+            } else if c == b'(' {
                 let (after, closed) = lexer::comment(&bytes[i..]).unwrap_or((&[], false));
+                let comment_end = n - after.len();
                 if !closed {
                     self.error_at(
                         block,
                         "unclosed-comment",
                         i,
-                        end,
+                        comment_end,
                         line,
-                        "this comment is not closed with `)` before the end of the block",
+                        "this comment is not closed with `)` before the end of the line",
                     );
                 }
-                i = end - after.len();
-            } else if c.is_ascii_alphabetic() {
-                let (after, num) = lexer::number_text(&bytes[i + 1..]);
-                let word_end = end - after.len();
-                self.raw.push(RawWord {
-                    letter: c.to_ascii_uppercase(),
-                    number: Number::read(num),
-                    start: i,
-                    end: word_end,
-                });
-                i = word_end;
+                i = comment_end;
             } else {
                 // Skip to the next thing that can start a word or a comment.
                 let mut j = i + 1;
-                while j < end && !bytes[j].is_ascii_alphabetic() && bytes[j] != b'(' {
+                while j < n
+                    && !bytes[j].is_ascii_alphabetic()
+                    && bytes[j] != b'('
+                    && !is_end(bytes[j])
+                {
                     j += 1;
                 }
                 let ch = self.text[i..].chars().next().unwrap_or('?');
@@ -314,7 +307,13 @@ impl<'a> Blocks<'a> {
                 self.error_at(block, "unexpected-character", i, j, line, &message);
                 i = j;
             }
+            last = i;
         }
+        while last > first && matches!(bytes[last - 1], b' ' | b'\t') {
+            last -= 1;
+        }
+        block.span = Span::new(first, last, line);
+        let end = i;
 
         // First pass: G codes that change how this block's numbers are read.
         let raw = std::mem::take(&mut self.raw);
@@ -387,14 +386,14 @@ impl<'a> Blocks<'a> {
                         seen |= a.bit();
                     }
                 }
-                block.words.push(word);
+                block.push(word);
             }
         }
         self.raw = raw;
         if self.tape == Tape::Before {
             self.tape = Tape::Reading;
         }
-        !block.words.is_empty() || block.error
+        (end, !block.words.is_empty() || block.error)
     }
 
     /// Tracks the G codes that change how numbers are read: G20/G21 (least
