@@ -15,7 +15,8 @@ use wasm_bindgen::prelude::*;
 use web_sys::{OffscreenCanvas, OffscreenCanvasRenderingContext2d};
 
 use crate::diag::Diagnostic;
-use crate::render::{self, canvas::CanvasSurface};
+use crate::render::scene::{self, Scene};
+use crate::render::{self, Frame, Plane, Theme, canvas::CanvasSurface};
 use crate::report::{End, Run};
 use crate::setup::Setup;
 use crate::toolpath::Toolpath;
@@ -47,6 +48,25 @@ pub struct Session {
     run: Run,
     toolpath: Toolpath,
     canvas: Option<(OffscreenCanvas, OffscreenCanvasRenderingContext2d)>,
+    /// Plane, zoom, pan, current block and colours.
+    scene: Scene,
+    /// The CSS size last drawn at, for zoom, pan and picking.
+    size: (f64, f64),
+    /// The layout last drawn, which picking measures against.
+    frame: Option<Frame>,
+    /// Blocks of the previous run (None before the first).
+    last_count: Option<u32>,
+}
+
+/// What `view()` returns and `set_view()` reads: the document's `view`
+/// (plane, zoom, pan) plus the current block.
+#[derive(Serialize, serde::Deserialize)]
+struct ViewOut {
+    plane: Option<String>,
+    zoom: Option<f64>,
+    pan: Option<[f64; 2]>,
+    #[serde(default)]
+    step: Option<i64>,
 }
 
 impl Default for Session {
@@ -60,6 +80,10 @@ impl Default for Session {
             run,
             toolpath,
             canvas: None,
+            scene: Scene::default(),
+            size: (300.0, 150.0),
+            frame: None,
+            last_count: None,
         }
     }
 }
@@ -114,6 +138,7 @@ impl Session {
             }
         }
         self.toolpath = Toolpath::from_run(&self.run);
+        self.after_run();
         to_js(&RunResult {
             summary: summary(&self.run),
             diagnostics: &self.run.diagnostics,
@@ -172,19 +197,21 @@ impl Session {
         Ok(())
     }
 
-    /// Draws the current run fitted to `width` x `height` CSS pixels at
-    /// `dpr` device pixels per CSS pixel (sharp on high-DPI screens). Does
-    /// nothing without an attached canvas.
-    pub fn render(&self, width: u32, height: u32, dpr: f64) -> Result<(), JsValue> {
-        let Some((canvas, ctx)) = &self.canvas else {
-            return Ok(());
-        };
+    /// Draws the current run as the view state says (plane, zoom, pan,
+    /// current block, colours) on `width` x `height` CSS pixels at `dpr`
+    /// device pixels per CSS pixel (sharp on high-DPI screens). Does nothing
+    /// without an attached canvas.
+    pub fn render(&mut self, width: u32, height: u32, dpr: f64) -> Result<(), JsValue> {
         let dpr = if dpr.is_finite() && dpr > 0.0 {
             dpr.min(8.0)
         } else {
             1.0
         };
         let (w, h) = (width.clamp(1, 8192), height.clamp(1, 8192));
+        self.size = (f64::from(w), f64::from(h));
+        let Some((canvas, ctx)) = &self.canvas else {
+            return Ok(());
+        };
         let device = |css: u32| ((f64::from(css) * dpr).round() as u32).clamp(1, 16384);
         // Resizing the canvas also resets the context's state.
         canvas.set_width(device(w));
@@ -193,12 +220,174 @@ impl Session {
         let sy = f64::from(device(h)) / f64::from(h);
         ctx.set_transform(sx, 0.0, 0.0, sy, 0.0, 0.0)?;
         let mut surface = CanvasSurface::new(ctx);
-        render::draw(&mut surface, &self.toolpath, f64::from(w), f64::from(h));
+        let frame = render::draw_scene(
+            &mut surface,
+            &self.toolpath,
+            &self.scene,
+            f64::from(w),
+            f64::from(h),
+        );
+        self.frame = Some(frame);
         Ok(())
     }
 
-    /// The same drawing as an SVG document.
+    /// The same drawing as an SVG document (same view state).
     pub fn render_svg(&self, width: u32, height: u32) -> String {
-        render::svg::render(&self.toolpath, f64::from(width), f64::from(height))
+        render::svg::render_scene(
+            &self.toolpath,
+            &self.scene,
+            f64::from(width),
+            f64::from(height),
+        )
+    }
+
+    /// `"light"` or `"dark"`: the canvas colours (match the page's
+    /// `prefers-color-scheme`).
+    pub fn set_theme(&mut self, name: &str) {
+        self.scene.theme = Theme::named(name);
+    }
+
+    /// The view state: `{ plane: "XY"|"XZ"|"YZ"|"ZX", zoom, pan: [u, v],
+    /// step }` — zoom 1 fits the whole path, pan is the view centre's offset
+    /// from the fitted centre in program units (the share document's
+    /// `view`), step the current block or null.
+    pub fn view(&self) -> Result<JsValue, JsValue> {
+        to_js(&ViewOut {
+            plane: Some(self.scene.plane.name().to_owned()),
+            zoom: Some(self.scene.zoom),
+            pan: Some(self.scene.pan),
+            step: self.scene.step.map(i64::from),
+        })
+    }
+
+    /// Sets any of `plane`, `zoom`, `pan` and `step` from an object shaped
+    /// like `view()`'s (absent keys stay; `step: -1` clears the current
+    /// block). Values are limited to the document's ranges; a plane the
+    /// machine does not have is ignored. Returns the view state.
+    pub fn set_view(&mut self, view: JsValue) -> Result<JsValue, JsValue> {
+        let v: ViewOut = serde_wasm_bindgen::from_value(view)
+            .map_err(|e| JsValue::from_str(&format!("view: {e}")))?;
+        if let Some(plane) = v.plane {
+            self.set_plane(&plane);
+        }
+        if let Some(zoom) = v.zoom {
+            self.scene.set_zoom(zoom);
+        }
+        if let Some(pan) = v.pan {
+            self.scene.set_pan(pan);
+        }
+        if let Some(step) = v.step {
+            self.set_step(i32::try_from(step).unwrap_or(i32::MAX));
+        }
+        self.view()
+    }
+
+    /// Chooses the plane drawn (`XY`, `XZ`, `YZ` on the mill; the lathe has
+    /// `ZX` only). Returns false, changing nothing, for another name.
+    pub fn set_plane(&mut self, name: &str) -> bool {
+        match Plane::parse(name) {
+            Some(plane)
+                if plane.has_centre_line() == (self.run.machine == crate::MachineKind::Lathe) =>
+            {
+                self.scene.plane = plane;
+                true
+            }
+            _ => false,
+        }
+    }
+
+    /// Zooms by `factor` about the CSS pixel (x, y) of the last drawing.
+    pub fn zoom_at(&mut self, x: f64, y: f64, factor: f64) {
+        let (w, h) = self.size;
+        self.scene.zoom_at(&self.toolpath, w, h, x, y, factor);
+    }
+
+    /// Moves the drawing by (dx, dy) CSS pixels.
+    pub fn pan_by(&mut self, dx: f64, dy: f64) {
+        let (w, h) = self.size;
+        self.scene.pan_by(&self.toolpath, w, h, dx, dy);
+    }
+
+    /// Zoom 1, no pan: the whole path.
+    pub fn fit(&mut self) {
+        self.scene.fit();
+    }
+
+    /// Makes block `index` the current one (the path is drawn up to it, the
+    /// tool marker sits at its end); a negative index clears it, an index
+    /// past the last block means the last. Returns the current block or -1.
+    pub fn set_step(&mut self, index: i32) -> i32 {
+        let count = self.run.blocks.len();
+        self.scene.step = match usize::try_from(index) {
+            Ok(_) if count == 0 => None,
+            Ok(i) => u32::try_from(i.min(count - 1)).ok(),
+            Err(_) => None,
+        };
+        self.update_marker();
+        self.step()
+    }
+
+    /// The current block, or -1.
+    pub fn step(&self) -> i32 {
+        self.scene
+            .step
+            .and_then(|s| i32::try_from(s).ok())
+            .unwrap_or(-1)
+    }
+
+    /// The block whose move passes nearest to CSS pixel (x, y) of the last
+    /// drawing, on either path, within `tolerance` pixels; or -1.
+    pub fn pick(&self, x: f64, y: f64, tolerance: f64) -> i32 {
+        let Some(frame) = &self.frame else {
+            return -1;
+        };
+        scene::pick(&self.toolpath, frame, x, y, tolerance.clamp(0.0, 100.0))
+            .and_then(|b| i32::try_from(b).ok())
+            .unwrap_or(-1)
+    }
+
+    /// The last executed block at or before 1-based `line` (the block a
+    /// cursor on that line belongs to, or the one before a comment line),
+    /// or -1 when no block runs before it.
+    pub fn block_at_line(&self, line: u32) -> i32 {
+        let n = self.run.blocks.partition_point(|b| b.span.line <= line);
+        i32::try_from(n).map(|n| n - 1).unwrap_or(-1)
+    }
+}
+
+impl Session {
+    /// Keeps the view state sensible for a new run: the lathe is drawn in
+    /// ZX, the mill in one of its planes; a current block past the end moves
+    /// to the last block, and a session that was at the last block stays at
+    /// the last block (so editing at the end shows the whole program).
+    fn after_run(&mut self) {
+        self.scene.adapt_to(self.run.machine);
+        let count = u32::try_from(self.run.blocks.len()).unwrap_or(u32::MAX);
+        if let Some(step) = self.scene.step {
+            let was_last = self.last_count.is_some_and(|n| step + 1 >= n);
+            self.scene.step = match count {
+                0 => None,
+                n if was_last || step >= n => Some(n - 1),
+                _ => Some(step),
+            };
+        }
+        self.last_count = Some(count);
+        self.update_marker();
+        self.frame = None;
+    }
+
+    fn update_marker(&mut self) {
+        self.scene.marker = self.scene.step.and_then(|step| {
+            let drawn = self.scene.drawn_moves(&self.toolpath);
+            scene::tool_position(&self.toolpath, drawn).or_else(|| {
+                // No move yet: the tool is where the block leaves it.
+                let b = self.run.blocks.get(step as usize)?;
+                let k = 1.0 / self.run.units.mm();
+                Some([
+                    b.state.actual.map(|v| v * k),
+                    b.state.programmed.map(|v| v * k),
+                ])
+            })
+        });
     }
 }

@@ -322,3 +322,145 @@ fn render_draws_on_an_offscreen_canvas_at_device_pixels() {
     let svg = s.render_svg(300, 200);
     assert!(svg.contains("<g class=\"actual\">") && svg.contains("<g class=\"programmed\">"));
 }
+
+fn view_of(s: &Session) -> JsValue {
+    let v = s.view().expect("view");
+    assert_keys(&v, &["plane", "zoom", "pan", "step"]);
+    v
+}
+
+fn pan_of(v: &JsValue) -> (f64, f64) {
+    let pan = array(&get(v, "pan"));
+    assert_eq!(pan.length(), 2);
+    (
+        pan.get(0).as_f64().expect("number"),
+        pan.get(1).as_f64().expect("number"),
+    )
+}
+
+#[wasm_bindgen_test]
+fn view_state_is_plane_zoom_pan_and_step() {
+    let mut s = Session::new();
+    s.run(SQUARE, square_setup()).expect("run");
+    let v = view_of(&s);
+    assert_eq!(string(&v, "plane"), "XY");
+    assert_eq!(num(&v, "zoom"), 1.0);
+    assert_eq!(pan_of(&v), (0.0, 0.0));
+    assert!(get(&v, "step").is_null(), "no current block yet: null");
+    // Zoom at the cursor and drag change zoom and pan; fit resets both.
+    s.render(800, 500, 1.0)
+        .expect("render without canvas keeps the size");
+    s.zoom_at(200.0, 100.0, 2.0);
+    s.pan_by(30.0, -10.0);
+    let v = view_of(&s);
+    assert_eq!(num(&v, "zoom"), 2.0);
+    assert_ne!(pan_of(&v), (0.0, 0.0));
+    s.fit();
+    assert_eq!(pan_of(&view_of(&s)), (0.0, 0.0));
+    // Planes: the mill has XY, XZ, YZ; ZX is the lathe's.
+    assert!(s.set_plane("xz"));
+    assert!(!s.set_plane("ZX"));
+    assert!(!s.set_plane("QQ"));
+    assert_eq!(string(&view_of(&s), "plane"), "XZ");
+    // set_view reads what view writes, and limits the values.
+    let v = s
+        .set_view(json(r#"{"plane":"YZ","zoom":1e9,"pan":[5,-2],"step":3}"#))
+        .expect("set_view");
+    assert_eq!(string(&v, "plane"), "YZ");
+    assert_eq!(num(&v, "zoom"), 1e6);
+    assert_eq!(pan_of(&v), (5.0, -2.0));
+    assert_eq!(num(&v, "step"), 3.0);
+    assert!(s.set_view(json(r#"{"zoom":"big"}"#)).is_err());
+    // A lathe run is drawn in ZX.
+    s.run("G50 X120. Z60.\nG00 X50. Z3.", JsValue::NULL)
+        .expect("run");
+    s.run(
+        "G50 X120. Z60.\nG00 X50. Z3.",
+        json(r#"{"machine":"lathe"}"#),
+    )
+    .expect("run");
+    assert_eq!(string(&view_of(&s), "plane"), "ZX");
+}
+
+#[wasm_bindgen_test]
+fn step_is_clamped_and_follows_the_end() {
+    let mut s = Session::new();
+    s.run(SQUARE, square_setup()).expect("run");
+    assert_eq!(s.step(), -1);
+    assert_eq!(s.set_step(2), 2);
+    assert_eq!(s.set_step(999), 7, "past the end: the last block");
+    assert_eq!(s.set_step(-5), -1);
+    // At the last block, a longer program keeps the session at its last block.
+    s.set_step(7);
+    let longer = SQUARE.replace("M30;\n", "G01 X5.;\nM30;\n");
+    s.run(&longer, square_setup()).expect("run");
+    assert_eq!(s.step(), 8);
+    // Elsewhere, the step stays; past a shorter program's end it is clamped.
+    s.set_step(2);
+    s.run(SQUARE, square_setup()).expect("run");
+    assert_eq!(s.step(), 2);
+    s.run("G00 X1.", JsValue::NULL).expect("run");
+    assert_eq!(s.step(), 0);
+}
+
+#[wasm_bindgen_test]
+fn block_at_line_is_the_last_block_at_or_before_the_line() {
+    let mut s = Session::new();
+    s.run(SQUARE, square_setup()).expect("run");
+    // Line 1 is a comment before any block.
+    assert_eq!(s.block_at_line(1), -1);
+    assert_eq!(s.block_at_line(2), 0);
+    assert_eq!(s.block_at_line(3), 1);
+    assert_eq!(s.block_at_line(9), 7);
+    assert_eq!(s.block_at_line(500), 7);
+    assert_eq!(s.block_at_line(0), -1);
+}
+
+#[wasm_bindgen_test]
+fn pick_returns_the_block_under_the_pointer() {
+    let mut s = Session::new();
+    s.run(SQUARE, square_setup()).expect("run");
+    // Nothing drawn yet: -1.
+    assert_eq!(s.pick(10.0, 10.0, 6.0), -1);
+    let canvas = OffscreenCanvas::new(10, 10).expect("OffscreenCanvas");
+    s.attach_canvas(canvas).expect("attach");
+    s.render(800, 500, 1.0).expect("render");
+    let mut found = std::collections::BTreeSet::new();
+    for y in (0..500).step_by(5) {
+        for x in (0..800).step_by(5) {
+            let b = s.pick(f64::from(x), f64::from(y), 4.0);
+            assert!((-1..8).contains(&b), "{b}");
+            found.insert(b);
+        }
+    }
+    for block in [-1, 1, 2, 3, 4, 5, 6] {
+        assert!(
+            found.contains(&block),
+            "block {block} never picked: {found:?}"
+        );
+    }
+}
+
+#[wasm_bindgen_test]
+fn dark_theme_and_step_draw_on_the_canvas() {
+    let mut s = Session::new();
+    s.run(SQUARE, square_setup()).expect("run");
+    let canvas = OffscreenCanvas::new(10, 10).expect("OffscreenCanvas");
+    s.attach_canvas(canvas.clone()).expect("attach");
+    s.set_theme("dark");
+    s.set_step(3);
+    s.render(200, 100, 1.0).expect("render");
+    let ctx = canvas.get_context("2d").expect("ctx").expect("2d");
+    let get_image_data: Function = get(&ctx, "getImageData").dyn_into().expect("function");
+    let args = Array::of4(&0.into(), &0.into(), &1.into(), &1.into());
+    let image = get_image_data.apply(&ctx, &args).expect("image data");
+    let corner = get(&image, "data")
+        .unchecked_into::<js_sys::Uint8ClampedArray>()
+        .to_vec();
+    assert!(
+        corner[0] < 60 && corner[1] < 60 && corner[2] < 60,
+        "{corner:?}"
+    );
+    let svg = s.render_svg(400, 300);
+    assert!(svg.contains("<g class=\"tool\">") && svg.contains("<g class=\"ghost\">"));
+}

@@ -87,4 +87,40 @@ impl Surface for CanvasSurface<'_> {
         // fillText only throws for non-finite coordinates; a label is skipped then.
         let _ = self.ctx.fill_text(text, x, y);
     }
+
+    fn fill_polygon(&mut self, points: &[(f64, f64)], fill: &str) {
+        let Some(((x0, y0), rest)) = points.split_first() else {
+            return;
+        };
+        self.ctx.begin_path();
+        self.ctx.move_to(*x0, *y0);
+        for (x, y) in rest {
+            self.ctx.line_to(*x, *y);
+        }
+        self.ctx.close_path();
+        self.ctx.set_fill_style_str(fill);
+        self.ctx.fill();
+    }
+
+    fn circle(&mut self, x: f64, y: f64, r: f64, fill: Option<&str>, stroke: Option<&Stroke>) {
+        self.ctx.begin_path();
+        // arc only throws for a negative radius.
+        if self
+            .ctx
+            .arc(x, y, r.max(0.0), 0.0, std::f64::consts::TAU)
+            .is_err()
+        {
+            return;
+        }
+        if let Some(fill) = fill {
+            self.ctx.set_fill_style_str(fill);
+            self.ctx.fill();
+        }
+        if let Some(stroke) = stroke {
+            self.ctx.set_stroke_style_str(stroke.color);
+            self.ctx.set_line_width(stroke.width);
+            let _ = self.ctx.set_line_dash(&Array::new());
+            self.ctx.stroke();
+        }
+    }
 }

@@ -13,13 +13,15 @@
 
 #[cfg(target_arch = "wasm32")]
 pub mod canvas;
+pub mod scene;
 pub mod style;
 pub mod svg;
 pub mod view;
 
 use crate::setup::MachineKind;
 use crate::toolpath::Toolpath;
-pub use style::{Align, Font, Stroke};
+pub use scene::Scene;
+pub use style::{Align, Font, Stroke, Theme};
 pub use view::{Extent, Plane, Rect, Transform, nice_step};
 
 /// A 2D drawing surface in CSS pixels, y down.
@@ -42,6 +44,10 @@ pub trait Surface {
     fn fill_rect(&mut self, rect: Rect, fill: &str, border: Option<&str>);
     /// Draws a text; `y` is its alphabetic baseline. Text is data, never markup.
     fn fill_text(&mut self, text: &str, x: f64, y: f64, font: &Font);
+    /// Fills a closed polygon (arrow heads).
+    fn fill_polygon(&mut self, points: &[(f64, f64)], fill: &str);
+    /// A circle of radius `r`, filled and/or stroked (the tool marker).
+    fn circle(&mut self, x: f64, y: f64, r: f64, fill: Option<&str>, stroke: Option<&Stroke>);
 }
 
 /// Space kept free around the path: left (vertical labels), right, top,
@@ -55,7 +61,7 @@ const MIN_SCALE_PX: f64 = 70.0;
 /// detail: a million tiny segments cost a million calls for nothing).
 const MIN_SEGMENT_PX: f64 = 0.5;
 /// Legend geometry.
-const LEGEND_WIDTH: f64 = 176.0;
+const LEGEND_WIDTH: f64 = 204.0;
 const LEGEND_ROW: f64 = 17.0;
 const LEGEND_PAD: f64 = 8.0;
 
@@ -74,6 +80,10 @@ pub struct Frame {
     pub legend: Rect,
     /// World to screen.
     pub transform: Transform,
+    /// Colours.
+    pub theme: &'static Theme,
+    /// The legend has a row for the tool marker (when stepping).
+    pub tool_row: bool,
 }
 
 impl Frame {
@@ -83,6 +93,19 @@ impl Frame {
     /// of the area beside the legend and the area below it, so the legend
     /// never covers the path.
     pub fn fit(toolpath: &Toolpath, plane: Plane, width: f64, height: f64) -> Frame {
+        Frame::fit_with(toolpath, plane, width, height, &style::LIGHT, false)
+    }
+
+    /// [`Frame::fit`] with a colour scheme and, when `tool_row`, room in
+    /// the legend for the tool marker.
+    pub fn fit_with(
+        toolpath: &Toolpath,
+        plane: Plane,
+        width: f64,
+        height: f64,
+        theme: &'static Theme,
+        tool_row: bool,
+    ) -> Frame {
         let width = if width.is_finite() {
             width.max(1.0)
         } else {
@@ -93,7 +116,7 @@ impl Frame {
         } else {
             1.0
         };
-        let rows = legend_rows(plane).len() as f64 + 1.0;
+        let rows = legend_rows(plane, theme, tool_row).len() as f64 + 1.0;
         let legend_h = rows * LEGEND_ROW + 2.0 * LEGEND_PAD;
         let legend = Rect::new(width - LEGEND_WIDTH - 10.0, 10.0, LEGEND_WIDTH, legend_h);
         let (l, r, t, b) = MARGIN;
@@ -130,6 +153,8 @@ impl Frame {
             plot,
             legend,
             transform,
+            theme,
+            tool_row,
         }
     }
 
@@ -186,16 +211,95 @@ pub fn draw_in(
     width: f64,
     height: f64,
 ) -> Frame {
-    let frame = Frame::fit(toolpath, plane, width, height);
-    surface.clear(frame.width, frame.height, style::BACKGROUND);
+    let scene = Scene {
+        plane,
+        ..Scene::default()
+    };
+    draw_scene(surface, toolpath, &scene, width, height)
+}
+
+/// Draws the toolpath as a [`Scene`] asks: its plane, zoom and pan, colours,
+/// and when it has a current block, the path up to that block in colour and
+/// the rest faint, the block highlighted and the tool marker at its end.
+/// Arrows go from the programmed to the actual end point of every drawn
+/// block where the two differ.
+pub fn draw_scene(
+    surface: &mut impl Surface,
+    toolpath: &Toolpath,
+    scene: &Scene,
+    width: f64,
+    height: f64,
+) -> Frame {
+    let frame = scene.frame(toolpath, width, height);
+    let moves = toolpath.len();
+    let split = scene.drawn_moves(toolpath);
+    surface.clear(frame.width, frame.height, frame.theme.background);
     draw_grid(surface, &frame);
     draw_axes(surface, &frame);
+    if split < moves {
+        surface.begin_group("ghost");
+        let ghost = frame.theme.ghost();
+        draw_path(
+            surface,
+            &frame,
+            toolpath,
+            &toolpath.actual,
+            split..moves,
+            |_| &ghost,
+        );
+        surface.end_group();
+    }
+    if let Some(step) = scene.step {
+        let first = toolpath.blocks.partition_point(|&b| b < step).min(split);
+        if first < split {
+            surface.begin_group("current");
+            let hl = frame.theme.highlight();
+            draw_path(
+                surface,
+                &frame,
+                toolpath,
+                &toolpath.actual,
+                first..split,
+                |_| &hl,
+            );
+            surface.end_group();
+        }
+    }
+    let t = frame.theme;
+    let (af, ar, pf, pr) = (
+        t.actual_feed(),
+        t.actual_rapid(),
+        t.programmed_feed(),
+        t.programmed_rapid(),
+    );
     surface.begin_group("actual");
-    draw_path(surface, &frame, toolpath, &toolpath.actual, true);
+    draw_path(
+        surface,
+        &frame,
+        toolpath,
+        &toolpath.actual,
+        0..split,
+        |rapid| {
+            if rapid { &ar } else { &af }
+        },
+    );
     surface.end_group();
     surface.begin_group("programmed");
-    draw_path(surface, &frame, toolpath, &toolpath.programmed, false);
+    draw_path(
+        surface,
+        &frame,
+        toolpath,
+        &toolpath.programmed,
+        0..split,
+        |rapid| {
+            if rapid { &pr } else { &pf }
+        },
+    );
     surface.end_group();
+    scene::draw_arrows(surface, &frame, toolpath, split);
+    if let Some(marker) = scene.marker {
+        scene::draw_marker(surface, &frame, marker);
+    }
     draw_scale_bar(surface, &frame, toolpath);
     draw_legend(surface, &frame, toolpath);
     frame
@@ -206,20 +310,28 @@ pub fn is_rapid(kind: u8) -> bool {
     kind == 0 || kind == 4
 }
 
-fn draw_path(s: &mut impl Surface, f: &Frame, tp: &Toolpath, vertices: &[f64], actual: bool) {
+fn draw_path<'a>(
+    s: &mut impl Surface,
+    f: &Frame,
+    tp: &Toolpath,
+    vertices: &[f64],
+    range: std::ops::Range<usize>,
+    stroke_for: impl Fn(bool) -> &'a Stroke,
+) {
     for rapid in [true, false] {
-        let stroke = match (actual, rapid) {
-            (true, true) => &style::ACTUAL_RAPID,
-            (true, false) => &style::ACTUAL_FEED,
-            (false, true) => &style::PROGRAMMED_RAPID,
-            (false, false) => &style::PROGRAMMED_FEED,
-        };
+        let stroke = stroke_for(rapid);
         // `pen` is the last point drawn, `pending` the last vertex passed
         // over for being too close to it; ends of runs are always drawn.
         let mut pen: Option<(f64, f64)> = None;
         let mut pending: Option<(f64, f64)> = None;
         let mut begun = false;
-        for (m, &kind) in tp.kinds.iter().enumerate() {
+        for (m, &kind) in tp
+            .kinds
+            .iter()
+            .enumerate()
+            .take(range.end)
+            .skip(range.start)
+        {
             if is_rapid(kind) != rapid {
                 continue;
             }
@@ -285,7 +397,7 @@ fn draw_grid(s: &mut impl Surface, f: &Frame) {
     let us = multiples(seen.min_u, seen.max_u, step);
     let vs = multiples(seen.min_v, seen.max_v, step);
     s.begin_group("grid");
-    s.begin_path(&style::GRID_STROKE);
+    s.begin_path(&f.theme.grid());
     for &u in &us {
         let (x, _) = t.to_screen(u, 0.0);
         let x = crisp(x);
@@ -318,7 +430,7 @@ fn draw_grid(s: &mut impl Surface, f: &Frame) {
             continue;
         }
         let text = view::format_number(u, decimals);
-        s.fill_text(&text, x, f.height - 8.0, &style::TICK_FONT);
+        s.fill_text(&text, x, f.height - 8.0, &f.theme.tick_font());
     }
     let every_v = ((style::TICK_FONT.size * 2.0 / (step * t.scale)).ceil() as i64).max(1);
     for &v in &vs {
@@ -332,7 +444,7 @@ fn draw_grid(s: &mut impl Surface, f: &Frame) {
         let text = view::format_number(v, decimals);
         let font = Font {
             align: Align::End,
-            ..style::TICK_FONT
+            ..f.theme.tick_font()
         };
         s.fill_text(&text, MARGIN.0 - 8.0, y + 4.0, &font);
     }
@@ -400,25 +512,25 @@ fn draw_axes(s: &mut impl Surface, f: &Frame) {
     let inside_x = (0.0..=f.width).contains(&x0);
     let inside_y = (0.0..=f.height).contains(&y0);
     if inside_x {
-        s.begin_path(&style::AXIS_STROKE);
+        s.begin_path(&f.theme.axis());
         s.move_to(crisp(x0), 0.0);
         s.line_to(crisp(x0), f.height);
         s.stroke();
     }
     if inside_y {
         let stroke = if f.plane.has_centre_line() {
-            &style::CENTRE_STROKE
+            f.theme.centre()
         } else {
-            &style::AXIS_STROKE
+            f.theme.axis()
         };
-        s.begin_path(stroke);
+        s.begin_path(&stroke);
         s.move_to(0.0, crisp(y0));
         s.line_to(f.width, crisp(y0));
         s.stroke();
     }
     let bold = Font {
         bold: true,
-        ..style::LABEL_FONT
+        ..f.theme.label_font()
     };
     // Axis names sit at the positive ends of the axes (at the surface's
     // edge when the origin is off it), moved aside from the legend and the
@@ -451,8 +563,8 @@ fn draw_axes(s: &mut impl Surface, f: &Frame) {
     }
     if f.plane.has_centre_line() && inside_y {
         let font = Font {
-            color: style::CENTRE_LINE,
-            ..style::LABEL_FONT
+            color: f.theme.centre,
+            ..f.theme.label_font()
         };
         s.fill_text("centre line", MARGIN.0 + 6.0, y0 - 6.0, &font);
     }
@@ -473,8 +585,8 @@ fn draw_scale_bar(s: &mut impl Surface, f: &Frame, tp: &Toolpath) {
     let (left, right) = (area.x + 6.0, area.right() - 6.0);
     let y = area.y + 20.0;
     s.begin_group("scale");
-    s.fill_rect(area, style::SCALE_FILL, None);
-    s.begin_path(&style::SCALE_STROKE);
+    s.fill_rect(area, f.theme.scale_fill, None);
+    s.begin_path(&f.theme.scale());
     s.move_to(left, y - 5.0);
     s.line_to(left, y);
     s.line_to(right, y);
@@ -487,48 +599,69 @@ fn draw_scale_bar(s: &mut impl Surface, f: &Frame, tp: &Toolpath) {
     );
     let font = Font {
         align: Align::Middle,
-        ..style::LABEL_FONT
+        ..f.theme.label_font()
     };
     s.fill_text(&text, (left + right) / 2.0, y - 8.0, &font);
     s.end_group();
 }
 
-fn legend_rows(plane: Plane) -> Vec<(&'static Stroke, &'static str)> {
+/// What a legend row shows beside its label.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Key {
+    Line(Stroke),
+    Arrow(Stroke),
+    Tool,
+}
+
+fn legend_rows(plane: Plane, t: &Theme, tool_row: bool) -> Vec<(Key, &'static str)> {
     let mut rows = vec![
-        (&style::ACTUAL_FEED, "actual, feed"),
-        (&style::ACTUAL_RAPID, "actual, rapid"),
-        (&style::PROGRAMMED_FEED, "programmed, feed"),
-        (&style::PROGRAMMED_RAPID, "programmed, rapid"),
+        (Key::Line(t.actual_feed()), "actual, feed"),
+        (Key::Line(t.actual_rapid()), "actual, rapid"),
+        (Key::Line(t.programmed_feed()), "programmed, feed"),
+        (Key::Line(t.programmed_rapid()), "programmed, rapid"),
+        (Key::Arrow(t.arrow()), "programmed → actual end"),
     ];
     if plane.has_centre_line() {
-        rows.push((&style::CENTRE_STROKE, "centre line"));
+        rows.push((Key::Line(t.centre()), "centre line"));
+    }
+    if tool_row {
+        rows.push((Key::Tool, "tool at current block"));
     }
     rows
 }
 
 fn draw_legend(s: &mut impl Surface, f: &Frame, tp: &Toolpath) {
     let r = f.legend;
+    let t = f.theme;
     s.begin_group("legend");
-    s.fill_rect(r, style::LEGEND_FILL, Some(style::LEGEND_BORDER));
+    s.fill_rect(r, t.legend_fill, Some(t.legend_border));
     let machine = match tp.machine {
         MachineKind::Mill => "mill",
         MachineKind::Lathe => "lathe",
     };
     let title = format!("{machine} · {} · {}", f.plane.name(), units_name(tp));
+    let label = t.label_font();
     let bold = Font {
         bold: true,
-        ..style::LABEL_FONT
+        ..label
     };
     let mut y = r.y + LEGEND_PAD + LEGEND_ROW - 4.0;
     s.fill_text(&title, r.x + LEGEND_PAD, y, &bold);
-    for (stroke, label) in legend_rows(f.plane) {
+    for (key, text) in legend_rows(f.plane, t, f.tool_row) {
         y += LEGEND_ROW;
         let mid = y - 4.0;
-        s.begin_path(stroke);
-        s.move_to(r.x + LEGEND_PAD, mid);
-        s.line_to(r.x + LEGEND_PAD + 30.0, mid);
-        s.stroke();
-        s.fill_text(label, r.x + LEGEND_PAD + 38.0, y, &style::LABEL_FONT);
+        let (x0, x1) = (r.x + LEGEND_PAD, r.x + LEGEND_PAD + 30.0);
+        match key {
+            Key::Line(stroke) => {
+                s.begin_path(&stroke);
+                s.move_to(x0, mid);
+                s.line_to(x1, mid);
+                s.stroke();
+            }
+            Key::Arrow(stroke) => scene::arrow(s, &stroke, (x0 + 4.0, mid), (x1, mid)),
+            Key::Tool => scene::tool_symbol(s, t, (x0 + 15.0, mid)),
+        }
+        s.fill_text(text, r.x + LEGEND_PAD + 38.0, y, &label);
     }
     s.end_group();
 }
@@ -620,6 +753,8 @@ mod tests {
             fn stroke(&mut self) {}
             fn fill_rect(&mut self, _: Rect, _: &str, _: Option<&str>) {}
             fn fill_text(&mut self, _: &str, _: f64, _: f64, _: &Font) {}
+            fn fill_polygon(&mut self, _: &[(f64, f64)], _: &str) {}
+            fn circle(&mut self, _: f64, _: f64, _: f64, _: Option<&str>, _: Option<&Stroke>) {}
         }
         // 5000 feed moves of 0.001 mm after one long move: on a small
         // surface almost all of them are below half a pixel.
@@ -630,7 +765,8 @@ mod tests {
         let tp = toolpath(&program);
         let f = Frame::fit(&tp, Plane::Xy, 200.0, 200.0);
         let mut count = Count::default();
-        draw_path(&mut count, &f, &tp, &tp.actual, true);
+        let stroke = style::ACTUAL_FEED;
+        draw_path(&mut count, &f, &tp, &tp.actual, 0..tp.len(), |_| &stroke);
         assert!(count.lines < 100, "{} segments drawn", count.lines);
         // The very end (X105.) is drawn exactly.
         let (u, v) = Plane::Xy.project(&tp.actual[tp.actual.len() - 3..]);

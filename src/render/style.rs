@@ -124,3 +124,175 @@ pub const LABEL_FONT: Font = Font {
     align: Align::Start,
     bold: false,
 };
+
+/// The colours of one colour scheme. The page passes `light` or `dark`
+/// (from `prefers-color-scheme`) so the canvas matches the page around it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Theme {
+    /// `light` or `dark`.
+    pub name: &'static str,
+    /// Background of the drawing.
+    pub background: &'static str,
+    /// Grid lines.
+    pub grid: &'static str,
+    /// Axes through the origin.
+    pub axis: &'static str,
+    /// Captions, legend text, scale bar.
+    pub label: &'static str,
+    /// Tick labels.
+    pub tick: &'static str,
+    /// The lathe's centre line.
+    pub centre: &'static str,
+    /// Legend box fill.
+    pub legend_fill: &'static str,
+    /// Legend box border.
+    pub legend_border: &'static str,
+    /// Behind the scale bar.
+    pub scale_fill: &'static str,
+    /// Actual path, feed moves.
+    pub actual_feed: &'static str,
+    /// Actual path, rapid moves.
+    pub actual_rapid: &'static str,
+    /// Programmed path, feed moves.
+    pub programmed_feed: &'static str,
+    /// Programmed path, rapid moves.
+    pub programmed_rapid: &'static str,
+    /// Moves after the current block (not run yet when stepping).
+    pub ghost: &'static str,
+    /// The arrows from programmed to actual end points.
+    pub arrow: &'static str,
+    /// The tool marker at the current block's actual position.
+    pub tool: &'static str,
+    /// Under the current block's moves.
+    pub highlight: &'static str,
+}
+
+/// The light scheme (the constants above).
+pub const LIGHT: Theme = Theme {
+    name: "light",
+    background: BACKGROUND,
+    grid: GRID,
+    axis: AXIS,
+    label: LABEL,
+    tick: "#6c757d",
+    centre: CENTRE_LINE,
+    legend_fill: LEGEND_FILL,
+    legend_border: LEGEND_BORDER,
+    scale_fill: SCALE_FILL,
+    actual_feed: ACTUAL_FEED.color,
+    actual_rapid: ACTUAL_RAPID.color,
+    programmed_feed: PROGRAMMED_FEED.color,
+    programmed_rapid: PROGRAMMED_RAPID.color,
+    ghost: "#ced4da",
+    arrow: "#c2255c",
+    tool: "#2b8a3e",
+    highlight: "rgba(252, 196, 25, 0.55)",
+};
+
+/// The dark scheme: the same hues, lighter, on a dark background.
+pub const DARK: Theme = Theme {
+    name: "dark",
+    background: "#16181d",
+    grid: "#2a2d35",
+    axis: "#7d8590",
+    label: "#e6e8eb",
+    tick: "#a3aab3",
+    centre: "#b197fc",
+    legend_fill: "#1f2229",
+    legend_border: "#474d57",
+    scale_fill: "rgba(22, 24, 29, 0.85)",
+    actual_feed: "#6ea8ff",
+    actual_rapid: "#ff8c42",
+    programmed_feed: "#a5d8ff",
+    programmed_rapid: "#ffd8a8",
+    ghost: "#3b404a",
+    arrow: "#f783ac",
+    tool: "#51cf66",
+    highlight: "rgba(252, 196, 25, 0.35)",
+};
+
+impl Theme {
+    /// `dark` or anything else (light).
+    pub fn named(name: &str) -> &'static Theme {
+        if name.eq_ignore_ascii_case("dark") {
+            &DARK
+        } else {
+            &LIGHT
+        }
+    }
+
+    fn with(stroke: Stroke, color: &'static str) -> Stroke {
+        Stroke { color, ..stroke }
+    }
+
+    /// Actual path, feed moves.
+    pub fn actual_feed(&self) -> Stroke {
+        Self::with(ACTUAL_FEED, self.actual_feed)
+    }
+    /// Actual path, rapid moves.
+    pub fn actual_rapid(&self) -> Stroke {
+        Self::with(ACTUAL_RAPID, self.actual_rapid)
+    }
+    /// Programmed path, feed moves.
+    pub fn programmed_feed(&self) -> Stroke {
+        Self::with(PROGRAMMED_FEED, self.programmed_feed)
+    }
+    /// Programmed path, rapid moves.
+    pub fn programmed_rapid(&self) -> Stroke {
+        Self::with(PROGRAMMED_RAPID, self.programmed_rapid)
+    }
+    /// Moves not run yet.
+    pub fn ghost(&self) -> Stroke {
+        Stroke {
+            color: self.ghost,
+            width: 1.25,
+            dash: &[],
+        }
+    }
+    /// Offset arrows.
+    pub fn arrow(&self) -> Stroke {
+        Stroke {
+            color: self.arrow,
+            width: 1.5,
+            dash: &[],
+        }
+    }
+    /// Under the current block.
+    pub fn highlight(&self) -> Stroke {
+        Stroke {
+            color: self.highlight,
+            width: 9.0,
+            dash: &[],
+        }
+    }
+    /// Grid lines.
+    pub fn grid(&self) -> Stroke {
+        Self::with(GRID_STROKE, self.grid)
+    }
+    /// Axes.
+    pub fn axis(&self) -> Stroke {
+        Self::with(AXIS_STROKE, self.axis)
+    }
+    /// Centre line.
+    pub fn centre(&self) -> Stroke {
+        Self::with(CENTRE_STROKE, self.centre)
+    }
+    /// Scale bar.
+    pub fn scale(&self) -> Stroke {
+        Self::with(SCALE_STROKE, self.label)
+    }
+    /// Tick labels.
+    pub fn tick_font(&self) -> Font {
+        Font {
+            color: self.tick,
+            ..TICK_FONT
+        }
+    }
+    /// Legend, scale and caption text.
+    pub fn label_font(&self) -> Font {
+        Font {
+            color: self.label,
+            ..LABEL_FONT
+        }
+    }
+}

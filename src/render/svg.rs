@@ -50,6 +50,14 @@ pub fn render(toolpath: &Toolpath, width: f64, height: f64) -> String {
     surface.finish(frame.width, frame.height)
 }
 
+/// Draws a toolpath as a scene (plane, zoom, pan, step, colours) and
+/// returns the SVG text.
+pub fn render_scene(toolpath: &Toolpath, scene: &super::Scene, width: f64, height: f64) -> String {
+    let mut surface = SvgSurface::new();
+    let frame = super::draw_scene(&mut surface, toolpath, scene, width, height);
+    surface.finish(frame.width, frame.height)
+}
+
 impl Surface for SvgSurface {
     fn clear(&mut self, width: f64, height: f64, color: &str) {
         let _ = writeln!(
@@ -147,6 +155,39 @@ impl Surface for SvgSurface {
             self.body.push_str(" font-weight=\"bold\"");
         }
         let _ = writeln!(self.body, ">{}</text>", escape(text));
+    }
+
+    fn fill_polygon(&mut self, points: &[(f64, f64)], fill: &str) {
+        let list: Vec<String> = points
+            .iter()
+            .map(|(x, y)| format!("{},{}", num(*x), num(*y)))
+            .collect();
+        let _ = writeln!(
+            self.body,
+            "<polygon points=\"{}\" fill=\"{}\"/>",
+            list.join(" "),
+            escape(fill)
+        );
+    }
+
+    fn circle(&mut self, x: f64, y: f64, r: f64, fill: Option<&str>, stroke: Option<&Stroke>) {
+        let _ = write!(
+            self.body,
+            "<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{}\"",
+            num(x),
+            num(y),
+            num(r),
+            escape(fill.unwrap_or("none"))
+        );
+        if let Some(stroke) = stroke {
+            let _ = write!(
+                self.body,
+                " stroke=\"{}\" stroke-width=\"{}\"",
+                escape(stroke.color),
+                num(stroke.width)
+            );
+        }
+        self.body.push_str("/>\n");
     }
 }
 

@@ -62,6 +62,18 @@ impl Plane {
         }
     }
 
+    /// Reads a view name as [`Plane::name`] writes it (any case): XY, XZ,
+    /// YZ or ZX.
+    pub fn parse(name: &str) -> Option<Plane> {
+        Some(match name.to_ascii_uppercase().as_str() {
+            "XY" => Plane::Xy,
+            "XZ" => Plane::Xz,
+            "YZ" => Plane::Yz,
+            "ZX" => Plane::LatheZx,
+            _ => return None,
+        })
+    }
+
     /// True when the horizontal axis (vertical = 0) is a lathe's centre line.
     pub fn has_centre_line(self) -> bool {
         self == Plane::LatheZx
