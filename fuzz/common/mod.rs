@@ -1,0 +1,358 @@
+//! What the fuzz targets check, shared with `tests/fuzz_regressions.rs`
+//! (through `#[path]`) so that a crash input replays exactly as the fuzzer
+//! ran it.
+//!
+//! The `run` target reads a setup from the first [`HEADER`] bytes of its
+//! input (machine, units, every setting, table size, peck retract, start
+//! point, a G55 offset and four registers within ±999.999) and runs the rest
+//! as the program. Inputs shorter than the header are padded with zeros.
+#![allow(dead_code)]
+
+use offsetlab::document::{ViewPlane, ViewState};
+use offsetlab::report::{BlockState, Move, Xyz};
+use offsetlab::setup::{
+    DecimalInput, LatheRegister, LatheXOffset, LengthOffsetWithoutZ, MillRegister, Position,
+};
+use offsetlab::view::RunView;
+use offsetlab::{
+    Document, MachineKind, ParseOptions, RunOptions, Setup, Toolpath, Units, parse, run_with, share,
+};
+
+/// Bytes of the setup header of a `run` input.
+pub const HEADER: usize = 44;
+
+/// Moves one fuzz run may record: far below the default limit so that a
+/// run stays fast, and still reached by repeated cycles.
+pub const FUZZ_MAX_MOVES: usize = 100_000;
+
+fn byte(h: &[u8], i: usize) -> u8 {
+    h.get(i).copied().unwrap_or(0)
+}
+
+fn i16_at(h: &[u8], i: usize) -> i16 {
+    i16::from_le_bytes([byte(h, i), byte(h, i + 1)])
+}
+
+/// A register value within ±999.999 from three bytes.
+fn value_at(h: &[u8], i: usize) -> f64 {
+    let raw = i32::from_le_bytes([byte(h, i), byte(h, i + 1), byte(h, i + 2), 0]);
+    let signed = raw - (1 << 23);
+    f64::from(signed % 1_000_000) / 1000.0
+}
+
+/// The setup the first [`HEADER`] bytes describe. Always valid.
+pub fn setup_from(h: &[u8]) -> Setup {
+    let flags = byte(h, 0);
+    let more = byte(h, 1);
+    let mut s = Setup {
+        machine: if flags & 1 == 0 {
+            MachineKind::Mill
+        } else {
+            MachineKind::Lathe
+        },
+        units: if flags & 2 == 0 {
+            Units::Mm
+        } else {
+            Units::Inch
+        },
+        ..Setup::default()
+    };
+    s.settings.decimal_input = if flags & 4 == 0 {
+        DecimalInput::Increment
+    } else {
+        DecimalInput::Calculator
+    };
+    s.settings.block_skip = flags & 8 != 0;
+    s.settings.length_offset_without_z = if flags & 16 == 0 {
+        LengthOffsetWithoutZ::Move
+    } else {
+        LengthOffsetWithoutZ::NextZ
+    };
+    s.settings.lathe_x_offset = if flags & 32 == 0 {
+        LatheXOffset::Diameter
+    } else {
+        LatheXOffset::Radius
+    };
+    if s.machine == MachineKind::Mill {
+        s.settings.mirror.x = flags & 64 != 0;
+        s.settings.mirror.y = flags & 128 != 0;
+    }
+    s.table_size = match more & 3 {
+        0 => 99,
+        1 => 9,
+        2 => 999,
+        _ => 1 + u16::from(byte(h, 2)),
+    };
+    if more & 4 != 0 {
+        s.settings.peck_retract = Some(f64::from(byte(h, 3)) / 50.0);
+    }
+    let max = s.units.max_dimension();
+    // Start point and G55 within a tenth of the dimension range.
+    let pos = |i: usize| -> Position {
+        let k = max / 10.0 / f64::from(i16::MAX);
+        Position {
+            x: f64::from(i16_at(h, i)) * k,
+            y: f64::from(i16_at(h, i + 2)) * k,
+            z: f64::from(i16_at(h, i + 4)) * k,
+        }
+    };
+    if more & 8 != 0 {
+        s.start = pos(4);
+    }
+    if more & 16 != 0 {
+        s.work_offsets.g55 = pos(10);
+    }
+    if s.machine == MachineKind::Lathe {
+        s.start.y = 0.0;
+    }
+    // Four registers of seven bytes: number, geometry (mill) or X (lathe),
+    // and Z (lathe); the wear is a hundredth of the value, negated.
+    for r in 0..4 {
+        let at = 16 + r * 7;
+        let n = u16::from(byte(h, at)) % (s.table_size + 1);
+        if n == 0 {
+            continue;
+        }
+        let v = value_at(h, at + 1);
+        let z = value_at(h, at + 4);
+        let wear = more & 32 != 0;
+        match s.machine {
+            MachineKind::Mill => {
+                let wear = if wear { -v / 100.0 } else { 0.0 };
+                s.offsets.insert(n, MillRegister { geometry: v, wear });
+            }
+            MachineKind::Lathe => {
+                s.lathe_offsets.insert(
+                    n,
+                    LatheRegister {
+                        x: v,
+                        z,
+                        x_wear: if wear { -v / 100.0 } else { 0.0 },
+                        z_wear: if wear { -z / 100.0 } else { 0.0 },
+                    },
+                );
+            }
+        }
+    }
+    s
+}
+
+/// The setup and the program of a `run` input.
+pub fn split(data: &[u8]) -> (Setup, String) {
+    let (h, rest) = data.split_at(data.len().min(HEADER));
+    (setup_from(h), String::from_utf8_lossy(rest).into_owned())
+}
+
+/// `parse` target: every setting that changes parsing, on any text.
+pub fn check_parse(data: &[u8]) {
+    let text = String::from_utf8_lossy(data);
+    let flags = data.first().copied().unwrap_or(0);
+    let setup = setup_from(&[flags]);
+    let program = parse(&text, &ParseOptions::from(&setup));
+    check_diagnostics(&program.diagnostics, &text);
+    for b in &program.blocks {
+        assert!(b.span.line >= 1, "block on line 0");
+        assert!(b.span.start <= b.span.end, "block span backwards");
+        assert!(b.span.end as usize <= text.len(), "block span past the end");
+        for w in &b.words {
+            assert!(w.value.is_finite(), "word value {}", w.value);
+            assert!(w.span.start >= b.span.start && w.span.end <= b.span.end);
+        }
+    }
+}
+
+/// `run` target: setup from the header, the rest as the program.
+pub fn check_run(data: &[u8]) {
+    let (setup, program) = split(data);
+    check_run_with(&setup, &program, FUZZ_MAX_MOVES);
+}
+
+/// Runs `program` with and without per-block reports and checks what a
+/// page relies on.
+pub fn check_run_with(setup: &Setup, program: &str, max_moves: usize) {
+    let full = run_with(
+        program,
+        setup,
+        RunOptions {
+            max_moves,
+            ..RunOptions::default()
+        },
+    );
+    check_diagnostics(&full.diagnostics, program);
+    for m in &full.moves {
+        check_move(m);
+    }
+    for b in &full.blocks {
+        check_state(&b.state);
+        assert!(b.span.line >= 1);
+    }
+    if let Some(b) = full.bounds {
+        assert!(finite(&b.min) && finite(&b.max), "bounds {b:?}");
+    }
+    for e in &full.events {
+        assert!(e.line >= 1);
+        if let offsetlab::report::EventKind::Dwell { seconds } = e.kind {
+            assert!(seconds.is_finite() && seconds >= 0.0, "dwell {seconds}");
+        }
+    }
+    assert_eq!(full.moves.len(), full.move_count);
+    assert_eq!(full.blocks.len(), full.block_count as usize);
+
+    let path = Toolpath::from_run(&full);
+    assert_eq!(path.actual.len(), path.programmed.len());
+    assert_eq!(path.actual.len() % 3, 0);
+    assert!(path.actual.iter().all(|v| v.is_finite()), "NaN in actual");
+    assert!(
+        path.programmed.iter().all(|v| v.is_finite()),
+        "NaN in programmed"
+    );
+    assert_eq!(path.len(), full.moves.len());
+    assert_eq!(path.starts.len(), full.moves.len() + 1);
+    assert_eq!(path.blocks.len(), path.len());
+    assert_eq!(path.lines.len(), path.len());
+    assert_eq!(*path.starts.last().unwrap() as usize, path.vertex_count());
+    assert!(path.starts.windows(2).all(|w| w[0] < w[1]), "empty move");
+
+    // The JSON the CLI prints (and the page's block view) is valid JSON.
+    let json = serde_json::to_string(&RunView {
+        run: &full,
+        text: program,
+    })
+    .expect("the run serialises");
+    let value: serde_json::Value = serde_json::from_str(&json).expect("valid JSON");
+    assert!(value.is_object());
+
+    // `check` (no block reports, no moves) reports the same.
+    let fast = run_with(
+        program,
+        setup,
+        RunOptions {
+            keep_blocks: false,
+            keep_moves: false,
+            max_moves,
+            ..RunOptions::default()
+        },
+    );
+    assert_eq!(fast.diagnostics, full.diagnostics);
+    assert_eq!(fast.end, full.end);
+    assert_eq!(fast.block_count, full.block_count);
+    assert_eq!(fast.move_count, full.move_count);
+    assert_eq!(fast.bounds, full.bounds);
+}
+
+fn finite(p: &Xyz) -> bool {
+    p.iter().all(|v| v.is_finite())
+}
+
+fn check_move(m: &Move) {
+    assert!(
+        finite(&m.from) && finite(&m.to) && finite(&m.programmed_from) && finite(&m.programmed_to),
+        "{m:?}"
+    );
+    assert!(m.line >= 1);
+    if let Some(a) = &m.arc {
+        let all = [
+            a.radius,
+            a.programmed_radius,
+            a.sweep,
+            a.programmed_sweep,
+            a.start_angle,
+            a.programmed_start_angle,
+        ];
+        assert!(
+            all.iter().all(|v| v.is_finite()) && finite(&a.center) && finite(&a.programmed_center),
+            "{a:?}"
+        );
+        assert!(a.radius > 0.0 && a.programmed_radius > 0.0, "{a:?}");
+    }
+}
+
+fn check_state(s: &BlockState) {
+    assert!(finite(&s.programmed) && finite(&s.actual), "{s:?}");
+    assert!(
+        s.length.value.is_finite() && s.length.vector.is_finite() && s.length.target.is_finite()
+    );
+    assert!(s.position.value.is_finite() && finite(&s.position.vector));
+    assert!(finite(&s.lathe.vector) && finite(&s.lathe.target));
+    assert!(s.feed.is_none_or(f64::is_finite) && s.spindle.is_none_or(f64::is_finite));
+}
+
+/// Every diagnostic has a place: line ≥ 1 with column ≥ 1, or line 0 for
+/// problems of the setup or of the program as a whole.
+pub fn check_diagnostics(diagnostics: &[offsetlab::Diagnostic], text: &str) {
+    let lines = 1 + text
+        .as_bytes()
+        .iter()
+        .enumerate()
+        .filter(|&(i, &b)| b == b'\n' || (b == b'\r' && text.as_bytes().get(i + 1) != Some(&b'\n')))
+        .count();
+    for d in diagnostics {
+        assert!(!d.message.is_empty(), "{d:?}");
+        if d.line == 0 {
+            assert!(
+                d.code.starts_with("setup-") || d.code == "program-too-large",
+                "line 0: {d:?}"
+            );
+        } else {
+            assert!(d.column >= 1 && d.end_column >= d.column, "{d:?}");
+            assert!(
+                d.line as usize <= lines,
+                "line {} of {lines}: {d:?}",
+                d.line
+            );
+        }
+    }
+}
+
+/// `link` target: decoding never panics; a decoded document is valid and
+/// survives encoding and decoding again; a document built from the bytes
+/// survives both link forms.
+pub fn check_link(data: &[u8]) {
+    let text = String::from_utf8_lossy(data);
+    if let Ok(link) = share::decode(&text) {
+        let doc = link.document;
+        assert!(
+            doc.clone().validated().is_ok(),
+            "decoded an invalid document"
+        );
+        let again = share::decode(&share::encode(&doc)).expect("re-encoded link decodes");
+        assert_eq!(again.document, doc);
+    }
+    round_trip(data);
+}
+
+/// decode(encode(doc)) == doc for a document made from the bytes: the setup
+/// of [`setup_from`], the rest as the program, a view and a step.
+pub fn round_trip(data: &[u8]) {
+    let (setup, program) = split(data);
+    let flags = data.get(2).copied().unwrap_or(0);
+    let mut doc = Document::new(setup, program);
+    if flags & 1 != 0 {
+        doc.view = Some(ViewState {
+            plane: [ViewPlane::XY, ViewPlane::XZ, ViewPlane::YZ, ViewPlane::ZX]
+                [usize::from(flags >> 1) % 4],
+            zoom: 1.0 + f64::from(data.get(3).copied().unwrap_or(0)) / 16.0,
+            pan: [
+                f64::from(i16_at(data, 4)) / 8.0,
+                f64::from(i16_at(data, 6)) / 8.0,
+            ],
+        });
+    }
+    if flags & 8 != 0 {
+        doc.step = Some(u32::from(data.get(8).copied().unwrap_or(0)));
+    }
+    let compact = share::decode(&share::encode(&doc)).expect("compact link decodes");
+    assert_eq!(compact.document, doc, "compact round trip");
+    // The plain form carries what a person writes by hand: not the table
+    // size, the peck retract or the work offsets.
+    let s = &doc.setup;
+    if s.table_size == 99
+        && s.settings.peck_retract.is_none()
+        && s.work_offsets == Default::default()
+    {
+        let plain = share::decode(&share::encode_plain(&doc, flags & 16 != 0));
+        let plain = plain.expect("plain link decodes");
+        assert_eq!(plain.document, doc, "plain round trip");
+        assert_eq!(plain.embed, flags & 16 != 0);
+    }
+}
