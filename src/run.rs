@@ -13,6 +13,12 @@ use crate::syntax::{Address, Block, Blocks, ParseOptions};
 /// error (a move is about 200 bytes: 5 million is about 1 GB).
 pub const MAX_MOVES: usize = 5_000_000;
 
+/// Most blocks one run executes by default; past this the run stops with an
+/// error. Blocks without motion (M codes, dwells, G92) do not count against
+/// [`MAX_MOVES`], and a block report is a few hundred bytes, so without this
+/// a large program of such blocks could exhaust memory.
+pub const MAX_BLOCKS: usize = 5_000_000;
+
 /// What to keep of a run.
 #[derive(Clone, Copy, Debug)]
 pub struct RunOptions {
@@ -23,6 +29,10 @@ pub struct RunOptions {
     pub keep_moves: bool,
     /// Most moves to record before stopping with `too-many-moves`.
     pub max_moves: usize,
+    /// Most blocks to execute before stopping with `too-many-blocks`
+    /// (counted whether or not their reports are kept, so `check` and `run`
+    /// stop at the same block).
+    pub max_blocks: usize,
 }
 
 impl Default for RunOptions {
@@ -31,6 +41,7 @@ impl Default for RunOptions {
             keep_blocks: true,
             keep_moves: true,
             max_moves: MAX_MOVES,
+            max_blocks: MAX_BLOCKS,
         }
     }
 }
@@ -55,7 +66,8 @@ pub fn run_with(text: &str, setup: &Setup, options: RunOptions) -> Run {
         bounds: None,
         end: End::Completed,
     };
-    let setup_problems = setup.validate();
+    let mut setup_problems = setup.validate();
+    setup_problems.extend(crate::syntax::check_size(text));
     if !setup_problems.is_empty() {
         result.diagnostics = setup_problems;
         result.end = End::Error { line: 0 };
@@ -85,6 +97,21 @@ pub fn run_with(text: &str, setup: &Setup, options: RunOptions) -> Run {
         }
         out.clear();
         let index = result.block_count;
+        if index as usize >= options.max_blocks {
+            stopped = true;
+            result.end = End::Error {
+                line: block.span.line,
+            };
+            run_diagnostics.push(Diagnostic::error(
+                "too-many-blocks",
+                block.span,
+                format!(
+                    "the program runs more than {} blocks (see the limits in the README); the run stops here",
+                    options.max_blocks
+                ),
+            ));
+            continue;
+        }
         machine.moves_left = options.max_moves.saturating_sub(result.move_count);
         let flow = match machine.execute(&block, index, &mut out) {
             Ok(flow) => flow,

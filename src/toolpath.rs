@@ -13,6 +13,15 @@ use crate::setup::{MachineKind, Units};
 
 pub use crate::machine::arc::CHORD_TOLERANCE_MM as CHORD_TOLERANCE;
 
+/// Most vertices of one toolpath (each path). A line move has two; an arc
+/// up to [`crate::machine::arc::MAX_ARC_SEGMENTS`] + 1. When the arcs of a
+/// run would need more, every arc is drawn with proportionally fewer
+/// segments (at least one), so the toolpath of any run that stays within
+/// [`crate::MAX_MOVES`] fits: 2 × 5,000,000 line vertices are below it.
+/// 16 Mi vertices are 384 MiB per path.
+pub const MAX_VERTICES: usize = 1 << 24;
+const _: () = assert!(MAX_VERTICES >= 2 * crate::MAX_MOVES && MAX_VERTICES <= u32::MAX as usize);
+
 /// Drawable toolpath.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Toolpath {
@@ -37,14 +46,19 @@ pub struct Toolpath {
 }
 
 impl Toolpath {
-    /// Builds the toolpath of a run.
+    /// Builds the toolpath of a run (at most [`MAX_VERTICES`] per path).
     pub fn from_run(run: &Run) -> Toolpath {
+        Toolpath::build(run, MAX_VERTICES)
+    }
+
+    fn build(run: &Run, max_vertices: usize) -> Toolpath {
         let mut t = Toolpath {
             units: run.units,
             machine: run.machine,
             ..Toolpath::default()
         };
         let k = 1.0 / run.units.mm();
+        let arcs = ArcBudget::of(&run.moves, max_vertices);
         for m in &run.moves {
             t.starts.push(t.vertex_count() as u32);
             t.kinds.push(m.kind.code(m.at_feed));
@@ -55,7 +69,7 @@ impl Toolpath {
                     t.push(m.from, m.programmed_from, k);
                     t.push(m.to, m.programmed_to, k);
                 }
-                Some(a) => t.push_arc(m, a, k),
+                Some(a) => t.push_arc(m, a, k, &arcs),
             }
         }
         t.starts.push(t.vertex_count() as u32);
@@ -82,14 +96,12 @@ impl Toolpath {
         self.programmed.extend(programmed.map(|v| v * k));
     }
 
-    fn push_arc(&mut self, m: &Move, a: &ArcInfo, k: f64) {
+    fn push_arc(&mut self, m: &Move, a: &ArcInfo, k: f64, budget: &ArcBudget) {
         let (ia, ib, n) = a.plane.axes();
         let s = |i: usize| if a.diameter_x && i == 0 { 0.5 } else { 1.0 };
         let act = a.circle();
         let prog = a.programmed_circle();
-        let count = act
-            .segments(CHORD_TOLERANCE_MM)
-            .max(prog.segments(CHORD_TOLERANCE_MM));
+        let count = budget.segments(arc_segments(a));
         let point = |c: &Circle, from: Xyz, to: Xyz, i: usize| -> Xyz {
             if i == count {
                 return to;
@@ -138,6 +150,49 @@ impl Toolpath {
     }
 }
 
+/// Segments an arc is drawn with at the chord tolerance (the finer of its
+/// actual and programmed circle).
+fn arc_segments(a: &ArcInfo) -> usize {
+    a.circle()
+        .segments(CHORD_TOLERANCE_MM)
+        .max(a.programmed_circle().segments(CHORD_TOLERANCE_MM))
+}
+
+/// How the arcs of a run share [`MAX_VERTICES`]: each arc keeps its first
+/// segment, and the segments past the first are scaled by one factor when
+/// their sum would pass the budget.
+struct ArcBudget {
+    /// Vertices for the segments past each arc's first, and how many those
+    /// arcs want; `None` when everything fits.
+    scale: Option<(usize, usize)>,
+}
+
+impl ArcBudget {
+    fn of(moves: &[Move], max_vertices: usize) -> ArcBudget {
+        // Two vertices per move (an arc's start and its first segment's end).
+        let base = moves.len().saturating_mul(2);
+        let extra: usize = moves
+            .iter()
+            .filter_map(|m| m.arc.as_ref())
+            .map(|a| arc_segments(a) - 1)
+            .sum();
+        let room = max_vertices.saturating_sub(base);
+        ArcBudget {
+            scale: (base.saturating_add(extra) > max_vertices).then_some((room, extra)),
+        }
+    }
+
+    fn segments(&self, wanted: usize) -> usize {
+        match self.scale {
+            None => wanted,
+            Some((room, extra)) => {
+                let more = (wanted - 1) as u128 * room as u128 / extra.max(1) as u128;
+                1 + more as usize
+            }
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -180,6 +235,30 @@ mod tests {
             let my = (w[0][1] + w[1][1]) / 2.0;
             assert!(10.0 - (mx * mx + my * my).sqrt() <= CHORD_TOLERANCE + 1e-12);
         }
+    }
+
+    #[test]
+    fn arcs_share_the_vertex_budget() {
+        // 100 full circles of radius 50 m want 1024 segments each, and
+        // two lines two vertices each: 102,604 vertices for a budget of
+        // 10,000 (MAX_VERTICES works the same way, 20,000 such circles).
+        let text = "G02 X0 Y0 I50000. F100.\n".repeat(100) + "G01 X1.\nG01 X2.";
+        let r = run(&text, &Setup::default());
+        assert!(!r.has_errors(), "{:?}", r.diagnostics);
+        assert_eq!(Toolpath::from_run(&r).vertex_count(), 100 * 1025 + 4);
+        let t = Toolpath::build(&r, 10_000);
+        assert_eq!(t.len(), 102);
+        assert!(t.vertex_count() <= 10_000, "{}", t.vertex_count());
+        assert!(t.vertex_count() > 9_000, "{}", t.vertex_count());
+        assert_eq!(t.starts[101] - t.starts[100], 2, "lines keep both ends");
+        assert_eq!(*t.starts.last().unwrap() as usize, t.vertex_count());
+        // Each circle still ends where it started, on the circle.
+        let end = t.starts[1] as usize - 1;
+        assert_eq!(&t.actual[end * 3..end * 3 + 3], &[0.0, 0.0, 0.0]);
+        let mid = (t.starts[0] as usize + end) / 2;
+        let p = &t.actual[mid * 3..mid * 3 + 2];
+        let d = ((p[0] - 50_000.0).powi(2) + p[1].powi(2)).sqrt();
+        assert!((d - 50_000.0).abs() < 1e-6, "{d}");
     }
 
     #[test]

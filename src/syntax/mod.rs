@@ -23,6 +23,27 @@ use lexer::{Number, NumberError};
 /// Most diagnostics one program reports; past this one more says so.
 pub const MAX_DIAGNOSTICS: usize = 1000;
 
+/// Largest program text read, in bytes (256 MiB). Spans are 32-bit byte
+/// offsets, and a larger program is no program a control holds; a longer
+/// text is refused whole with `program-too-large` before parsing.
+pub const MAX_PROGRAM_BYTES: usize = 256 * 1024 * 1024;
+
+/// The `program-too-large` error for a text over [`MAX_PROGRAM_BYTES`]
+/// (line 0: it belongs to the program as a whole).
+pub fn check_size(text: &str) -> Option<Diagnostic> {
+    (text.len() > MAX_PROGRAM_BYTES).then(|| {
+        Diagnostic::error(
+            "program-too-large",
+            Span::default(),
+            format!(
+                "the program is {} bytes; at most {} MiB ({MAX_PROGRAM_BYTES} bytes) are read",
+                text.len(),
+                MAX_PROGRAM_BYTES / (1024 * 1024)
+            ),
+        )
+    })
+}
+
 /// Largest value of words that are always integers (eight digits).
 const MAX_INTEGER: u64 = 99_999_999;
 
@@ -71,8 +92,15 @@ pub struct Program {
     pub diagnostics: Vec<Diagnostic>,
 }
 
-/// Parses a whole program.
+/// Parses a whole program (nothing of a text over [`MAX_PROGRAM_BYTES`]:
+/// its one diagnostic is `program-too-large`).
 pub fn parse(text: &str, options: &ParseOptions) -> Program {
+    if let Some(d) = check_size(text) {
+        return Program {
+            blocks: Vec::new(),
+            diagnostics: vec![d],
+        };
+    }
     let mut blocks = Blocks::new(text, *options);
     let mut out = Vec::new();
     let mut block = Block::default();
