@@ -73,3 +73,28 @@ fn link_values_with_seventeen_digits_round_trip_exactly() {
     let json = Setup::from_json(&doc.setup.to_json()).unwrap();
     assert_eq!(json, doc.setup);
 }
+
+/// Finding 2 (run target, `lathe-r-arc-without-chord`): on the lathe an R
+/// arc whose end is its start (`G02 R0.1` with no X/Z) went through the R
+/// construction with a chord of length 0, whose normal is 0/0: the arc's
+/// centre, start angle and sweep were NaN, written as `null` into the JSON
+/// and as NaN into the toolpath the canvas draws. Fixed at two depths:
+/// `arc::from_radius` refuses a zero chord (`ArcError::NoChord`, so no
+/// caller can get a NaN centre; on the mill an offset that shrinks the
+/// actual chord to nothing is now an `arc-radius` error), and the lathe
+/// treats that block like the mill does: warning `arc-r-no-motion`, no arc.
+#[test]
+fn a_lathe_r_arc_from_a_point_to_itself_is_a_warning_not_a_nan() {
+    let mut setup = Setup {
+        machine: offsetlab::MachineKind::Lathe,
+        ..Setup::default()
+    };
+    setup.set_register("01=X0.4,Z0.1").unwrap();
+    let r = offsetlab::run("G02 R0.1 F8.\nG01 X10. Z-5. T0101\nG03 R1.", &setup);
+    let codes: Vec<_> = r.diagnostics.iter().map(|d| (d.code, d.line)).collect();
+    assert_eq!(codes, [("arc-r-no-motion", 1), ("arc-r-no-motion", 3)]);
+    assert_eq!(r.moves.len(), 1, "{:?}", r.moves);
+    let t = offsetlab::Toolpath::from_run(&r);
+    assert!(t.actual.iter().chain(&t.programmed).all(|v| v.is_finite()));
+    fuzz_common::check_run_with(&setup, "G02 R0.1 F8.\nG01 X10. Z-5. T0101\nG03 R1.", 1000);
+}

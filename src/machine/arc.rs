@@ -49,6 +49,9 @@ pub enum ArcError {
     },
     /// The centre is at the start point.
     ZeroRadius,
+    /// An R arc whose end is its start: no chord, so no centre (a full
+    /// circle needs I/J/K).
+    NoChord,
 }
 
 fn dist(a: P2, b: P2) -> f64 {
@@ -106,7 +109,8 @@ pub fn from_center(
 }
 
 /// The arc from `start` to `end` with radius `r` (R form): R > 0 is 180° or
-/// less, R < 0 more than 180° (spec 2). Start must differ from end.
+/// less, R < 0 more than 180° (spec 2). Start equal to end is
+/// [`ArcError::NoChord`]: the centre would be undefined.
 pub fn from_radius(
     start: P2,
     end: P2,
@@ -115,6 +119,9 @@ pub fn from_radius(
     tolerance: f64,
 ) -> Result<Circle, ArcError> {
     let d = dist(start, end);
+    if d < SAME_POINT {
+        return Err(ArcError::NoChord);
+    }
     let half = d / 2.0;
     let radius = r.abs();
     if radius < half - tolerance || radius < SAME_POINT {
@@ -242,6 +249,15 @@ mod tests {
         let c = from_radius([10.0, 0.0], [0.0, 10.0], 10.0, false, 0.01).unwrap();
         assert!(close(c.center, [10.0, 10.0]));
         assert!((c.sweep + PI / 2.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn r_arc_without_chord_is_an_error_not_a_nan() {
+        // Fuzz finding 2: the chord's normal was 0/0.
+        let e = from_radius([3.0, 4.0], [3.0, 4.0], 0.1, false, 0.01).unwrap_err();
+        assert_eq!(e, ArcError::NoChord);
+        let c = from_radius([0.0, 0.0], [1e-8, 0.0], 99999.999, true, 0.01).unwrap();
+        assert!(c.center.iter().all(|v| v.is_finite()) && c.sweep.is_finite());
     }
 
     #[test]

@@ -141,7 +141,21 @@ impl Machine<'_> {
                 vector[axis] = self.state.lathe.target[axis];
             }
         }
-        if motion.is_arc() {
+        // As on the mill, an R arc from a point to itself has no centre: a
+        // warning, and the block moves like G01 (only an offset change can
+        // move the tool then).
+        let p0 = self.state.programmed;
+        let r_without_chord = motion.is_arc()
+            && b.has(Address::R)
+            && super::arc::same_point([p0[0] / 2.0, p0[2]], [target[0] / 2.0, target[2]]);
+        if r_without_chord {
+            out.warnings.push(Diagnostic::warning(
+                "arc-r-no-motion",
+                b.span,
+                "an R arc whose end is its start makes no circle (a full circle needs I and K); the block makes no arc",
+            ));
+        }
+        if motion.is_arc() && !r_without_chord {
             let mut req = ArcRequest {
                 target,
                 actual_end: add_xz(target, vector),
@@ -183,7 +197,7 @@ impl Machine<'_> {
         }
         self.state.programmed = target;
         self.state.lathe.vector = vector;
-        let at_feed = motion == Motion::Linear;
+        let at_feed = motion == Motion::Linear || r_without_chord;
         if t_changed {
             out.notes
                 .push(self.t_move_note(self.sub_xz(vector, old_vector), at_feed));

@@ -528,6 +528,9 @@ impl<'s> Machine<'s> {
                     f(half_chord)
                 ),
                 ArcError::ZeroRadius => format!("the {path} arc's centre is its start point"),
+                ArcError::NoChord => format!(
+                    "the {path} arc's end is its start: an R arc makes no circle (a full circle needs the centre words)"
+                ),
             }
         };
         let prog: Circle =
