@@ -61,7 +61,7 @@ const MIN_SCALE_PX: f64 = 70.0;
 /// detail: a million tiny segments cost a million calls for nothing).
 const MIN_SEGMENT_PX: f64 = 0.5;
 /// Legend geometry.
-const LEGEND_WIDTH: f64 = 204.0;
+const LEGEND_WIDTH: f64 = 218.0;
 const LEGEND_ROW: f64 = 17.0;
 const LEGEND_PAD: f64 = 8.0;
 

@@ -71,16 +71,11 @@ impl Scene {
         }
     }
 
-    /// The layout fitted to the whole path, before zoom and pan.
+    /// The layout fitted to the whole path, before zoom and pan. The legend
+    /// always has the tool marker's row, so the drawing does not jump when
+    /// stepping starts.
     pub fn fitted(&self, tp: &Toolpath, width: f64, height: f64) -> Frame {
-        Frame::fit_with(
-            tp,
-            self.plane,
-            width,
-            height,
-            self.theme,
-            self.step.is_some(),
-        )
+        Frame::fit_with(tp, self.plane, width, height, self.theme, true)
     }
 
     /// The layout with this scene's zoom and pan.
