@@ -13,7 +13,7 @@ PORT ?= 8000
 CHROMEDRIVER ?= /usr/bin/chromedriver
 TIMED := scripts/timed.sh
 
-.PHONY: help setup wasm serve test reset-logs lint test-native test-wasm test-e2e clean
+.PHONY: help setup wasm page serve test reset-logs lint test-native test-wasm test-e2e clean
 
 help:
 	@echo "make serve   install what is missing, build, serve http://127.0.0.1:$(PORT)/"
@@ -26,10 +26,14 @@ setup:
 wasm: setup
 	@$(TIMED) wasm-build wasm-pack build --target web --out-dir www/pkg
 
-serve: wasm
+# The page's CodeMirror bundle (www/dist, generated, not committed).
+page: setup
+	@$(TIMED) page-build npm run --silent build:page
+
+serve: wasm page
 	node scripts/serve.mjs --port $(PORT)
 
-test: reset-logs setup lint test-native test-wasm wasm test-e2e
+test: reset-logs setup lint test-native test-wasm wasm page test-e2e
 	@bash scripts/summary.sh
 
 reset-logs:
@@ -49,8 +53,8 @@ test-wasm: setup
 	@$(TIMED) wasm-contract wasm-pack test --headless --chrome --chromedriver $(CHROMEDRIVER) -- --test wasm
 
 # The page end to end in headless Chromium (needs www/pkg: make wasm).
-test-e2e: setup
+test-e2e: setup page
 	@$(TIMED) e2e npm run --silent test:e2e
 
 clean:
-	rm -rf www/pkg test-results
+	rm -rf www/pkg www/dist test-results

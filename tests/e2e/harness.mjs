@@ -7,6 +7,8 @@ import { spawn } from 'node:child_process';
 import { existsSync, mkdirSync, writeFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { after, before } from 'node:test';
+import assert from 'node:assert/strict';
 import { chromium } from 'playwright-core';
 import { PNG } from 'pngjs';
 
@@ -39,6 +41,9 @@ const CHROMIUM_ARGS = [
 export async function startServer() {
   if (!existsSync(join(ROOT, 'www', 'pkg', 'offsetlab.js'))) {
     throw new Error('www/pkg is missing: build it first (make wasm)');
+  }
+  if (!existsSync(join(ROOT, 'www', 'dist', 'editor.js'))) {
+    throw new Error('www/dist is missing: build it first (make page)');
   }
   const child = spawn(process.execPath, [join(ROOT, 'scripts', 'serve.mjs'), '--port', '0'], {
     stdio: ['ignore', 'pipe', 'inherit'],
@@ -84,11 +89,16 @@ export function launchBrowser() {
  * exception and failed request (of the page and of its worker) in
  * `problems`.
  */
-export async function openPage(browser, url, { width = 1280, height = 800, scale = 2 } = {}) {
+export async function openPage(browser, url, {
+  width = 1280, height = 800, scale = 2, colorScheme = 'light', hasTouch = false, init,
+} = {}) {
   const context = await browser.newContext({
     viewport: { width, height },
     deviceScaleFactor: scale,
+    colorScheme,
+    hasTouch,
   });
+  if (init) await context.addInitScript(init);
   const page = await context.newPage();
   const problems = [];
   const onConsole = (where) => (message) => {
@@ -179,4 +189,123 @@ export async function shootCanvas(page, name, accept, timeout = 10_000) {
   }
   await page.screenshot({ path: join(RESULTS, `${name}.png`) });
   return { png, counts };
+}
+
+/** Colours of the light theme's arrow and tool marker (src/render/style.rs). */
+export const MARKS = {
+  arrow: [0xc2, 0x25, 0x5c],
+  tool: [0x2b, 0x8a, 0x3e],
+  ghost: [0xce, 0xd4, 0xda],
+};
+
+/** Pixels within `tolerance` of `color` in a decoded image, optionally inside a box (device px). */
+export function countColor(png, color, { tolerance = 30, box } = {}) {
+  const [cr, cg, cb] = color;
+  const { width, data } = png;
+  const x0 = box?.x ?? 0;
+  const y0 = box?.y ?? 0;
+  const x1 = box ? box.x + box.w : width;
+  const y1 = box ? box.y + box.h : png.height;
+  let n = 0;
+  for (let y = Math.max(0, y0); y < Math.min(png.height, y1); y += 1) {
+    for (let x = Math.max(0, x0); x < Math.min(width, x1); x += 1) {
+      const i = (y * width + x) * 4;
+      if (Math.hypot(data[i] - cr, data[i + 1] - cg, data[i + 2] - cb) <= tolerance) n += 1;
+    }
+  }
+  return n;
+}
+
+/** Centroid (device px) of the pixels near `color`, or null. */
+export function centroid(png, color, tolerance = 30) {
+  const [cr, cg, cb] = color;
+  let sx = 0;
+  let sy = 0;
+  let n = 0;
+  for (let y = 0; y < png.height; y += 1) {
+    for (let x = 0; x < png.width; x += 1) {
+      const i = (y * png.width + x) * 4;
+      if (Math.hypot(png.data[i] - cr, png.data[i + 1] - cg, png.data[i + 2] - cb) <= tolerance) {
+        sx += x;
+        sy += y;
+        n += 1;
+      }
+    }
+  }
+  return n ? { x: sx / n, y: sy / n, n } : null;
+}
+
+/** Replaces the program by typing it in CodeMirror, key by key, as a user would. */
+export async function typeProgram(page, text) {
+  await page.locator('.cm-content').click();
+  await page.keyboard.press('ControlOrMeta+A');
+  await page.keyboard.press('Delete');
+  await page.keyboard.type(text, { delay: 1 });
+  await waitForRun(page);
+}
+
+/** The view state the page last got from the worker. */
+export async function viewOf(page) {
+  return page.evaluate(() => window.offsetlab.viewState());
+}
+
+/** Waits until the worker reports a view state for which `predicate(view)` holds. */
+export async function waitForView(page, predicate, arg) {
+  await page.waitForFunction(
+    ([source, a]) => {
+      const v = document.body.dataset.view;
+      // eslint-disable-next-line no-new-func
+      return v !== undefined && new Function('v', 'a', `return (${source})(v, a);`)(JSON.parse(v), a);
+    },
+    [predicate.toString(), arg],
+    { timeout: 10_000 },
+  );
+  return viewOf(page);
+}
+
+/** Loads a built-in example from the menu and waits for its run. */
+export async function loadExample(page, id) {
+  await page.locator('#example').selectOption(id);
+  await page.locator('#load-example').click();
+  await waitForRun(page);
+}
+
+/** Text of the state panel row with data-key `key`. */
+export async function stateText(page, key) {
+  return page.locator(`#state-panel dd[data-key="${key}"]`).textContent();
+}
+
+/** Saves a screenshot of the whole page in test-results/NAME.png. */
+export async function shoot(page, name, options = {}) {
+  mkdirSync(RESULTS, { recursive: true });
+  await page.screenshot({ path: join(RESULTS, `${name}.png`), ...options });
+}
+
+/**
+ * One server and one browser per test file; `withPage(body, options)` opens
+ * a fresh context (so a fresh localStorage), waits for the first run, runs
+ * `body(page, problems)` and then checks that no console error, page
+ * exception or failed request happened.
+ */
+export function useBrowser() {
+  const ctx = {};
+  before(async () => {
+    ctx.server = await startServer();
+    ctx.browser = await launchBrowser();
+  });
+  after(async () => {
+    await ctx.browser?.close();
+    await ctx.server?.stop();
+  });
+  ctx.withPage = async (body, options) => {
+    const { context, page, problems } = await openPage(ctx.browser, ctx.server.url, options);
+    try {
+      await waitForRun(page);
+      await body(page, { context, problems });
+      assert.deepEqual(problems, [], 'no console errors, page exceptions or failed requests');
+    } finally {
+      await context.close();
+    }
+  };
+  return ctx;
 }

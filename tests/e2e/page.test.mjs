@@ -1,149 +1,110 @@
-// Browser end-to-end tests of the page (issue 2): the default example is
-// drawn, typing re-draws, a syntax error is listed with line:column, and no
-// console error or page exception happens on the way. Screenshots go to
-// test-results/ (default.png, typed.png, error.png and their -canvas crops).
+// Browser end-to-end tests of the playground page as a whole (issue 4,
+// items 4, 8, 9 and 10): the drawing (both paths, colours, arrows, planes,
+// zoom at the cursor, pan, pinch, fit, high-DPI, dark scheme), the examples
+// menu, autosave and restore, storage failure, tablet layout and keyboard
+// access. Screenshots: default.png, light.png, dark.png, lathe.png,
+// tablet.png, tablet-dark.png (and -canvas crops).
 
 import assert from 'node:assert/strict';
-import { after, before, describe, test } from 'node:test';
+import { describe, test } from 'node:test';
 import {
-  countDifferences, launchBrowser, openPage, shootCanvas, startServer, waitForRun,
+  MARKS, countColor, countDifferences, decode, loadExample, shoot, shootCanvas, typeProgram,
+  useBrowser, viewOf, waitForRun, waitForView,
 } from './harness.mjs';
 
-let server;
-let browser;
-
-before(async () => {
-  server = await startServer();
-  browser = await launchBrowser();
-});
-
-after(async () => {
-  await browser?.close();
-  await server?.stop();
-});
-
-/** Opens the page, runs `body`, then checks that nothing went wrong in the console. */
-async function withPage(body, options) {
-  const { context, page, problems } = await openPage(browser, server.url, options);
-  try {
-    await waitForRun(page);
-    await body(page);
-    assert.deepEqual(problems, [], 'no console errors, page exceptions or failed requests');
-  } finally {
-    await context.close();
-  }
-}
-
-/** Replaces the program by typing it, key by key, as a user would. */
-async function typeProgram(page, text) {
-  const editor = page.locator('#program');
-  await editor.click();
-  await page.keyboard.press('ControlOrMeta+A');
-  await page.keyboard.press('Delete');
-  await editor.pressSequentially(text, { delay: 2 });
-  // Wait for the debounce to fire and the answer to come back.
-  await waitForRun(page);
-}
-
+const { withPage } = useBrowser();
 const drawn = (c) => c.actualFeed > 300 && c.programmedFeed > 150;
 
-describe('page', () => {
-  test('draws the default example: seed 000 square, both paths, no problems', async () => {
+describe('view', () => {
+  test('draws the default example: both paths in their colours, arrows where they differ, sharp at 2x', async () => {
     await withPage(async (page) => {
-      const program = await page.locator('#program').inputValue();
-      assert.match(program, /SEED 000: SQUARE WITH G45-G48/);
-      assert.match(await page.locator('#setup').inputValue(), /"01": 6\.0/);
-      await assert.doesNotReject(page.locator('#summary').filter({ hasText: '8 blocks' }).waitFor());
-      const summary = await page.locator('#summary').textContent();
-      assert.match(summary, /8 blocks · 7 moves · 0 errors · 0 warnings · mill, mm/);
-      assert.equal(await page.locator('#diagnostics li.none').count(), 1);
-
+      assert.match(await page.evaluate(() => window.offsetlab.program()), /SEED 000: SQUARE WITH G45-G48/);
+      assert.match(await page.locator('#summary').textContent(), /8 blocks · 7 moves · 0 errors · 0 warnings · mill, mm/);
       const { counts, png } = await shootCanvas(page, 'default', drawn);
-      // Screenshot at devicePixelRatio 2: the canvas is drawn at device pixels.
+      await shoot(page, 'light');
       const box = await page.locator('#view').boundingBox();
-      assert.equal(png.width, Math.round(box.width) * 2);
-      assert.ok(counts.painted > 0.01 * counts.total, `painted ${counts.painted} of ${counts.total}`);
-      assert.ok(counts.actualFeed > 300, `actual feed pixels: ${counts.actualFeed}`);
+      assert.equal(png.width, Math.round(box.width) * 2, 'drawn at device pixels');
+      assert.ok(counts.actualFeed > 600, `actual feed pixels: ${counts.actualFeed}`);
       assert.ok(counts.actualRapid > 100, `actual rapid pixels: ${counts.actualRapid}`);
-      assert.ok(counts.programmedFeed > 150, `programmed feed pixels: ${counts.programmedFeed}`);
+      assert.ok(counts.programmedFeed > 300, `programmed feed pixels: ${counts.programmedFeed}`);
       assert.ok(counts.programmedRapid > 50, `programmed rapid pixels: ${counts.programmedRapid}`);
+      // Five arrows (blocks 1–5 end off their programmed points).
+      assert.ok(countColor(png, MARKS.arrow) > 150, `arrow pixels: ${countColor(png, MARKS.arrow)}`);
     });
   });
 
-  test('typing a new program re-draws the path', async () => {
+  test('wheel zooms at the cursor, drag pans, double-click and the Fit button fit', async () => {
     await withPage(async (page) => {
-      const before = await shootCanvas(page, 'before-typing', drawn);
-      await typeProgram(page, 'G90 G00 X-20. Y-10.;\nG01 X100. Y0 F300.;\nG02 X100. Y60. R30.;\nG01 X0 Y60.;\nG00 X0 Y0;\n');
-      const summary = await page.locator('#summary').textContent();
-      assert.match(summary, /5 blocks · 5 moves · 0 errors/);
-      const afterTyping = await shootCanvas(
-        page,
-        'typed',
-        (c, png) => countDifferences(before.png, png) > 2000 && c.actualFeed > 300,
-      );
-      const changed = countDifferences(before.png, afterTyping.png);
-      assert.ok(changed > 2000, `only ${changed} pixels changed`);
-      assert.ok(afterTyping.counts.actualFeed > 300);
-      assert.ok(afterTyping.counts.actualRapid > 50);
-    });
+      const canvas = page.locator('#view');
+      const box = await canvas.boundingBox();
+      const before = decode(await canvas.screenshot());
+      await page.mouse.move(box.x + box.width * 0.3, box.y + box.height * 0.6);
+      await page.mouse.wheel(0, -400);
+      const zoomed = await waitForView(page, (v) => v.zoom > 1.5);
+      assert.notDeepEqual(zoomed.pan, [0, 0], 'zoom about the cursor, not the centre');
+      await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+      await page.mouse.down();
+      await page.mouse.move(box.x + box.width / 2 + 80, box.y + box.height / 2 + 30, { steps: 5 });
+      await page.mouse.up();
+      const panned = await waitForView(page, (v, p) => Math.abs(v.pan[0] - p[0]) > 1, zoomed.pan);
+      assert.equal(panned.zoom, zoomed.zoom, 'a drag does not zoom');
+      // The step did not change: a drag is not a click.
+      assert.equal(panned.step, null);
+      const moved = decode(await canvas.screenshot());
+      assert.ok(countDifferences(before, moved) > 2000);
+      await canvas.dblclick({ position: { x: 20, y: 20 } });
+      await waitForView(page, (v) => v.zoom === 1 && v.pan[0] === 0 && v.pan[1] === 0);
+      await page.locator('#zoom-in').click();
+      await waitForView(page, (v) => v.zoom > 1.2);
+      await page.locator('#fit').click();
+      await waitForView(page, (v) => v.zoom === 1);
+      // Keyboard on the focused drawing: + zooms, Shift+arrow pans, 0 fits.
+      await canvas.focus();
+      await page.keyboard.press('+');
+      await waitForView(page, (v) => v.zoom > 1.2);
+      await page.keyboard.press('Shift+ArrowLeft');
+      await waitForView(page, (v) => v.pan[0] !== 0);
+      await page.keyboard.press('0');
+      await waitForView(page, (v) => v.zoom === 1 && v.pan[0] === 0);
+    }, { scale: 1 });
   });
 
-  test('a syntax error is listed with its line:column and the path before it is drawn', async () => {
+  test('two fingers pinch-zoom and pan (pointer events)', async () => {
     await withPage(async (page) => {
-      await typeProgram(page, 'G00 X10. Y10.\nG01 X1.2.3 F100.\n');
-      const items = page.locator('#diagnostics li.error');
-      assert.equal(await items.count(), 1);
-      assert.equal(await items.locator('.loc').textContent(), '2:5');
-      assert.equal(await items.locator('.severity').textContent(), 'error');
-      assert.equal(await items.locator('.code').textContent(), '[malformed-number]');
-      assert.match(await items.locator('.message').textContent(), /1\.2\.3/);
-      assert.match(await page.locator('#summary').textContent(), /1 error\b.*stopped at line 2/);
-      // Clicking the diagnostic selects the bad word in the editor.
-      await items.click();
-      const selected = await page.locator('#program').evaluate(
-        (el) => el.value.slice(el.selectionStart, el.selectionEnd),
-      );
-      assert.equal(selected, 'X1.2.3');
-      const { counts } = await shootCanvas(page, 'error', (c) => c.actualRapid > 50);
-      assert.ok(counts.actualRapid > 50, 'the rapid before the error is drawn');
-    });
+      await page.locator('#view').evaluate((canvas) => {
+        const r = canvas.getBoundingClientRect();
+        const at = (id, type, x, y) => canvas.dispatchEvent(new PointerEvent(type, {
+          pointerId: id, pointerType: 'touch', isPrimary: id === 1, bubbles: true, clientX: r.left + x, clientY: r.top + y, button: 0,
+        }));
+        at(1, 'pointerdown', 200, 200);
+        at(2, 'pointerdown', 260, 200);
+        for (let i = 1; i <= 5; i += 1) {
+          at(1, 'pointermove', 200 - i * 10, 200);
+          at(2, 'pointermove', 260 + i * 10, 200);
+        }
+        at(1, 'pointerup', 150, 200);
+        at(2, 'pointerup', 310, 200);
+      });
+      const v = await waitForView(page, (w) => w.zoom > 2);
+      assert.ok(v.zoom > 2 && v.zoom < 3, `pinch 60 → 160 px zooms ~2.7×: ${v.zoom}`);
+      assert.equal(v.step, null, 'a pinch is not a click');
+    }, { hasTouch: true, scale: 1 });
   });
 
-  test('program text in diagnostics is shown as text, never as markup', async () => {
+  test('the plane selector shows XZ and YZ; a lathe is drawn in ZX with its centre line', async () => {
     await withPage(async (page) => {
-      await typeProgram(page, 'G00 X<img src=x onerror=alert(1)>;\n');
-      const list = page.locator('#diagnostics');
-      assert.ok((await list.locator('li.error').count()) >= 1);
-      assert.equal(await list.locator('img').count(), 0);
-      assert.match(await list.textContent(), /</);
-    });
-  });
-
-  test('a bad setup document is a diagnostic, not a crash', async () => {
-    await withPage(async (page) => {
-      await page.locator('#setup-panel summary').click();
-      const setup = page.locator('#setup');
-      await setup.fill('{ "offsets": { "01": "six" } }');
-      await waitForRun(page);
-      const item = page.locator('#diagnostics li.error').first();
-      assert.equal(await item.locator('.loc').textContent(), 'setup');
-      assert.match(await item.locator('.code').textContent(), /^\[setup-/);
-      assert.match(await page.locator('#summary').textContent(), /stopped: bad setup/);
-      // Fixing it draws the square again.
-      await setup.fill('{ "offsets": { "01": 6.0 } }');
-      await waitForRun(page);
-      assert.match(await page.locator('#summary').textContent(), /0 errors/);
-      await shootCanvas(page, 'setup-fixed', drawn);
-    });
-  });
-
-  test('draws a lathe program in ZX with its centre line', async () => {
-    await withPage(async (page) => {
-      await page.locator('#setup-panel summary').click();
-      await page.locator('#setup').fill(
-        '{ "machine": "lathe", "lathe_offsets": { "08": { "x": 0.4, "z": -0.2 } } }',
-      );
-      await typeProgram(page, 'G50 X120. Z60.\nG00 S800 M03 T0108;\nX50. Z3.;\nG01 Z-20. F0.2;\nX80. Z-35.;\nG00 X120. Z60. T0100;\nM30;\n');
+      await loadExample(page, 'length');
+      await waitForView(page, (v) => v.plane === 'XZ');
+      assert.equal(await page.locator('#plane').inputValue(), 'XZ');
+      const xz = await shootCanvas(page, 'length-xz', (c) => c.actualFeed > 200 && c.actualRapid > 200);
+      assert.ok(countColor(xz.png, MARKS.arrow) > 50, 'Z offsets drawn as arrows');
+      await page.locator('#plane').selectOption('XY');
+      await waitForView(page, (v) => v.plane === 'XY');
+      await page.locator('#plane').selectOption('YZ');
+      await waitForView(page, (v) => v.plane === 'YZ');
+      await loadExample(page, 'lathe-taper');
+      await waitForView(page, (v) => v.plane === 'ZX');
+      assert.equal(await page.locator('#plane').isDisabled(), true);
       assert.match(await page.locator('#summary').textContent(), /0 errors · 0 warnings · lathe, mm/);
       const { counts } = await shootCanvas(page, 'lathe', (c) => c.centreLine > 200 && c.actualFeed > 100);
       assert.ok(counts.centreLine > 200, `centre line pixels: ${counts.centreLine}`);
@@ -151,22 +112,132 @@ describe('page', () => {
     });
   });
 
-  test('follows the canvas size and stays drawn on a narrow, low-DPI screen', async () => {
+  test('dark scheme: page and drawing are dark, the paths stay apart', async () => {
     await withPage(async (page) => {
-      const { counts, png } = await shootCanvas(page, 'narrow', drawn);
-      const box = await page.locator('#view').boundingBox();
-      assert.equal(png.width, Math.round(box.width));
-      assert.ok(counts.actualFeed > 150 && counts.programmedFeed > 50, JSON.stringify(counts));
-      // Resizing the window re-draws at the new size (the worker reports
-      // the size it drew at).
-      await page.setViewportSize({ width: 700, height: 900 });
-      const wanted = await page.locator('#view').evaluate((el) => {
-        const r = el.getBoundingClientRect();
-        return `${Math.round(r.width)}x${Math.round(r.height)}@${window.devicePixelRatio}`;
-      });
-      await page.waitForFunction((w) => document.body.dataset.drawn === w, wanted);
-      const resized = await shootCanvas(page, 'resized', drawn);
-      assert.ok(resized.png.width > png.width * 1.3, `${resized.png.width} vs ${png.width}`);
-    }, { width: 480, height: 900, scale: 1 });
+      const bg = await page.evaluate(() => getComputedStyle(document.body).backgroundColor);
+      assert.equal(bg, 'rgb(15, 17, 21)');
+      const png = decode(await page.locator('#view').screenshot());
+      const i = (5 * png.width + 5) * 4;
+      assert.ok(png.data[i] < 40 && png.data[i + 1] < 40 && png.data[i + 2] < 50, 'dark canvas');
+      assert.ok(countColor(png, [0x6e, 0xa8, 0xff]) > 300, 'dark actual feed');
+      assert.ok(countColor(png, [0xa5, 0xd8, 0xff]) > 100, 'dark programmed feed');
+      await shoot(page, 'dark');
+    }, { colorScheme: 'dark' });
+  });
+});
+
+describe('examples', () => {
+  test('each example sets its program, setup and note, and runs without errors; the previous work is one click away', async () => {
+    await withPage(async (page) => {
+      const ids = await page.locator('#example option').evaluateAll((os) => os.map((o) => o.value));
+      assert.deepEqual(ids, ['square', 'contour', 'zero-moves', 'length', 'lathe-seed', 'lathe-taper', 'cam']);
+      await typeProgram(page, 'G00 X5. Y5.;\n');
+      const notes = new Set();
+      for (const id of ids.slice(1)) {
+        await loadExample(page, id);
+        assert.match(await page.locator('#summary').textContent(), / 0 errors · 0 warnings /, id);
+        const note = await page.locator('#example-note').textContent();
+        assert.ok(note.length > 80, `${id} has a note`);
+        notes.add(note);
+        assert.ok((await page.locator('#offsets tbody tr.used').count()) >= 1, `${id} sets its registers`);
+      }
+      assert.equal(notes.size, ids.length - 1, 'every note is its own');
+      await loadExample(page, 'zero-moves');
+      assert.deepEqual((await page.evaluate(() => window.offsetlab.setup())).offsets, { 10: 5, 11: 3 });
+      // The work before the first example comes back.
+      await page.locator('#banner-action').click();
+      await waitForRun(page);
+      assert.equal(await page.evaluate(() => window.offsetlab.program()), 'G00 X5. Y5.;\n');
+      assert.equal(await page.locator('#banner').isVisible(), false);
+    });
+  });
+});
+
+describe('no lost work', () => {
+  test('program, offsets, settings and view survive a reload', async () => {
+    await withPage(async (page) => {
+      await typeProgram(page, 'G91 G00 G46 X30. Y20. D02;\nG01 G47 X50. F100.;\n');
+      await page.locator('input[data-field="2.geometry"]').fill('4.5');
+      await page.getByLabel('Block skip').check();
+      await page.locator('#step-first').click();
+      await waitForView(page, (v) => v.step === 0);
+      await page.waitForFunction(() => document.body.dataset.unsaved === undefined && document.body.dataset.saved);
+      await page.reload();
+      await waitForRun(page);
+      assert.equal(await page.evaluate(() => window.offsetlab.program()), 'G91 G00 G46 X30. Y20. D02;\nG01 G47 X50. F100.;\n');
+      assert.equal(await page.locator('input[data-field="2.geometry"]').inputValue(), '4.5');
+      assert.equal(await page.getByLabel('Block skip').isChecked(), true);
+      await waitForView(page, (v) => v.step === 0);
+    });
+  });
+
+  test('when storage is full the page says so', async () => {
+    await withPage(async (page, { problems }) => {
+      await typeProgram(page, 'G00 X1.;\n');
+      const banner = page.locator('#banner');
+      await banner.waitFor({ state: 'visible' });
+      assert.match(await banner.textContent(), /not being saved: the browser’s storage is full/);
+      problems.length = 0;
+    }, {
+      init: () => {
+        Storage.prototype.setItem = () => {
+          throw new DOMException('quota', 'QuotaExceededError');
+        };
+      },
+    });
+  });
+});
+
+describe('layout and access', () => {
+  test('tablet width: one column, nothing wider than the screen, drawn in both schemes', async () => {
+    for (const colorScheme of ['light', 'dark']) {
+      await withPage(async (page) => {
+        const wide = await page.evaluate(() => document.documentElement.scrollWidth);
+        assert.ok(wide <= 768, `page is ${wide}px wide`);
+        const editor = await page.locator('#editor').boundingBox();
+        const view = await page.locator('#view').boundingBox();
+        assert.ok(view.width > 700 && editor.width > 700, 'full-width editor and drawing');
+        await page.locator('#step-next').click();
+        await waitForView(page, (v) => v.step === 0);
+        await shoot(page, colorScheme === 'light' ? 'tablet' : 'tablet-dark', { fullPage: true });
+      }, { width: 768, height: 1024, scale: 2, colorScheme });
+    }
+  });
+
+  test('laptop width: three columns without page scroll; keyboard focus order, visible focus and labels', async () => {
+    await withPage(async (page) => {
+      const height = await page.evaluate(() => document.documentElement.scrollHeight);
+      assert.ok(height <= 768, `page is ${height}px tall`);
+      // Every form control has an accessible name.
+      const unnamed = await page.evaluate(() => [...document.querySelectorAll('input, select, textarea, button')]
+        .filter((el) => !el.closest('[hidden]'))
+        .filter((el) => !(el.getAttribute('aria-label') || el.labels?.length || el.textContent.trim()))
+        .map((el) => el.outerHTML.slice(0, 80)));
+      assert.deepEqual(unnamed, []);
+      // Tab order: examples, help, undo, redo, editor, then the view's controls.
+      await page.locator('h1').click();
+      const order = [];
+      for (let i = 0; i < 14; i += 1) {
+        await page.keyboard.press('Tab');
+        order.push(await page.evaluate(() => {
+          const el = document.activeElement;
+          return el.id || el.className || el.tagName;
+        }));
+      }
+      const at = (id) => order.indexOf(id);
+      assert.ok(at('example') >= 0 && at('example') < at('undo'), order.join(' '));
+      assert.ok(at('undo') < order.findIndex((o) => o.includes('cm-content')), order.join(' '));
+      assert.ok(order.findIndex((o) => o.includes('cm-content')) < at('plane'), order.join(' '));
+      assert.ok(at('plane') < at('view') && at('view') < at('step-first'), order.join(' '));
+      // The focused control shows an outline.
+      await page.locator('#step-next').focus();
+      const outline = await page.evaluate(() => getComputedStyle(document.activeElement).outlineStyle);
+      assert.notEqual(outline, 'none');
+      // The keyboard help opens with "?".
+      await page.locator('h1').click();
+      await page.keyboard.press('?');
+      assert.equal(await page.locator('#help').isVisible(), true);
+      assert.match(await page.locator('#help').textContent(), /next \/ previous block/);
+    }, { width: 1366, height: 768, scale: 1 });
   });
 });

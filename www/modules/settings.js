@@ -1,0 +1,215 @@
+// The settings panel: machine, units, the settings where controls disagree,
+// start position and work offsets, each with one line saying what it
+// changes — and the raw setup document (JSON) under "Advanced", kept in step
+// with the form both ways.
+
+import {
+  MAX_POSITION, WORK_SYSTEMS, checkNumber, decimalsFor, machineOf, pointOf, setSetting, setStart,
+  setWorkOffset, settingOf, setupText, unitName, unitsOf, workOffset,
+} from './setup.js';
+
+const CHOICES = [
+  {
+    id: 'machine', label: 'Machine', options: [['mill', 'Mill'], ['lathe', 'Lathe']],
+    get: (s) => machineOf(s),
+    set: (s, v) => {
+      s.machine = v;
+      // Mirror image is a mill switch: a lathe setup with it is refused.
+      if (v === 'lathe') setSetting(s, 'mirror', []);
+    },
+    help: 'Mill: X Y Z with G43/G44 length (H) and G45–G48 position (D) offsets. Lathe: X as a diameter and Z, T-code offsets.',
+  },
+  {
+    id: 'units', label: 'Units', options: [['mm', 'mm (G21)'], ['inch', 'inch (G20)']],
+    get: (s) => unitsOf(s), set: (s, v) => { s.units = v; },
+    help: 'Units at program start, and of the offsets, start position and work offsets below.',
+  },
+  {
+    id: 'decimal_input', label: 'Decimal input', options: [['increment', 'increment'], ['calculator', 'calculator']],
+    help: 'A dimension without a point: X12345 is 12.345 mm (increment, Fanuc/YASNAC) or 12345 mm (calculator).',
+  },
+  {
+    id: 'length_offset_without_z', label: 'G43 H without Z', machine: 'mill',
+    options: [['move', 'Z moves now'], ['next_z', 'at the next Z move']],
+    help: 'G43/G44 H… in a block with no Z word: Z moves by the offset in that block (seed 001, YASNAC) or only at the next Z move (Fanuc TOS, LinuxCNC).',
+  },
+  {
+    id: 'lathe_x_offset', label: 'Lathe X offsets', machine: 'lathe',
+    options: [['diameter', 'diameter values'], ['radius', 'radius values']],
+    help: 'X values of the lathe offset table are diameters, or radii that are doubled on the diameter axis.',
+  },
+];
+
+const SWITCHES = [
+  { id: 'mirror_x', axis: 'x', label: 'Mirror X', machine: 'mill', help: 'Moves along X are reversed about the start point; G02/G03 turn the other way and G45–G48 follow (seed 003).' },
+  { id: 'mirror_y', axis: 'y', label: 'Mirror Y', machine: 'mill', help: 'The same along Y.' },
+  { id: 'block_skip', label: 'Block skip', help: 'The optional block skip switch: when on, blocks starting with / are not run.' },
+];
+
+const POINTS = [
+  { id: 'start', label: 'Start position', help: 'Where the tool is when the program starts, in G54 coordinates (the lathe’s X is a diameter).' },
+  ...WORK_SYSTEMS.map((name) => ({ id: name, label: `Work offset ${name}`, help: '', describedBy: 'works-help' })),
+];
+
+let ctx = null;
+
+function line(help, id) {
+  const p = document.createElement('p');
+  p.className = 'help';
+  p.id = `${id}-help`;
+  p.textContent = help;
+  return p;
+}
+
+function field(def, control) {
+  const wrap = document.createElement('div');
+  wrap.className = 'setting';
+  wrap.dataset.setting = def.id;
+  if (def.machine) wrap.dataset.machine = def.machine;
+  const label = document.createElement('label');
+  label.htmlFor = `set-${def.id}`;
+  label.textContent = def.label;
+  control.id = `set-${def.id}`;
+  if (def.help) control.setAttribute('aria-describedby', `${def.id}-help`);
+  wrap.append(label, control);
+  if (def.help) wrap.append(line(def.help, def.id));
+  return wrap;
+}
+
+function pointField(def) {
+  const wrap = document.createElement('fieldset');
+  wrap.className = 'setting point';
+  wrap.dataset.setting = def.id;
+  const legend = document.createElement('legend');
+  legend.textContent = def.label;
+  wrap.append(legend);
+  for (const axis of ['x', 'y', 'z']) {
+    const label = document.createElement('label');
+    label.className = `axis axis-${axis}`;
+    const input = document.createElement('input');
+    input.type = 'text';
+    input.inputMode = 'decimal';
+    input.dataset.point = def.id;
+    input.dataset.axis = axis;
+    input.setAttribute('aria-label', `${def.label} ${axis.toUpperCase()}`);
+    if (def.help || def.describedBy) input.setAttribute('aria-describedby', def.describedBy ?? `${def.id}-help`);
+    label.append(axis.toUpperCase(), input);
+    wrap.append(label);
+    input.addEventListener('input', () => pointInput(def, input));
+  }
+  const reason = document.createElement('span');
+  reason.className = 'reason';
+  reason.setAttribute('aria-live', 'polite');
+  wrap.append(reason);
+  if (def.help) wrap.append(line(def.help, def.id));
+  return wrap;
+}
+
+function pointInput(def, input) {
+  const setup = ctx.getSetup();
+  const units = unitsOf(setup);
+  const reason = input.closest('fieldset').querySelector('.reason');
+  const checked = checkNumber(input.value, { max: MAX_POSITION, decimals: decimalsFor(units), unit: unitName(units) });
+  reason.textContent = checked.reason ? `${input.dataset.axis.toUpperCase()}: ${checked.reason}` : '';
+  if (checked.reason) {
+    input.setAttribute('aria-invalid', 'true');
+    return;
+  }
+  input.removeAttribute('aria-invalid');
+  ctx.change((s) => {
+    const p = def.id === 'start' ? pointOf(s.start) : workOffset(s, def.id);
+    p[input.dataset.axis] = checked.value;
+    if (def.id === 'start') setStart(s, p);
+    else setWorkOffset(s, def.id, p);
+  }, 'settings');
+}
+
+export function initSettings({ getSetup, change, replace }) {
+  ctx = { getSetup, change, form: document.getElementById('settings-form'), json: document.getElementById('setup') };
+  const parts = [];
+  for (const def of CHOICES) {
+    const select = document.createElement('select');
+    for (const [value, text] of def.options) select.add(new Option(text, value));
+    select.addEventListener('change', () => {
+      ctx.change((s) => (def.set ? def.set(s, select.value) : setSetting(s, def.id, select.value)), 'settings');
+      renderSettings();
+    });
+    parts.push(field(def, select));
+  }
+  for (const def of SWITCHES) {
+    const box = document.createElement('input');
+    box.type = 'checkbox';
+    box.addEventListener('change', () => ctx.change((s) => {
+      if (def.axis) {
+        const mirror = new Set(settingOf(s, 'mirror'));
+        if (box.checked) mirror.add(def.axis);
+        else mirror.delete(def.axis);
+        setSetting(s, 'mirror', ['x', 'y'].filter((a) => mirror.has(a)));
+      } else {
+        setSetting(s, def.id, box.checked);
+      }
+    }, 'settings'));
+    const wrap = field(def, box);
+    wrap.classList.add('switch');
+    parts.push(wrap);
+  }
+  parts.push(pointField(POINTS[0]));
+  // Work offsets: six small forms, folded away until wanted.
+  const works = document.createElement('details');
+  works.className = 'works';
+  const summary = document.createElement('summary');
+  summary.textContent = 'Work offsets G54–G59';
+  works.append(summary, line('Zero point of each work coordinate system in machine coordinates; G54 is active at start.', 'works'));
+  for (const def of POINTS.slice(1)) works.append(pointField(def));
+  parts.push(works);
+  ctx.form.replaceChildren(...parts);
+  ctx.form.addEventListener('submit', (e) => e.preventDefault());
+
+  const reason = document.getElementById('setup-reason');
+  ctx.json.addEventListener('input', () => {
+    let parsed;
+    try {
+      parsed = JSON.parse(ctx.json.value);
+    } catch (error) {
+      reason.textContent = `Not valid JSON (${error.message}); the form keeps the last valid document.`;
+      ctx.json.setAttribute('aria-invalid', 'true');
+      replace(null, ctx.json.value);
+      return;
+    }
+    reason.textContent = '';
+    ctx.json.removeAttribute('aria-invalid');
+    replace(parsed, ctx.json.value);
+  });
+}
+
+/** Shows the setup in the form (and the JSON, unless it is being edited). */
+export function renderSettings({ json = true } = {}) {
+  if (!ctx) return;
+  const setup = ctx.getSetup();
+  const machine = machineOf(setup);
+  for (const def of CHOICES) {
+    ctx.form.querySelector(`#set-${def.id}`).value = def.get ? def.get(setup) : settingOf(setup, def.id);
+  }
+  const mirror = settingOf(setup, 'mirror') || [];
+  for (const def of SWITCHES) {
+    ctx.form.querySelector(`#set-${def.id}`).checked = def.axis ? mirror.includes(def.axis) : Boolean(settingOf(setup, def.id));
+  }
+  for (const input of ctx.form.querySelectorAll('input[data-point]')) {
+    if (input === document.activeElement) continue;
+    const id = input.dataset.point;
+    const p = id === 'start' ? pointOf(setup.start) : workOffset(setup, id);
+    input.value = String(p[input.dataset.axis]);
+    input.removeAttribute('aria-invalid');
+  }
+  for (const el of ctx.form.querySelectorAll('[data-machine]')) el.hidden = el.dataset.machine !== machine;
+  ctx.form.classList.toggle('lathe', machine === 'lathe');
+  if (json && document.activeElement !== ctx.json) ctx.json.value = setupText(setup);
+}
+
+/** Opens the advanced section and focuses the setup document. */
+export function openSetupJson() {
+  const details = document.getElementById('advanced');
+  details.open = true;
+  document.getElementById('settings-panel').open = true;
+  ctx.json.focus();
+}

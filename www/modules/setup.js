@@ -1,0 +1,141 @@
+// The setup document as the page edits it: a plain object shaped like the
+// README's setup JSON, read and written with its defaults filled in or left
+// out, and the validation of numbers typed into the forms.
+
+export const MAX_OFFSET = 999.999;
+export const MAX_POSITION = 99999.999;
+export const WORK_SYSTEMS = ['G54', 'G55', 'G56', 'G57', 'G58', 'G59'];
+
+export const DEFAULT_SETTINGS = {
+  decimal_input: 'increment',
+  block_skip: false,
+  length_offset_without_z: 'move',
+  lathe_x_offset: 'diameter',
+  mirror: [],
+};
+
+const NUMBER = /^[+-]?(\d+\.?\d*|\.\d+)$/;
+
+/**
+ * Validates a typed number. Returns { value } or { reason } (a short text
+ * shown next to the field). `max` bounds the magnitude; `decimals` the
+ * digits after the point (the least input increment).
+ */
+export function checkNumber(text, { max = MAX_OFFSET, decimals = 3, unit = 'mm' } = {}) {
+  const t = String(text).trim();
+  if (t === '') return { reason: 'empty: type a number (0 for none)' };
+  if (!NUMBER.test(t)) return { reason: `“${t.slice(0, 12)}” is not a number such as -1.25` };
+  const value = Number(t);
+  if (!Number.isFinite(value) || Math.abs(value) > max) return { reason: `out of range: at most ±${max} ${unit}` };
+  const point = t.indexOf('.');
+  if (point >= 0 && t.length - point - 1 > decimals) {
+    return { reason: `at most ${decimals} decimals (${(10 ** -decimals).toFixed(decimals)} ${unit})` };
+  }
+  return { value };
+}
+
+/** Decimals of the least input increment: 3 in mm, 4 in inches. */
+export function decimalsFor(units) {
+  return units === 'inch' ? 4 : 3;
+}
+
+export function unitName(units) {
+  return units === 'inch' ? 'in' : 'mm';
+}
+
+/** Two-digit register key, as on the control: 1 → "01". */
+export function registerKey(n) {
+  return String(n).padStart(2, '0');
+}
+
+export function machineOf(setup) {
+  return setup?.machine === 'lathe' ? 'lathe' : 'mill';
+}
+
+export function unitsOf(setup) {
+  return setup?.units === 'inch' ? 'inch' : 'mm';
+}
+
+export function settingOf(setup, name) {
+  const v = setup?.settings?.[name];
+  return v === undefined ? DEFAULT_SETTINGS[name] : v;
+}
+
+/** Sets a setting, leaving defaults out of the document. */
+export function setSetting(setup, name, value) {
+  const settings = { ...(setup.settings || {}) };
+  const same = JSON.stringify(value) === JSON.stringify(DEFAULT_SETTINGS[name]);
+  if (same) delete settings[name];
+  else settings[name] = value;
+  if (Object.keys(settings).length === 0) delete setup.settings;
+  else setup.settings = settings;
+}
+
+/** A mill register: { geometry, wear } (0 when absent). */
+export function millRegister(setup, n) {
+  const v = setup?.offsets?.[registerKey(n)];
+  if (typeof v === 'number') return { geometry: v, wear: 0 };
+  return { geometry: Number(v?.geometry ?? 0), wear: Number(v?.wear ?? 0) };
+}
+
+export function setMillRegister(setup, n, { geometry, wear }) {
+  setup.offsets = { ...(setup.offsets || {}) };
+  setup.offsets[registerKey(n)] = wear === 0 ? geometry : { geometry, wear };
+}
+
+/** A lathe register: { x, z, x_wear, z_wear } (0 when absent). */
+export function latheRegister(setup, n) {
+  const v = setup?.lathe_offsets?.[registerKey(n)] || {};
+  return { x: Number(v.x ?? 0), z: Number(v.z ?? 0), x_wear: Number(v.x_wear ?? 0), z_wear: Number(v.z_wear ?? 0) };
+}
+
+export function setLatheRegister(setup, n, r) {
+  setup.lathe_offsets = { ...(setup.lathe_offsets || {}) };
+  const out = { x: r.x, z: r.z };
+  if (r.x_wear) out.x_wear = r.x_wear;
+  if (r.z_wear) out.z_wear = r.z_wear;
+  setup.lathe_offsets[registerKey(n)] = out;
+}
+
+/** Register numbers present in the setup for the machine. */
+export function registersIn(setup) {
+  const table = machineOf(setup) === 'lathe' ? setup?.lathe_offsets : setup?.offsets;
+  return Object.keys(table || {}).map(Number).filter((n) => Number.isInteger(n) && n > 0);
+}
+
+export function tableSize(setup) {
+  const n = Number(setup?.table_size);
+  return Number.isInteger(n) && n > 0 ? n : 99;
+}
+
+/** A point of the setup ({x, y, z}, 0 when absent). */
+export function pointOf(p) {
+  return { x: Number(p?.x ?? 0), y: Number(p?.y ?? 0), z: Number(p?.z ?? 0) };
+}
+
+export function workOffset(setup, name) {
+  return pointOf(setup?.work_offsets?.[name]);
+}
+
+export function setWorkOffset(setup, name, point) {
+  const all = { ...(setup.work_offsets || {}) };
+  if (point.x === 0 && point.y === 0 && point.z === 0) delete all[name];
+  else all[name] = point;
+  if (Object.keys(all).length === 0) delete setup.work_offsets;
+  else setup.work_offsets = all;
+}
+
+export function setStart(setup, point) {
+  if (point.x === 0 && point.y === 0 && point.z === 0) delete setup.start;
+  else setup.start = point;
+}
+
+/** The document's JSON as people read it (two-space indent). */
+export function setupText(setup) {
+  return `${JSON.stringify(setup, null, 2)}\n`;
+}
+
+/** A copy that the caller may change. */
+export function cloneSetup(setup) {
+  return JSON.parse(JSON.stringify(setup ?? {}));
+}

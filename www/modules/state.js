@@ -1,0 +1,105 @@
+// The state panel: what the control knows after the current block — its
+// modal codes, the programmed and actual positions, the active offsets with
+// their values and vectors, feed, spindle, and the sentence saying what the
+// offsets did. Everything is set as text (textContent), never as markup.
+
+const MODAL = [
+  ['motion', 'motion'], ['plane', 'plane'], ['distance', 'distance'], ['units', 'units'],
+  ['feed_mode', 'feed mode'], ['length', 'length offset'], ['cycle', 'cycle'],
+  ['return_level', 'return level'], ['work', 'work system'],
+];
+
+function decimals(units) {
+  return units === 'inch' ? 4 : 3;
+}
+
+function fmt(v, units) {
+  if (v === null || v === undefined || !Number.isFinite(v)) return '—';
+  const s = v.toFixed(decimals(units));
+  return /^-0\.?0*$/.test(s) ? s.slice(1) : s;
+}
+
+function signed(v, units) {
+  const s = fmt(v, units);
+  return v > 0 ? `+${s}` : s;
+}
+
+/** "X86.000 Y-6.000 Z0.000" (a lathe position has no Y). */
+export function position(p, units) {
+  if (!p) return '—';
+  const parts = [`X${fmt(p.x, units)}`];
+  if (p.y !== undefined && p.y !== null) parts.push(`Y${fmt(p.y, units)}`);
+  parts.push(`Z${fmt(p.z, units)}`);
+  return parts.join(' ');
+}
+
+function vector(p, units) {
+  if (!p) return '—';
+  const parts = [`X${signed(p.x, units)}`];
+  if (p.y !== undefined && p.y !== null) parts.push(`Y${signed(p.y, units)}`);
+  parts.push(`Z${signed(p.z, units)}`);
+  return parts.join(' ');
+}
+
+const two = (n) => String(n).padStart(2, '0');
+
+/** Rows [label, value, key] of the panel for one block report. */
+export function stateRows(b) {
+  const u = b.units;
+  const unit = u === 'inch' ? 'in' : 'mm';
+  const rows = [
+    ['Block', `line ${b.line}: ${b.text}`, 'block'],
+    ['Modal', MODAL.map(([key]) => b.modal?.[key]).filter(Boolean).join(' '), 'modal'],
+    ['Programmed', `${position(b.programmed, u)} ${unit}`, 'programmed'],
+    ['Actual', `${position(b.actual, u)} ${unit}`, 'actual'],
+  ];
+  if (b.length_offset) {
+    const l = b.length_offset;
+    const h = l.h > 0 ? `H${two(l.h)} = ${fmt(l.value, u)}` : 'H00 (none)';
+    let text = `${l.mode} · ${h} · Z vector ${signed(l.vector, u)}`;
+    if (Math.abs(l.target - l.vector) > 1e-9) text += ` (reaches ${signed(l.target, u)} at the next Z move)`;
+    rows.push(['Tool length (H)', text, 'length']);
+  }
+  if (b.position_offset) {
+    const p = b.position_offset;
+    const d = p.d > 0 ? `D${two(p.d)} = ${fmt(p.value, u)}` : 'D00 (none)';
+    rows.push(['Tool position (D)', d, 'position']);
+    rows.push(['Offset distance from the programmed end point', vector(p.vector, u), 'vector']);
+  }
+  if (b.lathe_offset) {
+    const t = b.lathe_offset;
+    const reg = t.offset > 0
+      ? `offset ${two(t.offset)} = X${fmt(t.value?.x, u)} Z${fmt(t.value?.z, u)}`
+      : 'no offset';
+    rows.push(['Lathe tool (T)', `T${two(t.tool)}${two(t.offset)} · tool ${two(t.tool)} · ${reg}`, 'lathe']);
+    rows.push(['Offset vector (X diameter)', vector(t.vector, u), 'vector']);
+  }
+  const feed = b.feed === null ? '—' : `F${b.feed}`;
+  const spindle = b.spindle === null ? '—' : `S${b.spindle}`;
+  rows.push(['Feed · spindle · tool', `${feed} · ${spindle} · T${two(b.tool)}`, 'feed']);
+  return rows;
+}
+
+export function showState(panel, block, { blocks = 0 } = {}) {
+  const list = panel.querySelector('dl');
+  const why = panel.querySelector('.explanation');
+  if (!block) {
+    list.replaceChildren();
+    why.textContent = blocks > 0
+      ? 'Step through the program (Next, → or a click on the path) to see what the control knows after each block.'
+      : 'No block ran.';
+    panel.dataset.block = '';
+    return;
+  }
+  const items = stateRows(block).flatMap(([label, value, key]) => {
+    const dt = document.createElement('dt');
+    dt.textContent = label;
+    const dd = document.createElement('dd');
+    dd.textContent = value;
+    dd.dataset.key = key;
+    return [dt, dd];
+  });
+  list.replaceChildren(...items);
+  why.textContent = block.explanation;
+  panel.dataset.block = String(block.index);
+}

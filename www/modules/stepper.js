@@ -1,0 +1,105 @@
+// Step-through: first / previous / next / last, play / pause, the slider
+// over the executed blocks, and the page's keyboard shortcuts. The worker
+// owns the current block; this module asks it for another and shows what it
+// reports.
+
+const PLAY_MS = 600; // per block while playing
+
+let post = () => {};
+let blocks = 0;
+let step = -1; // -1: no current block, the whole program is shown
+let timer = 0;
+const el = {};
+
+function request(index) {
+  if (blocks === 0) return;
+  post({ type: 'step', index: Math.max(0, Math.min(blocks - 1, index)) });
+}
+
+export const stepper = {
+  first: () => request(0),
+  last: () => request(blocks - 1),
+  next: () => request(step < 0 ? 0 : step + 1),
+  previous: () => request(step < 0 ? blocks - 1 : step - 1),
+  toggle: () => (timer ? pause() : play()),
+};
+
+function play() {
+  if (blocks === 0) return;
+  if (step < 0 || step >= blocks - 1) request(0);
+  timer = setInterval(() => {
+    if (step >= blocks - 1) pause();
+    else stepper.next();
+  }, PLAY_MS);
+  showPlaying();
+}
+
+export function pause() {
+  clearInterval(timer);
+  timer = 0;
+  showPlaying();
+}
+
+function showPlaying() {
+  el.play.textContent = timer ? 'Pause' : 'Play';
+  el.play.setAttribute('aria-pressed', String(Boolean(timer)));
+  document.body.dataset.playing = String(Boolean(timer));
+}
+
+/** Shows the worker's current block and the block count. */
+export function stepReported(current, count, block) {
+  step = current;
+  blocks = count;
+  const none = blocks === 0;
+  for (const b of [el.first, el.previous, el.next, el.last, el.play]) b.disabled = none;
+  el.slider.disabled = none;
+  el.slider.max = String(Math.max(0, blocks - 1));
+  el.slider.value = String(step < 0 ? Math.max(0, blocks - 1) : step);
+  if (none) {
+    el.position.textContent = 'no blocks ran';
+  } else if (step < 0) {
+    el.position.textContent = `all ${blocks} blocks — step to see one`;
+  } else {
+    const where = block ? ` · line ${block.line}` : '';
+    el.position.textContent = `block ${step + 1} of ${blocks}${where}`;
+  }
+  el.slider.setAttribute('aria-valuetext', el.position.textContent);
+  if (timer && step >= blocks - 1) pause();
+}
+
+function typing(target) {
+  return target instanceof Element
+    && (target.closest('.cm-editor, input, textarea, select, [contenteditable="true"]') !== null);
+}
+
+export function initStepper(postMessage, { fit, zoom, toggleHelp }) {
+  post = postMessage;
+  for (const id of ['first', 'previous', 'next', 'last', 'play', 'slider', 'position']) {
+    el[id] = document.getElementById(`step-${id}`);
+  }
+  el.first.addEventListener('click', stepper.first);
+  el.previous.addEventListener('click', stepper.previous);
+  el.next.addEventListener('click', stepper.next);
+  el.last.addEventListener('click', stepper.last);
+  el.play.addEventListener('click', stepper.toggle);
+  el.slider.addEventListener('input', () => request(Number(el.slider.value)));
+  showPlaying();
+
+  // Shortcuts work anywhere but in text fields and the editor, where keys
+  // are for typing (the slider and buttons keep their own keys too).
+  document.addEventListener('keydown', (event) => {
+    if (event.ctrlKey || event.metaKey || event.altKey || typing(event.target)) return;
+    const onSlider = event.target === el.slider;
+    const keys = {
+      ArrowRight: stepper.next, ArrowLeft: stepper.previous, j: stepper.next, k: stepper.previous,
+      Home: stepper.first, End: stepper.last, ' ': stepper.toggle, p: stepper.toggle,
+      f: fit, '+': () => zoom(1.25), '=': () => zoom(1.25), '-': () => zoom(0.8), '?': toggleHelp,
+    };
+    const action = keys[event.key];
+    if (!action || event.shiftKey && event.key.startsWith('Arrow')) return;
+    if (onSlider && event.key !== ' ' && event.key !== 'p') return;
+    if (event.key === ' ' && event.target instanceof HTMLButtonElement) return;
+    event.preventDefault();
+    action();
+  });
+}

@@ -1,0 +1,153 @@
+// The view's input: wheel zoom at the cursor, drag to pan, pinch with two
+// fingers, double-click to fit, a click on a segment selects its block,
+// keyboard zoom/pan on the focused canvas, the plane selector and the
+// zoom/fit buttons. The worker keeps the view state and draws; this module
+// only forwards what the user does and remembers the state the worker
+// reports, which `viewState()` hands to whoever needs it (share links).
+
+const CLICK_SLOP = 4; // px a press may move and still count as a click
+const WHEEL_STEP = 1.0015; // zoom factor per wheel delta pixel
+
+let post = () => {};
+let state = { plane: 'XY', zoom: 1, pan: [0, 0], step: null };
+const listeners = new Set();
+
+/** The view state last drawn: { plane, zoom, pan: [u, v], step }. */
+export function viewState() {
+  return { ...state, pan: [...state.pan] };
+}
+
+/** Calls `f(state)` after every change the worker reports. */
+export function onViewChange(f) {
+  listeners.add(f);
+  return () => listeners.delete(f);
+}
+
+/** Called with each state message of the worker. */
+export function viewReported(view) {
+  state = { plane: view.plane, zoom: view.zoom, pan: view.pan, step: view.step };
+  const select = document.getElementById('plane');
+  if (select && select.value !== state.plane) select.value = state.plane;
+  document.body.dataset.view = JSON.stringify(state);
+  for (const f of listeners) f(viewState());
+}
+
+/** Shows the planes the machine has (mill: XY XZ YZ; lathe: ZX). */
+export function setMachinePlanes(machine) {
+  const select = document.getElementById('plane');
+  for (const option of select.options) {
+    const lathe = option.value === 'ZX';
+    option.hidden = lathe !== (machine === 'lathe');
+    option.disabled = option.hidden;
+  }
+  select.disabled = machine === 'lathe';
+}
+
+export function initView(canvas, postMessage) {
+  post = postMessage;
+  const send = (op, extra = {}) => post({ type: 'view', op, ...extra });
+  const local = (event) => {
+    const r = canvas.getBoundingClientRect();
+    return { x: event.clientX - r.left, y: event.clientY - r.top };
+  };
+
+  canvas.addEventListener('wheel', (event) => {
+    event.preventDefault();
+    const { x, y } = local(event);
+    const pixels = event.deltaMode === 1 ? event.deltaY * 16 : event.deltaY;
+    send('zoom', { x, y, factor: WHEEL_STEP ** -pixels });
+  }, { passive: false });
+
+  // Pointers: one drags, two pinch (zoom about their midpoint, pan with it).
+  const pointers = new Map();
+  let press = null;
+  let pinch = null;
+  const midpoint = () => {
+    const [a, b] = [...pointers.values()];
+    return { x: (a.x + b.x) / 2, y: (a.y + b.y) / 2, d: Math.hypot(a.x - b.x, a.y - b.y) };
+  };
+  canvas.addEventListener('pointerdown', (event) => {
+    if (event.button !== 0 && event.pointerType === 'mouse') return;
+    try {
+      canvas.setPointerCapture(event.pointerId);
+    } catch {
+      // A synthetic pointer (tests, some assistive tools) cannot be captured.
+    }
+    pointers.set(event.pointerId, local(event));
+    if (pointers.size === 1) press = { ...local(event), moved: false };
+    if (pointers.size === 2) {
+      pinch = midpoint();
+      press = null;
+    }
+  });
+  canvas.addEventListener('pointermove', (event) => {
+    if (!pointers.has(event.pointerId)) return;
+    const before = pointers.get(event.pointerId);
+    const now = local(event);
+    pointers.set(event.pointerId, now);
+    if (pointers.size >= 2 && pinch) {
+      const m = midpoint();
+      if (pinch.d > 0 && m.d > 0) send('zoom', { x: m.x, y: m.y, factor: m.d / pinch.d });
+      send('pan', { dx: m.x - pinch.x, dy: m.y - pinch.y });
+      pinch = m;
+      return;
+    }
+    if (press && Math.hypot(now.x - press.x, now.y - press.y) > CLICK_SLOP) press.moved = true;
+    if (press?.moved) {
+      canvas.classList.add('dragging');
+      send('pan', { dx: now.x - before.x, dy: now.y - before.y });
+    }
+  });
+  const release = (event) => {
+    if (!pointers.has(event.pointerId)) return;
+    pointers.delete(event.pointerId);
+    if (pointers.size < 2) pinch = null;
+    if (event.type === 'pointerup' && press && !press.moved && pointers.size === 0) {
+      const tolerance = event.pointerType === 'touch' ? 14 : 6;
+      post({ type: 'pick', x: press.x, y: press.y, tolerance });
+    }
+    if (pointers.size === 0) {
+      press = null;
+      canvas.classList.remove('dragging');
+    }
+  };
+  canvas.addEventListener('pointerup', release);
+  canvas.addEventListener('pointercancel', release);
+  canvas.addEventListener('dblclick', (event) => {
+    event.preventDefault();
+    send('fit');
+  });
+
+  // Keyboard on the focused view: arrows pan, + and - zoom, 0 fits.
+  canvas.addEventListener('keydown', (event) => {
+    if (event.ctrlKey || event.metaKey || event.altKey) return;
+    const r = canvas.getBoundingClientRect();
+    const centre = { x: r.width / 2, y: r.height / 2 };
+    const pans = { ArrowLeft: [40, 0], ArrowRight: [-40, 0], ArrowUp: [0, 40], ArrowDown: [0, -40] };
+    if (event.key in pans && event.shiftKey) {
+      const [dx, dy] = pans[event.key];
+      send('pan', { dx, dy });
+    } else if (event.key === '+' || event.key === '=') {
+      send('zoom', { ...centre, factor: 1.25 });
+    } else if (event.key === '-' || event.key === '_') {
+      send('zoom', { ...centre, factor: 0.8 });
+    } else if (event.key === '0') {
+      send('fit');
+    } else {
+      return;
+    }
+    event.preventDefault();
+    event.stopPropagation();
+  });
+
+  const centreZoom = (factor) => {
+    const r = canvas.getBoundingClientRect();
+    send('zoom', { x: r.width / 2, y: r.height / 2, factor });
+  };
+  document.getElementById('zoom-in').addEventListener('click', () => centreZoom(1.25));
+  document.getElementById('zoom-out').addEventListener('click', () => centreZoom(0.8));
+  document.getElementById('fit').addEventListener('click', () => send('fit'));
+  document.getElementById('plane').addEventListener('change', (event) => {
+    send('plane', { plane: event.target.value });
+  });
+}

@@ -1,0 +1,178 @@
+// The program editor: CodeMirror 6 with line numbers, G-code highlighting,
+// undo/redo, the interpreter's diagnostics as inline marks (with their
+// messages at the end of the line), and the current block's line
+// highlighted while stepping. Bundled by esbuild into www/dist/editor.js
+// (see the Makefile); the page imports only what this module exports.
+
+import { EditorState, StateEffect, StateField } from '@codemirror/state';
+import {
+  Decoration, EditorView, WidgetType, drawSelection, highlightActiveLineGutter,
+  highlightSpecialChars, keymap, lineNumbers,
+} from '@codemirror/view';
+import { defaultKeymap, history, historyKeymap, redo, undo } from '@codemirror/commands';
+import { syntaxHighlighting } from '@codemirror/language';
+import { lintGutter, setDiagnostics } from '@codemirror/lint';
+import { gcodeHighlight, gcodeLanguage } from './gcode.js';
+
+const setCurrent = StateEffect.define();
+const setMessages = StateEffect.define();
+
+/** The line of the current block (stepping), as a line decoration. */
+const currentLine = StateField.define({
+  create: () => Decoration.none,
+  update(deco, tr) {
+    deco = deco.map(tr.changes);
+    for (const e of tr.effects) {
+      if (!e.is(setCurrent)) continue;
+      const n = e.value;
+      if (n === null || n < 1 || n > tr.state.doc.lines) return Decoration.none;
+      const line = tr.state.doc.line(n);
+      return Decoration.set([Decoration.line({ class: 'cm-current-block' }).range(line.from)]);
+    }
+    return deco;
+  },
+  provide: (f) => EditorView.decorations.from(f),
+});
+
+/** A diagnostic's message shown after the end of its line (text only). */
+class MessageWidget extends WidgetType {
+  constructor(severity, text) {
+    super();
+    this.severity = severity;
+    this.text = text;
+  }
+
+  eq(other) {
+    return other.severity === this.severity && other.text === this.text;
+  }
+
+  toDOM() {
+    const span = document.createElement('span');
+    span.className = `cm-diag-message cm-diag-${this.severity}`;
+    span.textContent = this.text;
+    return span;
+  }
+}
+
+const messages = StateField.define({
+  create: () => Decoration.none,
+  update(deco, tr) {
+    deco = deco.map(tr.changes);
+    for (const e of tr.effects) if (e.is(setMessages)) deco = e.value;
+    return deco;
+  },
+  provide: (f) => EditorView.decorations.from(f),
+});
+
+/** Document offset of 1-based `column` (in characters) on 1-based `line`. */
+function offsetAt(doc, line, column) {
+  const l = doc.line(Math.min(Math.max(1, line), doc.lines));
+  const chars = Array.from(l.text);
+  const prefix = chars.slice(0, Math.max(0, column - 1)).join('');
+  return l.from + Math.min(prefix.length, l.length);
+}
+
+const theme = EditorView.theme({
+  '&': { color: 'var(--ink)', backgroundColor: 'var(--field)', height: '100%' },
+  '.cm-content': { fontFamily: 'var(--mono)', caretColor: 'var(--ink)' },
+  '.cm-gutters': { backgroundColor: 'var(--panel-2)', color: 'var(--muted)', borderRight: '1px solid var(--line)' },
+  '.cm-activeLineGutter': { backgroundColor: 'var(--line)' },
+  '&.cm-focused .cm-cursor': { borderLeftColor: 'var(--ink)' },
+  '&.cm-focused > .cm-scroller > .cm-selectionLayer .cm-selectionBackground, .cm-selectionBackground':
+    { backgroundColor: 'var(--selection) !important' },
+  '.cm-scroller': { overflow: 'auto' },
+});
+
+/**
+ * Creates the editor in `parent`. `onChange(text)` follows every edit;
+ * `onCursorLine(line)` is called when the user moves the cursor (click or
+ * arrow keys) without editing.
+ */
+export function createEditor(parent, { doc = '', label = 'Program', onChange, onCursorLine } = {}) {
+  const view = new EditorView({
+    parent,
+    state: EditorState.create({
+      doc,
+      extensions: [
+        lineNumbers(),
+        highlightActiveLineGutter(),
+        highlightSpecialChars(),
+        history(),
+        drawSelection(),
+        gcodeLanguage,
+        syntaxHighlighting(gcodeHighlight),
+        lintGutter(),
+        currentLine,
+        messages,
+        theme,
+        keymap.of([...defaultKeymap, ...historyKeymap]),
+        EditorView.contentAttributes.of({
+          'aria-label': label,
+          spellcheck: 'false',
+          autocapitalize: 'off',
+          autocorrect: 'off',
+        }),
+        EditorView.updateListener.of((update) => {
+          if (update.docChanged) {
+            onChange?.(update.state.doc.toString());
+          } else if (update.selectionSet && update.transactions.some((t) => t.isUserEvent('select'))) {
+            const head = update.state.selection.main.head;
+            onCursorLine?.(update.state.doc.lineAt(head).number);
+          }
+        }),
+      ],
+    }),
+  });
+
+  return {
+    view,
+    getText: () => view.state.doc.toString(),
+    /** The selected text (for tests and the console). */
+    selection: () => view.state.sliceDoc(view.state.selection.main.from, view.state.selection.main.to),
+    /** Replaces the whole text as one undoable edit. */
+    setText(text) {
+      view.dispatch({ changes: { from: 0, to: view.state.doc.length, insert: text } });
+    },
+    undo: () => undo(view),
+    redo: () => redo(view),
+    focus: () => view.focus(),
+    /** Diagnostics [{severity, message, line, column, end_column}] (line > 0). */
+    setDiagnostics(list) {
+      const doc = view.state.doc;
+      const inDoc = list.filter((d) => d.line > 0 && d.line <= doc.lines);
+      const marks = inDoc.map((d) => {
+        const from = offsetAt(doc, d.line, d.column);
+        const to = Math.max(from, offsetAt(doc, d.line, d.end_column));
+        return { from, to, severity: d.severity === 'error' ? 'error' : 'warning', message: `${d.code}: ${d.message}` };
+      });
+      const firstOnLine = new Map();
+      for (const d of inDoc) if (!firstOnLine.has(d.line)) firstOnLine.set(d.line, { d, more: 0 });
+      for (const d of inDoc) if (firstOnLine.get(d.line).d !== d) firstOnLine.get(d.line).more += 1;
+      const widgets = [...firstOnLine.values()]
+        .sort((a, b) => a.d.line - b.d.line)
+        .map(({ d, more }) => Decoration.widget({
+          widget: new MessageWidget(d.severity, more ? `${d.message} (+${more} more)` : d.message),
+          side: 1,
+        }).range(doc.line(d.line).to));
+      view.dispatch(setDiagnostics(view.state, marks));
+      view.dispatch({ effects: setMessages.of(Decoration.set(widgets, true)) });
+    },
+    /** Highlights 1-based `line` as the current block (null: none). */
+    showCurrent(line, scroll = true) {
+      const effects = [setCurrent.of(line)];
+      if (scroll && line >= 1 && line <= view.state.doc.lines) {
+        effects.push(EditorView.scrollIntoView(view.state.doc.line(line).from, { y: 'nearest' }));
+      }
+      view.dispatch({ effects });
+    },
+    /** Selects line:column..endColumn and focuses the editor. */
+    jumpTo(line, column, endColumn) {
+      const doc = view.state.doc;
+      if (line < 1 || line > doc.lines) return;
+      const anchor = offsetAt(doc, line, column);
+      const head = Math.max(anchor, offsetAt(doc, line, endColumn ?? column));
+      view.dispatch({ selection: { anchor, head }, scrollIntoView: true, userEvent: 'select' });
+      view.focus();
+    },
+  };
+}

@@ -1,0 +1,70 @@
+// G-code highlighting for CodeMirror: a small stream tokenizer. Each word
+// gets a class by its address letter, so the G, M, axis, offset (D/H) and
+// tool (T) words, N numbers and comments read apart (style.css colours them
+// for light and dark schemes).
+
+import { HighlightStyle, StreamLanguage } from '@codemirror/language';
+import { Tag } from '@lezer/highlight';
+
+const KINDS = {
+  g: 'tok-g', // G codes: motion, plane, offsets, cycles
+  m: 'tok-m', // M codes: spindle, coolant, stops
+  n: 'tok-n', // N sequence numbers
+  program: 'tok-program', // O program numbers and %
+  axis: 'tok-axis', // X Y Z U W I J K R: positions and arc words
+  offset: 'tok-offset', // D and H: offset register words
+  tool: 'tok-tool', // T: tool (and lathe offset) words
+  feed: 'tok-feed', // F and S
+  param: 'tok-param', // P Q L A B C E…
+  comment: 'tok-comment',
+  skip: 'tok-skip', // the / of an optional block skip
+  end: 'tok-end', // ; end of block
+  invalid: 'tok-invalid',
+};
+
+const TAGS = Object.fromEntries(Object.keys(KINDS).map((k) => [k, Tag.define()]));
+
+const BY_LETTER = {
+  G: 'g', M: 'm', N: 'n', O: 'program',
+  X: 'axis', Y: 'axis', Z: 'axis', U: 'axis', W: 'axis', I: 'axis', J: 'axis', K: 'axis', R: 'axis',
+  D: 'offset', H: 'offset', T: 'tool', F: 'feed', S: 'feed',
+};
+
+const WORD = /^[A-Za-z][ \t]*[+-]?[ \t]*[0-9.]*/;
+
+export const gcodeLanguage = StreamLanguage.define({
+  name: 'gcode',
+  startState: () => ({}),
+  token(stream) {
+    if (stream.eatSpace()) return null;
+    const ch = stream.peek();
+    if (ch === '(') {
+      if (stream.skipTo(')')) stream.next();
+      else stream.skipToEnd();
+      return 'comment';
+    }
+    if (ch === ';') {
+      stream.next();
+      return 'end';
+    }
+    if (ch === '%') {
+      stream.next();
+      return 'program';
+    }
+    if (ch === '/') {
+      stream.next();
+      stream.match(/^[0-9]/);
+      return 'skip';
+    }
+    const word = stream.match(WORD);
+    if (word) return BY_LETTER[word[0][0].toUpperCase()] ?? 'param';
+    stream.next();
+    return 'invalid';
+  },
+  tokenTable: TAGS,
+  languageData: { commentTokens: { block: { open: '(', close: ')' } } },
+});
+
+export const gcodeHighlight = HighlightStyle.define(
+  Object.entries(KINDS).map(([kind, cls]) => ({ tag: TAGS[kind], class: cls })),
+);
