@@ -119,10 +119,15 @@ pub struct BlockView<'a> {
 
 /// Builds the report of one block.
 pub fn block_view<'a>(b: &BlockReport, text: &'a str) -> BlockView<'a> {
+    block_view_at(b, text, b.span.columns(text))
+}
+
+/// [`block_view`] with the block's columns already known.
+fn block_view_at<'a>(b: &BlockReport, text: &'a str, columns: (u32, u32)) -> BlockView<'a> {
     let s = &b.state;
     let u = s.modal.units;
     let m = s.machine;
-    let (column, end_column) = b.span.columns(text);
+    let (column, end_column) = columns;
     let mill = m == MachineKind::Mill;
     let start = (b.span.start as usize).min(text.len());
     let end = (b.span.end as usize).clamp(start, text.len());
@@ -301,7 +306,14 @@ struct Moves<'a>(&'a Run);
 
 impl Serialize for Blocks<'_> {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.collect_seq(self.0.blocks.iter().map(|b| block_view(b, self.1)))
+        // Blocks are in text order: one pass for all their columns.
+        let mut columns = crate::diag::Columns::new(self.1);
+        s.collect_seq(
+            self.0
+                .blocks
+                .iter()
+                .map(|b| block_view_at(b, self.1, columns.of(b.span))),
+        )
     }
 }
 
