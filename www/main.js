@@ -38,7 +38,12 @@ const post = (message) => worker.postMessage(message);
 const editor = createEditor($('editor'), {
   doc: saved?.program ?? DEFAULT_EXAMPLE.program,
   label: 'Program (G-code)',
-  onChange: () => {
+  onChange: (text) => {
+    // Once the text is no longer the example's, its note no longer applies.
+    if (exampleId && exampleById(exampleId)?.program !== text) {
+      exampleId = null;
+      showNote();
+    }
     scheduleRun();
     persist();
   },
@@ -153,7 +158,7 @@ function showViewState(m) {
   blockCount = m.blocks;
   if (m.block !== undefined) currentBlock = m.block;
   if (m.step < 0) currentBlock = null;
-  stepReported(m.step, m.blocks, currentBlock);
+  stepReported(m.step, m.blocks, currentBlock, m.stepSeq);
   showState($('state-panel'), currentBlock, { blocks: blockCount });
   editor.showCurrent(currentBlock ? currentBlock.line : null, m.cause !== 'line');
   if (['view', 'step', 'pick', 'line'].includes(m.cause)) persist();

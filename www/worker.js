@@ -21,6 +21,7 @@ let shown = 0; // generation of the run the session holds
 let frame = 0;
 let stateCause = '';
 let lastBlock = -2;
+let stepSeq = 0; // the last step request handled (the page counts its own)
 
 const ready = init().then(() => {
   session = new Session();
@@ -72,6 +73,7 @@ function postState() {
     blocks: session.block_count(),
     block: step < 0 ? null : block,
     cause: stateCause,
+    stepSeq,
   });
   stateCause = '';
 }
@@ -115,6 +117,7 @@ function handle(message) {
       break;
     case 'step':
       session.set_step(message.index);
+      stepSeq = message.seq ?? stepSeq;
       invalidate('step');
       break;
     case 'pick': {

@@ -112,6 +112,24 @@ describe('view', () => {
     });
   });
 
+  test('follows the canvas size and stays drawn on a narrow, low-DPI screen', async () => {
+    await withPage(async (page) => {
+      const { counts, png } = await shootCanvas(page, 'narrow', (c) => c.actualFeed > 150);
+      const box = await page.locator('#view').boundingBox();
+      assert.equal(png.width, Math.round(box.width));
+      assert.ok(counts.actualFeed > 150 && counts.programmedFeed > 50, JSON.stringify(counts));
+      // Resizing the window re-draws at the new size (the worker reports the size it drew at).
+      await page.setViewportSize({ width: 700, height: 900 });
+      const wanted = await page.locator('#view').evaluate((el) => {
+        const r = el.getBoundingClientRect();
+        return `${Math.round(r.width)}x${Math.round(r.height)}@${window.devicePixelRatio}`;
+      });
+      await page.waitForFunction((w) => document.body.dataset.drawn === w, wanted);
+      const resized = await shootCanvas(page, 'resized', (c) => c.actualFeed > 150);
+      assert.ok(resized.png.width > png.width * 1.2, `${resized.png.width} vs ${png.width}`);
+    }, { width: 480, height: 900, scale: 1 });
+  });
+
   test('dark scheme: page and drawing are dark, the paths stay apart', async () => {
     await withPage(async (page) => {
       const bg = await page.evaluate(() => getComputedStyle(document.body).backgroundColor);

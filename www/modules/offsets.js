@@ -108,6 +108,7 @@ export function renderOffsets({ force = false } = {}) {
     tr.append(td);
     body.push(tr);
   }
+  ctx.table.classList.toggle('lathe', machine === 'lathe');
   ctx.table.tHead.replaceChildren(head);
   ctx.table.tBodies[0].replaceChildren(...body);
   if (keep) ctx.table.querySelector(`[data-field="${keep}"]`)?.focus();

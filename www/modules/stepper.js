@@ -8,27 +8,33 @@ const PLAY_MS = 600; // per block while playing
 let post = () => {};
 let blocks = 0;
 let step = -1; // -1: no current block, the whole program is shown
+// Keys repeat faster than the worker answers: steps are counted from the
+// block last asked for until the worker has seen every request (seq).
+let target = -1;
+let seq = 0;
 let timer = 0;
 const el = {};
 
 function request(index) {
   if (blocks === 0) return;
-  post({ type: 'step', index: Math.max(0, Math.min(blocks - 1, index)) });
+  target = Math.max(0, Math.min(blocks - 1, index));
+  seq += 1;
+  post({ type: 'step', index: target, seq });
 }
 
 export const stepper = {
   first: () => request(0),
   last: () => request(blocks - 1),
-  next: () => request(step < 0 ? 0 : step + 1),
-  previous: () => request(step < 0 ? blocks - 1 : step - 1),
+  next: () => request(target < 0 ? 0 : target + 1),
+  previous: () => request(target < 0 ? blocks - 1 : target - 1),
   toggle: () => (timer ? pause() : play()),
 };
 
 function play() {
   if (blocks === 0) return;
-  if (step < 0 || step >= blocks - 1) request(0);
+  if (target < 0 || target >= blocks - 1) request(0);
   timer = setInterval(() => {
-    if (step >= blocks - 1) pause();
+    if (target >= blocks - 1) pause();
     else stepper.next();
   }, PLAY_MS);
   showPlaying();
@@ -46,10 +52,12 @@ function showPlaying() {
   document.body.dataset.playing = String(Boolean(timer));
 }
 
-/** Shows the worker's current block and the block count. */
-export function stepReported(current, count, block) {
+/** Shows the worker's current block and the block count; `answered` is
+ * the last step request the worker had handled. */
+export function stepReported(current, count, block, answered = seq) {
   step = current;
   blocks = count;
+  if (answered >= seq) target = current;
   const none = blocks === 0;
   for (const b of [el.first, el.previous, el.next, el.last, el.play]) b.disabled = none;
   el.slider.disabled = none;
@@ -64,7 +72,7 @@ export function stepReported(current, count, block) {
     el.position.textContent = `block ${step + 1} of ${blocks}${where}`;
   }
   el.slider.setAttribute('aria-valuetext', el.position.textContent);
-  if (timer && step >= blocks - 1) pause();
+  if (timer && step >= blocks - 1 && target >= blocks - 1) pause();
 }
 
 function typing(target) {
