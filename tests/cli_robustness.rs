@@ -355,3 +355,41 @@ fn a_huge_single_line_and_many_errors_are_reported_within_the_caps() {
         &report[report.len() - 300..]
     );
 }
+
+#[test]
+fn an_endless_or_oversized_input_is_refused_before_it_fills_memory() {
+    // /dev/zero as PROGRAM, as standard input and as --setup: exit 2 after
+    // reading one byte past the limit, not an out-of-memory abort.
+    let start = Instant::now();
+    let out = offsetlab(&["check", "/dev/zero"], b"");
+    assert_eq!(code(&out), 2);
+    assert!(
+        stderr(&out).contains("/dev/zero is larger than 256 MiB"),
+        "{}",
+        stderr(&out)
+    );
+    let out = bin()
+        .args(["check", "-"])
+        .stdin(std::fs::File::open("/dev/zero").unwrap())
+        .output()
+        .unwrap();
+    no_panic(&out);
+    assert_eq!(code(&out), 2);
+    assert!(stderr(&out).contains("<stdin> is larger than 256 MiB"));
+    let out = offsetlab(&["check", "--setup", "/dev/zero", "-"], b"G00 X1.");
+    assert_eq!(code(&out), 2);
+    assert!(stderr(&out).contains("setup /dev/zero is larger than 512 MiB"));
+    assert!(
+        start.elapsed() < Duration::from_secs(60),
+        "{:?}",
+        start.elapsed()
+    );
+    // A setup file that is not UTF-8 names its offset too.
+    let bad = temp(
+        "latin1-setup.json",
+        b"{\"version\": 1, \"program\": \"(R\xe9)\"}",
+    );
+    let out = offsetlab(&["check", "--setup", bad.to_str().unwrap()], b"");
+    assert_eq!(code(&out), 2);
+    assert!(stderr(&out).contains("is not UTF-8 text: invalid byte at offset 29"));
+}

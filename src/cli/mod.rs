@@ -224,8 +224,12 @@ fn execute(cli: Cli, out: &mut impl Write) -> Result<ExitCode, Fatal> {
 fn load(common: &Common) -> Result<(String, Document), Fatal> {
     let mut doc = match &common.setup {
         Some(path) => {
-            let text = std::fs::read_to_string(path)
-                .map_err(|e| Fatal(format!("cannot read setup {}: {e}", path.display())))?;
+            // A document carries a program: twice the program limit for
+            // its JSON escapes.
+            let name = format!("setup {}", path.display());
+            let file =
+                std::fs::File::open(path).map_err(|e| Fatal(format!("cannot read {name}: {e}")))?;
+            let text = read_text(&name, file, 2 * offsetlab::syntax::MAX_PROGRAM_BYTES)?;
             Document::from_json(&text)
                 .map_err(|e| Fatal(format!("setup {}: {e}", path.display())))?
         }
@@ -261,26 +265,39 @@ fn load(common: &Common) -> Result<(String, Document), Fatal> {
     Ok((name, doc))
 }
 
-/// Reads the program; `-` is standard input. Invalid UTF-8 is refused with
-/// the offset of the first bad byte.
+/// Reads the program; `-` is standard input.
 fn read_program(path: &str) -> Result<(String, String), Fatal> {
-    let (name, bytes) = if path == "-" {
-        let mut buf = Vec::new();
-        io::stdin()
-            .read_to_end(&mut buf)
-            .map_err(|e| Fatal(format!("cannot read standard input: {e}")))?;
-        ("<stdin>".to_string(), buf)
-    } else {
-        let bytes = std::fs::read(path).map_err(|e| Fatal(format!("cannot read {path}: {e}")))?;
-        (path.to_string(), bytes)
-    };
-    let text = String::from_utf8(bytes).map_err(|e| {
+    let limit = offsetlab::syntax::MAX_PROGRAM_BYTES;
+    if path == "-" {
+        let name = "<stdin>".to_string();
+        let text = read_text(&name, io::stdin(), limit)?;
+        return Ok((name, text));
+    }
+    let file = std::fs::File::open(path).map_err(|e| Fatal(format!("cannot read {path}: {e}")))?;
+    Ok((path.to_string(), read_text(path, file, limit)?))
+}
+
+/// Reads UTF-8 text of at most `limit` bytes. Invalid UTF-8 is refused with
+/// the offset of the first bad byte, and a longer input before it is read
+/// whole (`/dev/zero` or an endless pipe would otherwise fill memory).
+fn read_text(name: &str, reader: impl Read, limit: usize) -> Result<String, Fatal> {
+    let mut bytes = Vec::new();
+    reader
+        .take(limit as u64 + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| Fatal(format!("cannot read {name}: {e}")))?;
+    if bytes.len() > limit {
+        return Err(Fatal(format!(
+            "{name} is larger than {} MiB, the most offsetlab reads",
+            limit / (1024 * 1024)
+        )));
+    }
+    String::from_utf8(bytes).map_err(|e| {
         Fatal(format!(
             "{name} is not UTF-8 text: invalid byte at offset {}",
             e.utf8_error().valid_up_to()
         ))
-    })?;
-    Ok((name, text))
+    })
 }
 
 /// `check`: diagnostics as FILE:LINE:COL and one summary line.
