@@ -98,3 +98,33 @@ fn a_lathe_r_arc_from_a_point_to_itself_is_a_warning_not_a_nan() {
     assert!(t.actual.iter().chain(&t.programmed).all(|v| v.is_finite()));
     fuzz_common::check_run_with(&setup, "G02 R0.1 F8.\nG01 X10. Z-5. T0101\nG03 R1.", 1000);
 }
+
+// The fuzz targets' checks as property tests, so that `cargo test` (stable,
+// no cargo-fuzz) exercises the same invariants on fresh inputs every run:
+// a setup header of random bytes and G-code-like text or any bytes.
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(128))]
+
+    #[test]
+    fn the_run_target_holds_on_gcode_like_programs(
+        header in proptest::collection::vec(proptest::prelude::any::<u8>(), fuzz_common::HEADER),
+        text in "([GMXYZUWIJKRDHTFSPQLNO][-+]?[0-9]{0,6}[.]?[0-9]{0,4}[ ;\n]{0,2}|[()%/\r]){0,80}",
+    ) {
+        let mut data = header;
+        data.extend_from_slice(text.as_bytes());
+        fuzz_common::check_run(&data);
+    }
+
+    #[test]
+    fn the_run_and_parse_targets_hold_on_any_bytes(
+        data in proptest::collection::vec(proptest::prelude::any::<u8>(), 0..400),
+    ) {
+        fuzz_common::check_run(&data);
+        fuzz_common::check_parse(&data);
+    }
+
+    #[test]
+    fn the_link_target_holds_on_any_text(text in "(#v1\\.|#program=|&offset=)?\\PC{0,120}") {
+        fuzz_common::check_link(text.as_bytes());
+    }
+}
