@@ -122,6 +122,17 @@ pub fn block_view<'a>(b: &BlockReport, text: &'a str) -> BlockView<'a> {
     block_view_at(b, text, b.span.columns(text))
 }
 
+/// The reports of every block of a run, in order, their columns found in
+/// one pass over the text (a [`block_view`] per block scans back to the
+/// line's start each time: quadratic on a long line of `;`-separated
+/// blocks).
+pub fn block_views<'a>(run: &'a Run, text: &'a str) -> impl Iterator<Item = BlockView<'a>> + 'a {
+    let mut columns = crate::diag::Columns::new(text);
+    run.blocks
+        .iter()
+        .map(move |b| block_view_at(b, text, columns.of(b.span)))
+}
+
 /// [`block_view`] with the block's columns already known.
 fn block_view_at<'a>(b: &BlockReport, text: &'a str, columns: (u32, u32)) -> BlockView<'a> {
     let s = &b.state;
@@ -306,14 +317,7 @@ struct Moves<'a>(&'a Run);
 
 impl Serialize for Blocks<'_> {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        // Blocks are in text order: one pass for all their columns.
-        let mut columns = crate::diag::Columns::new(self.1);
-        s.collect_seq(
-            self.0
-                .blocks
-                .iter()
-                .map(|b| block_view_at(b, self.1, columns.of(b.span))),
-        )
+        s.collect_seq(block_views(self.0, self.1))
     }
 }
 

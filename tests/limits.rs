@@ -1,6 +1,7 @@
 //! The limits of the README's "Limits" table: each is a clear diagnostic,
 //! never a hang, an abort or a NaN. The extreme programs run through the
 //! same invariant checks as the `run` fuzz target (`fuzz/common/mod.rs`).
+#![cfg(not(target_arch = "wasm32"))]
 
 #[path = "../fuzz/common/mod.rs"]
 mod fuzz_common;

@@ -4,7 +4,7 @@
 use std::io::{self, Write};
 
 use offsetlab::Run;
-use offsetlab::view::{Pos, block_view};
+use offsetlab::view::{Pos, block_views};
 
 const TEXT_WIDTH: usize = 34;
 
@@ -37,8 +37,7 @@ pub fn write(out: &mut impl Write, run: &Run, text: &str) -> io::Result<()> {
         "{:>5}  {:TEXT_WIDTH$}  {:pos_width$}  {:pos_width$}  OFFSETS",
         "LINE", "BLOCK", "PROGRAMMED", "ACTUAL"
     )?;
-    for b in &run.blocks {
-        let v = block_view(b, text);
+    for (b, v) in run.blocks.iter().zip(block_views(run, text)) {
         let d = b.state.modal.units.decimals();
         writeln!(
             out,
