@@ -141,7 +141,11 @@ pub fn run_with(text: &str, setup: &Setup, options: RunOptions) -> Run {
             line: block.span.line,
             kind,
         }));
-        run_diagnostics.append(&mut out.warnings);
+        // Warnings share the diagnostics cap with the parser's (a warning
+        // per block could otherwise fill memory and the page's list).
+        for w in out.warnings.drain(..) {
+            parser.report(w);
+        }
         if options.keep_blocks {
             result.blocks.push(BlockReport {
                 index,

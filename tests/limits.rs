@@ -186,3 +186,43 @@ fn long_lines_are_located_in_linear_time() {
     assert!(json.contains(r#""line":1,"column":199997,"end_column":200000,"text":"Y1.""#));
     assert!(start.elapsed().as_secs() < 30, "{:?}", start.elapsed());
 }
+
+/// Found while checking the diagnostics cap: the run's warnings were not
+/// capped (one `arc-r-no-motion` per block: 5 million blocks, 5 million
+/// warnings). They now share the 1000 with the parser's diagnostics.
+#[test]
+fn run_warnings_share_the_diagnostics_cap() {
+    let text = "G02 R1. F1.\n".repeat(5000);
+    for keep in [true, false] {
+        let options = RunOptions {
+            keep_blocks: keep,
+            keep_moves: keep,
+            ..RunOptions::default()
+        };
+        let r = run_with(&text, &Setup::default(), options);
+        assert_eq!(r.block_count, 5000);
+        assert_eq!(r.diagnostics.len(), MAX_DIAGNOSTICS + 1);
+        assert!(
+            r.diagnostics[..1000]
+                .iter()
+                .all(|d| d.code == "arc-r-no-motion")
+        );
+        let last = &r.diagnostics[1000];
+        assert_eq!(last.code, "too-many-diagnostics");
+        assert!(
+            last.message.starts_with("4000 more diagnostics"),
+            "{}",
+            last.message
+        );
+        assert!(!r.has_errors());
+    }
+    // The error that stops a run is always reported, past the cap too.
+    let text = "G02 R1. F1.\n".repeat(1500) + "G02 X10. R1.\n";
+    let r = offsetlab::run(&text, &Setup::default());
+    assert_eq!(r.end, End::Error { line: 1501 });
+    assert!(
+        r.diagnostics
+            .iter()
+            .any(|d| d.code == "arc-radius" && d.line == 1501)
+    );
+}

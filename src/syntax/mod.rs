@@ -200,7 +200,10 @@ impl<'a> Blocks<'a> {
         self.pos
     }
 
-    fn report(&mut self, d: Diagnostic) {
+    /// Keeps a diagnostic unless [`MAX_DIAGNOSTICS`] are kept already (then
+    /// it is counted in the closing `too-many-diagnostics` warning). The
+    /// run's warnings share this cap with the parser's diagnostics.
+    pub(crate) fn report(&mut self, d: Diagnostic) {
         if self.diagnostics.len() < MAX_DIAGNOSTICS {
             self.diagnostics.push(d);
         } else {
