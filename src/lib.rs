@@ -22,6 +22,7 @@
 
 pub mod diag;
 pub mod document;
+pub mod export;
 pub mod machine;
 pub mod offsets;
 pub mod render;
