@@ -15,10 +15,12 @@ use wasm_bindgen::prelude::*;
 use web_sys::{OffscreenCanvas, OffscreenCanvasRenderingContext2d};
 
 use crate::diag::Diagnostic;
+use crate::document::{Document, ViewPlane, ViewState};
 use crate::render::scene::{self, Scene};
 use crate::render::{self, Frame, Plane, Theme, canvas::CanvasSurface};
 use crate::report::{End, Run};
-use crate::setup::Setup;
+use crate::setup::{MachineKind, Setup};
+use crate::share;
 use crate::toolpath::Toolpath;
 use crate::view::{Summary, block_view, summary};
 
@@ -111,6 +113,170 @@ fn read_setup(value: &JsValue) -> Result<Setup, Vec<Diagnostic>> {
     Setup::from_json(&text).map_err(|e| e.diagnostics)
 }
 
+/// A document as JS passes it: a document object (the document JSON's
+/// shape) or its JSON text.
+fn read_document_value(value: &JsValue) -> Result<Document, share::LinkError> {
+    let text = match value.as_string() {
+        Some(text) => text,
+        None => JSON::stringify(value)
+            .ok()
+            .and_then(|s| s.as_string())
+            .ok_or_else(|| share::LinkError {
+                code: "link-document",
+                message: "the document is not a JSON object".into(),
+            })?,
+    };
+    Document::from_json(&text).map_err(|e| share::LinkError {
+        code: "link-document",
+        message: e.to_string(),
+    })
+}
+
+/// A document as the JSON value JS receives: its document JSON with
+/// `program` always present and `view` and `step` `null` when absent.
+fn document_value(doc: &Document) -> serde_json::Value {
+    let mut value: serde_json::Value =
+        serde_json::from_str(&doc.to_json()).unwrap_or(serde_json::Value::Null);
+    if let Some(map) = value.as_object_mut() {
+        map.entry("program")
+            .or_insert_with(|| serde_json::Value::from(""));
+        map.entry("view").or_insert(serde_json::Value::Null);
+        map.entry("step").or_insert(serde_json::Value::Null);
+    }
+    value
+}
+
+/// A problem with a link or a document file, for a person to read.
+#[derive(Serialize)]
+struct CodecError {
+    code: String,
+    message: String,
+}
+
+/// What `decode_link` and `read_document` return: always all three keys.
+#[derive(Serialize)]
+struct Decoded {
+    document: Option<serde_json::Value>,
+    embed: bool,
+    error: Option<CodecError>,
+}
+
+fn thrown(e: share::LinkError) -> JsError {
+    JsError::new(&e.to_string())
+}
+
+/// The compact link of `document` (an object shaped like the document JSON,
+/// or its text): `base#v1.…`, with `&embed=1` when `embed`. Throws an
+/// `Error` ("link-base: …" or "link-document: …") only for a base that is
+/// not an http(s) URL or a document that does not validate.
+#[wasm_bindgen]
+pub fn encode_link(base: &str, document: JsValue, embed: bool) -> Result<String, JsError> {
+    let doc = read_document_value(&document).map_err(thrown)?;
+    share::link(base, &doc, embed).map_err(thrown)
+}
+
+/// The plain, hand-writable form of `document`, without the leading `#`:
+/// `program=…&offset=01:6…` (settings at their defaults left out). Throws
+/// like `encode_link` for a document that does not validate.
+#[wasm_bindgen]
+pub fn encode_plain(document: JsValue, embed: bool) -> Result<String, JsError> {
+    let doc = read_document_value(&document).map_err(thrown)?;
+    Ok(share::encode_plain(&doc, embed))
+}
+
+/// Reads a link (a full URL, a `#fragment` or the fragment alone; compact
+/// or plain). Never throws: returns `{ document, embed, error: null }` or
+/// `{ document: null, embed: false, error: { code, message } }` with the
+/// codec's code (`link-base64`, `link-deflate`, `link-version`, …).
+#[wasm_bindgen]
+pub fn decode_link(text: &str) -> Result<JsValue, JsValue> {
+    to_js(&match share::decode(text) {
+        Ok(link) => Decoded {
+            document: Some(document_value(&link.document)),
+            embed: link.embed,
+            error: None,
+        },
+        Err(e) => Decoded {
+            document: None,
+            embed: false,
+            error: Some(CodecError {
+                code: e.code.to_owned(),
+                message: e.message,
+            }),
+        },
+    })
+}
+
+/// Reads a document file (JSON text; a setup document is a document
+/// without a program). Never throws: `{ document, embed: false, error }`
+/// as `decode_link`, the error's code that of the first problem
+/// (`setup-syntax`, `setup-range`, …) and its message every problem.
+#[wasm_bindgen]
+pub fn read_document(text: &str) -> Result<JsValue, JsValue> {
+    to_js(&match Document::from_json(text) {
+        Ok(doc) => Decoded {
+            document: Some(document_value(&doc)),
+            embed: false,
+            error: None,
+        },
+        Err(e) => Decoded {
+            document: None,
+            embed: false,
+            error: Some(CodecError {
+                code: e
+                    .diagnostics
+                    .first()
+                    .map_or("setup-syntax", |d| d.code)
+                    .to_owned(),
+                message: e
+                    .diagnostics
+                    .iter()
+                    .map(|d| d.message.as_str())
+                    .collect::<Vec<_>>()
+                    .join("; "),
+            }),
+        },
+    })
+}
+
+/// The document as an indented JSON file (what `offsetlab link --decode`
+/// prints; `offsetlab run --setup FILE` reads it). Throws like
+/// `encode_link` for a document that does not validate.
+#[wasm_bindgen]
+pub fn document_json(document: JsValue) -> Result<String, JsError> {
+    let doc = read_document_value(&document).map_err(thrown)?;
+    Ok(doc.to_json_pretty())
+}
+
+/// The codec's limits: `{ long, max, default_base }` — past `long`
+/// characters a link may not survive chat tools and some browsers (the
+/// page warns and offers a file), past `max` it is not read at all.
+#[wasm_bindgen]
+pub fn link_limits() -> Result<JsValue, JsValue> {
+    #[derive(Serialize)]
+    struct Limits {
+        long: usize,
+        max: usize,
+        default_base: &'static str,
+    }
+    to_js(&Limits {
+        long: share::LONG_LINK,
+        max: share::MAX_LINK,
+        default_base: share::DEFAULT_BASE,
+    })
+}
+
+/// Rounds to `digits` significant digits (view values in links stay short
+/// and read well: zoom 1.83 rather than 1.8301502738172).
+fn significant(x: f64, digits: i32) -> f64 {
+    if x == 0.0 || !x.is_finite() {
+        return x;
+    }
+    let scale = 10f64.powi(digits - 1 - x.abs().log10().floor() as i32);
+    let r = (x * scale).round() / scale;
+    if r.is_finite() { r } else { x }
+}
+
 #[wasm_bindgen]
 impl Session {
     /// An empty session (no program, default setup).
@@ -143,6 +309,27 @@ impl Session {
             summary: summary(&self.run),
             diagnostics: &self.run.diagnostics,
         })
+    }
+
+    /// The current document: the program and setup of the last run, the
+    /// view (`null` when it is the machine's default: its first plane, zoom
+    /// 1, no pan; zoom to 6 significant digits, pan to 1e-4) and the current
+    /// block as `step` (`null` when none) — the document JSON's shape, ready
+    /// for `encode_link`. After a bad setup it carries the default setup.
+    pub fn document(&self) -> Result<JsValue, JsValue> {
+        to_js(&document_value(&self.current_document()))
+    }
+
+    /// The toolpath's moves as an indented JSON file: `{ summary, moves }`
+    /// with exactly the CLI's `run --format json` fields.
+    pub fn moves_json(&self) -> String {
+        crate::export::moves_json(&self.run)
+    }
+
+    /// The toolpath's moves as CSV: the JSON fields flattened into columns
+    /// (`from_x`, `arc_center_x`, …; no `_y` columns on the lathe).
+    pub fn moves_csv(&self) -> String {
+        crate::export::moves_csv(&self.run)
     }
 
     /// The setup of the last run as a setup document (the default setup
@@ -356,6 +543,28 @@ impl Session {
 }
 
 impl Session {
+    /// The document of the current state (see `document()`).
+    fn current_document(&self) -> Document {
+        let default_plane = match self.run.machine {
+            MachineKind::Lathe => ViewPlane::ZX,
+            MachineKind::Mill => ViewPlane::XY,
+        };
+        let plane = ViewPlane::parse(self.scene.plane.name()).unwrap_or(default_plane);
+        let zoom = significant(self.scene.zoom, 6);
+        let pan = self.scene.pan.map(|p| {
+            let r = (p * 1e4).round() / 1e4;
+            if r == 0.0 { 0.0 } else { r }
+        });
+        let view = (plane != default_plane || zoom != 1.0 || pan != [0.0, 0.0])
+            .then_some(ViewState { plane, zoom, pan });
+        Document {
+            setup: self.setup.clone(),
+            program: self.text.clone(),
+            view,
+            step: self.scene.step,
+        }
+    }
+
     /// Keeps the view state sensible for a new run: the lathe is drawn in
     /// ZX, the mill in one of its planes; a current block past the end moves
     /// to the last block, and a session that was at the last block stays at
