@@ -3,16 +3,23 @@
 // (plane, zoom, pan, current block) and draws — at most once per animation
 // frame however many view changes arrive. Only small results go back to the
 // page: the summary, the diagnostics, the view state and the current block's
-// report.
+// report — and, when the page asks (call), a link, a document or an export.
 //
 // In:  init {canvas, width, height, dpr, theme} · resize {width, height, dpr}
 //      run {gen, program, setup} · theme {name}
 //      view {op: zoom {x, y, factor} | pan {dx, dy} | fit | plane {plane} | set {view}}
 //      step {index} · pick {x, y, tolerance} · line {line}
+//      call {id, op, ...}: op document {base, embed} · decode {text, base}
+//        · read {text, base} · canonical {document} · export {format}
 // Out: result {gen, summary, diagnostics} · state {gen, view, step, blocks, block, cause}
-//      drawn {width, height, dpr} · failure {gen, message}
+//      drawn {width, height, dpr} · failure {gen, message} · reply {id, value | error}
+//
+// Calls are answered in order with the runs, so a call posted after a run
+// request sees that run.
 
-import init, { Session } from './pkg/offsetlab.js';
+import init, {
+  Session, decode_link, document_json, encode_link, encode_plain, link_limits, read_document,
+} from './pkg/offsetlab.js';
 
 let session = null;
 let size = { width: 300, height: 150, dpr: 1 };
@@ -22,6 +29,8 @@ let frame = 0;
 let stateCause = '';
 let lastBlock = -2;
 let stepSeq = 0; // the last step request handled (the page counts its own)
+let canvas = null; // the OffscreenCanvas (also held by the session) for PNG export
+let setupFailed = false; // the last run's setup was refused (it ran with the default setup)
 
 const ready = init().then(() => {
   session = new Session();
@@ -81,6 +90,7 @@ function postState() {
 function handle(message) {
   switch (message.type) {
     case 'init':
+      canvas = message.canvas;
       session.attach_canvas(message.canvas);
       session.set_theme(message.theme || 'light');
       size = { width: message.width, height: message.height, dpr: message.dpr };
@@ -99,6 +109,7 @@ function handle(message) {
       if (message.gen < latest) return;
       const started = performance.now();
       const result = session.run(message.program, message.setup);
+      setupFailed = result.diagnostics.some((d) => d.line === 0 && d.code.startsWith('setup-'));
       shown = message.gen;
       if (message.view) session.set_view(message.view);
       self.postMessage({
@@ -136,8 +147,88 @@ function handle(message) {
       }
       break;
     }
+    case 'call':
+      return call(message);
     default:
       break;
+  }
+  return undefined;
+}
+
+/** Answers a call; an exception becomes `{ error }`, never a dead worker. */
+async function call(message) {
+  let reply;
+  try {
+    reply = { type: 'reply', id: message.id, value: await answer(message) };
+  } catch (error) {
+    reply = { type: 'reply', id: message.id, error: String(error?.message ?? error) };
+  }
+  self.postMessage(reply);
+}
+
+/** A document's links: compact, plain (with `base#`) and its length. */
+function links(document, base, embed) {
+  const link = encode_link(base, document, embed);
+  const plain = `${base}#${encode_plain(document, embed)}`;
+  return { link, plain };
+}
+
+async function answer(message) {
+  switch (message.op) {
+    case 'document': {
+      // The current document and its links; with a refused setup the
+      // session holds the default one, so no link is made from it.
+      const document = session.document();
+      if (setupFailed) return { document, setupFailed: true, limits: link_limits() };
+      return {
+        document,
+        ...links(document, message.base, Boolean(message.embed)),
+        json: document_json(document),
+        limits: link_limits(),
+      };
+    }
+    case 'decode': {
+      const decoded = decode_link(message.text);
+      if (decoded.error) return decoded;
+      // "Open in playground": the same document, not embedded (none when
+      // the page is not served over http(s)).
+      let playground = null;
+      try {
+        playground = encode_link(message.base, decoded.document, false);
+      } catch {
+        playground = null;
+      }
+      return { ...decoded, playground };
+    }
+    case 'read':
+      return read_document(message.text);
+    case 'canonical':
+      // The document as the codec writes it, to tell two documents apart.
+      return document_json(message.document);
+    case 'export':
+      return exportFile(message.format);
+    default:
+      throw new Error(`unknown call ${message.op}`);
+  }
+}
+
+/** The current view or toolpath as a file's contents. */
+async function exportFile(format) {
+  switch (format) {
+    case 'png': {
+      if (!canvas) throw new Error('the drawing is not ready');
+      // Draw now, so the file is exactly the current view.
+      session.render(size.width, size.height, size.dpr);
+      return canvas.convertToBlob({ type: 'image/png' });
+    }
+    case 'svg':
+      return session.render_svg(size.width, size.height);
+    case 'csv':
+      return session.moves_csv();
+    case 'json':
+      return session.moves_json();
+    default:
+      throw new Error(`unknown export format ${format}`);
   }
 }
 

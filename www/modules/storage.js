@@ -2,23 +2,67 @@
 // are saved in localStorage as the user types (at most every SAVE_MS, and at
 // once when the page is hidden) and restored on the next visit. When the
 // browser refuses (storage full, disabled, private mode), the page says so.
+//
+// Work that an opened link, document file or example displaced is kept
+// under its own key (PREVIOUS_KEY) until it is restored, so it stays one
+// click away across reloads. An embedded page (embed=1) reads and writes
+// neither: a lesson's example must never touch the reader's own work.
 
 const KEY = 'offsetlab.work.v1';
+const PREVIOUS_KEY = 'offsetlab.previous.v1';
 const SAVE_MS = 400;
 
 let timer = 0;
 let pending = null;
 let onProblem = () => {};
 let failing = false;
+let enabled = true;
+let previousInMemory = null; // when storage refuses, the displaced work lives here
+
+/** Turns saving off (embed mode): loadWork() is null, saveWork() does nothing. */
+export function disableStorage() {
+  enabled = false;
+  pending = null;
+  clearTimeout(timer);
+  timer = 0;
+}
+
+function readJson(key) {
+  const text = localStorage.getItem(key);
+  if (!text) return null;
+  const work = JSON.parse(text);
+  if (typeof work?.program !== 'string' || typeof work.setup !== 'object' || work.setup === null) return null;
+  return work;
+}
+
+/** The work an opened link, file or example displaced, or null. */
+export function loadPrevious() {
+  if (!enabled) return null;
+  try {
+    return readJson(PREVIOUS_KEY) ?? previousInMemory;
+  } catch {
+    return previousInMemory;
+  }
+}
+
+/** Keeps displaced work { program, setup, view?, example? } (null forgets it). */
+export function keepPrevious(work) {
+  if (!enabled) return;
+  previousInMemory = work;
+  try {
+    if (work) localStorage.setItem(PREVIOUS_KEY, JSON.stringify(work));
+    else localStorage.removeItem(PREVIOUS_KEY);
+  } catch (error) {
+    const why = error?.name === 'QuotaExceededError' ? 'the browser’s storage is full' : (error?.message || 'storage is unavailable');
+    onProblem(`Your previous program is kept only until this page is closed: ${why}.`);
+  }
+}
 
 /** The saved work { program, setup, setupText?, view? } or null. */
 export function loadWork() {
+  if (!enabled) return null;
   try {
-    const text = localStorage.getItem(KEY);
-    if (!text) return null;
-    const work = JSON.parse(text);
-    if (typeof work?.program !== 'string' || typeof work.setup !== 'object' || work.setup === null) return null;
-    return work;
+    return readJson(KEY);
   } catch (error) {
     onProblem(`Your saved work could not be read (${error.message}).`);
     return null;
@@ -47,6 +91,7 @@ function flush() {
 
 /** Saves `work` soon (throttled). */
 export function saveWork(work) {
+  if (!enabled) return;
   pending = work;
   document.body.dataset.unsaved = 'true';
   if (!timer) {

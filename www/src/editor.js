@@ -84,11 +84,12 @@ const theme = EditorView.theme({
 });
 
 /**
- * Creates the editor in `parent`. `onChange(text)` follows every edit;
+ * Creates the editor in `parent` (`readOnly`: no edits by the user).
+ * `onChange(text)` follows every edit;
  * `onCursorLine(line)` is called when the user moves the cursor (click or
  * arrow keys) without editing.
  */
-export function createEditor(parent, { doc = '', label = 'Program', onChange, onCursorLine } = {}) {
+export function createEditor(parent, { doc = '', label = 'Program', readOnly = false, onChange, onCursorLine } = {}) {
   const view = new EditorView({
     parent,
     state: EditorState.create({
@@ -106,7 +107,11 @@ export function createEditor(parent, { doc = '', label = 'Program', onChange, on
         messages,
         theme,
         keymap.of([...defaultKeymap, ...historyKeymap]),
+        // Read-only (embed mode): the text can be read, selected and copied,
+        // and a click still selects the block on its line, but not edited.
+        EditorState.readOnly.of(readOnly),
         EditorView.contentAttributes.of({
+          ...(readOnly ? { 'aria-readonly': 'true' } : {}),
           'aria-label': label,
           spellcheck: 'false',
           autocapitalize: 'off',

@@ -1,0 +1,75 @@
+// The address bar kept current: the compact link of the document in the
+// URL's fragment, written with history.replaceState (never pushState: no
+// history entries), at most once per MIN_INTERVAL_MS and again after the
+// last change. The fragment this tab wrote last is remembered in
+// sessionStorage, so a reload knows the address is its own state (the
+// autosave, which is at least as new, wins) and not a link someone opened.
+
+const MIN_INTERVAL_MS = 1000;
+const SETTLE_MS = 300; // wait this long after a change before writing
+const WROTE_KEY = 'offsetlab.address.v1';
+
+let getFragment = async () => null;
+let timer = 0;
+let last = -Infinity;
+let dirty = false;
+let writing = false;
+let wrote = null;
+let enabled = false;
+
+try {
+  wrote = sessionStorage.getItem(WROTE_KEY);
+} catch {
+  wrote = null;
+}
+
+/** The fragment (without `#`) this tab last wrote, or null. */
+export function writtenFragment() {
+  return wrote;
+}
+
+/** `fragment()` resolves to the current document's fragment, or null for none. */
+export function initAddress(fragment) {
+  getFragment = fragment;
+  enabled = true;
+}
+
+/** Something in the document changed: write the address soon. */
+export function addressChanged() {
+  if (!enabled) return;
+  dirty = true;
+  schedule();
+}
+
+function schedule() {
+  if (timer || writing) return;
+  const wait = Math.max(SETTLE_MS, last + MIN_INTERVAL_MS - performance.now());
+  timer = setTimeout(write, wait);
+}
+
+async function write() {
+  timer = 0;
+  dirty = false;
+  writing = true;
+  last = performance.now();
+  try {
+    const fragment = await getFragment();
+    if (fragment && `#${fragment}` !== location.hash) {
+      history.replaceState(history.state, '', `#${fragment}`);
+      wrote = fragment;
+      try {
+        sessionStorage.setItem(WROTE_KEY, fragment);
+      } catch {
+        // Without sessionStorage a reload compares documents instead.
+      }
+      const body = document.body.dataset;
+      body.addressWrites = String(Number(body.addressWrites ?? 0) + 1);
+    }
+  } catch (error) {
+    console.warn('offsetlab: the address could not be updated:', error?.message ?? error);
+  } finally {
+    writing = false;
+    document.body.dataset.addressAt = String(Date.now());
+    if (dirty) schedule();
+  }
+}
