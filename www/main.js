@@ -59,6 +59,7 @@ let pendingView = startWork.view ?? null; // applied by the worker after the nex
 let blockCount = 0;
 let currentBlock = null;
 let setupFailed = false; // the last run refused the setup
+let viewKnown = false; // the worker has reported a view state
 
 const worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
 const post = (message) => worker.postMessage(message);
@@ -160,8 +161,10 @@ function flushRun() {
 
 /** The work as the page holds it (what autosave keeps). */
 function currentWork() {
+  // Before the worker first reports its view, the view is still the saved one.
+  const view = viewKnown ? viewState() : startWork.view ?? viewState();
   return {
-    program: editor.getText(), setup: cloneSetup(setup), setupText: setupOverride, view: viewState(),
+    program: editor.getText(), setup: cloneSetup(setup), setupText: setupOverride, view,
     example: exampleId, link: fromLink,
   };
 }
@@ -223,6 +226,7 @@ function showResult({ summary, diagnostics }) {
 }
 
 function showViewState(m) {
+  if (m.gen > 0) viewKnown = true; // a state of a run, not the empty session's
   viewReported(m.view);
   blockCount = m.blocks;
   if (m.block !== undefined) currentBlock = m.block;
@@ -231,6 +235,8 @@ function showViewState(m) {
   showState($('state-panel'), currentBlock, { blocks: blockCount });
   editor.showCurrent(currentBlock ? currentBlock.line : null, m.cause !== 'line');
   if (['view', 'step', 'pick', 'line'].includes(m.cause)) persist();
+  // A run may move the current block (a shorter program): the autosave follows.
+  else if (m.cause === 'run' && viewKnown) saveWork(currentWork());
 }
 
 function showFailure(text) {

@@ -3,7 +3,7 @@
 // playwright-core (no browser download), records console errors and page
 // exceptions, and decodes canvas screenshots to count path pixels.
 
-import { spawn } from 'node:child_process';
+import { execFileSync, spawn } from 'node:child_process';
 import { existsSync, mkdirSync, writeFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -37,15 +37,19 @@ const CHROMIUM_ARGS = [
   '--disable-quic',
 ];
 
-/** Starts the static server on a free port; resolves to { url, stop }. */
-export async function startServer() {
-  if (!existsSync(join(ROOT, 'www', 'pkg', 'offsetlab.js'))) {
+/**
+ * Starts the static server on a free port (serving www/, or `root`);
+ * resolves to { url, stop }.
+ */
+export async function startServer({ root } = {}) {
+  if (!root && !existsSync(join(ROOT, 'www', 'pkg', 'offsetlab.js'))) {
     throw new Error('www/pkg is missing: build it first (make wasm)');
   }
-  if (!existsSync(join(ROOT, 'www', 'dist', 'editor.js'))) {
+  if (!root && !existsSync(join(ROOT, 'www', 'dist', 'editor.js'))) {
     throw new Error('www/dist is missing: build it first (make page)');
   }
-  const child = spawn(process.execPath, [join(ROOT, 'scripts', 'serve.mjs'), '--port', '0'], {
+  const args = [join(ROOT, 'scripts', 'serve.mjs'), '--port', '0', ...(root ? ['--root', root] : [])];
+  const child = spawn(process.execPath, args, {
     stdio: ['ignore', 'pipe', 'inherit'],
   });
   const url = await new Promise((resolve, reject) => {
@@ -75,6 +79,22 @@ export async function startServer() {
   };
 }
 
+/** The CLI binary (target/debug/offsetlab), built once if missing. */
+export const CLI = join(ROOT, 'target', 'debug', 'offsetlab');
+
+/** Runs `offsetlab ARGS...` and returns its standard output (throws on a non-zero exit). */
+export function cli(args, { input } = {}) {
+  if (!existsSync(CLI)) {
+    execFileSync('cargo', ['build', '--quiet', '--bin', 'offsetlab'], { cwd: ROOT, stdio: 'inherit' });
+  }
+  return execFileSync(CLI, args, { cwd: ROOT, input, encoding: 'utf8', maxBuffer: 64 * 1024 * 1024 });
+}
+
+/** The document a link carries, as `offsetlab link --decode` prints it (parsed). */
+export function decodeLink(link) {
+  return JSON.parse(cli(['link', '--decode', link]));
+}
+
 /** Launches Chromium with a fresh, temporary profile. */
 export function launchBrowser() {
   return chromium.launch({
@@ -101,6 +121,13 @@ export async function openPage(browser, url, {
   if (init) await context.addInitScript(init);
   const page = await context.newPage();
   const problems = [];
+  watch(page, problems);
+  await page.goto(url);
+  return { context, page, problems };
+}
+
+/** Records every console error, page exception and failed request of `page` (and its workers) in `problems`. */
+export function watch(page, problems) {
   const onConsole = (where) => (message) => {
     if (message.type() === 'error') problems.push(`${where} console error: ${message.text()}`);
   };
@@ -112,8 +139,27 @@ export async function openPage(browser, url, {
   page.on('response', (response) => {
     if (response.status() >= 400) problems.push(`HTTP ${response.status()}: ${response.url()}`);
   });
+}
+
+/** Opens `url` in a new page of `context` (same storage), watched like the first. */
+export async function openIn(context, url, problems) {
+  const page = await context.newPage();
+  watch(page, problems);
   await page.goto(url);
-  return { context, page, problems };
+  return page;
+}
+
+/** Waits until the link in the fragment was opened or refused and its run shown; resolves to 'opened' or 'error'. */
+export async function waitForLink(page) {
+  await page.waitForFunction(() => ['opened', 'error'].includes(document.body.dataset.link), null, { timeout: 20_000 });
+  await waitForRun(page);
+  return page.evaluate(() => document.body.dataset.link);
+}
+
+/** Waits until the work is saved in localStorage, and returns it. */
+export async function savedWork(page) {
+  await page.waitForFunction(() => document.body.dataset.unsaved === undefined);
+  return page.evaluate(() => JSON.parse(localStorage.getItem('offsetlab.work.v1')));
 }
 
 /** Waits until no edit is waiting and the answer to the latest run request is shown. */
@@ -297,8 +343,8 @@ export function useBrowser() {
     await ctx.browser?.close();
     await ctx.server?.stop();
   });
-  ctx.withPage = async (body, options) => {
-    const { context, page, problems } = await openPage(ctx.browser, ctx.server.url, options);
+  ctx.withPage = async (body, options = {}) => {
+    const { context, page, problems } = await openPage(ctx.browser, ctx.server.url + (options.hash ?? ''), options);
     try {
       await waitForRun(page);
       await body(page, { context, problems });

@@ -106,6 +106,14 @@ describe('view', () => {
       await waitForView(page, (v) => v.plane === 'ZX');
       assert.equal(await page.locator('#plane').isDisabled(), true);
       assert.match(await page.locator('#summary').textContent(), /0 errors · 0 warnings · lathe, mm/);
+      // The offset table's four lathe columns fit the panel (the Z wear inputs ran past its right edge).
+      const overflow = await page.evaluate(() => {
+        const panel = document.getElementById('offsets-panel').getBoundingClientRect();
+        return [...document.querySelectorAll('#offsets input, #offsets th')]
+          .map((el) => el.getBoundingClientRect().right - panel.right)
+          .filter((d) => d > -1);
+      });
+      assert.deepEqual(overflow, [], 'every column ends inside the panel');
       const { counts } = await shootCanvas(page, 'lathe', (c) => c.centreLine > 200 && c.actualFeed > 100);
       assert.ok(counts.centreLine > 200, `centre line pixels: ${counts.centreLine}`);
       assert.ok(counts.actualFeed > 100 && counts.programmedFeed > 50, JSON.stringify(counts));
@@ -232,10 +240,10 @@ describe('layout and access', () => {
         .filter((el) => !(el.getAttribute('aria-label') || el.labels?.length || el.textContent.trim()))
         .map((el) => el.outerHTML.slice(0, 80)));
       assert.deepEqual(unnamed, []);
-      // Tab order: examples, help, undo, redo, editor, then the view's controls.
+      // Tab order: examples, open, share, help, undo, redo, editor, then the view's controls.
       await page.locator('h1').click();
       const order = [];
-      for (let i = 0; i < 14; i += 1) {
+      for (let i = 0; i < 18; i += 1) {
         await page.keyboard.press('Tab');
         order.push(await page.evaluate(() => {
           const el = document.activeElement;
