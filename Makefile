@@ -13,7 +13,7 @@ PORT ?= 8000
 CHROMEDRIVER ?= /usr/bin/chromedriver
 TIMED := scripts/timed.sh
 
-.PHONY: help setup wasm page serve test reset-logs lint test-native test-wasm test-e2e clean
+.PHONY: help setup wasm page cli serve test reset-logs lint test-native test-wasm test-e2e clean
 
 help:
 	@echo "make serve   install what is missing, build, serve http://127.0.0.1:$(PORT)/"
@@ -29,6 +29,10 @@ wasm: setup
 # The page's CodeMirror bundle (www/dist, generated, not committed).
 page: setup
 	@$(TIMED) page-build npm run --silent build:page
+
+# The CLI the end-to-end tests run to make and read links (target/debug/offsetlab).
+cli: setup
+	@$(TIMED) cli-build cargo build --bin offsetlab
 
 serve: wasm page
 	node scripts/serve.mjs --port $(PORT)
@@ -52,8 +56,8 @@ test-native: setup
 test-wasm: setup
 	@$(TIMED) wasm-contract wasm-pack test --headless --chrome --chromedriver $(CHROMEDRIVER) -- --test wasm
 
-# The page end to end in headless Chromium (needs www/pkg: make wasm).
-test-e2e: setup page
+# The page end to end in headless Chromium (needs www/pkg: make wasm; runs the CLI).
+test-e2e: setup page cli
 	@$(TIMED) e2e npm run --silent test:e2e
 
 clean:

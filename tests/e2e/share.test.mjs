@@ -16,7 +16,8 @@ import { join } from 'node:path';
 import { deflateRawSync } from 'node:zlib';
 import { describe, test } from 'node:test';
 import {
-  cli, decodeLink, openIn, savedWork, shoot, typeProgram, useBrowser, waitForLink, waitForRun, waitForView,
+  ROOT, cli, decodeLink, loadExample, openIn, savedWork, shoot, typeProgram, useBrowser, waitForLink, waitForRun,
+  waitForView,
 } from './harness.mjs';
 
 const ctx = useBrowser();
@@ -329,6 +330,38 @@ describe('the Share button', () => {
       await page.waitForFunction(() => document.body.dataset.linkError === 'setup-range');
       assert.match(await page.locator('#banner .text').textContent(), /^The file “bad\.json” could not be opened: .*999\.999/);
       assert.equal(await page.evaluate(() => window.offsetlab.program()), LATHE_PROGRAM);
+    });
+  });
+});
+
+describe('link lengths', () => {
+  test('the README table of the examples’ link lengths is what the Share panel gives', async () => {
+    const readme = readFileSync(join(ROOT, 'README.md'), 'utf8');
+    const block = readme.slice(readme.indexOf('<!-- link-lengths'), readme.indexOf('<!-- /link-lengths -->'));
+    const rows = new Map(block.split('\n').filter((l) => l.startsWith('| ') && !l.startsWith('| example') && !l.startsWith('| ---'))
+      .map((l) => l.split('|').map((c) => c.trim())).map(([, title, , compact, plain]) => [title, {
+        compact: Number(compact.replace(/,/g, '')), plain: Number(plain.replace(/,/g, '')),
+      }]));
+    await withPage(async (page) => {
+      const titles = await page.locator('#example option').evaluateAll((os) => os.map((o) => [o.value, o.textContent]));
+      assert.equal(rows.size, titles.length, 'a row per example (node scripts/link-lengths.mjs --write)');
+      // The README's lengths are for the default base http://127.0.0.1:8000/.
+      const extra = ctx.server.url.length - 'http://127.0.0.1:8000/'.length;
+      const serial = () => page.evaluate(() => Number(document.body.dataset.shareSerial ?? 0));
+      const refreshed = async (action) => {
+        const before = await serial();
+        await action();
+        await page.waitForFunction((n) => Number(document.body.dataset.shareSerial ?? 0) > n, before);
+        return (await page.locator('#share-link').inputValue()).length - extra;
+      };
+      for (const [id, title] of titles) {
+        await loadExample(page, id);
+        const compact = await refreshed(() => page.locator('#share-open').click());
+        const plain = await refreshed(() => page.locator('#share-plain').check());
+        assert.deepEqual({ compact, plain }, rows.get(title), title);
+        await refreshed(() => page.locator('#share-plain').uncheck());
+        await page.locator('#share-close').click();
+      }
     });
   });
 });

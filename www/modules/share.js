@@ -39,7 +39,13 @@ export async function openShare() {
   panel.hidden = false;
   $('share-open').setAttribute('aria-expanded', 'true');
   await refresh({ copyIt: true });
-  $('share-link').focus();
+  const field = $('share-link');
+  if (document.body.dataset.copied !== 'false') {
+    // Copied (or nothing to copy): show the link from its start.
+    field.focus();
+    field.setSelectionRange(0, 0);
+    field.scrollLeft = 0;
+  }
 }
 
 function closeShare() {
@@ -94,6 +100,7 @@ async function refresh({ copyIt }) {
     $('share-iframe-row').hidden = false;
   }
   document.body.dataset.share = plain ? 'plain' : 'compact';
+  document.body.dataset.shareSerial = String(mine);
   if (long) {
     status.textContent = 'Not copied: the link is too long to share safely.';
   } else if (copyIt) {
