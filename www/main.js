@@ -539,11 +539,21 @@ const centreZoom = (factor) => {
 initStepper(post, { fit: () => post({ type: 'view', op: 'fit' }), zoom: centreZoom, toggleHelp });
 
 // --- share, export and the address bar
-/** The current document's compact fragment (no `#`), or null while the setup is refused. */
+/** Programs longer than this are not put in the address bar (their link would be too long to be of use there). */
+const ADDRESS_MAX_PROGRAM = 256 * 1024;
+/** Links longer than this leave the address bar without a fragment. */
+const ADDRESS_MAX_LINK = 32 * 1024;
+/**
+ * The current document's compact fragment (no `#`); '' for none (a program
+ * too long for the address bar); null to leave the address as it is (the
+ * setup is refused).
+ */
 async function currentFragment() {
+  if (editor.view.state.doc.length > ADDRESS_MAX_PROGRAM) return '';
   flushRun();
-  const answer = await call('document', { base, embed: false });
+  const answer = await call('document', { base, forms: ['link'] });
   if (answer.setupFailed) return null;
+  if (answer.link.length > ADDRESS_MAX_LINK) return '';
   return answer.link.slice(answer.link.indexOf('#') + 1);
 }
 initShare({ call, flush: flushRun, program: () => editor.getText(), base });
@@ -572,7 +582,7 @@ window.offsetlab = Object.freeze({
   selection: () => editor.selection(),
   setup: () => cloneSetup(setup),
   embed: EMBED,
-  /** The current document and its links: { document, link, plain, json } (a Promise). */
+  /** The current document and its forms: { document, link, plain, json } (a Promise). */
   document: () => {
     flushRun();
     return call('document', { base, embed: false });

@@ -9,7 +9,7 @@
 //      run {gen, program, setup} · theme {name}
 //      view {op: zoom {x, y, factor} | pan {dx, dy} | fit | plane {plane} | set {view}}
 //      step {index} · pick {x, y, tolerance} · line {line}
-//      call {id, op, ...}: op document {base, embed} · decode {text, base}
+//      call {id, op, ...}: op document {base, embed, forms} · decode {text, base}
 //        · read {text, base} · canonical {document} · export {format}
 // Out: result {gen, summary, diagnostics} · state {gen, view, step, blocks, block, cause}
 //      drawn {width, height, dpr} · failure {gen, message} · reply {id, value | error}
@@ -166,26 +166,23 @@ async function call(message) {
   self.postMessage(reply);
 }
 
-/** A document's links: compact, plain (with `base#`) and its length. */
-function links(document, base, embed) {
-  const link = encode_link(base, document, embed);
-  const plain = `${base}#${encode_plain(document, embed)}`;
-  return { link, plain };
-}
-
 async function answer(message) {
   switch (message.op) {
     case 'document': {
-      // The current document and its links; with a refused setup the
-      // session holds the default one, so no link is made from it.
+      // The current document and the forms asked for (`forms`: any of
+      // link, plain, json; all by default): the compact link, the plain one
+      // (with `base#`), the JSON file. With a refused setup the session
+      // holds the default one, so nothing is made from it.
       const document = session.document();
-      if (setupFailed) return { document, setupFailed: true, limits: link_limits() };
-      return {
-        document,
-        ...links(document, message.base, Boolean(message.embed)),
-        json: document_json(document),
-        limits: link_limits(),
-      };
+      const limits = link_limits();
+      if (setupFailed) return { document, setupFailed: true, limits };
+      const forms = message.forms ?? ['link', 'plain', 'json'];
+      const embed = Boolean(message.embed);
+      const out = { document, limits };
+      if (forms.includes('link')) out.link = encode_link(message.base, document, embed);
+      if (forms.includes('plain')) out.plain = `${message.base}#${encode_plain(document, embed)}`;
+      if (forms.includes('json')) out.json = document_json(document);
+      return out;
     }
     case 'decode': {
       const decoded = decode_link(message.text);

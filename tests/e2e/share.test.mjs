@@ -411,6 +411,15 @@ describe('the address bar', () => {
       await waitForRun(page);
       assert.equal(await page.evaluate(() => window.offsetlab.program()), 'G00 X7.;\n');
       assert.equal(await page.locator('#banner').isVisible(), false);
+      // A program too long for the address bar (over 256 KiB) leaves it without a fragment.
+      const big = `G90 G00 X0 Y0\n${'G01 X10. Y10. F500.\nG01 X0 Y0\n'.repeat(9000)}M30\n`;
+      assert.ok(big.length > 256 * 1024);
+      const writes = Number(await page.evaluate(() => document.body.dataset.addressWrites ?? 0));
+      const chooser = page.waitForEvent('filechooser');
+      await page.locator('#open-file-button').click();
+      await (await chooser).setFiles(file('big.nc', big));
+      await page.waitForFunction((n) => Number(document.body.dataset.addressWrites ?? 0) > n, writes, { timeout: 10_000 });
+      assert.equal(await page.evaluate(() => location.href), ctx.server.url, 'no fragment');
     }, {
       init: () => {
         window.__address = [];

@@ -28,7 +28,10 @@ export function writtenFragment() {
   return wrote;
 }
 
-/** `fragment()` resolves to the current document's fragment, or null for none. */
+/**
+ * `fragment()` resolves to the current document's fragment; '' to write the
+ * address without one; null to leave it as it is.
+ */
 export function initAddress(fragment) {
   getFragment = fragment;
   enabled = true;
@@ -54,8 +57,10 @@ async function write() {
   last = performance.now();
   try {
     const fragment = await getFragment();
-    if (fragment && `#${fragment}` !== location.hash) {
-      history.replaceState(history.state, '', `#${fragment}`);
+    const hash = fragment ? `#${fragment}` : '';
+    if (fragment !== null && hash !== location.hash) {
+      // No fragment at all (not even `#`) when the document is too long for the address.
+      history.replaceState(history.state, '', hash || location.href.split('#')[0]);
       wrote = fragment;
       try {
         sessionStorage.setItem(WROTE_KEY, fragment);

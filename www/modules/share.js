@@ -10,7 +10,7 @@ import { download, fileStem } from './files.js';
 
 const $ = (id) => document.getElementById(id);
 let ctx = null;
-let latest = null; // the last answer of the worker: { link, plain, json, limits } or { setupFailed }
+let latest = null; // the last answer of the worker: { link | plain, limits } or { setupFailed } or { error }
 let serial = 0;
 
 const number = (n) => n.toLocaleString('en-US');
@@ -65,7 +65,7 @@ async function refresh({ copyIt }) {
   status.textContent = 'Making the link…';
   let answer;
   try {
-    answer = await ctx.call('document', { base: ctx.base, embed });
+    answer = await ctx.call('document', { base: ctx.base, embed, forms: [plain ? 'plain' : 'link'] });
   } catch (error) {
     answer = { error: error.message };
   }
@@ -132,7 +132,10 @@ async function copy(text) {
   }
 }
 
-function downloadDocument() {
-  if (!latest?.json) return;
-  download(latest.json, `${fileStem(ctx.program())}-document.json`, 'application/json');
+async function downloadDocument() {
+  if (!latest || latest.error || latest.setupFailed) return;
+  ctx.flush();
+  const { json, setupFailed } = await ctx.call('document', { base: ctx.base, forms: ['json'] });
+  if (setupFailed) return;
+  download(json, `${fileStem(ctx.program())}-document.json`, 'application/json');
 }
