@@ -4,6 +4,7 @@
 //!
 //! Crash inputs live in `tests/data/fuzz/<target>/`, one file each, as the
 //! fuzzer wrote them (minimized); a new one is replayed by dropping it there.
+#![cfg(not(target_arch = "wasm32"))]
 
 #[path = "../fuzz/common/mod.rs"]
 mod fuzz_common;
