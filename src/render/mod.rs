@@ -62,6 +62,9 @@ const MIN_SCALE_PX: f64 = 70.0;
 const MIN_SEGMENT_PX: f64 = 0.5;
 /// Legend geometry.
 const LEGEND_WIDTH: f64 = 218.0;
+const LEGEND_WIDTH_COMPACT: f64 = 136.0;
+/// Views narrower or lower than this (CSS pixels) get the short legend.
+const COMPACT_BELOW: (f64, f64) = (720.0, 440.0);
 const LEGEND_ROW: f64 = 17.0;
 const LEGEND_PAD: f64 = 8.0;
 
@@ -84,6 +87,8 @@ pub struct Frame {
     pub theme: &'static Theme,
     /// The legend has a row for the tool marker (when stepping).
     pub tool_row: bool,
+    /// The short legend of small views (embedded lessons, phones).
+    pub compact: bool,
 }
 
 impl Frame {
@@ -116,9 +121,17 @@ impl Frame {
         } else {
             1.0
         };
-        let rows = legend_rows(plane, theme, tool_row).len() as f64 + 1.0;
+        // A full legend would take a third of a small view and squeeze the
+        // path beside it; small views get the short one.
+        let compact = width < COMPACT_BELOW.0 || height < COMPACT_BELOW.1;
+        let rows = legend_rows(plane, theme, tool_row, compact).len() as f64 + 1.0;
         let legend_h = rows * LEGEND_ROW + 2.0 * LEGEND_PAD;
-        let legend = Rect::new(width - LEGEND_WIDTH - 10.0, 10.0, LEGEND_WIDTH, legend_h);
+        let legend_w = if compact {
+            LEGEND_WIDTH_COMPACT
+        } else {
+            LEGEND_WIDTH
+        };
+        let legend = Rect::new(width - legend_w - 10.0, 10.0, legend_w, legend_h);
         let (l, r, t, b) = MARGIN;
         let full = Rect::new(l, t, (width - l - r).max(1.0), (height - t - b).max(1.0));
         let beside = Rect::new(l, t, legend.x - 12.0 - l, full.h);
@@ -155,6 +168,7 @@ impl Frame {
             transform,
             theme,
             tool_row,
+            compact,
         }
     }
 
@@ -613,19 +627,38 @@ enum Key {
     Tool,
 }
 
-fn legend_rows(plane: Plane, t: &Theme, tool_row: bool) -> Vec<(Key, &'static str)> {
-    let mut rows = vec![
-        (Key::Line(t.actual_feed()), "actual, feed"),
-        (Key::Line(t.actual_rapid()), "actual, rapid"),
-        (Key::Line(t.programmed_feed()), "programmed, feed"),
-        (Key::Line(t.programmed_rapid()), "programmed, rapid"),
-        (Key::Arrow(t.arrow()), "programmed → actual end"),
-    ];
+fn legend_rows(plane: Plane, t: &Theme, tool_row: bool, compact: bool) -> Vec<(Key, &'static str)> {
+    let mut rows = if compact {
+        vec![
+            (Key::Line(t.actual_feed()), "actual"),
+            (Key::Line(t.programmed_feed()), "programmed"),
+            (Key::Line(t.actual_rapid()), "rapid"),
+            (Key::Arrow(t.arrow()), "offset"),
+        ]
+    } else {
+        vec![
+            (Key::Line(t.actual_feed()), "actual, feed"),
+            (Key::Line(t.actual_rapid()), "actual, rapid"),
+            (Key::Line(t.programmed_feed()), "programmed, feed"),
+            (Key::Line(t.programmed_rapid()), "programmed, rapid"),
+            (Key::Arrow(t.arrow()), "programmed → actual end"),
+        ]
+    };
     if plane.has_centre_line() {
-        rows.push((Key::Line(t.centre()), "centre line"));
+        rows.push((
+            Key::Line(t.centre()),
+            if compact { "centre" } else { "centre line" },
+        ));
     }
     if tool_row {
-        rows.push((Key::Tool, "tool at current block"));
+        rows.push((
+            Key::Tool,
+            if compact {
+                "tool"
+            } else {
+                "tool at current block"
+            },
+        ));
     }
     rows
 }
@@ -639,7 +672,11 @@ fn draw_legend(s: &mut impl Surface, f: &Frame, tp: &Toolpath) {
         MachineKind::Mill => "mill",
         MachineKind::Lathe => "lathe",
     };
-    let title = format!("{machine} · {} · {}", f.plane.name(), units_name(tp));
+    let title = if f.compact {
+        format!("{} · {}", f.plane.name(), units_name(tp))
+    } else {
+        format!("{machine} · {} · {}", f.plane.name(), units_name(tp))
+    };
     let label = t.label_font();
     let bold = Font {
         bold: true,
@@ -647,7 +684,7 @@ fn draw_legend(s: &mut impl Surface, f: &Frame, tp: &Toolpath) {
     };
     let mut y = r.y + LEGEND_PAD + LEGEND_ROW - 4.0;
     s.fill_text(&title, r.x + LEGEND_PAD, y, &bold);
-    for (key, text) in legend_rows(f.plane, t, f.tool_row) {
+    for (key, text) in legend_rows(f.plane, t, f.tool_row, f.compact) {
         y += LEGEND_ROW;
         let mid = y - 4.0;
         let (x0, x1) = (r.x + LEGEND_PAD, r.x + LEGEND_PAD + 30.0);

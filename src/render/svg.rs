@@ -343,11 +343,16 @@ M30;
         };
         let r = run("G50 X120. Z60.\nG00 X50. Z3.\nG01 Z-20. F0.2\n", &setup);
         assert!(!r.has_errors(), "{:?}", r.diagnostics);
-        let svg = render(&Toolpath::from_run(&r), 600.0, 400.0);
+        let tp = Toolpath::from_run(&r);
+        let svg = render(&tp, 900.0, 600.0);
         assert!(svg.contains("lathe · ZX · mm"));
         assert!(svg.contains(">X (radius)</text>"));
         assert!(svg.contains(">centre line</text>"));
         assert!(svg.contains(style::CENTRE_STROKE.color));
+        // A small view (an embedded lesson) gets the short legend.
+        let small = render(&tp, 600.0, 400.0);
+        assert!(small.contains(">ZX · mm</text>") && small.contains(">centre</text>"));
+        assert!(!small.contains("programmed → actual end"));
     }
 
     #[test]
