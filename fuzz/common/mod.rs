@@ -23,7 +23,7 @@ pub const HEADER: usize = 44;
 
 /// Moves one fuzz run may record: far below the default limit so that a
 /// run stays fast, and still reached by repeated cycles.
-pub const FUZZ_MAX_MOVES: usize = 100_000;
+pub const FUZZ_MAX_MOVES: usize = 10_000;
 
 fn byte(h: &[u8], i: usize) -> u8 {
     h.get(i).copied().unwrap_or(0)
