@@ -18,10 +18,11 @@ use serde_json::Value;
 
 /// Moves a run in this process may record: the runaway cycle file reaches
 /// it, and the binary's `check` runs it to the default limit.
-const MAX_MOVES: usize = 200_000;
+const MAX_MOVES: usize = 50_000;
 
-/// Time one file may take (debug build, both setups, the binary too).
-const TIME_LIMIT: Duration = Duration::from_secs(60);
+/// Time one file may take (debug build, both setups, the binary too), with
+/// room for a loaded machine: a hang or a quadratic path takes far longer.
+const TIME_LIMIT: Duration = Duration::from_secs(180);
 
 fn corpus() -> Vec<PathBuf> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/hostile");
@@ -256,4 +257,36 @@ fn markup_in_a_program_is_only_ever_text_in_the_json() {
         .map(|d| d["message"].as_str().unwrap())
         .collect();
     assert!(messages.iter().any(|m| m.contains('<')), "{messages:?}");
+}
+
+/// Messages show invisible characters escaped (`'\u{feff}'`, `'\u{200b}'`,
+/// `'\u{1b}'`), so a byte order mark or a zero-width space is visible and a
+/// bidirectional override cannot reorder the text a message is shown in.
+#[test]
+fn messages_carry_no_invisible_or_control_characters() {
+    for path in corpus() {
+        let bytes = std::fs::read(&path).unwrap();
+        let text = String::from_utf8_lossy(&bytes);
+        let run = offsetlab::run(&text, &Setup::default());
+        for d in &run.diagnostics {
+            let bad = d.message.chars().find(|&c| {
+                c.is_ascii_control() || (!c.is_ascii() && c.escape_debug().nth(1).is_some())
+            });
+            assert!(
+                bad.is_none(),
+                "{}: {:?} in {}",
+                path.display(),
+                bad,
+                d.message
+            );
+        }
+    }
+    let bom = codes("utf8-bom.nc");
+    assert_eq!(bom, [("unexpected-character", 1)]);
+    let run = offsetlab::run("\u{feff}G00 X1.", &Setup::default());
+    assert!(
+        run.diagnostics[0]
+            .message
+            .contains(r"'\u{feff}' (a byte order mark)")
+    );
 }

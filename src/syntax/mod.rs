@@ -657,7 +657,13 @@ fn unexpected_message(ch: char) -> String {
         '/' => "`/` (optional block skip) must start the block".to_string(),
         '%' => "`%` marks the tape start or end and must be alone on its line".to_string(),
         ')' => "`)` closes no comment".to_string(),
-        c if c.is_control() => format!("character {:?} is not part of a program", c),
+        '\u{feff}' => "character '\\u{feff}' (a byte order mark) is not part of a program: save the file as UTF-8 without BOM".to_string(),
+        // Controls and invisible characters (zero-width, bidirectional
+        // overrides, combining marks) are written escaped, so that the
+        // message shows them and cannot reorder the text around it.
+        c if c.is_control() || c.escape_debug().nth(1).is_some() => {
+            format!("character {:?} is not part of a program", c)
+        }
         c => format!("`{c}` is not part of a word"),
     }
 }
