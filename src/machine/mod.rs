@@ -494,20 +494,33 @@ impl<'s> Machine<'s> {
             to_plane(act0),
             to_plane(req.actual_end),
         );
-        let (prog, act) = match req.radius {
-            Some((r, dr)) => (
-                arc::from_radius(p0, p1, r, ccw, tol),
-                arc::from_radius(a0, a1, r + dr, ccw, tol),
-            ),
+        // When the offsets only move the arc (the same vector at both ends,
+        // nothing changed by G45–G48: nearly every arc), the actual circle is
+        // the programmed one moved by that vector; solving it again would
+        // only repeat the work.
+        let shift = [a0[0] - p0[0], a0[1] - p0[1]];
+        let moved = (a1[0] - p1[0] - shift[0]).abs() < 1e-9
+            && (a1[1] - p1[1] - shift[1]).abs() < 1e-9
+            && req.center_change == [0.0; 3]
+            && req.radius.is_none_or(|(_, dr)| dr == 0.0);
+        let prog = match req.radius {
+            Some((r, _)) => arc::from_radius(p0, p1, r, ccw, tol),
             None => {
                 let c = req.center;
+                arc::from_center(p0, p1, [p0[0] + c[ia], p0[1] + c[ib]], ccw, tol)
+            }
+        };
+        let act = match (moved, &prog, req.radius) {
+            (true, Ok(circle), _) => Ok(Circle {
+                center: [circle.center[0] + shift[0], circle.center[1] + shift[1]],
+                ..*circle
+            }),
+            (_, _, Some((r, dr))) => arc::from_radius(a0, a1, r + dr, ccw, tol),
+            (_, _, None) => {
+                let c = req.center;
                 let dc = req.center_change;
-                let pc = [p0[0] + c[ia], p0[1] + c[ib]];
                 let ac = [a0[0] + c[ia] + dc[ia], a0[1] + c[ib] + dc[ib]];
-                (
-                    arc::from_center(p0, p1, pc, ccw, tol),
-                    arc::from_center(a0, a1, ac, ccw, tol),
-                )
+                arc::from_center(a0, a1, ac, ccw, tol)
             }
         };
         let unit = self.units();
