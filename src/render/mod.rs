@@ -62,7 +62,7 @@ const MIN_SCALE_PX: f64 = 70.0;
 const MIN_SEGMENT_PX: f64 = 0.5;
 /// Legend geometry.
 const LEGEND_WIDTH: f64 = 218.0;
-const LEGEND_WIDTH_COMPACT: f64 = 136.0;
+const LEGEND_WIDTH_COMPACT: f64 = 150.0;
 /// Views narrower or lower than this (CSS pixels) get the short legend.
 const COMPACT_BELOW: (f64, f64) = (720.0, 440.0);
 const LEGEND_ROW: f64 = 17.0;
@@ -672,11 +672,9 @@ fn draw_legend(s: &mut impl Surface, f: &Frame, tp: &Toolpath) {
         MachineKind::Mill => "mill",
         MachineKind::Lathe => "lathe",
     };
-    let title = if f.compact {
-        format!("{} · {}", f.plane.name(), units_name(tp))
-    } else {
-        format!("{machine} · {} · {}", f.plane.name(), units_name(tp))
-    };
+    // The title names the machine in both legends: an exported image is
+    // read without the page around it.
+    let title = format!("{machine} · {} · {}", f.plane.name(), units_name(tp));
     let label = t.label_font();
     let bold = Font {
         bold: true,

@@ -292,6 +292,32 @@ M30;
     }
 
     #[test]
+    fn small_views_get_the_short_legend_still_naming_machine_plane_and_units() {
+        // A 496 x 550 view (the page at 1280 x 800) or an embedded lesson:
+        // four short rows instead of five long ones, the title unchanged.
+        let svg = render(&square(), 496.0, 550.0);
+        let legend = group(&svg, "legend");
+        for row in [
+            "mill · XY · mm",
+            ">actual</text>",
+            ">programmed</text>",
+            ">rapid</text>",
+            ">offset</text>",
+        ] {
+            assert!(legend.contains(row), "{row}: {legend}");
+        }
+        assert!(!legend.contains("actual, feed"));
+        // The legend box stays inside the view and the path clear of it.
+        let width: f64 = legend
+            .split("width=\"")
+            .nth(1)
+            .and_then(|w| w.split('"').next())
+            .and_then(|w| w.parse().ok())
+            .expect("legend rectangle");
+        assert!(width < 496.0 / 3.0, "{width}");
+    }
+
+    #[test]
     fn actual_square_is_offset_outward_on_screen() {
         // Programmed square 0..80 x 0..50, actual -6..86 x -6..56: the actual
         // feed path spans more pixels than the programmed one.
@@ -351,7 +377,7 @@ M30;
         assert!(svg.contains(style::CENTRE_STROKE.color));
         // A small view (an embedded lesson) gets the short legend.
         let small = render(&tp, 600.0, 400.0);
-        assert!(small.contains(">ZX · mm</text>") && small.contains(">centre</text>"));
+        assert!(small.contains(">lathe · ZX · mm</text>") && small.contains(">centre</text>"));
         assert!(!small.contains("programmed → actual end"));
     }
 

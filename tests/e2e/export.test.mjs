@@ -107,14 +107,19 @@ describe('export', () => {
       assert.equal(parsed.actual, 1);
       assert.equal(parsed.programmed, 1);
       assert.ok(parsed.paths > 0, 'the actual path is drawn');
-      for (const entry of ['actual, feed', 'actual, rapid', 'programmed, feed', 'programmed, rapid', 'mill · XY · mm']) {
+      // The SVG is the view as shown: at 1280 x 800 the view is under 720 px
+      // wide and gets the short legend (src/render/mod.rs COMPACT_BELOW).
+      const box = await page.locator('#view').boundingBox();
+      const entries = box.width < 720 || box.height < 440
+        ? ['mill · XY · mm', 'actual', 'programmed', 'rapid', 'offset']
+        : ['mill · XY · mm', 'actual, feed', 'actual, rapid', 'programmed, feed', 'programmed, rapid'];
+      for (const entry of entries) {
         assert.ok(parsed.legend.includes(entry), `legend has “${entry}”: ${parsed.legend}`);
       }
 
       const png = await exportAs(page, 'png');
       assert.equal(png.name, 'O2001.png');
       const image = decode(readFileSync(png.path));
-      const box = await page.locator('#view').boundingBox();
       assert.equal(image.width, Math.round(box.width) * 2, 'device pixels (2x)');
       assert.equal(image.height, Math.round(box.height) * 2);
       const counts = countColors(image);
