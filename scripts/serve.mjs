@@ -1,7 +1,11 @@
 #!/usr/bin/env node
 // A dependency-free static server for www/ (the page, its modules and the
 // wasm package), with the MIME types browsers insist on for modules and
-// wasm, and no caching so a rebuilt package is always picked up.
+// wasm, and no caching so a rebuilt package is always picked up. The
+// Content-Security-Policy of <root>/index.html's <meta> tag is also sent as
+// an HTTP header with every response (one policy, written once in the
+// page; the header covers the worker's script too, which a <meta> cannot).
+// A root without one (the tests' lesson-page fixtures) gets no policy.
 //
 //   node scripts/serve.mjs [--port 8000] [--host 127.0.0.1] [--root www]
 //
@@ -9,7 +13,7 @@
 // first line printed is "offsetlab: serving <root> on http://HOST:PORT/".
 
 import { createServer } from 'node:http';
-import { createReadStream } from 'node:fs';
+import { createReadStream, readFileSync } from 'node:fs';
 import { stat } from 'node:fs/promises';
 import { extname, join, normalize, resolve, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -45,6 +49,20 @@ if (!Number.isInteger(port) || port < 0 || port > 65535) {
   console.error(`offsetlab: bad port ${JSON.stringify(String(port))}`);
   process.exit(2);
 }
+
+/** The policy of the root's index.html <meta http-equiv="Content-Security-Policy">, or null. */
+function pagePolicy() {
+  let html;
+  try {
+    html = readFileSync(join(root, 'index.html'), 'utf8');
+  } catch {
+    return null;
+  }
+  const meta = /<meta\s+http-equiv="Content-Security-Policy"\s+content="([^"]*)"/i.exec(html);
+  return meta ? meta[1].replace(/\s+/g, ' ').trim() : null;
+}
+const policy = pagePolicy();
+const security = policy ? { 'Content-Security-Policy': policy } : {};
 
 function send(res, status, text) {
   res.writeHead(status, { 'Content-Type': 'text/plain; charset=utf-8', 'Cache-Control': 'no-store' });
@@ -92,6 +110,7 @@ async function handle(req, res) {
     'Content-Length': info.size,
     'Cache-Control': 'no-cache, no-store, must-revalidate',
     'X-Content-Type-Options': 'nosniff',
+    ...security,
   });
   if (req.method === 'HEAD') {
     res.end();

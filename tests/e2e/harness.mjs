@@ -295,18 +295,22 @@ export async function viewOf(page) {
   return page.evaluate(() => window.offsetlab.viewState());
 }
 
-/** Waits until the worker reports a view state for which `predicate(view)` holds. */
-export async function waitForView(page, predicate, arg) {
-  await page.waitForFunction(
-    ([source, a]) => {
-      const v = document.body.dataset.view;
-      // eslint-disable-next-line no-new-func
-      return v !== undefined && new Function('v', 'a', `return (${source})(v, a);`)(JSON.parse(v), a);
-    },
-    [predicate.toString(), arg],
-    { timeout: 10_000 },
-  );
-  return viewOf(page);
+/**
+ * Waits until the worker reports a view state for which `predicate(view, arg)`
+ * holds. The predicate runs here in Node, polling the page's `data-view`: the
+ * page's Content-Security-Policy forbids `eval` and `new Function`, so it
+ * cannot be compiled inside the page.
+ */
+export async function waitForView(page, predicate, arg, { timeout = 10_000 } = {}) {
+  const deadline = Date.now() + timeout;
+  for (;;) {
+    const text = await page.evaluate(() => document.body.dataset.view);
+    if (text !== undefined && predicate(JSON.parse(text), arg)) return viewOf(page);
+    if (Date.now() > deadline) {
+      throw new Error(`waitForView: ${predicate} did not hold within ${timeout} ms (last view ${text})`);
+    }
+    await new Promise((resolve) => setTimeout(resolve, 20));
+  }
 }
 
 /** Loads a built-in example from the menu and waits for its run. */
