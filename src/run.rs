@@ -3,11 +3,13 @@
 //! program; execution stops at the first error, parse or run, the way a
 //! control stops at an alarm (spec 2).
 
+use std::sync::Arc;
+
 use crate::diag::{self, Diagnostic};
 use crate::machine::{Flow, Machine, Out};
 use crate::report::{BlockReport, End, Event, Run, include_move};
 use crate::setup::{MachineKind, Setup};
-use crate::syntax::{Address, Block, Blocks, ParseOptions};
+use crate::syntax::{Address, Block, Blocks, ParseOptions, Resume};
 
 /// Most moves one run records by default; past this the run stops with an
 /// error (a move is about 200 bytes: 5 million is about 1 GB).
@@ -33,6 +35,11 @@ pub struct RunOptions {
     /// (counted whether or not their reports are kept, so `check` and `run`
     /// stop at the same block).
     pub max_blocks: usize,
+    /// Keep a [`Checkpoint`] before every this many blocks (0: none), and
+    /// each block's line, so that any block's report can be made again by
+    /// [`report_at`] instead of being kept: a few bytes per block instead
+    /// of a few hundred (the page's way to hold a million-block run).
+    pub checkpoint_every: u32,
 }
 
 impl Default for RunOptions {
@@ -42,13 +49,143 @@ impl Default for RunOptions {
             keep_moves: true,
             max_moves: MAX_MOVES,
             max_blocks: MAX_BLOCKS,
+            checkpoint_every: 0,
         }
+    }
+}
+
+/// Everything needed to go on running a program before block `index`: the
+/// parser's place and the machine's state. A machine is a few hundred bytes
+/// and shares the setup, so a checkpoint every thousand blocks costs well
+/// under a byte per block.
+#[derive(Clone, Debug)]
+pub struct Checkpoint {
+    /// The first block run after this point.
+    pub index: u32,
+    /// Moves made before this point.
+    pub move_count: usize,
+    parser: Resume,
+    machine: Machine,
+}
+
+/// Checkpoints of the same program are equal when they stand at the same
+/// place (the machine state there follows from the program).
+impl PartialEq for Checkpoint {
+    fn eq(&self, other: &Self) -> bool {
+        (self.index, self.move_count, self.parser.offset())
+            == (other.index, other.move_count, other.parser.offset())
     }
 }
 
 /// Runs a program with a setup, keeping every block report.
 pub fn run(text: &str, setup: &Setup) -> Run {
     run_with(text, setup, RunOptions::default())
+}
+
+/// What one step of a [`Runner`] did.
+enum Step {
+    /// A block ran (its report is in the runner's `out` and machine).
+    Ran(Flow),
+    /// A block was read but not run (skipped, or after the run stopped).
+    Passed,
+    /// The run stops here: a parse error, a run error or a limit.
+    Stopped(Option<Diagnostic>),
+}
+
+/// The block loop shared by a whole run and a run resumed from a
+/// checkpoint, so both execute exactly the same way.
+struct Runner<'t> {
+    parser: Blocks<'t>,
+    machine: Machine,
+    block: Block,
+    out: Out,
+    options: RunOptions,
+    block_skip: bool,
+    /// Blocks executed so far.
+    index: u32,
+    /// Moves made so far.
+    move_count: usize,
+    /// The run has stopped (an error, a limit, M02/M30): the rest is only
+    /// parsed, for its diagnostics.
+    stopped: bool,
+}
+
+impl<'t> Runner<'t> {
+    fn new(text: &'t str, setup: &Setup, options: RunOptions) -> Runner<'t> {
+        Runner {
+            parser: Blocks::new(text, ParseOptions::from(setup)),
+            machine: Machine::new(Arc::new(setup.clone())),
+            block: Block::default(),
+            out: Out::default(),
+            options,
+            block_skip: setup.settings.block_skip,
+            index: 0,
+            move_count: 0,
+            stopped: false,
+        }
+    }
+
+    fn resume(text: &'t str, setup: &Setup, options: RunOptions, at: &Checkpoint) -> Runner<'t> {
+        Runner {
+            parser: Blocks::resume(text, ParseOptions::from(setup), at.parser),
+            machine: at.machine.clone(),
+            index: at.index,
+            move_count: at.move_count,
+            ..Runner::new("", setup, options)
+        }
+    }
+
+    fn checkpoint(&self) -> Checkpoint {
+        Checkpoint {
+            index: self.index,
+            move_count: self.move_count,
+            parser: self.parser.resume_point(),
+            machine: self.machine.clone(),
+        }
+    }
+
+    /// Reads and runs the next block; None at the end of the program.
+    fn step(&mut self) -> Option<Step> {
+        if !self.parser.next_into(&mut self.block) {
+            return None;
+        }
+        let block = &self.block;
+        if self.stopped {
+            return Some(Step::Passed);
+        }
+        if block.error {
+            self.stopped = true;
+            return Some(Step::Stopped(None));
+        }
+        if block.skip && self.block_skip {
+            return Some(Step::Passed);
+        }
+        self.out.clear();
+        if self.index as usize >= self.options.max_blocks {
+            self.stopped = true;
+            return Some(Step::Stopped(Some(Diagnostic::error(
+                "too-many-blocks",
+                block.span,
+                format!(
+                    "the program runs more than {} blocks (see the limits in the README); the run stops here",
+                    self.options.max_blocks
+                ),
+            ))));
+        }
+        self.machine.moves_left = self.options.max_moves.saturating_sub(self.move_count);
+        match self.machine.execute(block, self.index, &mut self.out) {
+            Ok(flow) => {
+                self.index += 1;
+                self.move_count += self.out.moves.len();
+                self.stopped = flow == Flow::End;
+                Some(Step::Ran(flow))
+            }
+            Err(d) => {
+                self.stopped = true;
+                Some(Step::Stopped(Some(d)))
+            }
+        }
+    }
 }
 
 /// Runs a program with a setup.
@@ -65,6 +202,8 @@ pub fn run_with(text: &str, setup: &Setup, options: RunOptions) -> Run {
         move_count: 0,
         bounds: None,
         end: End::Completed,
+        checkpoints: Vec::new(),
+        lines: Vec::new(),
     };
     let mut setup_problems = setup.validate();
     setup_problems.extend(crate::syntax::check_size(text));
@@ -73,66 +212,42 @@ pub fn run_with(text: &str, setup: &Setup, options: RunOptions) -> Run {
         result.end = End::Error { line: 0 };
         return result;
     }
-    let mut parser = Blocks::new(text, ParseOptions::from(setup));
-    let mut machine = Machine::new(setup);
-    let mut block = Block::default();
-    let mut out = Out::default();
+    let mut r = Runner::new(text, setup, options);
     let mut run_diagnostics: Vec<Diagnostic> = Vec::new();
-    let mut stopped = false;
     let mut units_known = false;
     let mut registers = std::collections::BTreeSet::new();
-    while parser.next_into(&mut block) {
-        if stopped {
-            continue;
+    let every = options.checkpoint_every;
+    loop {
+        if !r.stopped
+            && every > 0
+            && r.index.is_multiple_of(every)
+            && r.index / every >= result.checkpoints.len() as u32
+        {
+            result.checkpoints.push(r.checkpoint());
         }
-        if block.error {
-            stopped = true;
-            result.end = End::Error {
-                line: block.span.line,
-            };
-            continue;
-        }
-        if block.skip && setup.settings.block_skip {
-            continue;
-        }
-        out.clear();
-        let index = result.block_count;
-        if index as usize >= options.max_blocks {
-            stopped = true;
-            result.end = End::Error {
-                line: block.span.line,
-            };
-            run_diagnostics.push(Diagnostic::error(
-                "too-many-blocks",
-                block.span,
-                format!(
-                    "the program runs more than {} blocks (see the limits in the README); the run stops here",
-                    options.max_blocks
-                ),
-            ));
-            continue;
-        }
-        machine.moves_left = options.max_moves.saturating_sub(result.move_count);
-        let flow = match machine.execute(&block, index, &mut out) {
-            Ok(flow) => flow,
-            Err(d) => {
+        let index = r.index;
+        let first_move = r.move_count;
+        let Some(step) = r.step() else { break };
+        let flow = match step {
+            Step::Passed => continue,
+            Step::Stopped(d) => {
+                let line = r.block.span.line;
                 result.end = End::Error {
-                    line: d.span.line.max(block.span.line),
+                    line: d.as_ref().map_or(line, |d| d.span.line.max(line)),
                 };
-                run_diagnostics.push(d);
-                stopped = true;
+                run_diagnostics.extend(d);
                 continue;
             }
+            Step::Ran(flow) => flow,
         };
+        let (block, out) = (&r.block, &mut r.out);
         if !units_known && !out.moves.is_empty() {
             units_known = true;
-            result.units = machine.state().modal.units;
+            result.units = r.machine.state().modal.units;
         }
-        let first_move = result.move_count as u32;
         for m in &out.moves {
             include_move(&mut result.bounds, m);
         }
-        result.move_count += out.moves.len();
         if options.keep_moves {
             result.moves.extend_from_slice(&out.moves);
         }
@@ -144,19 +259,21 @@ pub fn run_with(text: &str, setup: &Setup, options: RunOptions) -> Run {
         // Warnings share the diagnostics cap with the parser's (a warning
         // per block could otherwise fill memory and the page's list).
         for w in out.warnings.drain(..) {
-            parser.report(w);
+            r.parser.report(w);
         }
         if options.keep_blocks {
             result.blocks.push(BlockReport {
                 index,
                 span: block.span,
-                state: *machine.state(),
+                state: *r.machine.state(),
                 notes: std::mem::take(&mut out.notes),
-                first_move,
+                first_move: first_move as u32,
                 move_count: out.moves.len() as u32,
             });
         }
-        result.block_count += 1;
+        if every > 0 {
+            result.lines.push(block.span.line);
+        }
         for w in &block.words {
             let n = match (w.address, setup.machine) {
                 (Address::D | Address::H, MachineKind::Mill) => w.int() as u16,
@@ -168,19 +285,57 @@ pub fn run_with(text: &str, setup: &Setup, options: RunOptions) -> Run {
             }
         }
         if flow == Flow::End {
-            stopped = true;
             result.end = End::ProgramEnd {
                 line: block.span.line,
             };
         }
     }
+    result.block_count = r.index;
+    result.move_count = r.move_count;
     if !units_known {
-        result.units = machine.state().modal.units;
+        result.units = r.machine.state().modal.units;
     }
     result.registers = registers.into_iter().collect();
-    let mut diagnostics = parser.into_diagnostics();
+    let mut diagnostics = r.parser.into_diagnostics();
     diagnostics.append(&mut run_diagnostics);
     diag::finish(&mut diagnostics, text);
     result.diagnostics = diagnostics;
     result
+}
+
+/// The report of block `index` of `run` (a run of `text` and `setup` made
+/// with checkpoints), made again from the checkpoint before it; None when
+/// the run has no such block or no checkpoints. It equals the report a run
+/// keeping every block would have kept.
+pub fn report_at(text: &str, setup: &Setup, run: &Run, index: u32) -> Option<BlockReport> {
+    if index >= run.block_count {
+        return None;
+    }
+    let at = run.checkpoints.iter().rev().find(|c| c.index <= index)?;
+    let options = RunOptions {
+        keep_blocks: true,
+        keep_moves: false,
+        max_moves: usize::MAX,
+        max_blocks: usize::MAX,
+        checkpoint_every: 0,
+    };
+    let mut r = Runner::resume(text, setup, options, at);
+    loop {
+        let this = r.index;
+        let first_move = r.move_count;
+        match r.step()? {
+            Step::Ran(_) if this == index => {
+                return Some(BlockReport {
+                    index,
+                    span: r.block.span,
+                    state: *r.machine.state(),
+                    notes: std::mem::take(&mut r.out.notes),
+                    first_move: first_move as u32,
+                    move_count: r.out.moves.len() as u32,
+                });
+            }
+            Step::Ran(_) | Step::Passed => {}
+            Step::Stopped(_) => return None,
+        }
+    }
 }

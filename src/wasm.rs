@@ -18,11 +18,24 @@ use crate::diag::Diagnostic;
 use crate::document::{Document, ViewPlane, ViewState};
 use crate::render::scene::{self, Scene};
 use crate::render::{self, Frame, Plane, Theme, canvas::CanvasSurface};
-use crate::report::{End, Run};
+use crate::report::{BlockReport, End, Run};
+use crate::run::RunOptions;
 use crate::setup::{MachineKind, Setup};
 use crate::share;
 use crate::toolpath::Toolpath;
 use crate::view::{Summary, block_view, summary};
+
+/// How the page runs a program: a checkpoint every 512 blocks instead of a
+/// report per block (a report is about 300 bytes, a checkpoint about 700
+/// shared by 512 blocks), so a million-block program fits; showing a block
+/// re-runs at most 511 blocks, well under a millisecond.
+const SESSION_RUN: RunOptions = RunOptions {
+    keep_blocks: false,
+    keep_moves: true,
+    max_moves: crate::MAX_MOVES,
+    max_blocks: crate::MAX_BLOCKS,
+    checkpoint_every: 512,
+};
 
 /// The one serializer: absent values are `null` (not `undefined`) and maps
 /// are plain objects, so JS code can rely on `value === null` and `obj.key`.
@@ -292,7 +305,7 @@ impl Session {
         self.text = program.to_owned();
         match read_setup(&setup) {
             Ok(setup) => {
-                self.run = crate::run(&self.text, &setup);
+                self.run = crate::run_with(&self.text, &setup, SESSION_RUN);
                 self.setup = setup;
             }
             Err(diagnostics) => {
@@ -338,16 +351,16 @@ impl Session {
         to_js(&self.setup)
     }
 
-    /// Number of executed blocks with a report.
+    /// Number of executed blocks (each has a report).
     pub fn block_count(&self) -> u32 {
-        u32::try_from(self.run.blocks.len()).unwrap_or(u32::MAX)
+        self.run.block_count
     }
 
     /// The report of block `index` (as the CLI's JSON `blocks` entries), or
     /// `null` when out of range.
     pub fn block(&self, index: u32) -> Result<JsValue, JsValue> {
-        match self.run.blocks.get(index as usize) {
-            Some(b) => to_js(&block_view(b, &self.text)),
+        match self.report(index) {
+            Some(b) => to_js(&block_view(&b, &self.text)),
             None => Ok(JsValue::NULL),
         }
     }
@@ -504,7 +517,7 @@ impl Session {
     /// tool marker sits at its end); a negative index clears it, an index
     /// past the last block means the last. Returns the current block or -1.
     pub fn set_step(&mut self, index: i32) -> i32 {
-        let count = self.run.blocks.len();
+        let count = self.run.block_count as usize;
         self.scene.step = match usize::try_from(index) {
             Ok(_) if count == 0 => None,
             Ok(i) => u32::try_from(i.min(count - 1)).ok(),
@@ -537,12 +550,18 @@ impl Session {
     /// cursor on that line belongs to, or the one before a comment line),
     /// or -1 when no block runs before it.
     pub fn block_at_line(&self, line: u32) -> i32 {
-        let n = self.run.blocks.partition_point(|b| b.span.line <= line);
+        let n = self.run.lines.partition_point(|&l| l <= line);
         i32::try_from(n).map(|n| n - 1).unwrap_or(-1)
     }
 }
 
 impl Session {
+    /// The report of block `index`, made again from the checkpoint before
+    /// it (the session keeps checkpoints, not a report per block).
+    fn report(&self, index: u32) -> Option<BlockReport> {
+        crate::run::report_at(&self.text, &self.setup, &self.run, index)
+    }
+
     /// The document of the current state (see `document()`).
     fn current_document(&self) -> Document {
         let default_plane = match self.run.machine {
@@ -571,7 +590,7 @@ impl Session {
     /// the last block (so editing at the end shows the whole program).
     fn after_run(&mut self) {
         self.scene.adapt_to(self.run.machine);
-        let count = u32::try_from(self.run.blocks.len()).unwrap_or(u32::MAX);
+        let count = self.run.block_count;
         if let Some(step) = self.scene.step {
             let was_last = self.last_count.is_some_and(|n| step + 1 >= n);
             self.scene.step = match count {
@@ -590,7 +609,7 @@ impl Session {
             let drawn = self.scene.drawn_moves(&self.toolpath);
             scene::tool_position(&self.toolpath, drawn).or_else(|| {
                 // No move yet: the tool is where the block leaves it.
-                let b = self.run.blocks.get(step as usize)?;
+                let b = self.report(step)?;
                 let k = 1.0 / self.run.units.mm();
                 Some([
                     b.state.actual.map(|v| v * k),

@@ -28,7 +28,7 @@ pub(crate) struct CycleData {
     p: f64,
 }
 
-impl Machine<'_> {
+impl Machine {
     /// G73–G89: enters or changes the canned cycle mode.
     pub(super) fn start_cycle(&mut self, code: u16) {
         if !self.state.modal.cycle.active() {

@@ -21,7 +21,7 @@ pub(crate) struct TurningData {
     r: f64,
 }
 
-impl Machine<'_> {
+impl Machine {
     pub(super) fn lathe_block(
         &mut self,
         b: &Block,

@@ -12,7 +12,7 @@ use crate::syntax::Address;
 use crate::syntax::Block;
 use crate::syntax::codes::Group;
 
-impl Machine<'_> {
+impl Machine {
     pub(super) fn mill_block(
         &mut self,
         b: &Block,

@@ -24,6 +24,7 @@ use crate::syntax::codes::{Group, g_group};
 use crate::syntax::{Address, Block};
 use arc::{ArcError, Circle};
 use modal::{Modal, Plane};
+use std::sync::Arc;
 
 /// What happens after a block.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -89,9 +90,11 @@ pub(crate) struct Mark {
     act: Xyz,
 }
 
-/// The interpreter's state between blocks.
-pub struct Machine<'s> {
-    setup: &'s Setup,
+/// The interpreter's state between blocks. Cloning it is cheap (the setup
+/// is shared), which is how a run keeps checkpoints to resume from.
+#[derive(Clone, Debug)]
+pub struct Machine {
+    setup: Arc<Setup>,
     pub(crate) state: BlockState,
     /// Zero of the current work coordinate system in machine coordinates (mm),
     /// G92/G50 shift included.
@@ -130,9 +133,9 @@ fn scale(a: Xyz, k: f64) -> Xyz {
 
 const AXES: [(Address, char); 3] = [(Address::X, 'X'), (Address::Y, 'Y'), (Address::Z, 'Z')];
 
-impl<'s> Machine<'s> {
+impl Machine {
     /// A machine at the setup's start position, in its start state (spec 2).
-    pub fn new(setup: &'s Setup) -> Machine<'s> {
+    pub fn new(setup: Arc<Setup>) -> Machine {
         let unit = setup.units.mm();
         let origin = scale(setup.work_offsets.get(0).to_array(), unit);
         let start = scale(setup.start.to_array(), unit);
@@ -153,16 +156,17 @@ impl<'s> Machine<'s> {
             position: PositionState::default(),
             lathe: LatheState::default(),
         };
+        let mirror = if setup.machine == MachineKind::Mill {
+            setup.settings.mirror.axes()
+        } else {
+            [false; 3]
+        };
         Machine {
             setup,
             state,
             origin,
             shift: [0.0; 3],
-            mirror: if setup.machine == MachineKind::Mill {
-                setup.settings.mirror.axes()
-            } else {
-                [false; 3]
-            },
+            mirror,
             mirror_center: add(start, origin),
             cycle: cycles::CycleData::default(),
             turning: lathe::TurningData::default(),

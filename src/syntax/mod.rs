@@ -115,7 +115,7 @@ pub fn parse(text: &str, options: &ParseOptions) -> Program {
     }
 }
 
-#[derive(Clone, Copy, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Tape {
     /// No `%` and no block seen yet.
     Before,
@@ -123,6 +123,25 @@ enum Tape {
     Reading,
     /// A closing `%` was read: nothing after it is part of the program.
     Ended,
+}
+
+/// Where the parser stands between two blocks: enough to go on from there
+/// (a run's checkpoint; the diagnostics so far are not part of it).
+#[derive(Clone, Copy, Debug)]
+pub struct Resume {
+    pos: usize,
+    line: u32,
+    units: Units,
+    in_cycle: bool,
+    tape: Tape,
+    warned_integer: bool,
+}
+
+impl Resume {
+    /// Byte offset of the next unread character.
+    pub fn offset(&self) -> usize {
+        self.pos
+    }
 }
 
 /// A word as lexed, before it is typed.
@@ -166,6 +185,32 @@ impl<'a> Blocks<'a> {
             diagnostics: Vec::new(),
             dropped: 0,
             raw: Vec::with_capacity(16),
+        }
+    }
+
+    /// Where the parser stands (between blocks).
+    pub fn resume_point(&self) -> Resume {
+        Resume {
+            pos: self.pos,
+            line: self.line,
+            units: self.units,
+            in_cycle: self.in_cycle,
+            tape: self.tape,
+            warned_integer: self.warned_integer,
+        }
+    }
+
+    /// Goes on parsing `text` from a point an earlier parser of the same
+    /// text and options reached; it yields the blocks that one yielded next.
+    pub fn resume(text: &'a str, options: ParseOptions, at: Resume) -> Blocks<'a> {
+        Blocks {
+            pos: at.pos.min(text.len()),
+            line: at.line,
+            units: at.units,
+            in_cycle: at.in_cycle,
+            tape: at.tape,
+            warned_integer: at.warned_integer,
+            ..Blocks::new(text, options)
         }
     }
 
