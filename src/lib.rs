@@ -39,7 +39,9 @@ pub mod wasm;
 pub use diag::{Diagnostic, Severity, Span};
 pub use document::Document;
 pub use report::{BlockReport, End, Event, Move, MoveKind, Run};
-pub use run::{Checkpoint, MAX_BLOCKS, MAX_MOVES, RunOptions, report_at, run, run_with};
+pub use run::{
+    Checkpoint, MAX_BLOCKS, MAX_MOVES, RunOptions, report_at, run, run_observed, run_with,
+};
 pub use setup::{MachineKind, Setup, Units};
 pub use syntax::{ParseOptions, Program, parse};
 pub use toolpath::Toolpath;

@@ -431,15 +431,20 @@ pub struct Bounds {
 
 /// Grows `b` to hold every point of a move, both paths, arcs included.
 pub fn include_move(b: &mut Option<Bounds>, m: &Move) {
-    let mut add = |p: Xyz| match b {
+    each_point_of(m, |p: Xyz| match b {
         None => *b = Some(Bounds { min: p, max: p }),
         Some(b) => b.include(p),
-    };
+    });
+}
+
+/// Calls `f` with the points that bound a move on both paths: its ends and,
+/// for an arc, where the circles reach their extremes (mm).
+pub fn each_point_of(m: &Move, mut f: impl FnMut(Xyz)) {
     for p in [m.from, m.to, m.programmed_from, m.programmed_to] {
-        add(p);
+        f(p);
     }
     if let Some(a) = &m.arc {
-        a.each_extreme(m, add);
+        a.each_extreme(m, f);
     }
 }
 

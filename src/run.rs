@@ -190,6 +190,18 @@ impl<'t> Runner<'t> {
 
 /// Runs a program with a setup.
 pub fn run_with(text: &str, setup: &Setup, options: RunOptions) -> Run {
+    run_observed(text, setup, options, |_| {})
+}
+
+/// Runs a program with a setup, handing every move to `on_move` as it is
+/// made (whether or not the run keeps it): the page builds its toolpath
+/// this way without keeping the moves.
+pub fn run_observed(
+    text: &str,
+    setup: &Setup,
+    options: RunOptions,
+    mut on_move: impl FnMut(&crate::report::Move),
+) -> Run {
     let mut result = Run {
         machine: setup.machine,
         units: setup.units,
@@ -247,6 +259,7 @@ pub fn run_with(text: &str, setup: &Setup, options: RunOptions) -> Run {
         }
         for m in &out.moves {
             include_move(&mut result.bounds, m);
+            on_move(m);
         }
         if options.keep_moves {
             result.moves.extend_from_slice(&out.moves);

@@ -1,26 +1,90 @@
-//! The toolpath for drawing: struct-of-arrays, one run of vertices per move,
-//! arcs tessellated within [`CHORD_TOLERANCE_MM`]. The actual and the
-//! programmed path have the same number of vertices per move, so vertex `i`
-//! of one corresponds to vertex `i` of the other. Coordinates are in the
-//! run's display units ([`Run::units`]); on the lathe X stays a diameter.
+//! The toolpath for drawing: struct-of-arrays, a few dozen bytes per move.
+//! Each move adds its end point to the vertex arrays (and its start point
+//! first when it does not start where the previous move ended, both paths
+//! alike), so the actual and the programmed path have the same vertices and
+//! vertex `i` of one corresponds to vertex `i` of the other. Arcs are kept
+//! as circles, not as polylines: whoever draws them tessellates them for the
+//! scale they are drawn at ([`Toolpath::for_each_point`]), so a million
+//! small arcs cost a few points each at full view and stay smooth when
+//! zoomed in. Coordinates are in the run's display units ([`Run::units`]);
+//! on the lathe X stays a diameter.
 //!
 //! This is what crosses the wasm boundary as typed arrays, never one object
-//! per move.
+//! per move ([`Toolpath::polylines`] makes the arrays with every arc
+//! tessellated within [`CHORD_TOLERANCE_MM`]).
+
+use std::ops::Range;
 
 use crate::machine::arc::{CHORD_TOLERANCE_MM, Circle};
-use crate::report::{ArcInfo, Move, Run, Xyz};
+use crate::machine::modal::Plane;
+use crate::report::{Move, Run, Xyz};
 use crate::setup::{MachineKind, Units};
 
 pub use crate::machine::arc::CHORD_TOLERANCE_MM as CHORD_TOLERANCE;
 
-/// Most vertices of one toolpath (each path). A line move has two; an arc
-/// up to [`crate::machine::arc::MAX_ARC_SEGMENTS`] + 1. When the arcs of a
-/// run would need more, every arc is drawn with proportionally fewer
-/// segments (at least one), so the toolpath of any run that stays within
-/// [`crate::MAX_MOVES`] fits: 2 × 5,000,000 line vertices are below it.
+/// Most vertices of one tessellated path made by [`Toolpath::polylines`]. A
+/// line move has two; an arc up to [`crate::machine::arc::MAX_ARC_SEGMENTS`] + 1. When the arcs
+/// would need more, every arc is tessellated with proportionally fewer
+/// segments (at least one), so the polylines of any run that stays within
+/// [`crate::MAX_MOVES`] fit: 2 × 5,000,000 line vertices are below it.
 /// 16 Mi vertices are 384 MiB per path.
 pub const MAX_VERTICES: usize = 1 << 24;
 const _: () = assert!(MAX_VERTICES >= 2 * crate::MAX_MOVES && MAX_VERTICES <= u32::MAX as usize);
+
+/// The circle of an arc move on both paths, in the toolpath's units (plane
+/// coordinates; on the lathe X in radius, as [`crate::report::ArcInfo`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ToolArc {
+    /// The plane of the arc.
+    pub plane: Plane,
+    /// X is a diameter (lathe): the circle's first coordinate is X / 2.
+    pub diameter_x: bool,
+    /// The actual circle.
+    pub actual: Circle,
+    /// The programmed circle.
+    pub programmed: Circle,
+}
+
+impl ToolArc {
+    /// Segments for a chord error under `tolerance` on both circles.
+    pub fn segments(&self, tolerance: f64) -> usize {
+        self.actual
+            .segments(tolerance)
+            .max(self.programmed.segments(tolerance))
+    }
+
+    /// Point `i` of `count` along the arc from `from` to `to` (`i` = 0 is
+    /// `from`, `count` is `to`); the axis normal to the plane moves linearly
+    /// (a helix).
+    fn point(&self, programmed: bool, from: Xyz, to: Xyz, i: usize, count: usize) -> Xyz {
+        if i == 0 {
+            return from;
+        }
+        if i >= count {
+            return to;
+        }
+        let c = if programmed {
+            &self.programmed
+        } else {
+            &self.actual
+        };
+        let (ia, ib, n) = self.plane.axes();
+        let s = |axis: usize| {
+            if self.diameter_x && axis == 0 {
+                0.5
+            } else {
+                1.0
+            }
+        };
+        let t = i as f64 / count as f64;
+        let q = c.point(t);
+        let mut p = from;
+        p[ia] = q[0] / s(ia);
+        p[ib] = q[1] / s(ib);
+        p[n] = from[n] + (to[n] - from[n]) * t;
+        p
+    }
+}
 
 /// Drawable toolpath.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -33,8 +97,7 @@ pub struct Toolpath {
     pub actual: Vec<f64>,
     /// Programmed path vertices, x y z interleaved, same count as `actual`.
     pub programmed: Vec<f64>,
-    /// Index of each move's first vertex, plus one final entry: the vertex
-    /// count. Move `i` spans vertices `starts[i]..starts[i + 1]`.
+    /// Per move: index of its start vertex; it ends at the next one.
     pub starts: Vec<u32>,
     /// Per move: [`crate::MoveKind::code`] (0 rapid, 1 feed, 2 arc cw,
     /// 3 arc ccw, 4 offset at rapid, 5 offset at feed).
@@ -43,37 +106,93 @@ pub struct Toolpath {
     pub blocks: Vec<u32>,
     /// Per move: 1-based source line.
     pub lines: Vec<u32>,
+    /// The circles of the arc moves, in move order.
+    pub arcs: Vec<ToolArc>,
+    /// Per arc: its move.
+    pub arc_moves: Vec<u32>,
+    /// Bounds of both paths, arcs included: (min, max).
+    bounds: Option<(Xyz, Xyz)>,
+    /// Millimetres to `units`.
+    k: f64,
+}
+
+/// The tessellated form of a toolpath (see [`Toolpath::polylines`]).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Polylines {
+    /// Actual path vertices, x y z interleaved.
+    pub actual: Vec<f64>,
+    /// Programmed path vertices, same count.
+    pub programmed: Vec<f64>,
+    /// Index of each move's first vertex, plus one final entry: the vertex
+    /// count. Move `i` spans vertices `starts[i]..starts[i + 1]`.
+    pub starts: Vec<u32>,
 }
 
 impl Toolpath {
-    /// Builds the toolpath of a run (at most [`MAX_VERTICES`] per path).
-    pub fn from_run(run: &Run) -> Toolpath {
-        Toolpath::build(run, MAX_VERTICES)
+    /// An empty toolpath to [`push`](Toolpath::push) the moves of a run
+    /// into as they are made.
+    pub fn new(machine: MachineKind, units: Units) -> Toolpath {
+        Toolpath {
+            machine,
+            units,
+            k: 1.0 / units.mm(),
+            ..Toolpath::default()
+        }
     }
 
-    fn build(run: &Run, max_vertices: usize) -> Toolpath {
-        let mut t = Toolpath {
-            units: run.units,
-            machine: run.machine,
-            ..Toolpath::default()
-        };
-        let k = 1.0 / run.units.mm();
-        let arcs = ArcBudget::of(&run.moves, max_vertices);
+    /// Builds the toolpath of a run.
+    pub fn from_run(run: &Run) -> Toolpath {
+        let mut t = Toolpath::new(run.machine, run.units);
         for m in &run.moves {
-            t.starts.push(t.vertex_count() as u32);
-            t.kinds.push(m.kind.code(m.at_feed));
-            t.blocks.push(m.block);
-            t.lines.push(m.line);
-            match &m.arc {
-                None => {
-                    t.push(m.from, m.programmed_from, k);
-                    t.push(m.to, m.programmed_to, k);
-                }
-                Some(a) => t.push_arc(m, a, k, &arcs),
-            }
+            t.push(m);
         }
-        t.starts.push(t.vertex_count() as u32);
         t
+    }
+
+    /// Adds a move. The first move sets the units (a run is drawn in the
+    /// units of its first move).
+    pub fn push(&mut self, m: &Move) {
+        if self.kinds.is_empty() {
+            self.units = m.units;
+            self.k = 1.0 / m.units.mm();
+        }
+        let k = self.k;
+        let scaled = |p: Xyz| p.map(|v| v * k);
+        let (from, pfrom) = (scaled(m.from), scaled(m.programmed_from));
+        let continues = self.vertex_count() > 0 && {
+            let i = self.actual.len() - 3;
+            self.actual[i..] == from && self.programmed[i..] == pfrom
+        };
+        if !continues {
+            self.push_vertex(from, pfrom);
+        }
+        self.starts.push(self.vertex_count() as u32 - 1);
+        self.push_vertex(scaled(m.to), scaled(m.programmed_to));
+        self.kinds.push(m.kind.code(m.at_feed));
+        self.blocks.push(m.block);
+        self.lines.push(m.line);
+        let mut bounds = self.bounds;
+        crate::report::each_point_of(m, |p| include(&mut bounds, scaled(p)));
+        self.bounds = bounds;
+        if let Some(a) = &m.arc {
+            let circle = |c: Circle| Circle {
+                center: c.center.map(|v| v * k),
+                radius: c.radius * k,
+                ..c
+            };
+            self.arc_moves.push(self.kinds.len() as u32 - 1);
+            self.arcs.push(ToolArc {
+                plane: a.plane,
+                diameter_x: a.diameter_x,
+                actual: circle(a.circle()),
+                programmed: circle(a.programmed_circle()),
+            });
+        }
+    }
+
+    fn push_vertex(&mut self, actual: Xyz, programmed: Xyz) {
+        self.actual.extend(actual);
+        self.programmed.extend(programmed);
     }
 
     /// Number of moves.
@@ -91,76 +210,160 @@ impl Toolpath {
         self.actual.len() / 3
     }
 
-    fn push(&mut self, actual: Xyz, programmed: Xyz, k: f64) {
-        self.actual.extend(actual.map(|v| v * k));
-        self.programmed.extend(programmed.map(|v| v * k));
+    /// Gives back the room the arrays grew into (up to half of them).
+    pub fn shrink_to_fit(&mut self) {
+        self.actual.shrink_to_fit();
+        self.programmed.shrink_to_fit();
+        self.starts.shrink_to_fit();
+        self.kinds.shrink_to_fit();
+        self.blocks.shrink_to_fit();
+        self.lines.shrink_to_fit();
+        self.arcs.shrink_to_fit();
+        self.arc_moves.shrink_to_fit();
     }
 
-    fn push_arc(&mut self, m: &Move, a: &ArcInfo, k: f64, budget: &ArcBudget) {
-        let (ia, ib, n) = a.plane.axes();
-        let s = |i: usize| if a.diameter_x && i == 0 { 0.5 } else { 1.0 };
-        let act = a.circle();
-        let prog = a.programmed_circle();
-        let count = budget.segments(arc_segments(a));
-        let point = |c: &Circle, from: Xyz, to: Xyz, i: usize| -> Xyz {
-            if i == count {
-                return to;
-            }
-            let t = i as f64 / count as f64;
-            let q = c.point(t);
-            let mut p = from;
-            p[ia] = q[0] / s(ia);
-            p[ib] = q[1] / s(ib);
-            p[n] = from[n] + (to[n] - from[n]) * t;
-            p
+    /// Bytes held (what a run costs the page to draw).
+    pub fn heap_bytes(&self) -> usize {
+        (self.actual.capacity() + self.programmed.capacity()) * 8
+            + (self.starts.capacity() + self.blocks.capacity() + self.lines.capacity()) * 4
+            + self.kinds.capacity()
+            + self.arcs.capacity() * std::mem::size_of::<ToolArc>()
+            + self.arc_moves.capacity() * 4
+    }
+
+    fn vertex(vertices: &[f64], i: usize) -> Option<Xyz> {
+        let v = vertices.get(i * 3..i * 3 + 3)?;
+        Some([v[0], v[1], v[2]])
+    }
+
+    /// Start and end of move `m` on the actual and the programmed path:
+    /// `[[actual from, actual to], [programmed from, programmed to]]`.
+    pub fn ends(&self, m: usize) -> Option<[[Xyz; 2]; 2]> {
+        let a = *self.starts.get(m)? as usize;
+        Some([
+            [
+                Self::vertex(&self.actual, a)?,
+                Self::vertex(&self.actual, a + 1)?,
+            ],
+            [
+                Self::vertex(&self.programmed, a)?,
+                Self::vertex(&self.programmed, a + 1)?,
+            ],
+        ])
+    }
+
+    /// Index of the first arc of move `m` or later.
+    fn first_arc(&self, m: usize) -> usize {
+        self.arc_moves.partition_point(|&a| (a as usize) < m)
+    }
+
+    /// Calls `f(move, i, point)` for the points of every move in `range`
+    /// that `keep` accepts, on the programmed or the actual path: its start
+    /// (`i` = 0), and its end, with an arc's points between so that no
+    /// point of the true arc is farther than `tolerance` (toolpath units)
+    /// from the polyline (at most [`crate::machine::arc::MAX_ARC_SEGMENTS`] segments).
+    pub fn for_each_point(
+        &self,
+        range: Range<usize>,
+        programmed: bool,
+        tolerance: f64,
+        keep: impl Fn(usize) -> bool,
+        mut f: impl FnMut(usize, usize, Xyz),
+    ) {
+        let vertices = if programmed {
+            &self.programmed
+        } else {
+            &self.actual
         };
-        for i in 0..=count {
-            let pa = if i == 0 {
-                m.from
-            } else {
-                point(&act, m.from, m.to, i)
+        let mut arc = self.first_arc(range.start);
+        for m in range.start..range.end.min(self.len()) {
+            let is_arc = self.arc_moves.get(arc) == Some(&(m as u32));
+            if is_arc {
+                arc += 1;
+            }
+            if !keep(m) {
+                continue;
+            }
+            let a = self.starts[m] as usize;
+            let (Some(from), Some(to)) = (Self::vertex(vertices, a), Self::vertex(vertices, a + 1))
+            else {
+                continue;
             };
-            let pp = if i == 0 {
-                m.programmed_from
-            } else {
-                point(&prog, m.programmed_from, m.programmed_to, i)
-            };
-            self.push(pa, pp, k);
-        }
-    }
-
-    /// Bounds of both paths: (min, max), or None without moves.
-    pub fn bounds(&self) -> Option<(Xyz, Xyz)> {
-        if self.actual.is_empty() {
-            return None;
-        }
-        let mut min = [f64::INFINITY; 3];
-        let mut max = [f64::NEG_INFINITY; 3];
-        for chunk in self
-            .actual
-            .chunks_exact(3)
-            .chain(self.programmed.chunks_exact(3))
-        {
-            for i in 0..3 {
-                min[i] = min[i].min(chunk[i]);
-                max[i] = max[i].max(chunk[i]);
+            match self.arcs.get(arc.wrapping_sub(1)).filter(|_| is_arc) {
+                Some(c) => {
+                    let count = c.segments(tolerance);
+                    for i in 0..=count {
+                        f(m, i, c.point(programmed, from, to, i, count));
+                    }
+                }
+                None => {
+                    f(m, 0, from);
+                    f(m, 1, to);
+                }
             }
         }
-        Some((min, max))
+    }
+
+    /// The moves as polylines, every arc within [`CHORD_TOLERANCE_MM`] (at
+    /// most [`MAX_VERTICES`] per path: past that arcs get proportionally
+    /// fewer segments).
+    pub fn polylines(&self) -> Polylines {
+        self.polylines_within(MAX_VERTICES)
+    }
+
+    fn polylines_within(&self, max_vertices: usize) -> Polylines {
+        let tolerance = CHORD_TOLERANCE_MM * self.k;
+        let budget = ArcBudget::of(self, tolerance, max_vertices);
+        let mut out = Polylines::default();
+        let mut arc = 0;
+        for m in 0..self.len() {
+            out.starts.push((out.actual.len() / 3) as u32);
+            let [[a0, a1], [p0, p1]] = self.ends(m).unwrap_or_default();
+            let c = self
+                .arcs
+                .get(arc)
+                .filter(|_| self.arc_moves.get(arc) == Some(&(m as u32)));
+            match c {
+                Some(c) => {
+                    arc += 1;
+                    let count = budget.segments(c.segments(tolerance));
+                    for i in 0..=count {
+                        out.actual.extend(c.point(false, a0, a1, i, count));
+                        out.programmed.extend(c.point(true, p0, p1, i, count));
+                    }
+                }
+                None => {
+                    out.actual.extend(a0.into_iter().chain(a1));
+                    out.programmed.extend(p0.into_iter().chain(p1));
+                }
+            }
+        }
+        out.starts.push((out.actual.len() / 3) as u32);
+        out
+    }
+
+    /// Bounds of both paths, arcs included: (min, max), or None without
+    /// moves.
+    pub fn bounds(&self) -> Option<(Xyz, Xyz)> {
+        self.bounds
     }
 }
 
-/// Segments an arc is drawn with at the chord tolerance (the finer of its
-/// actual and programmed circle).
-fn arc_segments(a: &ArcInfo) -> usize {
-    a.circle()
-        .segments(CHORD_TOLERANCE_MM)
-        .max(a.programmed_circle().segments(CHORD_TOLERANCE_MM))
+fn include(b: &mut Option<(Xyz, Xyz)>, p: Xyz) {
+    match b {
+        None => *b = Some((p, p)),
+        Some((min, max)) => {
+            for i in 0..3 {
+                min[i] = min[i].min(p[i]);
+                max[i] = max[i].max(p[i]);
+            }
+        }
+    }
 }
 
-/// How the arcs of a run share [`MAX_VERTICES`]: each arc keeps its first
-/// segment, and the segments past the first are scaled by one factor when
-/// their sum would pass the budget.
+/// How the arcs of a toolpath share [`MAX_VERTICES`]: each arc keeps its
+/// first segment, and the segments past the first are scaled by one factor
+/// when their sum would pass the budget.
 struct ArcBudget {
     /// Vertices for the segments past each arc's first, and how many those
     /// arcs want; `None` when everything fits.
@@ -168,14 +371,10 @@ struct ArcBudget {
 }
 
 impl ArcBudget {
-    fn of(moves: &[Move], max_vertices: usize) -> ArcBudget {
+    fn of(t: &Toolpath, tolerance: f64, max_vertices: usize) -> ArcBudget {
         // Two vertices per move (an arc's start and its first segment's end).
-        let base = moves.len().saturating_mul(2);
-        let extra: usize = moves
-            .iter()
-            .filter_map(|m| m.arc.as_ref())
-            .map(|a| arc_segments(a) - 1)
-            .sum();
+        let base = t.len().saturating_mul(2);
+        let extra: usize = t.arcs.iter().map(|a| a.segments(tolerance) - 1).sum();
         let room = max_vertices.saturating_sub(base);
         ArcBudget {
             scale: (base.saturating_add(extra) > max_vertices).then_some((room, extra)),
@@ -199,7 +398,7 @@ mod tests {
     use crate::{Setup, run};
 
     #[test]
-    fn one_vertex_run_per_move_and_equal_lengths() {
+    fn one_end_vertex_per_move_and_equal_lengths() {
         let mut setup = Setup::default();
         setup.set_register("01=6").unwrap();
         let r = run(
@@ -209,55 +408,93 @@ mod tests {
         assert!(!r.has_errors(), "{:?}", r.diagnostics);
         let t = Toolpath::from_run(&r);
         assert_eq!(t.len(), 3);
-        assert_eq!(t.starts.len(), 4);
         assert_eq!(t.actual.len(), t.programmed.len());
-        assert_eq!(*t.starts.last().unwrap() as usize, t.vertex_count());
+        // Each move continues from the previous end: 1 start + 3 ends.
+        assert_eq!(t.vertex_count(), 4);
+        assert_eq!(t.starts, vec![0, 1, 2]);
         assert_eq!(&t.actual[3..6], &[24.0, 14.0, 0.0]);
         assert_eq!(t.kinds, vec![0, 1, 3]);
-        // The arc ends exactly where the move ends.
-        let last = &t.programmed[t.programmed.len() - 3..];
-        assert_eq!(last, &[100.0, 30.0, 0.0]);
-        assert!(t.starts[3] - t.starts[2] > 10, "arcs are tessellated");
+        assert_eq!(t.arc_moves, vec![2]);
+        let [[_, _], [_, end]] = t.ends(2).unwrap();
+        assert_eq!(end, [100.0, 30.0, 0.0]);
+        // Tessellated: the arc has many points, the last exactly its end.
+        let mut points = Vec::new();
+        t.for_each_point(2..3, true, 0.01, |_| true, |_, _, p| points.push(p));
+        assert!(points.len() > 10, "arcs are tessellated");
+        assert_eq!(*points.last().unwrap(), [100.0, 30.0, 0.0]);
+        let lines = t.polylines();
+        assert_eq!(lines.starts.len(), 4);
+        assert_eq!(
+            *lines.starts.last().unwrap() as usize * 3,
+            lines.actual.len()
+        );
+        assert!(lines.starts[3] - lines.starts[2] > 10);
     }
 
     #[test]
-    fn arc_vertices_lie_on_the_circle_within_tolerance() {
+    fn a_move_that_does_not_start_at_the_last_end_gets_its_own_start() {
+        // G92 moves the work coordinates between the moves: the second move
+        // starts (in the new coordinates) away from where the first ended.
+        let r = run("G01 X10. F100.\nG92 X0\nG01 X5.", &Setup::default());
+        let t = Toolpath::from_run(&r);
+        assert_eq!(t.len(), 2);
+        assert_eq!(t.vertex_count(), 4);
+        assert_eq!(t.starts, vec![0, 2]);
+        assert_eq!(t.ends(1).unwrap()[0], [[0.0, 0.0, 0.0], [5.0, 0.0, 0.0]]);
+    }
+
+    #[test]
+    fn arc_points_lie_on_the_circle_within_tolerance() {
         let r = run("G02 X20. Y0 I10. J0 F100.", &Setup::default());
         let t = Toolpath::from_run(&r);
-        for p in t.actual.chunks_exact(3) {
-            let d = ((p[0] - 10.0).powi(2) + p[1].powi(2)).sqrt();
-            assert!((d - 10.0).abs() < 1e-9);
-        }
-        // Chord midpoints stay within the tolerance.
-        let v: Vec<&[f64]> = t.actual.chunks_exact(3).collect();
-        for w in v.windows(2) {
-            let mx = (w[0][0] + w[1][0]) / 2.0 - 10.0;
-            let my = (w[0][1] + w[1][1]) / 2.0;
-            assert!(10.0 - (mx * mx + my * my).sqrt() <= CHORD_TOLERANCE + 1e-12);
+        for tolerance in [CHORD_TOLERANCE, 0.5, 3.0] {
+            let mut v = Vec::new();
+            t.for_each_point(0..1, false, tolerance, |_| true, |_, _, p| v.push(p));
+            for p in &v {
+                let d = ((p[0] - 10.0).powi(2) + p[1].powi(2)).sqrt();
+                assert!((d - 10.0).abs() < 1e-9);
+            }
+            // Chord midpoints stay within the tolerance.
+            for w in v.windows(2) {
+                let mx = (w[0][0] + w[1][0]) / 2.0 - 10.0;
+                let my = (w[0][1] + w[1][1]) / 2.0;
+                assert!(10.0 - (mx * mx + my * my).sqrt() <= tolerance + 1e-12);
+            }
         }
     }
 
     #[test]
-    fn arcs_share_the_vertex_budget() {
+    fn bounds_hold_the_arcs_extremes() {
+        // A half circle from (0,0) to (20,0) clockwise through (10,10).
+        let r = run("G02 X20. Y0 I10. J0 F100.", &Setup::default());
+        let (min, max) = Toolpath::from_run(&r).bounds().unwrap();
+        assert_eq!(min, [0.0, 0.0, 0.0]);
+        assert!((max[1] - 10.0).abs() < 1e-9 && max[0] == 20.0, "{max:?}");
+    }
+
+    #[test]
+    fn arcs_share_the_vertex_budget_of_the_polylines() {
         // 100 full circles of radius 50 m want 1024 segments each, and
         // two lines two vertices each: 102,604 vertices for a budget of
         // 10,000 (MAX_VERTICES works the same way, 20,000 such circles).
         let text = "G02 X0 Y0 I50000. F100.\n".repeat(100) + "G01 X1.\nG01 X2.";
         let r = run(&text, &Setup::default());
         assert!(!r.has_errors(), "{:?}", r.diagnostics);
-        assert_eq!(Toolpath::from_run(&r).vertex_count(), 100 * 1025 + 4);
-        let t = Toolpath::build(&r, 10_000);
-        assert_eq!(t.len(), 102);
-        assert!(t.vertex_count() <= 10_000, "{}", t.vertex_count());
-        assert!(t.vertex_count() > 9_000, "{}", t.vertex_count());
-        assert_eq!(t.starts[101] - t.starts[100], 2, "lines keep both ends");
-        assert_eq!(*t.starts.last().unwrap() as usize, t.vertex_count());
+        let t = Toolpath::from_run(&r);
+        assert_eq!(t.polylines().actual.len() / 3, 100 * 1025 + 4);
+        let p = t.polylines_within(10_000);
+        let count = p.actual.len() / 3;
+        assert_eq!(p.starts.len(), 103);
+        assert!(count <= 10_000, "{count}");
+        assert!(count > 9_000, "{count}");
+        assert_eq!(p.starts[101] - p.starts[100], 2, "lines keep both ends");
+        assert_eq!(*p.starts.last().unwrap() as usize, count);
         // Each circle still ends where it started, on the circle.
-        let end = t.starts[1] as usize - 1;
-        assert_eq!(&t.actual[end * 3..end * 3 + 3], &[0.0, 0.0, 0.0]);
-        let mid = (t.starts[0] as usize + end) / 2;
-        let p = &t.actual[mid * 3..mid * 3 + 2];
-        let d = ((p[0] - 50_000.0).powi(2) + p[1].powi(2)).sqrt();
+        let end = p.starts[1] as usize - 1;
+        assert_eq!(&p.actual[end * 3..end * 3 + 3], &[0.0, 0.0, 0.0]);
+        let mid = (p.starts[0] as usize + end) / 2;
+        let q = &p.actual[mid * 3..mid * 3 + 2];
+        let d = ((q[0] - 50_000.0).powi(2) + q[1].powi(2)).sqrt();
         assert!((d - 50_000.0).abs() < 1e-6, "{d}");
     }
 
@@ -267,5 +504,19 @@ mod tests {
         let t = Toolpath::from_run(&r);
         assert_eq!(t.units, Units::Inch);
         assert!((t.actual[3] - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_million_block_toolpath_costs_well_under_200_bytes_a_move() {
+        // Issue 6, target 2: the page keeps this toolpath, not the moves.
+        // Half the moves arcs (a CAM program has fewer): 61 bytes a move
+        // plus 92 an arc.
+        let block = "G01 X10. Y5.\nG02 X20. Y5. R5.\nG01 X0 Y0\nG03 X0 Y0 I3. J0\n";
+        let r = run(&block.repeat(2_500), &Setup::default());
+        assert!(!r.has_errors(), "{:?}", r.diagnostics);
+        let mut t = Toolpath::from_run(&r);
+        t.shrink_to_fit();
+        let per_move = t.heap_bytes() as f64 / t.len() as f64;
+        assert!(per_move < 110.0, "{per_move} bytes a move");
     }
 }

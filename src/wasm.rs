@@ -26,12 +26,14 @@ use crate::toolpath::Toolpath;
 use crate::view::{Summary, block_view, summary};
 
 /// How the page runs a program: a checkpoint every 512 blocks instead of a
-/// report per block (a report is about 300 bytes, a checkpoint about 700
-/// shared by 512 blocks), so a million-block program fits; showing a block
-/// re-runs at most 511 blocks, well under a millisecond.
+/// report per block (a report is about 300 bytes, a checkpoint about 500
+/// shared by 512 blocks), and the moves go straight into the compact
+/// toolpath instead of being kept (a move is 216 bytes): a million-block
+/// program fits. Showing a block re-runs at most 511 blocks, well under a
+/// millisecond; an export re-runs the program keeping its moves.
 const SESSION_RUN: RunOptions = RunOptions {
     keep_blocks: false,
-    keep_moves: true,
+    keep_moves: false,
     max_moves: crate::MAX_MOVES,
     max_blocks: crate::MAX_BLOCKS,
     checkpoint_every: 512,
@@ -305,7 +307,16 @@ impl Session {
         self.text = program.to_owned();
         match read_setup(&setup) {
             Ok(setup) => {
-                self.run = crate::run_with(&self.text, &setup, SESSION_RUN);
+                let mut toolpath = Toolpath::new(setup.machine, setup.units);
+                self.run =
+                    crate::run_observed(&self.text, &setup, SESSION_RUN, |m| toolpath.push(m));
+                if toolpath.is_empty() {
+                    // No move to take the units from: the run's (G20/G21
+                    // may still have been read).
+                    toolpath = Toolpath::new(self.run.machine, self.run.units);
+                }
+                toolpath.shrink_to_fit();
+                self.toolpath = toolpath;
                 self.setup = setup;
             }
             Err(diagnostics) => {
@@ -314,9 +325,9 @@ impl Session {
                 run.diagnostics = diagnostics;
                 run.end = End::Error { line: 0 };
                 self.run = run;
+                self.toolpath = Toolpath::new(self.setup.machine, self.setup.units);
             }
         }
-        self.toolpath = Toolpath::from_run(&self.run);
         self.after_run();
         to_js(&RunResult {
             summary: summary(&self.run),
@@ -336,13 +347,13 @@ impl Session {
     /// The toolpath's moves as an indented JSON file: `{ summary, moves }`
     /// with exactly the CLI's `run --format json` fields.
     pub fn moves_json(&self) -> String {
-        crate::export::moves_json(&self.run)
+        crate::export::moves_json(&self.with_moves())
     }
 
     /// The toolpath's moves as CSV: the JSON fields flattened into columns
     /// (`from_x`, `arc_center_x`, …; no `_y` columns on the lathe).
     pub fn moves_csv(&self) -> String {
-        crate::export::moves_csv(&self.run)
+        crate::export::moves_csv(&self.with_moves())
     }
 
     /// The setup of the last run as a setup document (the default setup
@@ -368,19 +379,21 @@ impl Session {
     /// The toolpath as typed arrays, each a fresh copy owned by JS:
     /// `{ units, machine, actual: Float64Array, programmed: Float64Array,
     /// starts: Uint32Array, kinds: Uint8Array, blocks: Uint32Array,
-    /// lines: Uint32Array }` (see `src/toolpath.rs` for their meaning).
+    /// lines: Uint32Array }`: every move as a polyline, arcs within the
+    /// 0.01 mm chord tolerance (see `Polylines` in `src/toolpath.rs`).
     pub fn toolpath(&self) -> Result<JsValue, JsValue> {
         let t = &self.toolpath;
+        let lines = t.polylines();
         let out = Object::new();
         let set = |key: &str, value: JsValue| Reflect::set(&out, &JsValue::from_str(key), &value);
         set("units", JsValue::from_str(t.units.as_str()))?;
         set("machine", JsValue::from_str(t.machine.as_str()))?;
-        set("actual", Float64Array::from(t.actual.as_slice()).into())?;
+        set("actual", Float64Array::from(lines.actual.as_slice()).into())?;
         set(
             "programmed",
-            Float64Array::from(t.programmed.as_slice()).into(),
+            Float64Array::from(lines.programmed.as_slice()).into(),
         )?;
-        set("starts", Uint32Array::from(t.starts.as_slice()).into())?;
+        set("starts", Uint32Array::from(lines.starts.as_slice()).into())?;
         set("kinds", Uint8Array::from(t.kinds.as_slice()).into())?;
         set("blocks", Uint32Array::from(t.blocks.as_slice()).into())?;
         set("lines", Uint32Array::from(t.lines.as_slice()).into())?;
@@ -560,6 +573,20 @@ impl Session {
     /// it (the session keeps checkpoints, not a report per block).
     fn report(&self, index: u32) -> Option<BlockReport> {
         crate::run::report_at(&self.text, &self.setup, &self.run, index)
+    }
+
+    /// The last run again, keeping its moves (for the exports: the session
+    /// keeps only the toolpath). After a bad setup, the empty run.
+    fn with_moves(&self) -> Run {
+        if self.run.end == (End::Error { line: 0 }) && self.run.block_count == 0 {
+            return self.run.clone();
+        }
+        let options = RunOptions {
+            keep_moves: true,
+            checkpoint_every: 0,
+            ..SESSION_RUN
+        };
+        crate::run_with(&self.text, &self.setup, options)
     }
 
     /// The document of the current state (see `document()`).

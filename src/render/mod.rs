@@ -60,6 +60,10 @@ const MIN_SCALE_PX: f64 = 70.0;
 /// Vertices closer than this to the last one drawn are skipped (level of
 /// detail: a million tiny segments cost a million calls for nothing).
 const MIN_SEGMENT_PX: f64 = 0.5;
+/// Arcs are drawn as polylines no farther than this (CSS pixels) from the
+/// true circle at the scale drawn: smooth at any zoom, and a few segments
+/// for an arc that is a few pixels across.
+pub const DRAW_TOLERANCE_PX: f64 = 0.2;
 /// Legend geometry.
 const LEGEND_WIDTH: f64 = 218.0;
 const LEGEND_WIDTH_COMPACT: f64 = 150.0;
@@ -189,15 +193,13 @@ impl Frame {
     }
 }
 
-/// The box of both paths in the plane (with the centre line on the lathe).
+/// The box of both paths in the plane (with the centre line on the lathe):
+/// the projection of their 3D box, arcs included.
 pub fn path_extent(toolpath: &Toolpath, plane: Plane) -> Option<Extent> {
+    let (min, max) = toolpath.bounds()?;
     let mut extent: Option<Extent> = None;
-    for p in toolpath
-        .actual
-        .chunks_exact(3)
-        .chain(toolpath.programmed.chunks_exact(3))
-    {
-        let (u, v) = plane.project(p);
+    for p in [min, max] {
+        let (u, v) = plane.project(&p);
         match &mut extent {
             Some(e) => e.include(u, v),
             None if u.is_finite() && v.is_finite() => extent = Some(Extent::point(u, v)),
@@ -253,14 +255,7 @@ pub fn draw_scene(
     if split < moves {
         surface.begin_group("ghost");
         let ghost = frame.theme.ghost();
-        draw_path(
-            surface,
-            &frame,
-            toolpath,
-            &toolpath.actual,
-            split..moves,
-            |_| &ghost,
-        );
+        draw_path(surface, &frame, toolpath, false, split..moves, |_| &ghost);
         surface.end_group();
     }
     if let Some(step) = scene.step {
@@ -268,14 +263,7 @@ pub fn draw_scene(
         if first < split {
             surface.begin_group("current");
             let hl = frame.theme.highlight();
-            draw_path(
-                surface,
-                &frame,
-                toolpath,
-                &toolpath.actual,
-                first..split,
-                |_| &hl,
-            );
+            draw_path(surface, &frame, toolpath, false, first..split, |_| &hl);
             surface.end_group();
         }
     }
@@ -287,28 +275,14 @@ pub fn draw_scene(
         t.programmed_rapid(),
     );
     surface.begin_group("actual");
-    draw_path(
-        surface,
-        &frame,
-        toolpath,
-        &toolpath.actual,
-        0..split,
-        |rapid| {
-            if rapid { &ar } else { &af }
-        },
-    );
+    draw_path(surface, &frame, toolpath, false, 0..split, |rapid| {
+        if rapid { &ar } else { &af }
+    });
     surface.end_group();
     surface.begin_group("programmed");
-    draw_path(
-        surface,
-        &frame,
-        toolpath,
-        &toolpath.programmed,
-        0..split,
-        |rapid| {
-            if rapid { &pr } else { &pf }
-        },
-    );
+    draw_path(surface, &frame, toolpath, true, 0..split, |rapid| {
+        if rapid { &pr } else { &pf }
+    });
     surface.end_group();
     scene::draw_arrows(surface, &frame, toolpath, split);
     if let Some(marker) = scene.marker {
@@ -328,10 +302,12 @@ fn draw_path<'a>(
     s: &mut impl Surface,
     f: &Frame,
     tp: &Toolpath,
-    vertices: &[f64],
+    programmed: bool,
     range: std::ops::Range<usize>,
     stroke_for: impl Fn(bool) -> &'a Stroke,
 ) {
+    // Arcs are tessellated for the scale they are drawn at.
+    let tolerance = DRAW_TOLERANCE_PX / f.transform.scale;
     for rapid in [true, false] {
         let stroke = stroke_for(rapid);
         // `pen` is the last point drawn, `pending` the last vertex passed
@@ -339,55 +315,39 @@ fn draw_path<'a>(
         let mut pen: Option<(f64, f64)> = None;
         let mut pending: Option<(f64, f64)> = None;
         let mut begun = false;
-        for (m, &kind) in tp
-            .kinds
-            .iter()
-            .enumerate()
-            .take(range.end)
-            .skip(range.start)
-        {
-            if is_rapid(kind) != rapid {
-                continue;
+        let keep = |m: usize| tp.kinds.get(m).is_some_and(|&k| is_rapid(k) == rapid);
+        tp.for_each_point(range.clone(), programmed, tolerance, keep, |_, i, p| {
+            let (u, v) = f.plane.project(&p);
+            let (x, y) = f.transform.to_screen(u, v);
+            if !(x.is_finite() && y.is_finite()) {
+                return;
             }
-            let (Some(&a), Some(&b)) = (tp.starts.get(m), tp.starts.get(m + 1)) else {
-                continue;
-            };
-            let Some(points) = vertices.get(a as usize * 3..b as usize * 3) else {
-                continue;
-            };
             if !begun {
                 s.begin_path(stroke);
                 begun = true;
             }
-            for (i, p) in points.chunks_exact(3).enumerate() {
-                let (u, v) = f.plane.project(p);
-                let (x, y) = f.transform.to_screen(u, v);
-                if !(x.is_finite() && y.is_finite()) {
-                    continue;
+            if i == 0 {
+                // A move that starts where the last one ended continues
+                // the line; any other starts a new sub-path.
+                let last = pending.or(pen);
+                if last.is_some_and(|(lx, ly)| (x - lx).hypot(y - ly) <= 0.01) {
+                    return;
                 }
-                if i == 0 {
-                    // A move that starts where the last one ended continues
-                    // the line; any other starts a new sub-path.
-                    let last = pending.or(pen);
-                    if last.is_some_and(|(lx, ly)| (x - lx).hypot(y - ly) <= 0.01) {
-                        continue;
-                    }
-                    if let Some((px, py)) = pending.take() {
-                        s.line_to(px, py);
-                    }
-                    s.move_to(x, y);
-                    pen = Some((x, y));
-                    continue;
+                if let Some((px, py)) = pending.take() {
+                    s.line_to(px, py);
                 }
-                if pen.is_some_and(|(px, py)| (x - px).hypot(y - py) < MIN_SEGMENT_PX) {
-                    pending = Some((x, y));
-                    continue;
-                }
-                s.line_to(x, y);
+                s.move_to(x, y);
                 pen = Some((x, y));
-                pending = None;
+                return;
             }
-        }
+            if pen.is_some_and(|(px, py)| (x - px).hypot(y - py) < MIN_SEGMENT_PX) {
+                pending = Some((x, y));
+                return;
+            }
+            s.line_to(x, y);
+            pen = Some((x, y));
+            pending = None;
+        });
         if let Some((px, py)) = pending {
             s.line_to(px, py);
         }
@@ -801,11 +761,31 @@ mod tests {
         let f = Frame::fit(&tp, Plane::Xy, 200.0, 200.0);
         let mut count = Count::default();
         let stroke = style::ACTUAL_FEED;
-        draw_path(&mut count, &f, &tp, &tp.actual, 0..tp.len(), |_| &stroke);
+        draw_path(&mut count, &f, &tp, false, 0..tp.len(), |_| &stroke);
         assert!(count.lines < 100, "{} segments drawn", count.lines);
         // The very end (X105.) is drawn exactly.
         let (u, v) = Plane::Xy.project(&tp.actual[tp.actual.len() - 3..]);
         assert_eq!(count.last, f.transform.to_screen(u, v));
         assert!((u - 105.0).abs() < 1e-9);
+
+        // Arcs are tessellated for the scale drawn: 2,000 circles of 1 mm
+        // on a 100 mm part, 200 px wide, are a few segments each, and the
+        // same circle zoomed to fill the view is smooth.
+        let mut program = String::from("G01 X100. F100.\nG00 X0\n");
+        program.push_str(&"G02 X0 Y0 I0.5 J0\n".repeat(2000));
+        let tp = toolpath(&program);
+        let f = Frame::fit(&tp, Plane::Xy, 200.0, 200.0);
+        let mut count = Count::default();
+        draw_path(&mut count, &f, &tp, false, 0..tp.len(), |_| &stroke);
+        assert!(count.lines < 2000 * 8, "{} segments drawn", count.lines);
+        let one = toolpath("G02 X0 Y0 I0.5 J0 F100.\n");
+        let f = Frame::fit(&one, Plane::Xy, 800.0, 800.0);
+        let mut count = Count::default();
+        draw_path(&mut count, &f, &one, false, 0..1, |_| &stroke);
+        assert!(
+            count.lines > 60,
+            "{} segments for a circle 700 px across",
+            count.lines
+        );
     }
 }

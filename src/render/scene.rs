@@ -169,11 +169,8 @@ fn centre(r: Rect) -> (f64, f64) {
 /// The end of the last move drawn in colour (actual, programmed), or None
 /// before the first move.
 pub fn tool_position(tp: &Toolpath, drawn: usize) -> Option<[[f64; 3]; 2]> {
-    let end = *tp.starts.get(drawn.checked_sub(1)? + 1)? as usize;
-    let i = end.checked_sub(1)? * 3;
-    let a = tp.actual.get(i..i + 3)?;
-    let p = tp.programmed.get(i..i + 3)?;
-    Some([[a[0], a[1], a[2]], [p[0], p[1], p[2]]])
+    let [[_, a], [_, p]] = tp.ends(drawn.checked_sub(1)?)?;
+    Some([a, p])
 }
 
 /// A line from `from` to `to` ending in a filled head.
@@ -215,18 +212,14 @@ pub fn draw_arrows(s: &mut impl Surface, f: &Frame, tp: &Toolpath, drawn: usize)
         if m + 1 < drawn && tp.blocks.get(m + 1) == tp.blocks.get(m) {
             continue;
         }
-        let Some(&end) = tp.starts.get(m + 1) else {
+        let Some([[_, a], [_, p]]) = tp.ends(m) else {
             continue;
         };
-        let i = (end as usize).saturating_sub(1) * 3;
-        let (Some(a), Some(p)) = (tp.actual.get(i..i + 3), tp.programmed.get(i..i + 3)) else {
-            continue;
-        };
-        let screen = |q: &[f64]| {
+        let screen = |q: &[f64; 3]| {
             let (u, v) = f.plane.project(q);
             f.transform.to_screen(u, v)
         };
-        let (to, from) = (screen(a), screen(p));
+        let (to, from) = (screen(&a), screen(&p));
         let len = (to.0 - from.0).hypot(to.1 - from.1);
         if !(len.is_finite() && len >= MIN_ARROW_PX) || !(inside(to) || inside(from)) {
             continue;
@@ -293,30 +286,34 @@ pub fn pick(tp: &Toolpath, f: &Frame, x: f64, y: f64, tolerance: f64) -> Option<
         return None;
     }
     let mut best: Option<(f64, u32)> = None;
-    for m in 0..tp.len() {
-        let (Some(&a), Some(&b), Some(&block)) =
-            (tp.starts.get(m), tp.starts.get(m + 1), tp.blocks.get(m))
-        else {
-            continue;
-        };
-        for vertices in [&tp.actual, &tp.programmed] {
-            let Some(points) = vertices.get(a as usize * 3..b as usize * 3) else {
-                continue;
-            };
-            let mut last: Option<(f64, f64)> = None;
-            for q in points.chunks_exact(3) {
-                let (u, v) = f.plane.project(q);
+    // Arcs tessellated as drawn, so a click on the drawn line hits it.
+    let within = super::DRAW_TOLERANCE_PX / f.transform.scale;
+    for programmed in [false, true] {
+        let mut last: Option<(usize, (f64, f64))> = None;
+        tp.for_each_point(
+            0..tp.len(),
+            programmed,
+            within,
+            |_| true,
+            |m, i, q| {
+                let (u, v) = f.plane.project(&q);
                 let here = f.transform.to_screen(u, v);
                 if !(here.0.is_finite() && here.1.is_finite()) {
-                    continue;
+                    return;
                 }
-                let d = segment_distance((x, y), last.unwrap_or(here), here);
-                if d <= tolerance && best.is_none_or(|(bd, _)| d < bd) {
+                let from = match last {
+                    Some((lm, p)) if lm == m && i > 0 => p,
+                    _ => here,
+                };
+                let d = segment_distance((x, y), from, here);
+                let block = tp.blocks[m];
+                // Ties go to the earlier move (the actual path is walked first).
+                if d <= tolerance && best.is_none_or(|(bd, bb)| d < bd || (d == bd && block < bb)) {
                     best = Some((d, block));
                 }
-                last = Some(here);
-            }
-        }
+                last = Some((m, here));
+            },
+        );
     }
     best.map(|(_, block)| block)
 }
