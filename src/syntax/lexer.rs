@@ -90,41 +90,41 @@ const MAX_DIGITS: usize = 15;
 /// checks that the two agree on every input.
 pub fn number(i: In<'_>) -> (In<'_>, Result<Number, NumberError>) {
     // Fast path for the shape nearly every word has: `[+-]digits[.digits]`
-    // followed by something that is not part of a number.
-    let n = i.len();
-    let mut p = 0;
-    let negative = p < n && i[p] == b'-';
-    if p < n && (i[p] == b'-' || i[p] == b'+') {
-        p += 1;
-    }
-    let int_start = p;
+    // followed by something that is not part of a number — one loop over
+    // the digits and the point.
+    let (negative, mut p) = match i.first() {
+        Some(b'-') => (true, 1),
+        Some(b'+') => (false, 1),
+        _ => (false, 0),
+    };
+    let start = p;
     let mut mantissa = 0u64;
-    while p < n && i[p].is_ascii_digit() && p - int_start < MAX_DIGITS {
-        mantissa = mantissa * 10 + u64::from(i[p] - b'0');
-        p += 1;
-    }
-    let int_len = p - int_start;
-    let point = p < n && i[p] == b'.';
-    let mut frac = 0;
-    if point {
-        p += 1;
-        while p < n && i[p].is_ascii_digit() && int_len + frac < MAX_DIGITS {
-            mantissa = mantissa * 10 + u64::from(i[p] - b'0');
-            p += 1;
-            frac += 1;
+    let mut point_at = None;
+    while let Some(&c) = i.get(p) {
+        let digit = c.wrapping_sub(b'0');
+        if digit < 10 {
+            mantissa = mantissa.wrapping_mul(10).wrapping_add(u64::from(digit));
+        } else if c == b'.' && point_at.is_none() {
+            point_at = Some(p);
+        } else {
+            break;
         }
+        p += 1;
     }
+    let digits = p - start - usize::from(point_at.is_some());
+    // What follows must not continue the number (after blanks: a digit, a
+    // second point or a sign means spaces inside it or a malformed one).
     let mut q = p;
-    while q < n && (i[q] == b' ' || i[q] == b'\t') {
+    while matches!(i.get(q), Some(b' ' | b'\t')) {
         q += 1;
     }
-    let clean = q >= n || !matches!(i[q], b'0'..=b'9' | b'.' | b'+' | b'-');
-    if clean && int_len + frac > 0 && p > 0 {
+    let clean = !matches!(i.get(q), Some(b'0'..=b'9' | b'.' | b'+' | b'-'));
+    if clean && digits > 0 && digits <= MAX_DIGITS {
         let number = Number {
             negative,
             mantissa,
-            frac_digits: frac as u8,
-            point,
+            frac_digits: point_at.map_or(0, |at| (p - at - 1) as u8),
+            point: point_at.is_some(),
         };
         return (&i[p..], Ok(number));
     }
