@@ -63,6 +63,8 @@ fn the_limits_are_the_documented_values() {
     assert_eq!(MAX_REPEATS, 9999);
     assert_eq!(MAX_VERTICES, 16_777_216);
     assert_eq!(offsetlab::machine::arc::MAX_ARC_SEGMENTS, 1024);
+    assert_eq!(offsetlab::render::DRAW_TOLERANCE_PX, 0.2);
+    assert_eq!(offsetlab::toolpath::CHORD_TOLERANCE, 0.01);
     assert_eq!(offsetlab::share::MAX_INFLATED, 2 * 1024 * 1024);
     assert_eq!(offsetlab::share::MAX_LINK, 4 * 1024 * 1024);
     let readme = include_str!("../README.md");
@@ -76,7 +78,8 @@ fn the_limits_are_the_documented_values() {
         "| canned-cycle repeats K/L | 9999",
         "| pecks per G73/G83 hole | 10,000",
         "| segments per drawn arc | 1024",
-        "| vertices per toolpath | 16,777,216",
+        "| vertices per `toolpath()` | 16,777,216",
+        "| chord tolerance of drawn arcs | 0.2 px on screen; 0.01 mm",
         "| share link | 4 MiB",
         "| inflated link document | 2 MiB",
         "| positions | 10⁹ mm",
