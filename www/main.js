@@ -10,10 +10,17 @@
 // kept one click away ("Restore my previous program", across reloads too).
 // The address bar follows the document (modules/address.js); `embed=1` shows
 // the drawing, the step controls and a read-only editor only.
+//
+// Supervision (issue 7, modules/supervisor.js): a task of the worker that
+// takes longer than BUDGET_MS is stopped, and a worker that crashes is
+// replaced; the new worker gets the page's state back (program, setup, view,
+// theme and a new <canvas>) and a message says what happened. A program
+// that stopped the interpreter is not run again until it is edited, so no
+// program can make a restart loop; the work and its autosave are untouched.
 
 import { createEditor } from './dist/editor.js';
 import { addressChanged, initAddress, writtenFragment } from './modules/address.js';
-import { showDiagnostics } from './modules/diagnostics.js';
+import { showDiagnostics, showNotRun } from './modules/diagnostics.js';
 import { DEFAULT_EXAMPLE, EXAMPLES, exampleById } from './modules/examples.js';
 import { initExport } from './modules/export.js';
 import { initOffsets, renderOffsets, setProgramRegisters } from './modules/offsets.js';
@@ -25,15 +32,34 @@ import { initStepper, pause, stepReported } from './modules/stepper.js';
 import {
   disableStorage, initStorage, keepPrevious, loadPrevious, loadWork, saveWork,
 } from './modules/storage.js';
-import { initView, setMachinePlanes, viewReported, viewState } from './modules/view.js';
+import { createSupervisor } from './modules/supervisor.js';
+import { bindCanvas, initView, setMachinePlanes, viewReported, viewState } from './modules/view.js';
 
 /** Re-run this long after the last keystroke. */
 const DEBOUNCE_MS = 150;
 /** Files larger than this are not read (the interpreter reads 256 MiB of program). */
 const MAX_FILE = 300 * 1024 * 1024;
+/**
+ * Hooks of the end-to-end tests, set by an init script before the page loads
+ * (never by a link or a document): `{ budgetMs, startupMs, hooks }`; `hooks`
+ * lets a program ask the worker for a test fault (see worker.js fault()).
+ * Only a plain object counts (an element with that id is not one).
+ */
+const TEST = Object.getPrototypeOf(window.offsetlabTest ?? 0) === Object.prototype ? window.offsetlabTest : null;
+const positive = (v) => (Number.isFinite(v) && v > 0 ? v : null);
+/**
+ * The time budget of one task the page waits for (a run, a link, an
+ * export). A run of 1,000,000 blocks takes about 3 s in the worker on a
+ * 2-core laptop and the core stops every run at 5,000,000 blocks or moves,
+ * so 30 s leaves a slow machine ten times the time of a million blocks; past
+ * it the task is stopped as a runaway.
+ */
+const BUDGET_MS = positive(TEST?.budgetMs) ?? 30_000;
+/** The worker must have loaded the core within this. */
+const STARTUP_MS = positive(TEST?.startupMs) ?? 60_000;
 
 const $ = (id) => document.getElementById(id);
-const canvas = $('view');
+let canvas = $('view'); // replaced by a new <canvas> when the worker restarts
 const summaryLine = $('summary');
 /** The page's address without the fragment: the base of the links it makes. */
 const base = location.href.split('#')[0];
@@ -45,7 +71,7 @@ if (EMBED) {
   disableStorage();
 }
 
-initStorage((message) => showBanner(message, { kind: 'storage' }));
+initStorage(showStorageProblem);
 const saved = loadWork();
 const startWork = EMBED ? { program: '', setup: {} } : saved ?? { ...DEFAULT_EXAMPLE, example: DEFAULT_EXAMPLE.id };
 let setup = cloneSetup(startWork.setup);
@@ -61,13 +87,31 @@ let currentBlock = null;
 let setupFailed = false; // the last run refused the setup
 let viewKnown = false; // the worker has reported a view state
 
-const worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
-const post = (message) => worker.postMessage(message);
+// The worker, supervised (created below, once the canvas is wired).
+let supervisor = null;
+let lastStepSeq = 0; // the stepper's last request, continued by a restarted worker
+function post(message) {
+  if (message.type === 'step' && message.seq) lastStepSeq = message.seq;
+  supervisor?.post(message);
+}
+// After a failure: the document that failed ({ program, setup, count }), and
+// the document not run again until it is edited ({ program, setup }).
+let failed = null;
+let parked = null;
+let restarts = 0;
+let lastSent = null; // { program, setup, view } of the last run request
+const sent = new Map(); // generation → { program, setup, view } of run requests not yet begun
+let runningDoc = null; // the run the worker said it began and has not answered
 
 // Calls answered by the worker (links, documents, exports), in order with the runs.
 let callId = 0;
 const calls = new Map();
+/** Calls that need the session's run: refused while the shown program is not run. */
+const NEEDS_RUN = new Set(['document', 'export']);
 function call(op, args = {}) {
+  if (parked && NEEDS_RUN.has(op)) {
+    return Promise.reject(new Error('the program shown stopped the interpreter and was not run; edit it first'));
+  }
   callId += 1;
   const id = callId;
   return new Promise((resolve, reject) => {
@@ -134,18 +178,19 @@ if (setupOverride !== null) $('setup').value = setupOverride;
 // --- runs
 let requested = 0;
 let timer = 0;
+const sameRun = (a, b) => Boolean(a && b) && a.program === b.program && a.setup === b.setup;
 function requestRun() {
   clearTimeout(timer);
   delete document.body.dataset.pending;
+  const doc = { program: editor.getText(), setup: setupOverride ?? JSON.stringify(setup) };
+  // The program that stopped the interpreter runs again only once edited.
+  if (sameRun(doc, parked)) return;
+  parked = null;
   requested += 1;
   document.body.dataset.requested = String(requested);
-  post({
-    type: 'run',
-    gen: requested,
-    program: editor.getText(),
-    setup: setupOverride ?? JSON.stringify(setup),
-    view: pendingView,
-  });
+  lastSent = { ...doc, view: pendingView };
+  sent.set(requested, lastSent);
+  post({ type: 'run', gen: requested, ...doc, view: pendingView });
   pendingView = null;
 }
 function scheduleRun() {
@@ -175,13 +220,28 @@ function persist() {
 }
 
 // --- what the worker says
-worker.addEventListener('message', (event) => {
-  const m = event.data;
+function forget(gen) {
+  for (const g of sent.keys()) if (g <= gen) sent.delete(g);
+}
+
+function onWorkerMessage(m) {
+  if (m.type === 'busy') {
+    if (m.task === 'run') {
+      runningDoc = sent.get(m.gen) ?? null;
+      forget(m.gen);
+    }
+    return;
+  }
   if (m.type === 'result') {
+    runningDoc = null;
+    forget(m.gen);
     if (m.gen < requested) return; // stale: a newer request is on its way
     showResult(m);
     document.body.dataset.rendered = String(m.gen);
+    if (failed ? !sameRun(lastSent, failed) : document.body.dataset.stopped) recovered();
   } else if (m.type === 'state') {
+    // A restarted worker's empty session (generation 0) is not the page's state.
+    if (m.gen === 0 && restarts > 0) return;
     showViewState(m);
   } else if (m.type === 'drawn') {
     document.body.dataset.drawn = `${m.width}x${m.height}@${m.dpr}`;
@@ -191,14 +251,8 @@ worker.addEventListener('message', (event) => {
     if (!pending) return;
     if (m.error !== undefined) pending.reject(new Error(m.error));
     else pending.resolve(m.value);
-  } else if (m.type === 'failure') {
-    showFailure(m.message);
   }
-});
-worker.addEventListener('error', (event) => {
-  event.preventDefault();
-  showFailure(`the interpreter could not start: ${event.message || 'worker error'}`);
-});
+}
 
 const plural = (n, word) => `${n} ${word}${n === 1 ? '' : 's'}`;
 function endText(end) {
@@ -239,10 +293,86 @@ function showViewState(m) {
   else if (m.cause === 'run' && viewKnown) saveWork(currentWork());
 }
 
-function showFailure(text) {
-  summaryLine.textContent = `Internal error: ${text}`;
+// --- failures of the worker (modules/supervisor.js has terminated it)
+const seconds = (ms) => `${Number((ms / 1000).toFixed(1))} s`;
+const TASKS = { run: 'the run', document: 'making the link', export: 'the export', decode: 'opening the link', read: 'reading the file', canonical: 'comparing documents' };
+
+function onWorkerFailure({ kind, detail, task }) {
+  for (const pending of calls.values()) pending.reject(new Error('the interpreter was stopped'));
+  calls.clear();
+  const why = String(detail ?? '').slice(0, 200);
+  console.warn(`offsetlab: the interpreter failed (${kind}): ${why}`);
+  const body = document.body.dataset;
+  body.failures = String(Number(body.failures ?? 0) + 1);
+  body.failure = kind;
+  // The document it failed on: the run it had begun, else the last one asked for.
+  const doc = (task === 'run' ? runningDoc : null) ?? lastSent
+    ?? { program: editor.getText(), setup: setupOverride ?? JSON.stringify(setup) };
+  runningDoc = null;
+  sent.clear();
+  if (kind === 'start') {
+    // Nothing to restart into: the next run or call tries a new worker.
+    showStopped(`The interpreter could not start (${why}). Your work is kept; reload the page to try again.`, { kind });
+    return;
+  }
+  failed = { program: doc.program, setup: doc.setup, count: sameRun(doc, failed) ? failed.count + 1 : 1 };
+  // The view to give the new worker: the one the failed run was asked for, or the one shown.
+  const view = doc.view ?? (viewKnown ? viewState() : null);
+  const now = { program: editor.getText(), setup: setupOverride ?? JSON.stringify(setup) };
+  const edited = !sameRun(now, doc); // the user changed it meanwhile: that runs
+  const what = TASKS[task] ?? 'the interpreter';
+  const took = `${what[0].toUpperCase()}${what.slice(1)} took longer than ${seconds(BUDGET_MS)} and was stopped`;
+  if (failed.count >= 3 && !edited) {
+    // It failed again with nothing new asked of it: no more restarts until an edit.
+    parked = doc;
+    pendingView = view;
+    showStopped(`The interpreter keeps failing on this program (${why}). Your work is kept; edit the program or the setup to try again.`, { kind });
+    return;
+  }
+  restarts += 1;
+  document.body.dataset.restarts = String(restarts);
+  document.body.dataset.interpreter = 'starting';
+  supervisor.start();
+  pendingView = view;
+  // Run again: work the user changed meanwhile; or, the first time, after a
+  // crash (it may not come back: memory, a one-off) or a call that hung (its
+  // run had finished). A run that hung would only hang again.
+  if (edited || (failed.count === 1 && (kind === 'crash' || task !== 'run'))) {
+    requestRun();
+    const restored = edited ? 'your changes' : 'your program, setup and view';
+    showBanner(kind === 'hang'
+      ? `${took}; the interpreter was restarted with ${restored}.`
+      : `The interpreter crashed (${why}) and was restarted with ${restored}.`, { kind: 'worker' });
+    return;
+  }
+  parked = doc;
+  showStopped(kind === 'hang'
+    ? `${took}; the page is usable — edit the program (or its setup) and it runs again.`
+    : `The interpreter crashed again on this program (${why}) and was restarted without running it, so the page stays usable — edit the program or the setup and it runs again.`, { kind });
+}
+
+/** Shows that the program shown was not run (or not finished): banner, summary, diagnostics, steps. */
+function showStopped(text, { kind }) {
+  showBanner(text, { kind: 'worker' });
+  summaryLine.textContent = text;
   summaryLine.classList.add('has-errors');
-  console.warn('offsetlab:', text);
+  showNotRun($('diagnostics'), text);
+  editor.setDiagnostics([]);
+  // Nothing of the failed run is shown: no blocks, no current block.
+  blockCount = 0;
+  currentBlock = null;
+  stepReported(-1, 0, null, lastStepSeq);
+  showState($('state-panel'), null, { blocks: 0 });
+  editor.showCurrent(null, false);
+  document.body.dataset.stopped = kind;
+}
+
+/** A run of another document succeeded after a failure: the message goes. */
+function recovered() {
+  failed = null;
+  delete document.body.dataset.stopped;
+  delete document.body.dataset.failure;
+  showBanner(null, { kind: 'worker' });
 }
 
 // --- banner (storage problems, a link or example opened with a way back, a broken link)
@@ -262,6 +392,16 @@ function showBanner(message, { kind, action, onAction } = {}) {
 }
 $('banner-close').addEventListener('click', () => {
   $('banner').hidden = true;
+});
+
+/** Storage problems have their own banner: no other message may hide that the work is not saved. */
+function showStorageProblem(message) {
+  const banner = $('storage-banner');
+  banner.querySelector('.text').textContent = message ?? '';
+  banner.hidden = !message;
+}
+$('storage-banner-close').addEventListener('click', () => {
+  $('storage-banner').hidden = true;
 });
 
 // --- documents: examples, links and files replace the work; the user's own
@@ -381,6 +521,24 @@ async function sameDocument(a, b) {
   }
 }
 
+/**
+ * "Open in playground": the codec's link to this page (never a `javascript:`
+ * or other URL a link could smuggle in); anything but an http(s) link of
+ * this page's own address falls back to the plain page.
+ */
+function playgroundHref(link) {
+  try {
+    const url = new URL(link, base);
+    const page = new URL(base);
+    if (['http:', 'https:'].includes(url.protocol) && url.origin === page.origin && url.pathname === page.pathname) {
+      return url.href;
+    }
+  } catch {
+    // not a URL: the plain page
+  }
+  return './';
+}
+
 function showLinkError(error, what = 'This link') {
   const kept = EMBED ? '' : ' Your own work is unchanged.';
   showBanner(`${what} could not be opened: ${error.message} (${error.code}).${kept}`, { kind: 'link-error' });
@@ -414,7 +572,7 @@ async function openLink(fragment, { initial = false } = {}) {
     return;
   }
   if (EMBED) {
-    $('open-playground').href = answer.playground ?? base;
+    $('open-playground').href = playgroundHref(answer.playground);
     loadDocument(work);
   } else if (await sameDocument(work, currentWork())) {
     // The work shown already (say, a reload of an opened link): only its view and step.
@@ -505,8 +663,35 @@ function canvasSize() {
   const box = canvas.getBoundingClientRect();
   return { width: Math.max(1, Math.round(box.width)), height: Math.max(1, Math.round(box.height)), dpr: window.devicePixelRatio || 1 };
 }
-const offscreen = canvas.transferControlToOffscreen();
-worker.postMessage({ type: 'init', canvas: offscreen, theme: theme(), ...canvasSize() }, [offscreen]);
+
+let canvasHandedOver = false;
+/**
+ * A new worker's init message: the canvas (as an OffscreenCanvas), the
+ * theme and size, the stepper's count. A canvas hands its control over once
+ * only, so a restarted worker gets a new <canvas> in place of the old one —
+ * the same element (id, attributes, focus) with the same input.
+ */
+function makeInit() {
+  if (canvasHandedOver) {
+    const fresh = canvas.cloneNode(false);
+    fresh.classList.remove('dragging');
+    const focused = document.activeElement === canvas;
+    resizeObserver.unobserve(canvas);
+    canvas.replaceWith(fresh);
+    canvas = fresh;
+    bindCanvas(canvas);
+    resizeObserver.observe(canvas);
+    if (focused) canvas.focus();
+  }
+  canvasHandedOver = true;
+  const offscreen = canvas.transferControlToOffscreen();
+  return {
+    message: {
+      type: 'init', canvas: offscreen, theme: theme(), ...canvasSize(), stepSeq: lastStepSeq, testHooks: TEST?.hooks === true,
+    },
+    transfer: [offscreen],
+  };
+}
 
 let lastSize = '';
 let sizeFrame = 0;
@@ -520,7 +705,8 @@ function reportSize() {
     post({ type: 'resize', ...size });
   });
 }
-new ResizeObserver(reportSize).observe(canvas);
+const resizeObserver = new ResizeObserver(reportSize);
+resizeObserver.observe(canvas);
 // Zooming the page or moving it to another screen changes devicePixelRatio.
 function watchPixelRatio() {
   const query = matchMedia(`(resolution: ${window.devicePixelRatio || 1}dppx)`);
@@ -530,6 +716,18 @@ function watchPixelRatio() {
   }, { once: true });
 }
 watchPixelRatio();
+
+supervisor = createSupervisor({
+  url: new URL('./worker.js', import.meta.url),
+  budgetMs: BUDGET_MS,
+  startupMs: STARTUP_MS,
+  makeInit,
+  onMessage: onWorkerMessage,
+  onFailure: onWorkerFailure,
+  // For the tests (and the curious): the interpreter has loaded.
+  onReady: () => { document.body.dataset.interpreter = 'ready'; },
+});
+supervisor.start();
 
 initView(canvas, post);
 const centreZoom = (factor) => {
@@ -549,6 +747,7 @@ const ADDRESS_MAX_LINK = 32 * 1024;
  * setup is refused).
  */
 async function currentFragment() {
+  if (parked) return null; // not run: the worker has no document to make the link of
   if (editor.view.state.doc.length > ADDRESS_MAX_PROGRAM) return '';
   flushRun();
   const answer = await call('document', { base, forms: ['link'] });

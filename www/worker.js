@@ -5,17 +5,26 @@
 // page: the summary, the diagnostics, the view state and the current block's
 // report — and, when the page asks (call), a link, a document or an export.
 //
-// In:  init {canvas, width, height, dpr, theme} · resize {width, height, dpr}
-//      run {gen, program, setup} · theme {name}
+// In:  init {canvas, width, height, dpr, theme, stepSeq, testHooks} · resize {width, height, dpr}
+//      run {gen, program, setup, view} · theme {name}
 //      view {op: zoom {x, y, factor} | pan {dx, dy} | fit | plane {plane} | set {view}}
 //      step {index} · pick {x, y, tolerance} · line {line}
 //      call {id, op, ...}: op document {base, embed, forms} · decode {text, base}
 //        · read {text, base} · canonical {document} · export {format}
-// Out: result {gen, summary, diagnostics} · state {gen, view, step, blocks, block, cause}
-//      drawn {width, height, dpr} · failure {gen, message} · reply {id, value | error}
+// Out: ready (the core is loaded) · busy {task: 'run' | a call's op, gen | id}
+//      result {gen, summary, diagnostics}
+//      state {gen, view, step, blocks, block, cause} · drawn {width, height, dpr}
+//      failure {gen, message} · reply {id, value | error}
 //
 // Calls are answered in order with the runs, so a call posted after a run
 // request sees that run.
+//
+// The page supervises this worker (modules/supervisor.js): it is terminated
+// and replaced when a task takes longer than the page's time budget or when
+// it reports a `failure`. A `failure` means this worker must not be used
+// again: an exception from a run or a drawing, or a WebAssembly trap (a
+// panic, out of memory) anywhere — after a trap the core's state may be
+// broken ("recursive use of an object"), so only a new worker is safe.
 
 import init, {
   Session, decode_link, document_json, encode_link, encode_plain, link_limits, read_document,
@@ -31,9 +40,11 @@ let lastBlock = -2;
 let stepSeq = 0; // the last step request handled (the page counts its own)
 let canvas = null; // the OffscreenCanvas (also held by the session) for PNG export
 let setupFailed = false; // the last run's setup was refused (it ran with the default setup)
+let testHooks = false; // honour the test-only `fault` of a run (see fault())
 
 const ready = init().then(() => {
   session = new Session();
+  self.postMessage({ type: 'ready' });
 });
 
 // Messages are handled one at a time, in order, once the core is loaded.
@@ -94,6 +105,9 @@ function handle(message) {
       session.attach_canvas(message.canvas);
       session.set_theme(message.theme || 'light');
       size = { width: message.width, height: message.height, dpr: message.dpr };
+      // A restarted worker continues the page's count of step requests.
+      stepSeq = message.stepSeq ?? 0;
+      testHooks = message.testHooks === true;
       invalidate('init');
       break;
     case 'resize':
@@ -107,6 +121,9 @@ function handle(message) {
     case 'run': {
       // A newer request is already queued: skip straight to it.
       if (message.gen < latest) return;
+      // The page's supervisor times each task from here.
+      self.postMessage({ type: 'busy', task: 'run', gen: message.gen });
+      if (testHooks && fault(message.program)) return;
       const started = performance.now();
       const result = session.run(message.program, message.setup);
       setupFailed = result.diagnostics.some((d) => d.line === 0 && d.code.startsWith('setup-'));
@@ -155,15 +172,63 @@ function handle(message) {
   return undefined;
 }
 
-/** Answers a call; an exception becomes `{ error }`, never a dead worker. */
+/**
+ * Answers a call; an exception becomes `{ error }`. A WebAssembly trap (or
+ * running out of memory) is also reported as a `failure`: the page then
+ * replaces this worker, whose core can no longer be trusted.
+ */
 async function call(message) {
   let reply;
+  let trap = null;
+  self.postMessage({ type: 'busy', task: message.op, id: message.id });
   try {
     reply = { type: 'reply', id: message.id, value: await answer(message) };
   } catch (error) {
     reply = { type: 'reply', id: message.id, error: String(error?.message ?? error) };
+    if (error instanceof WebAssembly.RuntimeError || error instanceof RangeError) trap = error;
   }
   self.postMessage(reply);
+  if (trap) self.postMessage({ type: 'failure', gen: shown, message: String(trap.message ?? trap) });
+}
+
+/** A program asking for a test fault: `(offsetlab-test-fault: hang)`, … */
+const TEST_FAULT = /\(offsetlab-test-fault: (hang|trap|error|exit)\)/;
+
+/**
+ * Test-only faults, so the end-to-end tests can check the page's
+ * supervision (real programs are bounded by the core's limits and cannot
+ * hang it): a run whose program contains `(offsetlab-test-fault: KIND)`
+ * hangs, traps, throws an uncaught error or ends the worker. Honoured only
+ * when the page started this worker with `testHooks`, which it does only
+ * when the tests set `window.offsetlabTest = { hooks: true }` before the
+ * page loads (an init script; never from a link, a file or the program).
+ * Returns true when the run must not go on.
+ */
+function fault(program) {
+  const kind = TEST_FAULT.exec(program)?.[1];
+  switch (kind) {
+    case 'hang':
+      // A runaway run: busy for ever, answering nothing (the page's budget stops it).
+      while (testHooks) {
+        // spin
+      }
+      return true;
+    case 'trap':
+      // What a panic in the core looks like from here.
+      throw new WebAssembly.RuntimeError('unreachable (test fault)');
+    case 'error':
+      // An uncaught error: the worker's `error` event at the page.
+      setTimeout(() => {
+        throw new Error('test fault: an uncaught error in the worker');
+      });
+      return true;
+    case 'exit':
+      // The worker dies without a word: noticed when it stops answering.
+      self.close();
+      return true;
+    default:
+      return false;
+  }
 }
 
 async function answer(message) {

@@ -200,7 +200,7 @@ describe('no lost work', () => {
   test('when storage is full the page says so', async () => {
     await withPage(async (page, { problems }) => {
       await typeProgram(page, 'G00 X1.;\n');
-      const banner = page.locator('#banner');
+      const banner = page.locator('#storage-banner');
       await banner.waitFor({ state: 'visible' });
       assert.match(await banner.textContent(), /not being saved: the browser’s storage is full/);
       problems.length = 0;

@@ -43,3 +43,11 @@ function item(d, { jump, openSetup }) {
   });
   return li;
 }
+
+/** Shows that the program was not run (the interpreter was stopped): one line of text. */
+export function showNotRun(list, text) {
+  const li = document.createElement('li');
+  li.className = 'error stopped';
+  li.textContent = text;
+  list.replaceChildren(li);
+}

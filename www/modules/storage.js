@@ -1,7 +1,10 @@
 // No lost work: the program, the setup (offsets and settings) and the view
 // are saved in localStorage as the user types (at most every SAVE_MS, and at
 // once when the page is hidden) and restored on the next visit. When the
-// browser refuses (storage full, disabled, private mode), the page says so.
+// browser refuses (storage full, disabled, private mode), the page says so:
+// at load if storage cannot be used at all, and at every save that fails
+// (the message goes again once a save succeeds). The message has its own
+// banner, so that no other message (a link, an example) can hide it.
 //
 // Work that an opened link, document file or example displaced is kept
 // under its own key (PREVIOUS_KEY) until it is restored, so it stays one
@@ -17,6 +20,7 @@ let pending = null;
 let onProblem = () => {};
 let failing = false;
 let enabled = true;
+let unavailable = false; // the browser does not let this page use localStorage at all
 let previousInMemory = null; // when storage refuses, the displaced work lives here
 
 /** Turns saving off (embed mode): loadWork() is null, saveWork() does nothing. */
@@ -25,6 +29,13 @@ export function disableStorage() {
   pending = null;
   clearTimeout(timer);
   timer = 0;
+}
+
+/** Why the browser refused: its storage is full, or the error's own words. */
+function reason(error) {
+  const full = error?.name === 'QuotaExceededError' || error?.name === 'NS_ERROR_DOM_QUOTA_REACHED'
+    || error?.code === 22 || error?.code === 1014;
+  return full ? 'the browser’s storage is full' : (error?.message || 'storage is unavailable');
 }
 
 function readJson(key) {
@@ -38,6 +49,7 @@ function readJson(key) {
 /** The work an opened link, file or example displaced, or null. */
 export function loadPrevious() {
   if (!enabled) return null;
+  if (unavailable) return previousInMemory;
   try {
     return readJson(PREVIOUS_KEY) ?? previousInMemory;
   } catch {
@@ -53,14 +65,13 @@ export function keepPrevious(work) {
     if (work) localStorage.setItem(PREVIOUS_KEY, JSON.stringify(work));
     else localStorage.removeItem(PREVIOUS_KEY);
   } catch (error) {
-    const why = error?.name === 'QuotaExceededError' ? 'the browser’s storage is full' : (error?.message || 'storage is unavailable');
-    onProblem(`Your previous program is kept only until this page is closed: ${why}.`);
+    onProblem(`Your previous program is kept only until this page is closed: ${reason(error)}.`);
   }
 }
 
 /** The saved work { program, setup, setupText?, view? } or null. */
 export function loadWork() {
-  if (!enabled) return null;
+  if (!enabled || unavailable) return null;
   try {
     return readJson(KEY);
   } catch (error) {
@@ -84,9 +95,11 @@ function flush() {
     }
   } catch (error) {
     failing = true;
-    const why = error?.name === 'QuotaExceededError' ? 'the browser’s storage is full' : (error?.message || 'storage is unavailable');
-    onProblem(`Your work is not being saved: ${why}. Copy your program somewhere safe before you leave.`);
+    document.body.dataset.saveFailed = 'true';
+    onProblem(`Your work is not being saved: ${reason(error)}. Copy your program somewhere safe before you leave.`);
+    return;
   }
+  delete document.body.dataset.saveFailed;
 }
 
 /** Saves `work` soon (throttled). */
@@ -105,6 +118,18 @@ export function saveWork(work) {
 /** `report(message | null)` shows or clears a storage problem. */
 export function initStorage(report) {
   onProblem = report;
+  if (enabled) {
+    // Storage switched off (blocked cookies and site data) throws on access:
+    // say so now, before the user has typed anything worth keeping.
+    try {
+      void window.localStorage.length;
+    } catch (error) {
+      failing = true;
+      unavailable = true;
+      document.body.dataset.saveFailed = 'true';
+      onProblem(`Your work will not be saved: this browser does not allow this page to store data (${error?.message || error?.name || 'storage is disabled'}). Copy your program somewhere safe before you leave.`);
+    }
+  }
   const now = () => {
     flush();
     delete document.body.dataset.unsaved;

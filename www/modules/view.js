@@ -4,6 +4,8 @@
 // zoom/fit buttons. The worker keeps the view state and draws; this module
 // only forwards what the user does and remembers the state the worker
 // reports, which `viewState()` hands to whoever needs it (share links).
+// A restarted worker needs a new <canvas> (an OffscreenCanvas is handed
+// over once only): `bindCanvas()` gives it the same input.
 
 const CLICK_SLOP = 4; // px a press may move and still count as a click
 const WHEEL_STEP = 1.0015; // zoom factor per wheel delta pixel
@@ -43,9 +45,26 @@ export function setMachinePlanes(machine) {
   select.disabled = machine === 'lathe';
 }
 
+const send = (op, extra = {}) => post({ type: 'view', op, ...extra });
+
 export function initView(canvas, postMessage) {
   post = postMessage;
-  const send = (op, extra = {}) => post({ type: 'view', op, ...extra });
+  bindCanvas(canvas);
+  const centreZoom = (factor) => {
+    // The current canvas (it is replaced when the worker restarts).
+    const r = document.getElementById('view').getBoundingClientRect();
+    send('zoom', { x: r.width / 2, y: r.height / 2, factor });
+  };
+  document.getElementById('zoom-in').addEventListener('click', () => centreZoom(1.25));
+  document.getElementById('zoom-out').addEventListener('click', () => centreZoom(0.8));
+  document.getElementById('fit').addEventListener('click', () => send('fit'));
+  document.getElementById('plane').addEventListener('change', (event) => {
+    send('plane', { plane: event.target.value });
+  });
+}
+
+/** The drawing's own input (wheel, pointers, double-click, keys) on `canvas`. */
+export function bindCanvas(canvas) {
   const local = (event) => {
     const r = canvas.getBoundingClientRect();
     return { x: event.clientX - r.left, y: event.clientY - r.top };
@@ -138,16 +157,5 @@ export function initView(canvas, postMessage) {
     }
     event.preventDefault();
     event.stopPropagation();
-  });
-
-  const centreZoom = (factor) => {
-    const r = canvas.getBoundingClientRect();
-    send('zoom', { x: r.width / 2, y: r.height / 2, factor });
-  };
-  document.getElementById('zoom-in').addEventListener('click', () => centreZoom(1.25));
-  document.getElementById('zoom-out').addEventListener('click', () => centreZoom(0.8));
-  document.getElementById('fit').addEventListener('click', () => send('fit'));
-  document.getElementById('plane').addEventListener('change', (event) => {
-    send('plane', { plane: event.target.value });
   });
 }
