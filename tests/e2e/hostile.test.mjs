@@ -17,7 +17,7 @@
 // close itself (www/worker.js fault()).
 
 import assert from 'node:assert/strict';
-import { mkdtempSync, readdirSync, writeFileSync } from 'node:fs';
+import { mkdtempSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { describe, test } from 'node:test';
@@ -306,6 +306,14 @@ describe('markup in programs, diagnostics and links is text', () => {
 });
 
 describe('worker supervision', () => {
+  test('the time budget is 30 s, as the README says', () => {
+    const main = readFileSync(join(ROOT, 'www', 'main.js'), 'utf8');
+    assert.match(main, /const BUDGET_MS = positive\(TEST\?\.budgetMs\) \?\? 30_000;/);
+    const readme = readFileSync(join(ROOT, 'README.md'), 'utf8');
+    assert.ok(readme.includes("| time per task of the page's worker | 30 s |"), 'README Limits row');
+    assert.ok(readme.includes('that takes longer than 30 s is stopped'), 'README page section');
+  });
+
   test('a runaway run is stopped at the time budget; the page keeps its state and draws again after an edit', async () => {
     await withPage(async (page) => {
       await typeProgram(page, 'G90 G00 X0 Y0;\nG01 X40. Y20. F100.;\n');
