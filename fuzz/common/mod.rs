@@ -239,6 +239,7 @@ pub fn check_run_with(setup: &Setup, program: &str, max_moves: usize) {
             RunOptions {
                 keep_blocks: false,
                 checkpoint_every: 7,
+                max_moves,
                 ..RunOptions::default()
             },
         );
