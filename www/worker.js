@@ -42,7 +42,22 @@ let canvas = null; // the OffscreenCanvas (also held by the session) for PNG exp
 let setupFailed = false; // the last run's setup was refused (it ran with the default setup)
 let testHooks = false; // honour the test-only `fault` of a run (see fault())
 
-const ready = init().then(() => {
+/**
+ * Alive: this worker holds a Web Lock named after it (the page names each
+ * worker) for as long as it lives, so the page learns at once when it dies
+ * (the lock is then granted to the page); without Web Locks the page notices
+ * only when it stops answering.
+ */
+const alive = self.name && self.navigator?.locks
+  ? new Promise((held) => {
+    self.navigator.locks.request(self.name, () => {
+      held();
+      return new Promise(() => {}); // held until the worker ends
+    }).catch(() => held());
+  })
+  : Promise.resolve();
+
+const ready = Promise.all([init(), alive]).then(() => {
   session = new Session();
   self.postMessage({ type: 'ready' });
 });
@@ -192,13 +207,14 @@ async function call(message) {
 }
 
 /** A program asking for a test fault: `(offsetlab-test-fault: hang)`, … */
-const TEST_FAULT = /\(offsetlab-test-fault: (hang|trap|error|exit)\)/;
+const TEST_FAULT = /\(offsetlab-test-fault: (hang|trap|trap-in-first-worker|error|exit)\)/;
 
 /**
  * Test-only faults, so the end-to-end tests can check the page's
  * supervision (real programs are bounded by the core's limits and cannot
  * hang it): a run whose program contains `(offsetlab-test-fault: KIND)`
- * hangs, traps, throws an uncaught error or ends the worker. Honoured only
+ * hangs, traps (`trap-in-first-worker`: only in the page's first worker),
+ * throws an uncaught error or ends the worker. Honoured only
  * when the page started this worker with `testHooks`, which it does only
  * when the tests set `window.offsetlabTest = { hooks: true }` before the
  * page loads (an init script; never from a link, a file or the program).
@@ -216,6 +232,10 @@ function fault(program) {
     case 'trap':
       // What a panic in the core looks like from here.
       throw new WebAssembly.RuntimeError('unreachable (test fault)');
+    case 'trap-in-first-worker':
+      // A crash that does not come back: only the page's first worker traps.
+      if (/-1$/.test(self.name)) throw new WebAssembly.RuntimeError('unreachable (test fault)');
+      return false;
     case 'error':
       // An uncaught error: the worker's `error` event at the page.
       setTimeout(() => {

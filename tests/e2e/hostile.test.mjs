@@ -12,9 +12,10 @@
 //
 // The runaway and the crashes are made with the worker's test faults: with
 // `window.offsetlabTest = { hooks: true }` set by an init script, a program
-// containing `(offsetlab-test-fault: hang|trap|error|exit)` makes the worker
-// spin, throw what a WebAssembly trap throws, throw an uncaught error, or
-// close itself (www/worker.js fault()).
+// containing `(offsetlab-test-fault: KIND)` makes the worker spin (hang),
+// throw what a WebAssembly trap throws (trap; trap-in-first-worker only in
+// the page's first worker), throw an uncaught error (error), or close itself
+// (exit) — www/worker.js fault(). `budgetMs` shortens the time budget.
 
 import assert from 'node:assert/strict';
 import { mkdtempSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
@@ -369,11 +370,13 @@ describe('worker supervision', () => {
     }, hooks(1500));
   });
 
-  test('a crashed worker is replaced: a trap and an uncaught error are run once more, then left until an edit; a silent death is noticed', async () => {
+  test('a crashed worker is replaced: after a trap, an uncaught error or a silent death the program runs once more, then is left until an edit', async () => {
     await withPage(async (page) => {
       for (const [kind, pattern] of [
         ['trap', /^The interpreter crashed again on this program \(unreachable \(test fault\)\)/],
         ['error', /^The interpreter crashed again on this program \(.*test fault: an uncaught error/],
+        // The worker ends without a word: its Web Lock tells the page at once.
+        ['exit', /^The interpreter crashed again on this program \(its worker stopped\)/],
       ]) {
         const before = Number(await page.evaluate(() => document.body.dataset.failures ?? 0));
         await pasteProgram(page, `G00 X${kind.length}.;\n(offsetlab-test-fault: ${kind})\n`);
@@ -388,15 +391,30 @@ describe('worker supervision', () => {
         assert.match(await page.locator('#summary').textContent(), /^2 blocks · 1 move · 0 errors/);
         assert.ok(await drawn(page), `drawn after the ${kind}`);
         assert.equal(await page.locator('#banner').isVisible(), false);
+        assert.equal(await page.locator('canvas').count(), 1);
       }
-      // A worker that dies without a word stops answering: stopped at the budget.
-      await pasteProgram(page, 'G00 X7.;\n(offsetlab-test-fault: exit)\n');
-      await waitForStopped(page, 'hang');
-      assert.match(await page.locator('#banner .text').textContent(), /^The run took longer than 1\.5 s and was stopped/);
-      await typeProgram(page, 'G90 G00 X0 Y0;\nG01 X20. Y30. F100.;\n');
-      assert.ok(await drawn(page), 'drawn after the silent death');
-      assert.equal(await page.locator('canvas').count(), 1);
-    }, hooks(1500));
+    }, hooks(30_000)); // every failure here is noticed without waiting for the budget
+  });
+
+  test('a crash that does not come back: the program runs again in the new worker and is drawn, with a message', async () => {
+    await withPage(async (page) => {
+      await page.locator('#zoom-out').click();
+      const view = await waitForView(page, (v) => v.zoom < 0.9);
+      const program = 'G90 G00 X0 Y0;\nG01 X40. Y10. F100.;\n(offsetlab-test-fault: trap-in-first-worker)\n';
+      await pasteProgram(page, program);
+      await page.waitForFunction(() => document.body.dataset.restarts === '1');
+      await waitForRun(page);
+      assert.match(await page.locator('#banner .text').textContent(),
+        /^The interpreter crashed \(unreachable \(test fault\)\) and was restarted with your program, setup and view\.$/);
+      assert.match(await page.locator('#summary').textContent(), /^2 blocks · 1 move · 0 errors/);
+      assert.equal(await page.evaluate(() => document.body.dataset.stopped), undefined);
+      assert.ok(await drawn(page));
+      assert.ok(Math.abs((await viewOf(page)).zoom - view.zoom) < 1e-6, 'the view is restored');
+      assert.equal(await page.evaluate(() => document.body.dataset.failures), '1');
+      // Share works again: the new worker holds the document.
+      const { document: doc } = await page.evaluate(() => window.offsetlab.document());
+      assert.equal(doc.program, program);
+    }, hooks(30_000));
   });
 });
 

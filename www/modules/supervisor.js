@@ -14,7 +14,10 @@
 //   exception it reports (`failure`, such as a WebAssembly trap: after a
 //   trap the core's memory may be inconsistent, so it is never used again):
 //   terminated, `onFailure({ kind: 'crash', detail })`. A worker that dies
-//   silently is noticed as a hang (it stops answering).
+//   without a word (it closed itself, its thread was killed) is a crash too:
+//   it holds a Web Lock named after it while it lives, which the page asks
+//   for and is granted when it dies. Where Web Locks are missing (a page not
+//   in a secure context), such a death is noticed as a hang.
 // - Start: a worker that fails (or takes `startupMs`) before it says
 //   `ready` is `onFailure({ kind: 'start', detail })`.
 //
@@ -25,6 +28,8 @@
 // needs it and none is running.
 
 const GRACE_MS = 500;
+let serial = 0; // names the workers (and their Web Locks) of this page
+const pageId = Math.random().toString(36).slice(2, 10);
 
 export function createSupervisor({ url, budgetMs, startupMs, makeInit, onMessage, onFailure, onReady = () => {} }) {
   let worker = null;
@@ -100,7 +105,9 @@ export function createSupervisor({ url, budgetMs, startupMs, makeInit, onMessage
   /** Starts a fresh worker (terminating the current one) and initialises it. */
   function start() {
     stop();
-    const w = new Worker(url, { type: 'module' });
+    serial += 1;
+    const name = `offsetlab-interpreter-${pageId}-${serial}`;
+    const w = new Worker(url, { type: 'module', name });
     worker = w;
     w.addEventListener('message', (event) => {
       if (w !== worker) return; // a terminated worker's last words
@@ -110,6 +117,10 @@ export function createSupervisor({ url, budgetMs, startupMs, makeInit, onMessage
         ready = true;
         since = performance.now();
         arm();
+        // The worker holds the lock of its name while it lives: granted to us, it has died.
+        navigator.locks?.request(name, () => {
+          if (w === worker) fail('crash', 'its worker stopped');
+        }).catch(() => {});
         onReady();
         return;
       }
