@@ -281,6 +281,7 @@ function showResult({ summary, diagnostics }) {
 
 function showViewState(m) {
   if (m.gen > 0) viewKnown = true; // a state of a run, not the empty session's
+  document.body.dataset.stateGen = String(m.gen); // the run whose state is shown (tests wait for it)
   viewReported(m.view);
   blockCount = m.blocks;
   if (m.block !== undefined) currentBlock = m.block;

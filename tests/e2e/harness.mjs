@@ -351,6 +351,10 @@ export function useBrowser() {
     const { context, page, problems } = await openPage(ctx.browser, ctx.server.url + (options.hash ?? ''), options);
     try {
       await waitForRun(page);
+      // And its view state (the stepper, the state panel), which the worker
+      // reports with the drawing, a frame after the run's result.
+      await page.waitForFunction(() => document.body.dataset.stateGen === document.body.dataset.rendered
+        || document.body.dataset.stopped !== undefined, null, { timeout: 20_000 });
       await body(page, { context, problems });
       assert.deepEqual(problems, [], 'no console errors, page exceptions or failed requests');
     } finally {
