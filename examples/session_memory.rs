@@ -21,7 +21,9 @@ fn main() {
         ..Default::default()
     };
     let mut tp = offsetlab::toolpath::Toolpath::new(setup.machine, setup.units);
-    let run = offsetlab::run_observed(&text, &setup, opts, |m| tp.push(m));
+    let run = offsetlab::run_observed(&text, &setup, opts, &mut |m: &offsetlab::report::Move| {
+        tp.push(m)
+    });
     tp.shrink_to_fit();
     let t1 = t.elapsed();
     let ck = run.checkpoints.len() * std::mem::size_of::<offsetlab::Checkpoint>()

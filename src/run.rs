@@ -190,17 +190,40 @@ impl<'t> Runner<'t> {
 
 /// Runs a program with a setup.
 pub fn run_with(text: &str, setup: &Setup, options: RunOptions) -> Run {
-    run_observed(text, setup, options, |_| {})
+    run_observed(text, setup, options, &mut ())
 }
 
-/// Runs a program with a setup, handing every move to `on_move` as it is
-/// made (whether or not the run keeps it): the page builds its toolpath
-/// this way without keeping the moves.
+/// Watches a run as it goes.
+pub trait Observer {
+    /// Every move, as it is made (whether or not the run keeps it): the
+    /// page builds its toolpath this way without keeping the moves.
+    fn on_move(&mut self, _m: &crate::report::Move) {}
+
+    /// After every [`PROGRESS_EVERY`] bytes of program: how many bytes have
+    /// been read (the page shows a large program's progress).
+    fn on_progress(&mut self, _read: usize) {}
+}
+
+/// Nothing to watch.
+impl Observer for () {}
+
+/// A closure watches the moves.
+impl<F: FnMut(&crate::report::Move)> Observer for F {
+    fn on_move(&mut self, m: &crate::report::Move) {
+        self(m)
+    }
+}
+
+/// Bytes of program between two [`Observer::on_progress`] calls.
+pub const PROGRESS_EVERY: usize = 1 << 20;
+
+/// Runs a program with a setup, telling `observer` each move and how far
+/// it has read.
 pub fn run_observed(
     text: &str,
     setup: &Setup,
     options: RunOptions,
-    mut on_move: impl FnMut(&crate::report::Move),
+    observer: &mut impl Observer,
 ) -> Run {
     let mut result = Run {
         machine: setup.machine,
@@ -229,6 +252,7 @@ pub fn run_observed(
     let mut units_known = false;
     let mut registers = std::collections::BTreeSet::new();
     let every = options.checkpoint_every;
+    let mut next_progress = PROGRESS_EVERY;
     loop {
         if !r.stopped
             && every > 0
@@ -239,6 +263,10 @@ pub fn run_observed(
         }
         let index = r.index;
         let first_move = r.move_count;
+        if r.parser.offset() >= next_progress {
+            observer.on_progress(r.parser.offset());
+            next_progress = r.parser.offset() + PROGRESS_EVERY;
+        }
         let Some(step) = r.step() else { break };
         let flow = match step {
             Step::Passed => continue,
@@ -259,7 +287,7 @@ pub fn run_observed(
         }
         for m in &out.moves {
             include_move(&mut result.bounds, m);
-            on_move(m);
+            observer.on_move(m);
         }
         if options.keep_moves {
             result.moves.extend_from_slice(&out.moves);

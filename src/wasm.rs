@@ -304,12 +304,61 @@ impl Session {
     /// `{ summary, diagnostics }`; a bad setup gives `setup-…` diagnostics
     /// (line 0) and an empty path, never an exception.
     pub fn run(&mut self, program: &str, setup: JsValue) -> Result<JsValue, JsValue> {
+        self.run_reporting(program, setup, None)
+    }
+
+    /// [`Session::run`], calling `progress(fraction)` (0 to 1, of the
+    /// program's bytes read) after every MiB of program, so the page can
+    /// show how far a long run has got (the worker posts it on: its
+    /// messages reach the page during the run).
+    pub fn run_with_progress(
+        &mut self,
+        program: &str,
+        setup: JsValue,
+        progress: &js_sys::Function,
+    ) -> Result<JsValue, JsValue> {
+        self.run_reporting(program, setup, Some(progress))
+    }
+}
+
+/// Builds the session's toolpath from the moves as they are made and
+/// passes the progress on to JavaScript.
+struct SessionObserver<'a> {
+    toolpath: &'a mut Toolpath,
+    progress: Option<&'a js_sys::Function>,
+    len: f64,
+}
+
+impl crate::run::Observer for SessionObserver<'_> {
+    fn on_move(&mut self, m: &crate::report::Move) {
+        self.toolpath.push(m);
+    }
+
+    fn on_progress(&mut self, read: usize) {
+        if let Some(f) = self.progress {
+            // A throwing callback must not stop the run.
+            let _ = f.call1(&JsValue::NULL, &JsValue::from_f64(read as f64 / self.len));
+        }
+    }
+}
+
+impl Session {
+    fn run_reporting(
+        &mut self,
+        program: &str,
+        setup: JsValue,
+        progress: Option<&js_sys::Function>,
+    ) -> Result<JsValue, JsValue> {
         self.text = program.to_owned();
         match read_setup(&setup) {
             Ok(setup) => {
                 let mut toolpath = Toolpath::new(setup.machine, setup.units);
-                self.run =
-                    crate::run_observed(&self.text, &setup, SESSION_RUN, |m| toolpath.push(m));
+                let mut observer = SessionObserver {
+                    toolpath: &mut toolpath,
+                    progress,
+                    len: self.text.len().max(1) as f64,
+                };
+                self.run = crate::run_observed(&self.text, &setup, SESSION_RUN, &mut observer);
                 if toolpath.is_empty() {
                     // No move to take the units from: the run's (G20/G21
                     // may still have been read).
@@ -334,7 +383,10 @@ impl Session {
             diagnostics: &self.run.diagnostics,
         })
     }
+}
 
+#[wasm_bindgen]
+impl Session {
     /// The current document: the program and setup of the last run, the
     /// view (`null` when it is the machine's default: its first plane, zoom
     /// 1, no pan; zoom to 6 significant digits, pan to 1e-4) and the current

@@ -85,8 +85,9 @@ function invalidate(cause) {
   frame = nextFrame(() => {
     frame = 0;
     try {
+      const started = performance.now();
       session.render(size.width, size.height, size.dpr);
-      self.postMessage({ type: 'drawn', ...size });
+      self.postMessage({ type: 'drawn', gen: shown, ms: performance.now() - started, ...size });
       postState();
     } catch (error) {
       self.postMessage({ type: 'failure', gen: shown, message: String(error?.message ?? error) });
@@ -140,7 +141,17 @@ function handle(message) {
       self.postMessage({ type: 'busy', task: 'run', gen: message.gen });
       if (testHooks && fault(message.program)) return;
       const started = performance.now();
-      const result = session.run(message.program, message.setup);
+      // A long run tells the page how far it has got (at most every 100 ms;
+      // the page shows it past 200 ms). Posted during the run, these reach
+      // the page at once: only this worker is busy.
+      let told = started;
+      const progress = (fraction) => {
+        const now = performance.now();
+        if (now - told < 100) return;
+        told = now;
+        self.postMessage({ type: 'progress', gen: message.gen, fraction, ms: now - started });
+      };
+      const result = session.run_with_progress(message.program, message.setup, progress);
       setupFailed = result.diagnostics.some((d) => d.line === 0 && d.code.startsWith('setup-'));
       shown = message.gen;
       if (message.view) session.set_view(message.view);

@@ -210,25 +210,50 @@ pub fn check_run_with(setup: &Setup, program: &str, max_moves: usize) {
     assert_eq!(path.starts.len(), full.moves.len());
     assert_eq!(path.blocks.len(), path.len());
     assert_eq!(path.lines.len(), path.len());
-    assert!(path.starts.windows(2).all(|w| w[0] < w[1]), "moves in order");
-    assert!(path.starts.iter().all(|&s| (s as usize) + 1 < path.vertex_count() + 1));
-    assert_eq!(path.arcs.len(), full.moves.iter().filter(|m| m.arc.is_some()).count());
+    assert!(
+        path.starts.windows(2).all(|w| w[0] < w[1]),
+        "moves in order"
+    );
+    assert!(
+        path.starts
+            .iter()
+            .all(|&s| (s as usize) + 1 < path.vertex_count() + 1)
+    );
+    assert_eq!(
+        path.arcs.len(),
+        full.moves.iter().filter(|m| m.arc.is_some()).count()
+    );
     if let Some((min, max)) = path.bounds() {
-        assert!(finite(&min) && finite(&max), "toolpath bounds {min:?} {max:?}");
+        assert!(
+            finite(&min) && finite(&max),
+            "toolpath bounds {min:?} {max:?}"
+        );
     }
     // Arcs tessellated at a coarse and a fine tolerance give finite points.
     for tolerance in [1.0, 0.001] {
-        path.for_each_point(0..path.len(), false, tolerance, |_| true, |_, _, p| {
-            assert!(finite(&p), "tessellated point {p:?}");
-        });
+        path.for_each_point(
+            0..path.len(),
+            false,
+            tolerance,
+            |_| true,
+            |_, _, p| {
+                assert!(finite(&p), "tessellated point {p:?}");
+            },
+        );
     }
     if full.moves.len() <= 2_000 {
         let lines = path.polylines();
         assert_eq!(lines.actual.len(), lines.programmed.len());
         assert_eq!(lines.starts.len(), full.moves.len() + 1);
-        assert_eq!(*lines.starts.last().unwrap() as usize * 3, lines.actual.len());
+        assert_eq!(
+            *lines.starts.last().unwrap() as usize * 3,
+            lines.actual.len()
+        );
         assert!(lines.starts.windows(2).all(|w| w[0] < w[1]), "empty move");
-        assert!(lines.actual.iter().all(|v| v.is_finite()), "NaN in polylines");
+        assert!(
+            lines.actual.iter().all(|v| v.is_finite()),
+            "NaN in polylines"
+        );
     }
 
     // The page's way: checkpoints, reports made again equal the kept ones.

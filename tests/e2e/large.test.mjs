@@ -1,0 +1,108 @@
+// Browser end-to-end tests of large programs and quick edits (issue 6,
+// targets 3 and 4, as behaviour; the times themselves are measured by
+// scripts/bench-browser.mjs, never asserted): a long run shows how far it
+// has got while the page stays responsive, the result is drawn and
+// stepping works (block reports made again from checkpoints); a program
+// that runs in under 30 ms runs again at once on every keystroke, without
+// the 150 ms typing pause a slower one waits for (www/main.js).
+
+import assert from 'node:assert/strict';
+import { mkdtempSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { describe, test } from 'node:test';
+import { shootCanvas, stateText, useBrowser, waitForRun, waitForView } from './harness.mjs';
+
+const { withPage } = useBrowser();
+const tmp = mkdtempSync(join(tmpdir(), 'offsetlab-large-'));
+
+/** A milling program of `n` blocks: a zigzag of feed moves and small arcs. */
+function zigzag(n) {
+  const lines = ['G90 G21 G17 G00 X0 Y0', 'G01 F1000.'];
+  for (let i = 0; lines.length < n - 1; i += 1) {
+    const x = (i % 200) * 0.5;
+    const y = Math.floor(i / 200) * 0.5 % 100;
+    lines.push(i % 4 === 3 ? `G02 X${x.toFixed(3)} Y${y.toFixed(3)} R5.` : `G01 X${x.toFixed(3)} Y${y.toFixed(3)}`);
+  }
+  lines.push('M30');
+  return `${lines.join('\n')}\n`;
+}
+
+describe('large programs', () => {
+  test('a 600,000-block program shows its progress, stays responsive, is drawn and can be stepped', { timeout: 180_000 }, async () => {
+    await withPage(async (page) => {
+      const file = join(tmp, 'zigzag.nc');
+      writeFileSync(file, zigzag(600_000));
+      // The main thread keeps answering while the worker runs: count the
+      // longest gap between animation frames.
+      await page.evaluate(() => {
+        window.__gaps = { max: 0, last: performance.now(), on: true };
+        const tick = (t) => {
+          window.__gaps.max = Math.max(window.__gaps.max, t - window.__gaps.last);
+          window.__gaps.last = t;
+          if (window.__gaps.on) requestAnimationFrame(tick);
+        };
+        requestAnimationFrame(tick);
+      });
+      await page.locator('#open-file').setInputFiles(file);
+      // The summary line while the progress is shown (read in the same
+      // frame: the run may end soon after).
+      const shown = await page.waitForFunction(() => {
+        if (document.body.dataset.progress === undefined) return false;
+        // From here the worker runs the program: the main thread stays free
+        // (loading 9 MB into the editor before it is the page's own work).
+        window.__gaps.max = 0;
+        window.__gaps.last = performance.now();
+        return document.getElementById('summary').textContent;
+      }, null, { timeout: 60_000, polling: 'raf' });
+      assert.match(await shown.jsonValue(), /^Running… \d+ % of the program read \(\d+\.\d s\)$/);
+      await waitForRun(page);
+      const gaps = await page.evaluate(() => { window.__gaps.on = false; return window.__gaps.max; });
+      assert.ok(gaps < 500, `the page answered during the run (longest frame gap ${gaps.toFixed(0)} ms)`);
+      assert.match(await page.locator('#summary').textContent(), /^600000 blocks · \d+ moves · 0 errors · 0 warnings/);
+      // The canvas shows this run once the worker has drawn it.
+      await page.waitForFunction(() => document.body.dataset.drawnGen === document.body.dataset.rendered,
+        null, { timeout: 60_000 });
+      // The zigzag fills a 100 mm square with both paths (the frame may
+      // reach the screen a moment after the worker drew it).
+      const { counts } = await shootCanvas(page, 'large', (c) => c.programmedFeed + c.actualFeed > 100_000, 20_000);
+      assert.ok(counts.programmedFeed + counts.actualFeed > 100_000, `the path is drawn (${JSON.stringify(counts)})`);
+      // The last block and the one before: their reports are made again
+      // from the checkpoint before them.
+      await page.locator('#step-last').click();
+      await waitForView(page, (v) => v.step === 599_999);
+      assert.match(await stateText(page, 'block'), /^line 600000: M30/);
+      await page.locator('#step-previous').click();
+      await waitForView(page, (v) => v.step === 599_998);
+      assert.match(await stateText(page, 'block'), /^line 599999: G0[12] X/);
+    });
+  });
+
+  test('a program that runs quickly runs again at once on every keystroke, without the typing pause', async () => {
+    await withPage(async (page) => {
+      // The default example runs in a few milliseconds: an edit is sent
+      // without the 150 ms pause.
+      const editor = page.locator('.cm-content');
+      await editor.click();
+      await page.keyboard.press('Control+End');
+      // One edit first: the first run also compiles the interpreter's code.
+      await page.keyboard.type('\n');
+      await waitForRun(page);
+      const before = Number(await page.evaluate(() => document.body.dataset.requested));
+      // A quick typist: 30 ms between keys, under the 150 ms pause.
+      await page.keyboard.type('G00 X1.\n', { delay: 30 });
+      await page.waitForFunction((n) => Number(document.body.dataset.requested) > n, before, { timeout: 5_000 });
+      const sentAt = await page.evaluate(() => performance.now());
+      await waitForRun(page);
+      const ranAt = await page.evaluate(() => performance.now());
+      assert.ok(ranAt - sentAt < 2_000, 'the edit ran');
+      // Every keystroke of a quick program was its own run request.
+      const after = Number(await page.evaluate(() => document.body.dataset.requested));
+      // With the 150 ms pause, 8 keys 30 ms apart would make one request;
+      // at once, one per key (fewer when the page is busy: a key that comes
+      // before the last one's request was sent replaces it).
+      assert.ok(after - before >= 3, `${after - before} run requests for 8 keystrokes`);
+      assert.ok(Number(await page.evaluate(() => document.body.dataset.runMs)) < 30, 'a quick run');
+    });
+  });
+});
