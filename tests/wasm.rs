@@ -677,3 +677,36 @@ fn moves_export_as_the_cli_json_and_csv() {
         lines[2]
     );
 }
+
+#[wasm_bindgen_test]
+fn run_with_progress_reports_growing_fractions_and_the_same_result() {
+    // 3 MiB of program: a progress call after each MiB read.
+    let program = "G01 X1. Y2. F100.\nG01 X3. Y4.\n".repeat(110_000);
+    let seen = Array::new();
+    let record: Function =
+        JsValue::from(Function::new_with_args("a, f", "a.push(f)").bind1(&JsValue::NULL, &seen))
+            .unchecked_into();
+    let mut s = Session::new();
+    let with = s
+        .run_with_progress(&program, square_setup(), &record)
+        .expect("run");
+    let fractions: Vec<f64> = seen.iter().map(|v| v.as_f64().expect("a number")).collect();
+    assert!(fractions.len() >= 2, "{fractions:?}");
+    assert!(fractions.windows(2).all(|w| w[0] < w[1]), "{fractions:?}");
+    assert!(
+        fractions.iter().all(|f| *f > 0.0 && *f <= 1.0),
+        "{fractions:?}"
+    );
+    let without = Session::new().run(&program, square_setup()).expect("run");
+    assert_eq!(
+        JSON::stringify(&get(&with, "summary")).unwrap(),
+        JSON::stringify(&get(&without, "summary")).unwrap()
+    );
+    // A callback that throws does not stop the run.
+    let throwing: Function =
+        JsValue::from(Function::new_with_args("f", "throw new Error('no')")).unchecked_into();
+    let r = s
+        .run_with_progress(&program, square_setup(), &throwing)
+        .expect("run");
+    assert_eq!(num(&get(&r, "summary"), "blocks"), 220_000.0);
+}
