@@ -18,6 +18,7 @@ TIMED := scripts/timed.sh
 help:
 	@echo "make serve   install what is missing, build, serve http://127.0.0.1:$(PORT)/"
 	@echo "make test    install what is missing, run every test layer"
+	@echo "make bench-browser  measure issue 6's browser targets 3-5 (BENCH_ARGS=\"--runs 5\" …)"
 
 setup:
 	@$(TIMED) setup bash scripts/setup.sh
@@ -62,3 +63,10 @@ test-e2e: setup page cli
 
 clean:
 	rm -rf www/pkg www/dist test-results
+
+# Browser benchmark of issue 6's targets 3–5 (headless Chromium; prints a
+# table and never fails the build; not part of make test). Options in
+# BENCH_ARGS, e.g. BENCH_ARGS="--runs 5 --json"; see scripts/bench-browser.mjs.
+.PHONY: bench-browser
+bench-browser: setup wasm page
+	node scripts/bench-browser.mjs $(BENCH_ARGS)

@@ -1,0 +1,1163 @@
+#!/usr/bin/env node
+// Browser benchmark of issue 6's targets 3–5. Not a test: it never fails the
+// build, it measures and prints a table. It drives the real page in headless
+// Chromium through playwright-core the way the end-to-end tests do (it
+// imports tests/e2e/harness.mjs: the same static server, the same Chromium
+// and flags) and measures with instrumentation added from outside (an init
+// script in the page and code evaluated in the worker; www/ is not changed):
+//
+//   3  the 1M-block program opened with Open… (the page's file input, as a
+//      user opens a .nc file) until its drawing is on the canvas; the
+//      longest main-thread task meanwhile (is the page responsive?); the
+//      peak memory of the page's renderer process (page + worker + wasm).
+//   4  with the 10k-block program open, a one-character edit typed in the
+//      editor (a 7 typed after the first digit of an N number in the middle
+//      of the program, then Backspace, alternately) until the re-run is
+//      drawn, with the time to the run request (the page's debounce, if
+//      any) shown apart.
+//   5  the 1M-block path panned (mouse drag on #view) and zoomed (wheel)
+//      for a few seconds: frames the worker finished per second.
+//
+// Usage (make bench-browser builds the wasm package and the page first):
+//
+//   node scripts/bench-browser.mjs [--blocks 1000000] [--edit-blocks 10000]
+//        [--runs 3] [--edits 30] [--seconds 3] [--limit 120] [--ref REV] [--count-calls]
+//        [--canvas-experiment split=N,nodash] [--json]
+//
+//   --blocks N       size of the program of targets 3 and 5 (default 1000000)
+//   --edit-blocks N  size of the program of target 4 (default 10000)
+//   --runs N         fresh browsers per measurement (default 3); medians are
+//                    over runs (target 4: over every edit of every run)
+//   --edits N        one-character edits per run of target 4 (default 30)
+//   --seconds S      pan + zoom time per run of target 5 (default 3)
+//   --limit S        time limit of target 3, the big program opened until
+//                    drawn (default 120)
+//   --ref REV        measure the page of commit REV instead of the working
+//                    tree's www/: `git archive REV` into
+//                    target/bench-browser/ref-SHA/, its wasm package built
+//                    there with wasm-pack (CARGO_TARGET_DIR=target) and its
+//                    editor bundle with esbuild (once per commit): figures
+//                    others can reproduce while www/ and src/ move on
+//   --count-calls    also count the canvas calls of each drawing (lineTo,
+//                    moveTo, stroke; adds a little to the drawing time)
+//   --canvas-experiment SPEC
+//                    an experiment, not the page as it is: the worker's
+//                    OffscreenCanvas 2D context is patched before the runs.
+//                    split=N strokes each path every N lineTo calls and goes
+//                    on with a new one; nodash draws dashed lines solid.
+//                    What would change if the renderer did the same.
+//   --json           print the results as JSON instead of the tables
+//
+// The programs come from the repository's deterministic generator
+// (`cargo run --release --example generate -- N FILE`, which also writes the
+// setup FILE.json, register 01 = 100) in target/bench-browser/. Progress goes
+// to standard error (BENCH_DEBUG=1 adds an error's stack). Every wait has a
+// time limit (--limit, 120 s, for the 1M-block program to be drawn; at least
+// 30 min in all): what does not finish in time is reported as "timed out"
+// (with the time it had), never waited for.
+//
+// What the figures are:
+//   - times are the page's performance.now(); the worker's are converted
+//     through performance.timeOrigin (the two agree to about a millisecond;
+//     a gap between them is never shown below 0) and reach the page on a
+//     BroadcastChannel of the benchmark's own (the page's messages are not
+//     touched).
+//   - "drawn": the frame is on the canvas — the worker thread is free again
+//     after the Session.render() that followed the run. In software
+//     rendering (headless, --disable-gpu) Chromium rasterises the
+//     OffscreenCanvas's recorded drawing on the worker thread when the
+//     animation frame ends, after render() returned and after the worker
+//     posted its `drawn` message, so that message comes first; the time to
+//     it is shown too ("the page's `drawn` message").
+//   - "longest main-thread task": PerformanceObserver('longtask') (tasks over
+//     50 ms). The page counts as responsive when no main-thread task takes
+//     100 ms or more (RAIL's input budget).
+//   - memory: the peak resident set of the renderer process that hosts the
+//     page and its worker (JS heaps, wasm memory, the editor's DOM, canvas
+//     buffers together): the highest of its VmRSS and VmHWM (/proc) sampled
+//     every 200 ms — VmHWM alone will not do: it went down during runs
+//     (Chromium's memory dumps reset the peak through /proc/self/clear_refs);
+//     also the highest sampled JS heaps (CDP
+//     Runtime.getHeapUsage, page and worker) and the worker's wasm linear
+//     memory (it never shrinks: its last size is its peak).
+//   - frames per second: frames the worker finished (rendered and
+//     rasterised) while the input was driven, per second; the input events
+//     sent per second are printed beside them.
+
+import { spawnSync } from 'node:child_process';
+import { existsSync, mkdirSync, readdirSync, readFileSync, rmSync, statSync } from 'node:fs';
+import { cpus, loadavg } from 'node:os';
+import { basename, join } from 'node:path';
+import { ROOT, launchBrowser, openPage, startServer, waitForRun } from '../tests/e2e/harness.mjs';
+
+// ---------------------------------------------------------------- options
+
+function parseArgs(argv) {
+  const opts = { blocks: 1_000_000, editBlocks: 10_000, runs: 3, edits: 30, seconds: 3, limit: 120, json: false, ref: null, countCalls: false, experiment: null };
+  const numeric = { '--blocks': 'blocks', '--edit-blocks': 'editBlocks', '--runs': 'runs', '--edits': 'edits', '--seconds': 'seconds', '--limit': 'limit' };
+  for (let i = 0; i < argv.length; i += 1) {
+    const a = argv[i];
+    if (a === '--json') {
+      opts.json = true;
+    } else if (a === '--count-calls') {
+      opts.countCalls = true;
+    } else if (a === '--canvas-experiment') {
+      const spec = argv[i + 1] ?? '';
+      if (!/^(?:split=\d+|nodash)(?:,(?:split=\d+|nodash))*$/.test(spec)) usage('--canvas-experiment needs split=N and/or nodash, e.g. split=256,nodash');
+      opts.experiment = { spec, split: Number(/split=(\d+)/.exec(spec)?.[1] ?? 0), nodash: spec.split(',').includes('nodash') };
+      i += 1;
+    } else if (a === '--ref') {
+      if (!argv[i + 1]) usage('--ref needs a commit');
+      opts.ref = argv[i + 1];
+      i += 1;
+    } else if (a === '--help' || a === '-h') {
+      // The header comment.
+      const lines = readFileSync(new URL(import.meta.url), 'utf8').split('\n').slice(1);
+      const end = lines.findIndex((l) => !l.startsWith('//'));
+      process.stdout.write(`${lines.slice(0, end).map((l) => l.slice(3)).join('\n')}\n`);
+      process.exit(0);
+    } else if (numeric[a]) {
+      const v = Number(argv[i + 1]);
+      if (!Number.isFinite(v) || v <= 0) usage(`${a} needs a positive number`);
+      opts[numeric[a]] = v;
+      i += 1;
+    } else {
+      usage(`unknown argument ${a}`);
+    }
+  }
+  opts.blocks = Math.round(opts.blocks);
+  opts.editBlocks = Math.round(opts.editBlocks);
+  opts.runs = Math.round(opts.runs);
+  opts.edits = Math.round(opts.edits);
+  return opts;
+}
+
+function usage(message) {
+  process.stderr.write(`bench-browser: ${message}\nusage: node scripts/bench-browser.mjs [--blocks N] [--edit-blocks N] [--runs N] [--edits N] [--seconds S] [--limit S] [--ref REV] [--count-calls] [--canvas-experiment SPEC] [--json]\n`);
+  process.exit(2);
+}
+
+const OPTS = parseArgs(process.argv.slice(2));
+const log = (...a) => process.stderr.write(`${a.join(' ')}\n`);
+
+/** Time limits (ms). */
+const LIMIT = {
+  total: Math.max(30 * 60_000, OPTS.runs * (OPTS.limit * 1000 + 120_000) + 10 * 60_000),
+  generate: 20 * 60_000,
+  big: OPTS.limit * 1000, // the big program opened, run and drawn (--limit)
+  small: 30_000, // the small program opened, run and drawn
+  edit: 20_000, // one edit re-run and drawn
+  step: 20_000, // anything else
+  cdp: 5_000,
+  grace: 10_000, // frames begun during pan and zoom may finish this much later
+};
+
+class TimedOut extends Error {}
+
+/** `promise`, or a TimedOut error after `ms`. */
+function within(promise, ms, what) {
+  let timer;
+  return Promise.race([
+    promise,
+    new Promise((_, reject) => {
+      timer = setTimeout(() => reject(new TimedOut(`${what}: timed out after ${ms / 1000} s`)), ms);
+    }),
+  ]).finally(() => clearTimeout(timer));
+}
+
+const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
+
+// ------------------------------------------------------------- statistics
+
+function median(xs) {
+  const v = xs.filter((x) => Number.isFinite(x)).sort((a, b) => a - b);
+  if (!v.length) return null;
+  const m = Math.floor(v.length / 2);
+  return v.length % 2 ? v[m] : (v[m - 1] + v[m]) / 2;
+}
+function stats(xs) {
+  const v = xs.filter((x) => Number.isFinite(x));
+  if (!v.length) return null;
+  return { median: median(v), min: Math.min(...v), max: Math.max(...v), n: v.length };
+}
+
+// ------------------------------------------------------ the programs
+
+const BENCH_DIR = join(ROOT, 'target', 'bench-browser');
+
+/**
+ * Writes bench-N.nc and bench-N.json with the repository's generator; returns
+ * their paths. The generator is `cargo run --release --example generate`; when
+ * the crate does not build (someone is in the middle of an edit), the same
+ * source is compiled on its own with rustc: examples/generate.rs uses nothing
+ * but benches/programs.rs, so the programs are byte for byte the same.
+ */
+function generate(blocks) {
+  mkdirSync(BENCH_DIR, { recursive: true });
+  const program = join(BENCH_DIR, `bench-${blocks}.nc`);
+  const setup = join(BENCH_DIR, `bench-${blocks}.json`);
+  const run = (cmd, args) => spawnSync(cmd, args, {
+    cwd: ROOT, stdio: ['ignore', process.stderr, process.stderr], timeout: LIMIT.generate,
+  });
+  log(`generating ${blocks} blocks: cargo run --release --example generate -- ${blocks} ${program}`);
+  let r = run('cargo', ['run', '--quiet', '--release', '--example', 'generate', '--', String(blocks), program]);
+  if (r.status !== 0) {
+    const exe = join(BENCH_DIR, 'generate');
+    log('bench-browser: the crate does not build now; compiling examples/generate.rs on its own with rustc');
+    r = run('rustc', ['--edition', '2021', '-O', '-o', exe, join(ROOT, 'examples', 'generate.rs')]);
+    if (r.status === 0) r = run(exe, [String(blocks), program]);
+  }
+  if (r.status !== 0) throw new Error(`the generator failed (${r.error?.message ?? `exit ${r.status}`})`);
+  return { program, setup, bytes: statSync(program).size, blocks };
+}
+
+/** Runs a command for the build of --ref, its output on standard error; throws when it fails. */
+function build(cmd, args, options) {
+  log(`  ${cmd} ${args.join(' ')}`);
+  const r = spawnSync(cmd, args, { stdio: ['ignore', process.stderr, process.stderr], timeout: LIMIT.generate, ...options });
+  if (r.status !== 0) throw new Error(`${cmd} ${args.join(' ')} failed (${r.error?.message ?? `exit ${r.status}`})`);
+  return r;
+}
+
+/** The page of commit `rev`, built once in target/bench-browser/ref-SHA/: { root, sha }. */
+function buildRef(rev) {
+  const sha = spawnSync('git', ['rev-parse', '--verify', `${rev}^{commit}`], { cwd: ROOT, encoding: 'utf8' }).stdout.trim();
+  if (!/^[0-9a-f]{40}$/.test(sha)) throw new Error(`--ref ${rev}: not a commit`);
+  const dir = join(BENCH_DIR, `ref-${sha.slice(0, 12)}`);
+  const www = join(dir, 'www');
+  if (existsSync(join(www, 'pkg', 'offsetlab.js')) && existsSync(join(www, 'dist', 'editor.js'))) {
+    log(`page of ${sha.slice(0, 12)}: built before in ${dir}`);
+    return { root: www, sha };
+  }
+  log(`building the page of ${sha.slice(0, 12)} in ${dir}`);
+  rmSync(dir, { recursive: true, force: true });
+  mkdirSync(dir, { recursive: true });
+  build('sh', ['-c', `git -C "${ROOT}" archive ${sha} | tar -x -C "${dir}"`]);
+  build('wasm-pack', ['build', '--target', 'web', '--out-dir', 'www/pkg'], {
+    cwd: dir, env: { ...process.env, CARGO_TARGET_DIR: join(ROOT, 'target') },
+  });
+  // The snapshot's own build:page script, with the repository's node_modules.
+  build('npm', ['run', '--silent', 'build:page'], {
+    cwd: dir, env: { ...process.env, PATH: `${join(ROOT, 'node_modules', '.bin')}:${process.env.PATH}` },
+  });
+  return { root: www, sha };
+}
+
+// ------------------------------------------ processes (peak memory, Linux)
+
+function readProc(pid, file) {
+  try {
+    return readFileSync(`/proc/${pid}/${file}`, 'utf8');
+  } catch {
+    return '';
+  }
+}
+
+/** Every descendant process of `root` (from /proc/PID/stat's parent pid). */
+function descendants(root) {
+  const parent = new Map();
+  for (const name of readdirSync('/proc')) {
+    if (!/^\d+$/.test(name)) continue;
+    const stat = readProc(name, 'stat');
+    const m = /\) \S (\d+)/.exec(stat);
+    if (m) parent.set(Number(name), Number(m[1]));
+  }
+  const out = [];
+  const want = new Set([root]);
+  let grew = true;
+  while (grew) {
+    grew = false;
+    for (const [pid, ppid] of parent) {
+      if (want.has(ppid) && !want.has(pid)) {
+        want.add(pid);
+        out.push(pid);
+        grew = true;
+      }
+    }
+  }
+  return out;
+}
+
+/** Chromium renderer processes started by this script: { pid, rss, hwm } in bytes. */
+function renderers() {
+  return descendants(process.pid)
+    .filter((pid) => readProc(pid, 'cmdline').includes('--type=renderer'))
+    .map((pid) => {
+      const status = readProc(pid, 'status');
+      const kb = (key) => Number(new RegExp(`^${key}:\\s+(\\d+) kB`, 'm').exec(status)?.[1] ?? NaN) * 1024;
+      return { pid, rss: kb('VmRSS'), hwm: kb('VmHWM') };
+    })
+    .filter((p) => Number.isFinite(p.rss));
+}
+
+// -------------------------------------------------- page instrumentation
+
+/**
+ * Runs in the page before its scripts. Logs (page clock) the messages to and
+ * from the worker, the body's data-rendered / data-drawn / data-opened
+ * changes, key presses, the file input's change, file reads and
+ * localStorage writes; keeps the main thread's long tasks and animation
+ * frames; and collects the worker's own timings from the benchmark's
+ * BroadcastChannel.
+ */
+const PAGE_INIT = `(() => {
+  const now = () => performance.now();
+  const B = window.__bench = { log: [], worker: [], frames: [], longtasks: [], origin: performance.timeOrigin };
+  try {
+    new PerformanceObserver((list) => {
+      for (const e of list.getEntries()) B.longtasks.push([e.startTime, e.duration]);
+    }).observe({ type: 'longtask', buffered: true });
+  } catch (e) { B.noLongtasks = String(e); }
+  const frame = () => {
+    B.frames.push(now());
+    if (B.frames.length > 100000) B.frames.splice(0, 50000);
+    requestAnimationFrame(frame);
+  };
+  requestAnimationFrame(frame);
+  new BroadcastChannel('offsetlab-bench').onmessage = (e) => {
+    const d = e.data;
+    B.worker.push({ ...d, t: d.t - B.origin, end: d.end - B.origin, seen: now() });
+  };
+  const W = window.Worker;
+  window.Worker = class extends W {
+    constructor(...args) {
+      super(...args);
+      this.addEventListener('message', (e) => {
+        const d = e.data || {};
+        B.log.push({ t: now(), k: 'in', type: d.type, gen: d.gen });
+      });
+    }
+    postMessage(m, ...rest) {
+      const t = now();
+      super.postMessage(m, ...rest);
+      B.log.push({ t, end: now(), k: 'out', type: m && m.type, gen: m && m.gen, op: m && m.op });
+    }
+  };
+  new MutationObserver((records) => {
+    const t = now();
+    for (const r of records) {
+      if (r.target === document.body) B.log.push({ t, k: 'attr', name: r.attributeName, value: document.body.getAttribute(r.attributeName) });
+    }
+  }).observe(document, { subtree: true, attributes: true, attributeFilter: ['data-rendered', 'data-drawn', 'data-opened'] });
+  addEventListener('keydown', (e) => B.log.push({ t: now(), k: 'key', key: e.key }), true);
+  addEventListener('change', (e) => {
+    if (e.target && e.target.id === 'open-file') B.log.push({ t: now(), k: 'change' });
+  }, true);
+  const text = Blob.prototype.text;
+  Blob.prototype.text = function () {
+    const t = now();
+    const size = this.size;
+    return text.call(this).then((v) => { B.log.push({ t, end: now(), k: 'blob-text', size }); return v; });
+  };
+  const setItem = Storage.prototype.setItem;
+  Storage.prototype.setItem = function (key, value) {
+    const t = now();
+    try { return setItem.call(this, key, value); } finally {
+      B.log.push({ t, end: now(), k: 'storage', key, chars: String(value).length });
+    }
+  };
+  /**
+   * Run \`gen\` as the page and the worker saw it, once it is drawn: the run
+   * request, the result handled, the page's drawn message handled, the
+   * worker's run, the render after it and the end of that frame.
+   */
+  B.settled = (gen) => {
+    const L = B.log;
+    const post = L.find((e) => e.k === 'out' && e.type === 'run' && e.gen === gen);
+    let i = L.findIndex((e) => e.k === 'in' && e.type === 'result' && e.gen === gen);
+    if (!post || i < 0) return null;
+    const out = { gen, post: post.t, postEnd: post.end, result: L[i].t, rendered: null, drawnMessage: null };
+    let drawnIn = null;
+    for (i += 1; i < L.length && out.drawnMessage === null; i += 1) {
+      const e = L[i];
+      if (out.rendered === null && e.k === 'attr' && e.name === 'data-rendered') out.rendered = e.t;
+      if (!drawnIn && e.k === 'in' && e.type === 'drawn') drawnIn = e;
+      if (drawnIn && e.k === 'attr' && e.name === 'data-drawn' && e.t >= drawnIn.t) out.drawnMessage = e.t;
+    }
+    // worker.js starts the run in the microtask after the request arrives.
+    out.run = B.worker.find((e) => e.name === 'run' && e.t >= post.t) || null;
+    out.render = out.run && (B.worker.find((e) => e.name === 'render' && e.t >= out.run.end) || null);
+    out.frame = out.render && (B.worker.find((e) => e.name === 'frame' && e.render === out.render.id) || null);
+    return out;
+  };
+})();`;
+
+/**
+ * Evaluated in the worker: times Session.run and Session.render, and the end
+ * of each frame (a timer set by render() fires once the worker thread is
+ * free again, after the rasterisation that ends the animation frame); sends
+ * each timing (absolute ms) to the page on the benchmark's BroadcastChannel.
+ */
+async function instrumentWorker(page) {
+  const worker = await within(
+    (async () => {
+      for (;;) {
+        const [w] = page.workers();
+        if (w) return w;
+        await sleep(50);
+      }
+    })(),
+    LIMIT.step, 'the worker',
+  );
+  await within(worker.evaluate(async ([countCalls, experiment]) => {
+    if (self.__bench) return;
+    const m = await import(new URL('./pkg/offsetlab.js', self.location.href).href);
+    const wasm = await m.default();
+    const at = () => performance.timeOrigin + performance.now();
+    const channel = new BroadcastChannel('offsetlab-bench');
+    const B = { memory: wasm.memory, calls: null, id: 0 };
+    self.__bench = B;
+    if (experiment) {
+      // --canvas-experiment: not the page as shipped.
+      const C = OffscreenCanvasRenderingContext2D.prototype;
+      const { lineTo, stroke, beginPath, moveTo, setLineDash } = C;
+      if (experiment.nodash) C.setLineDash = function solid() { return setLineDash.call(this, []); };
+      if (experiment.split > 0) {
+        let n = 0;
+        C.beginPath = function begin() { n = 0; return beginPath.call(this); };
+        C.lineTo = function split(x, y) {
+          lineTo.call(this, x, y);
+          n += 1;
+          if (n % experiment.split === 0) {
+            stroke.call(this);
+            beginPath.call(this);
+            moveTo.call(this, x, y);
+          }
+        };
+      }
+    }
+    if (countCalls) {
+      const C = OffscreenCanvasRenderingContext2D.prototype;
+      for (const name of ['lineTo', 'moveTo', 'stroke']) {
+        const f = C[name];
+        C[name] = function counted(...args) {
+          if (B.calls) B.calls[name] += 1;
+          return f.apply(this, args);
+        };
+      }
+    }
+    const P = m.Session.prototype;
+    // The worker runs a program with run() or, since 5f0e44d, run_with_progress().
+    for (const name of ['run', 'run_with_progress']) {
+      const run = P[name];
+      if (typeof run !== 'function') continue;
+      P[name] = function timedRun(...args) {
+        const t = at();
+        try {
+          return run.apply(this, args);
+        } finally {
+          channel.postMessage({ name: 'run', t, end: at(), wasm: B.memory.buffer.byteLength });
+        }
+      };
+    }
+    const render = P.render;
+    P.render = function timedRender(...args) {
+      B.id += 1;
+      const id = B.id;
+      if (countCalls) B.calls = { lineTo: 0, moveTo: 0, stroke: 0 };
+      const t = at();
+      try {
+        return render.apply(this, args);
+      } finally {
+        const end = at();
+        const calls = B.calls;
+        B.calls = null;
+        channel.postMessage({ name: 'render', id, t, end, calls });
+        setTimeout(() => channel.postMessage({ name: 'frame', render: id, t: end, end: at(), wasm: B.memory.buffer.byteLength }), 0);
+      }
+    };
+  }, [OPTS.countCalls, OPTS.experiment]), LIMIT.step, 'instrumenting the worker');
+  return worker;
+}
+
+/** A CDP session on the worker (through the browser's session), for Runtime.getHeapUsage. */
+async function workerCdp(browser) {
+  const session = await browser.newBrowserCDPSession();
+  const { targetInfos } = await session.send('Target.getTargets');
+  const target = targetInfos.find((t) => t.type === 'worker' && t.url.endsWith('/worker.js'));
+  if (!target) return null;
+  const { sessionId } = await session.send('Target.attachToTarget', { targetId: target.targetId, flatten: false });
+  let id = 0;
+  const waiting = new Map();
+  session.on('Target.receivedMessageFromTarget', (e) => {
+    if (e.sessionId !== sessionId) return;
+    const msg = JSON.parse(e.message);
+    const w = waiting.get(msg.id);
+    if (w) {
+      waiting.delete(msg.id);
+      w(msg.result ?? null);
+    }
+  });
+  return {
+    send(method, params = {}) {
+      id += 1;
+      const mine = id;
+      return new Promise((resolve) => {
+        waiting.set(mine, resolve);
+        session.send('Target.sendMessageToTarget', { sessionId, message: JSON.stringify({ id: mine, method, params }) })
+          .catch(() => resolve(null));
+      });
+    },
+  };
+}
+
+/** Samples the JS heaps and the renderers' RSS every 200 ms until stopped; resolves to the highest of each. */
+function sampleMemory(pageCdp, worker) {
+  // byPid: the highest RSS (or VmHWM) seen of each renderer process.
+  const peak = { pageHeap: 0, workerHeap: 0, workerSamples: 0, byPid: new Map() };
+  let stop = false;
+  let workerBusy = false;
+  const loop = (async () => {
+    while (!stop) {
+      const r = await within(pageCdp.send('Runtime.getHeapUsage'), LIMIT.cdp, 'page heap').catch(() => null);
+      if (r) peak.pageHeap = Math.max(peak.pageHeap, r.usedSize);
+      if (worker && !workerBusy) {
+        workerBusy = true;
+        // A busy worker answers when it is free: one question at a time.
+        worker.send('Runtime.getHeapUsage').then((h) => {
+          workerBusy = false;
+          if (h) {
+            peak.workerHeap = Math.max(peak.workerHeap, h.usedSize);
+            peak.workerSamples += 1;
+          }
+        });
+      }
+      for (const p of renderers()) {
+        peak.byPid.set(p.pid, Math.max(peak.byPid.get(p.pid) ?? 0, p.rss, p.hwm));
+      }
+      await sleep(200);
+    }
+  })();
+  const done = async () => {
+    stop = true;
+    await loop;
+    return peak;
+  };
+  done.peak = () => ({ ...peak, byPid: new Map(peak.byPid) });
+  return done;
+}
+
+// ------------------------------------------------------------ page steps
+
+async function openFresh(browser, server) {
+  const { context, page, problems } = await within(
+    openPage(browser, server.url, { init: PAGE_INIT }), LIMIT.step, 'opening the page',
+  );
+  await waitForRun(page);
+  return { context, page, problems };
+}
+
+const now = (page) => page.evaluate(() => performance.now());
+
+/** Opens `path` with the page's Open… input; resolves to the gen of the run it asked for and the change event's time. */
+async function openFile(page, path, timeout) {
+  const name = basename(path);
+  const from = await page.evaluate(() => window.__bench.log.length);
+  await within(page.setInputFiles('#open-file', path), timeout, `opening ${name}`);
+  await page.waitForFunction((n) => document.body.dataset.opened === n, name, { timeout });
+  return page.evaluate((f) => ({
+    gen: Number(document.body.dataset.requested),
+    change: window.__bench.log.slice(f).find((e) => e.k === 'change')?.t ?? null,
+    from: f,
+  }), from);
+}
+
+/** Resolves to B.settled(gen) once the page's drawn message is handled (`frame`: and the frame is finished too). */
+async function waitSettled(page, gen, timeout, { frame = true } = {}) {
+  const handle = await page.waitForFunction(([g, f]) => {
+    const s = window.__bench.settled(g);
+    return s && s.drawnMessage !== null && (!f || s.frame) ? s : null;
+  }, [gen, frame], { timeout, polling: 10 });
+  return handle.jsonValue();
+}
+
+/** The main thread's long tasks and largest gap between animation frames within [t0, t1]. */
+async function mainThread(page, t0, t1) {
+  return page.evaluate(([a, b]) => {
+    const B = window.__bench;
+    const tasks = B.longtasks.filter(([s, d]) => s + d > a && s < b);
+    const frames = [a, ...B.frames.filter((f) => f > a && f < b), b];
+    let gap = 0;
+    for (let i = 1; i < frames.length; i += 1) gap = Math.max(gap, frames[i] - frames[i - 1]);
+    return {
+      longest: tasks.reduce((m, [, d]) => Math.max(m, d), 0),
+      total: tasks.reduce((s, [, d]) => s + d, 0),
+      count: tasks.length,
+      frames: frames.length - 2,
+      maxFrameGap: gap,
+      observer: B.noLongtasks ?? 'ok',
+    };
+  }, [t0, t1]);
+}
+
+const summaryText = (page) => within(page.locator('#summary').textContent(), LIMIT.step, 'the summary line');
+const isTimeout = (error) => error instanceof TimedOut || error?.name === 'TimeoutError' || /timeout|timed out/i.test(String(error?.message));
+const firstLine = (error) => String(error?.message ?? error).split('\n')[0];
+
+// -------------------------------------------------------- targets 3 and 5
+
+/** One fresh browser: the big program opened and drawn (target 3), then panned and zoomed (target 5). */
+async function runBig(server, big, run) {
+  const out = { run };
+  const browser = await within(launchBrowser(), LIMIT.step, 'launching Chromium');
+  let stopSampling = null;
+  try {
+    const { context, page, problems } = await openFresh(browser, server);
+    out.problems = problems;
+    await instrumentWorker(page);
+    const wcdp = await within(workerCdp(browser), LIMIT.step, 'attaching to the worker').catch(() => null);
+    const pcdp = await context.newCDPSession(page);
+
+    // The setup first (register 01 = 100), untimed.
+    const s = await openFile(page, big.setup, LIMIT.step);
+    await waitSettled(page, s.gen, LIMIT.step);
+    await sleep(500);
+    const before = renderers();
+    const heapBefore = await pcdp.send('Runtime.getHeapUsage');
+
+    // Target 3: from the file input's change event to the frame's end.
+    stopSampling = sampleMemory(pcdp, wcdp);
+    const deadline = Date.now() + LIMIT.big;
+    const t3 = { timedOut: false };
+    out.t3 = t3;
+    const opened = await openFile(page, big.program, LIMIT.big);
+    let settled = null;
+    let untilDrawnMessage = null;
+    try {
+      // The run's memory: the highest RSS until the page has the drawn
+      // message, before the rasterisation of the frame begins.
+      await waitSettled(page, opened.gen, Math.max(1000, deadline - Date.now()), { frame: false });
+      const sofar = stopSampling.peak().byPid;
+      for (const p of renderers()) sofar.set(p.pid, Math.max(sofar.get(p.pid) ?? 0, p.rss, p.hwm));
+      untilDrawnMessage = sofar;
+      settled = await waitSettled(page, opened.gen, Math.max(1000, deadline - Date.now()));
+    } catch (error) {
+      if (!isTimeout(error)) throw error;
+      t3.timedOut = true;
+      t3.limit = LIMIT.big;
+      // What was reached in time.
+      settled = await page.evaluate((g) => window.__bench.settled(g), opened.gen);
+    }
+    const peak = await stopSampling();
+    stopSampling = null;
+    const change = opened.change;
+    const plog = await page.evaluate((f) => window.__bench.log.slice(f), opened.from);
+    const read = plog.find((e) => e.k === 'blob-text');
+    const end = settled?.frame ? settled.frame.end : await now(page);
+    t3.main = await mainThread(page, change, end);
+    t3.storage = plog.filter((e) => e.k === 'storage' && e.t >= change && e.t <= end).map((e) => ({ chars: e.chars, ms: e.end - e.t }));
+    const at = (x) => (x === null || x === undefined ? null : x - change);
+    if (settled) {
+      const { run: wrun, render, frame } = settled;
+      t3.pageDrawn = at(settled.drawnMessage);
+      t3.total = frame ? frame.end - change : null;
+      t3.phases = {
+        readFile: read ? read.end - change : null,
+        beforePost: read ? settled.post - read.end : null,
+        postMessage: settled.postEnd - settled.post,
+        toWorker: wrun ? Math.max(0, wrun.t - settled.postEnd) : null,
+        run: wrun ? wrun.end - wrun.t : null,
+        resultToPage: wrun ? (settled.rendered ?? settled.result) - wrun.end : null,
+        waitFrame: render ? render.t - wrun.end : null,
+        render: render ? render.end - render.t : null,
+        raster: frame ? frame.end - frame.t : null,
+      };
+      t3.calls = render?.calls ?? null;
+      t3.wasm = frame?.wasm ?? wrun?.wasm ?? null;
+    }
+    for (const p of renderers()) peak.byPid.set(p.pid, Math.max(peak.byPid.get(p.pid) ?? 0, p.rss, p.hwm));
+    // The page's renderer: the one that grew most (it holds the program several times over).
+    const [minePid, minePeak] = [...peak.byPid].reduce((a, b) => (b[1] > a[1] ? b : a), [null, null]);
+    t3.memory = {
+      rendererPeak: minePeak,
+      rendererBefore: before.find((p) => p.pid === minePid)?.rss ?? null,
+      rendererUntilDrawnMessage: untilDrawnMessage?.get(minePid) ?? null,
+      pageHeapBefore: heapBefore.usedSize,
+      pageHeapPeak: peak.pageHeap,
+      workerHeapPeak: peak.workerSamples ? peak.workerHeap : null,
+      wasm: t3.wasm ?? null,
+    };
+    t3.summary = await summaryText(page).catch(() => null);
+    log(`  run ${run}: target 3: ${t3.timedOut ? `not drawn within ${LIMIT.big / 1000} s` : `${fmtMs(t3.total)} to drawn`} `
+      + `(page's drawn message ${fmtMs(t3.pageDrawn)}, worker run ${fmtMs(t3.phases?.run)}, render ${fmtMs(t3.phases?.render)}, `
+      + `raster ${fmtMs(t3.phases?.raster)}); longest main-thread task ${fmtMs(t3.main.longest)}; renderer peak ${fmtMB(minePeak)}; ${t3.summary}`);
+
+    // Target 5, once the worker is free (else it would only measure the frame still being drawn).
+    if (t3.timedOut) {
+      // No frame can follow while the worker is still rasterising the first one.
+      out.t5 = { fps: 0, noFrame: `no frame: the worker was still rasterising the first drawing (over ${LIMIT.big / 1000} s)` };
+    } else {
+      await sleep(1500);
+      out.t5 = await panZoom(page);
+      log(`  run ${run}: target 5: ${out.t5.fps.toFixed(2)} frames/s (pan ${out.t5.pan.fps.toFixed(2)}, zoom ${out.t5.zoom.fps.toFixed(2)}), `
+        + `frame median ${fmtMs(out.t5.frameMs?.median)}, input ${out.t5.inputsPerSecond.toFixed(0)} events/s`);
+    }
+    await context.close();
+  } catch (error) {
+    out.error = firstLine(error);
+    out.timedOut = isTimeout(error);
+    if (process.env.BENCH_DEBUG) log(error?.stack);
+    log(`  run ${run}: ${out.error}`);
+  } finally {
+    if (stopSampling) await stopSampling().catch(() => {});
+    // Closing the browser also ends a worker still drawing.
+    await browser.close().catch(() => {});
+  }
+  return out;
+}
+
+/**
+ * Drags on #view, then turns the wheel, each for half of --seconds; counts
+ * the frames the worker finished. The input goes through CDP
+ * Input.dispatchMouseEvent with up to four events in flight (awaiting each,
+ * as page.mouse does, allows only about one event per animation frame, which
+ * would cap the rate at the very figure measured).
+ */
+async function panZoom(page) {
+  const cdp = await page.context().newCDPSession(page);
+  const box = await page.locator('#view').boundingBox();
+  const cx = box.x + box.width / 2;
+  const cy = box.y + box.height / 2;
+  const half = (OPTS.seconds * 1000) / 2;
+  const inflight = new Set();
+  const send = async (params) => {
+    while (inflight.size >= 4) await Promise.race(inflight);
+    const p = cdp.send('Input.dispatchMouseEvent', params).catch(() => {}).finally(() => inflight.delete(p));
+    inflight.add(p);
+  };
+  const phase = async (name, body) => {
+    const t0 = await now(page);
+    const inputs = await within(body(), half + LIMIT.step, name);
+    await within(Promise.all(inflight), LIMIT.step, name);
+    const t1 = await now(page);
+    return { name, t0, t1, inputs };
+  };
+  const pan = await phase('pan', async () => {
+    let n = 0;
+    await send({ type: 'mouseMoved', x: cx, y: cy });
+    await send({ type: 'mousePressed', x: cx, y: cy, button: 'left', buttons: 1, clickCount: 1 });
+    const end = Date.now() + half;
+    let x = cx;
+    let y = cy;
+    while (Date.now() < end) {
+      // Round a circle of 120 px: the path moves about under the pointer.
+      const a = (n / 40) * 2 * Math.PI;
+      x = cx + 120 * Math.cos(a) - 120;
+      y = cy + 120 * Math.sin(a);
+      await send({ type: 'mouseMoved', x, y, button: 'left', buttons: 1 });
+      n += 1;
+    }
+    await send({ type: 'mouseReleased', x, y, button: 'left', buttons: 0, clickCount: 1 });
+    return n;
+  });
+  const zoom = await phase('zoom', async () => {
+    let n = 0;
+    await send({ type: 'mouseMoved', x: cx, y: cy });
+    const end = Date.now() + half;
+    while (Date.now() < end) {
+      // Ten notches in, ten out: the view stays around the whole path.
+      await send({ type: 'mouseWheel', x: cx, y: cy, deltaX: 0, deltaY: Math.floor(n / 10) % 2 ? 60 : -60 });
+      n += 1;
+    }
+    return n;
+  });
+  // Frames begun during the input may finish a little later (their time is kept, not counted in the rate).
+  const last = zoom.t1;
+  await page.waitForFunction((t) => {
+    const W = window.__bench.worker;
+    const begun = W.filter((e) => e.name === 'render' && e.t <= t);
+    const lastBegun = begun[begun.length - 1];
+    return !lastBegun || W.some((e) => e.name === 'frame' && e.render === lastBegun.id);
+  }, last, { timeout: LIMIT.grace }).catch(() => {});
+  const W = await page.evaluate(() => window.__bench.worker);
+  const renders = new Map(W.filter((e) => e.name === 'render').map((e) => [e.id, e]));
+  const frames = W.filter((e) => e.name === 'frame').map((e) => ({ ...e, start: renders.get(e.render)?.t ?? e.t }));
+  const each = (p) => {
+    const done = frames.filter((f) => f.end >= p.t0 && f.end <= p.t1);
+    const seconds = (p.t1 - p.t0) / 1000;
+    return { fps: done.length / seconds, frames: done.length, seconds, inputs: p.inputs };
+  };
+  const begunIn = frames.filter((f) => f.start >= pan.t0 && f.start <= zoom.t1);
+  const unfinished = [...renders.values()].filter((r) => r.t >= pan.t0 && r.t <= zoom.t1 && !frames.some((f) => f.render === r.id));
+  const mainPan = await mainThread(page, pan.t0, pan.t1);
+  const mainZoom = await mainThread(page, zoom.t0, zoom.t1);
+  const plog = await page.evaluate(([a, b]) => window.__bench.log.filter((e) => e.t >= a && e.t <= b), [pan.t0, zoom.t1]);
+  const p = each(pan);
+  const z = each(zoom);
+  const seconds = p.seconds + z.seconds;
+  return {
+    fps: (p.frames + z.frames) / seconds,
+    pan: { ...p, main: mainPan },
+    zoom: { ...z, main: mainZoom },
+    frameMs: stats(begunIn.map((f) => f.end - f.start)),
+    renderMs: stats(begunIn.map((f) => renders.get(f.render).end - f.start)),
+    rasterMs: stats(begunIn.map((f) => f.end - f.t)),
+    unfinished: unfinished.length,
+    inputsPerSecond: (pan.inputs + zoom.inputs) / seconds,
+    viewMessages: plog.filter((e) => e.k === 'out' && e.type === 'view').length,
+    storageWrites: plog.filter((e) => e.k === 'storage').length,
+    mainLongest: Math.max(mainPan.longest, mainZoom.longest),
+    mainLongTaskTotal: mainPan.total + mainZoom.total,
+    mainFramesPerSecond: (mainPan.frames + mainZoom.frames) / seconds,
+  };
+}
+
+// ---------------------------------------------------------------- target 4
+
+async function runEdits(server, small, run) {
+  const out = { run, edits: [] };
+  const browser = await within(launchBrowser(), LIMIT.step, 'launching Chromium');
+  try {
+    const { context, page, problems } = await openFresh(browser, server);
+    out.problems = problems;
+    await instrumentWorker(page);
+    const s = await openFile(page, small.setup, LIMIT.step);
+    await waitSettled(page, s.gen, LIMIT.step);
+    const p = await openFile(page, small.program, LIMIT.small);
+    await waitSettled(page, p.gen, LIMIT.small);
+    out.summary = await summaryText(page);
+
+    // Scroll the editor to the middle of the program and put the cursor
+    // after the first digit of the N number of a G01 line there.
+    await page.evaluate(() => {
+      const scroller = document.querySelector('.cm-scroller');
+      scroller.scrollTop = (scroller.scrollHeight - scroller.clientHeight) / 2;
+    });
+    await sleep(300);
+    const target = await page.evaluate(() => {
+      const box = document.querySelector('.cm-scroller').getBoundingClientRect();
+      const mid = box.top + box.height / 2;
+      let best = null;
+      for (const line of document.querySelectorAll('.cm-line')) {
+        const r = line.getBoundingClientRect();
+        if (r.top < box.top || r.bottom > box.bottom || !/^N\d+ G01 X/.test(line.textContent)) continue;
+        if (!best || Math.abs(r.top - mid) < Math.abs(best.y - mid)) best = { x: r.left + 4, y: r.top + r.height / 2, text: line.textContent };
+      }
+      return best;
+    });
+    if (!target) throw new Error('no G01 line visible in the middle of the editor');
+    await page.mouse.click(target.x, target.y);
+    await page.keyboard.press('Home');
+    await page.keyboard.press('ArrowRight');
+    await page.keyboard.press('ArrowRight');
+    await sleep(1000);
+    out.line = target.text;
+
+    for (let i = 0; i < OPTS.edits; i += 1) {
+      const key = i % 2 === 0 ? '7' : 'Backspace';
+      const from = await page.evaluate(() => window.__bench.log.length);
+      await page.keyboard.press(key);
+      let settled;
+      try {
+        const h = await page.waitForFunction((f) => {
+          const B = window.__bench;
+          const post = B.log.slice(f).find((e) => e.k === 'out' && e.type === 'run');
+          const s = post && B.settled(post.gen);
+          return s && s.drawnMessage !== null && s.frame ? s : null;
+        }, from, { timeout: LIMIT.edit, polling: 10 });
+        settled = await h.jsonValue();
+      } catch (error) {
+        if (!isTimeout(error)) throw error;
+        out.edits.push({ key, timedOut: true });
+        log(`  run ${run}: edit ${i + 1} not drawn within ${LIMIT.edit / 1000} s`);
+        await sleep(2000);
+        continue;
+      }
+      const keyT = await page.evaluate(([f, k]) => window.__bench.log.slice(f).find((e) => e.k === 'key' && e.key === k).t, [from, key]);
+      const { run: wrun, render, frame } = settled;
+      out.edits.push({
+        key,
+        keyToFrame: frame.end - keyT,
+        keyToDrawnMessage: settled.drawnMessage - keyT,
+        debounce: settled.post - keyT,
+        requestToFrame: frame.end - settled.post,
+        postMessage: settled.postEnd - settled.post,
+        toWorker: Math.max(0, wrun.t - settled.postEnd),
+        run: wrun.end - wrun.t,
+        resultToPage: (settled.rendered ?? settled.result) - wrun.end,
+        waitFrame: render.t - wrun.end,
+        render: render.end - render.t,
+        raster: frame.end - frame.t,
+        calls: render.calls,
+      });
+      // A typist's pause, so the autosave and the address bar get their turn too.
+      await sleep(150);
+    }
+    // Target 5 on this smaller path, for comparison.
+    await sleep(500);
+    out.t5 = await panZoom(page);
+    log(`  run ${run}: target 5 on ${small.blocks} blocks: ${out.t5.fps.toFixed(2)} frames/s, frame median ${fmtMs(out.t5.frameMs?.median)}`);
+    const ok = out.edits.filter((e) => !e.timedOut);
+    log(`  run ${run}: target 4: ${ok.length} edits, keystroke to drawn median ${fmtMs(median(ok.map((e) => e.keyToFrame)))} `
+      + `(to the run request ${fmtMs(median(ok.map((e) => e.debounce)))}, worker run ${fmtMs(median(ok.map((e) => e.run)))}, `
+      + `render ${fmtMs(median(ok.map((e) => e.render)))}, raster ${fmtMs(median(ok.map((e) => e.raster)))})`);
+    await context.close();
+  } catch (error) {
+    out.error = firstLine(error);
+    out.timedOut = isTimeout(error);
+    if (process.env.BENCH_DEBUG) log(error?.stack);
+    log(`  run ${run}: ${out.error}`);
+  } finally {
+    await browser.close().catch(() => {});
+  }
+  return out;
+}
+
+// ------------------------------------------------------------------ output
+
+function fmtMs(ms) {
+  if (ms === null || ms === undefined || !Number.isFinite(ms)) return '—';
+  if (ms >= 1000) return `${(ms / 1000).toFixed(2)} s`;
+  if (ms >= 100) return `${ms.toFixed(0)} ms`;
+  return `${ms.toFixed(1)} ms`;
+}
+function fmtMB(bytes) {
+  if (bytes === null || bytes === undefined || !Number.isFinite(bytes)) return '—';
+  return `${(bytes / 1e6).toFixed(0)} MB`;
+}
+const fmtN = (digits) => (v) => (Number.isFinite(v) ? v.toLocaleString('en', { maximumFractionDigits: digits, minimumFractionDigits: digits }) : '—');
+const range = (s, f) => (s ? (s.n > 1 ? `${f(s.median)} (${f(s.min)}–${f(s.max)})` : f(s.median)) : '—');
+
+function table(rows) {
+  const widths = rows[0].map((_, i) => Math.max(...rows.map((r) => String(r[i]).length)));
+  const line = (r) => `| ${r.map((c, i) => String(c).padEnd(widths[i])).join(' | ')} |`;
+  return [line(rows[0]), `|${widths.map((w) => '-'.repeat(w + 2)).join('|')}|`, ...rows.slice(1).map(line)].join('\n');
+}
+
+/** The headline figures and whether each target is met. */
+function headline(results) {
+  const { t3runs, t4runs } = results;
+  const t3 = t3runs.map((r) => r.t3).filter(Boolean);
+  const drawn = t3.filter((x) => !x.timedOut);
+  const t5 = t3runs.map((r) => r.t5).filter(Boolean);
+  const t5small = t4runs.map((r) => r.t5).filter(Boolean);
+  const edits = t4runs.flatMap((r) => r.edits.filter((e) => !e.timedOut));
+  const h = {
+    total: stats(drawn.map((x) => x.total)),
+    totalTimedOut: t3.length - drawn.length,
+    pageDrawn: stats(t3.map((x) => x.pageDrawn)),
+    longest: stats(t3.map((x) => x.main.longest)),
+    gap: stats(t3.map((x) => x.main.maxFrameGap)),
+    peak: stats(t3.map((x) => x.memory.rendererPeak)),
+    keyToFrame: stats(edits.map((e) => e.keyToFrame)),
+    keyToDrawnMessage: stats(edits.map((e) => e.keyToDrawnMessage)),
+    debounce: stats(edits.map((e) => e.debounce)),
+    requestToFrame: stats(edits.map((e) => e.requestToFrame)),
+    fps: stats(t5.map((x) => x.fps)),
+    fpsSmall: stats(t5small.map((x) => x.fps)),
+  };
+  const verdict = (s, ok) => (s ? (ok(s.median) ? 'met' : 'not met') : 'not measured');
+  h.status = {
+    time: h.totalTimedOut && !h.total ? 'not met (timed out)' : verdict(h.total, (v) => v < 1000),
+    responsive: verdict(h.longest, (v) => v < 100),
+    memory: verdict(h.peak, (v) => v < 400e6),
+    edit: verdict(h.keyToFrame, (v) => v < 16),
+    editNoDebounce: verdict(h.requestToFrame, (v) => v < 16),
+    fps: verdict(h.fps, (v) => v >= 30),
+  };
+  return h;
+}
+
+function report(results) {
+  const { env, big, small, t3runs, t4runs } = results;
+  const h = headline(results);
+  const t3 = t3runs.map((r) => r.t3).filter(Boolean);
+  const t5 = t3runs.map((r) => r.t5).filter((x) => x && !x.noFrame);
+  const t5none = t3runs.map((r) => r.t5).filter((x) => x?.noFrame);
+  const t5small = t4runs.map((r) => r.t5).filter(Boolean);
+  const edits = t4runs.flatMap((r) => r.edits.filter((e) => !e.timedOut));
+  const bigName = `${big.blocks.toLocaleString('en')} blocks`;
+  const smallName = `${small.blocks.toLocaleString('en')} blocks`;
+  const timedOut = h.totalTimedOut ? `${h.totalTimedOut} of ${t3.length} runs not drawn within ${LIMIT.big / 1000} s` : '';
+  const totalText = h.total ? `${range(h.total, fmtMs)}${timedOut ? `; ${timedOut}` : ''}` : (timedOut ? `timed out: ${timedOut}` : '—');
+  const fps = (v) => v.toFixed(v < 10 ? 2 : 1);
+  const rows = [
+    ['#', 'target', 'measured: median (min–max)', 'goal', 'status'],
+    ['3', `${bigName} (${fmtMB(big.bytes)}) opened (Open…) until drawn`, totalText, '< 1.0 s', h.status.time],
+    ['3', '  until the page\'s `drawn` message (before rasterisation)', range(h.pageDrawn, fmtMs), '—', ''],
+    ['3', 'responsive: longest main-thread task meanwhile', range(h.longest, fmtMs), '< 100 ms', h.status.responsive],
+    ['3', '  longest gap between main-thread animation frames', range(h.gap, fmtMs), '—', ''],
+    ['3', 'peak memory: renderer process (page + worker + wasm)', range(h.peak, fmtMB), '< 400 MB', h.status.memory],
+    ['4', `${smallName}: one-character edit, keystroke until drawn`, range(h.keyToFrame, fmtMs), '< 16 ms', h.status.edit],
+    ['4', '  of which keystroke to run request (editor, the page\'s debounce if any)', range(h.debounce, fmtMs), '—', ''],
+    ['4', '  run request until drawn', range(h.requestToFrame, fmtMs), '< 16 ms', h.status.editNoDebounce],
+    ['4', '  keystroke until the page\'s `drawn` message', range(h.keyToDrawnMessage, fmtMs), '—', ''],
+    ['5', `${bigName}: pan + zoom, frames drawn per second`,
+      h.fps ? `${range(h.fps, fps)}${t5none.length ? ` (${t5none.length} of ${t5none.length + t5.length} runs: ${t5none[0].noFrame})` : ''}` : '—',
+      '≥ 30', h.status.fps],
+    ['5', `  the same on ${smallName} (for comparison)`, range(h.fpsSmall, fps), '≥ 30', h.fpsSmall ? (h.fpsSmall.median >= 30 ? 'met' : 'not met') : ''],
+  ];
+  const out = [];
+  out.push(`offsetlab browser benchmark, ${env.date}`);
+  out.push(`Chromium ${env.chromium} headless (flags of tests/e2e/harness.mjs: --headless --no-sandbox --disable-gpu …; software rendering), `
+    + `Node ${env.node}, ${env.cpus} CPUs, load average ${env.loadBefore.map((x) => x.toFixed(2)).join(' ')} before, `
+    + `${(env.loadAfter ?? []).map((x) => x.toFixed(2)).join(' ')} after`);
+  out.push(`Page: ${env.page}`);
+  if (OPTS.experiment) out.push(`EXPERIMENT (--canvas-experiment ${OPTS.experiment.spec}): the worker's canvas context was patched; these are not the page's figures.`);
+  out.push(`Load: ${env.loadNote}`);
+  out.push(`Runs: ${env.runs} fresh browsers for targets 3 and 5, ${env.runs} for target 4 (${env.edits} edits each); `
+    + `viewport 1280x800 at 2 device pixels per CSS pixel.`);
+  out.push('');
+  out.push(table(rows));
+
+  if (t3.some((x) => x.phases)) {
+    const ph = (k) => stats(t3.map((x) => x.phases?.[k]));
+    const rowsP = [
+      ['target 3: where the time goes (median over runs)', 'time', 'what'],
+      ['read the file (Blob.text)', range(ph('readFile'), fmtMs), 'File.text() of the .nc (main thread)'],
+      ['page until the run request', range(ph('beforePost'), fmtMs), 'CodeMirror setText, the text copied out of the editor, panels'],
+      ['postMessage of the run request', range(ph('postMessage'), fmtMs), 'structured clone of the program text'],
+      ['to the worker', range(ph('toWorker'), fmtMs), 'delivery, deserialisation, queue, until Session.run starts'],
+      ['Session.run (wasm)', range(ph('run'), fmtMs), 'text into wasm memory, parse, run, toolpath; summary out'],
+      ['result handled by the page', range(ph('resultToPage'), fmtMs), 'from the run\'s end: summary, diagnostics, editor marks'],
+      ['worker: wait for its animation frame', range(ph('waitFrame'), fmtMs), 'from the run\'s end to render()'],
+      ['Session.render (wasm)', range(ph('render'), fmtMs), 'records the drawing (canvas calls)'],
+      ['rasterisation of the frame', range(ph('raster'), fmtMs), 'Chromium/Skia paints the recorded paths (worker thread)'],
+    ];
+    out.push('');
+    out.push(table(rowsP));
+    const calls = t3.find((x) => x.calls)?.calls;
+    if (calls) out.push('', `Canvas calls of that drawing: ${calls.lineTo.toLocaleString('en')} lineTo, ${calls.moveTo.toLocaleString('en')} moveTo, ${calls.stroke} stroke.`);
+  }
+  if (t3.length) {
+    const m = (k) => stats(t3.map((x) => x.memory[k]));
+    const mem = [
+      ['target 3: memory (median over runs)', 'size'],
+      ['renderer process RSS before opening the file', range(m('rendererBefore'), fmtMB)],
+      ['renderer process peak RSS (sampled every 200 ms)', range(m('rendererPeak'), fmtMB)],
+      ['  peak minus the RSS before', range(stats(t3.map((x) => x.memory.rendererPeak - x.memory.rendererBefore)), fmtMB)],
+      ['  highest until the page\'s drawn message (run and render, before rasterisation)', range(m('rendererUntilDrawnMessage'), fmtMB)],
+      ['page JS heap before', range(m('pageHeapBefore'), fmtMB)],
+      ['page JS heap, highest sample', range(m('pageHeapPeak'), fmtMB)],
+      ['worker JS heap, highest sample', range(m('workerHeapPeak'), fmtMB)],
+      ['worker wasm memory after the run (its peak)', range(m('wasm'), fmtMB)],
+    ];
+    out.push('');
+    out.push(table(mem));
+    const lt = stats(t3.map((x) => x.main.total));
+    const ltn = stats(t3.map((x) => x.main.count));
+    const st = t3[0].storage;
+    out.push('');
+    out.push(`Main thread during target 3: ${range(ltn, fmtN(0))} long tasks, ${range(lt, fmtMs)} in all. `
+      + `localStorage writes (run 1): ${st.length ? st.map((e) => `${(e.chars / 1e6).toFixed(1)} M characters in ${fmtMs(e.ms)}`).join(', ') : 'none'}.`);
+    out.push(`Summary line of the page: ${t3.find((x) => x.summary)?.summary ?? '—'}`);
+  }
+  if (edits.length) {
+    const e = (k) => stats(edits.map((x) => x[k]));
+    const rowsE = [
+      ['target 4: where the time goes (median over edits)', 'time'],
+      ['keystroke to run request (editor, the page\'s debounce if any)', range(e('debounce'), fmtMs)],
+      ['postMessage of the run request', range(e('postMessage'), fmtMs)],
+      ['to the worker (until Session.run starts)', range(e('toWorker'), fmtMs)],
+      ['Session.run (wasm)', range(e('run'), fmtMs)],
+      ['run end to result handled by the page', range(e('resultToPage'), fmtMs)],
+      ['worker: wait for its animation frame', range(e('waitFrame'), fmtMs)],
+      ['Session.render (wasm)', range(e('render'), fmtMs)],
+      ['rasterisation of the frame', range(e('raster'), fmtMs)],
+    ];
+    out.push('');
+    out.push(table(rowsE));
+    const calls = edits.find((x) => x.calls)?.calls;
+    if (calls) out.push('', `Canvas calls of each drawing: ${calls.lineTo.toLocaleString('en')} lineTo, ${calls.moveTo.toLocaleString('en')} moveTo, ${calls.stroke} stroke.`);
+    const timed = t4runs.flatMap((r) => r.edits).filter((x) => x.timedOut).length;
+    out.push('');
+    out.push(`Edited line: ${t4runs.find((r) => r.line)?.line ?? '—'} (a 7 typed after its first digit, then Backspace); `
+      + `${edits.length} edits${timed ? `, ${timed} not drawn within ${LIMIT.edit / 1000} s` : ''}. `
+      + `Summary line of the page: ${t4runs.find((r) => r.summary)?.summary ?? '—'}`);
+  }
+  for (const [name, list] of [[bigName, t5], [smallName, t5small]]) {
+    if (!list.length) continue;
+    const f = (g) => stats(list.map(g));
+    const rows5 = [
+      [`target 5 on ${name}: detail (median over runs)`, 'value'],
+      ['pan (drag): frames drawn per second', range(f((x) => x.pan.fps), fps)],
+      ['zoom (wheel): frames drawn per second', range(f((x) => x.zoom.fps), fps)],
+      ['time per frame, render() to rasterised (median of each run)', range(f((x) => x.frameMs?.median), fmtMs)],
+      ['  of which Session.render (wasm)', range(f((x) => x.renderMs?.median), fmtMs)],
+      ['  of which rasterisation', range(f((x) => x.rasterMs?.median), fmtMs)],
+      ['frames begun and not finished 10 s after the input', range(f((x) => x.unfinished), fmtN(0))],
+      ['input events sent per second', range(f((x) => x.inputsPerSecond), fmtN(0))],
+      ['view messages the page sent the worker', range(f((x) => x.viewMessages), fmtN(0))],
+      ['main thread: animation frames per second', range(f((x) => x.mainFramesPerSecond), fmtN(1))],
+      ['main thread: longest task', range(f((x) => x.mainLongest), fmtMs)],
+      ['main thread: long tasks in all', range(f((x) => x.mainLongTaskTotal), fmtMs)],
+      ['localStorage writes', range(f((x) => x.storageWrites), fmtN(0))],
+    ];
+    out.push('');
+    out.push(table(rows5));
+  }
+  const problems = [...t3runs, ...t4runs].filter((r) => r.error).map((r) => `run ${r.run}: ${r.error}`);
+  const consoleProblems = [...new Set([...t3runs, ...t4runs].flatMap((r) => r.problems ?? []))];
+  if (problems.length) out.push(`\nProblems: ${problems.join('; ')}`);
+  if (consoleProblems.length) out.push(`\nConsole errors or failed requests: ${consoleProblems.slice(0, 5).join('; ')}`);
+  if (env.timedOut) out.push(`\nThe benchmark stopped after ${Math.round(LIMIT.total / 60000)} min: the figures above are what was measured by then.`);
+  return `${out.join('\n')}\n`;
+}
+
+function print(results) {
+  if (OPTS.json) process.stdout.write(`${JSON.stringify({ ...results, headline: headline(results) }, null, 2)}\n`);
+  else process.stdout.write(report(results));
+}
+
+// -------------------------------------------------------------------- main
+
+async function main() {
+  const started = Date.now();
+  const env = {
+    date: new Date().toISOString().replace(/\.\d+Z$/, 'Z'),
+    cpus: cpus().length,
+    node: process.version,
+    loadBefore: loadavg(),
+    runs: OPTS.runs,
+    edits: OPTS.edits,
+    loadNote: 'the machine was loaded (other builds and tests ran at the same time), so the figures are noisy: medians of several runs.',
+  };
+  let root;
+  if (OPTS.ref) {
+    const built = buildRef(OPTS.ref);
+    root = built.root;
+    env.page = `commit ${built.sha.slice(0, 12)} (--ref ${OPTS.ref}), built in ${built.root.slice(ROOT.length + 1)}`;
+  } else {
+    const git = (args) => spawnSync('git', args, { cwd: ROOT, encoding: 'utf8' }).stdout.trim();
+    const dirty = git(['status', '--porcelain', '--', 'www', 'src']) ? ', with uncommitted changes in www/ or src/' : '';
+    env.page = `the working tree's www/ (HEAD ${git(['rev-parse', '--short=12', 'HEAD'])}${dirty})`;
+  }
+  const big = generate(OPTS.blocks);
+  const small = generate(OPTS.editBlocks);
+  const server = await startServer(root ? { root } : {});
+  const results = { env, options: OPTS, big, small, t3runs: [], t4runs: [] };
+  let finished = false;
+  const watchdog = setTimeout(() => {
+    if (finished) return;
+    log(`bench-browser: stopped after ${Math.round(LIMIT.total / 60000)} min; printing what was measured`);
+    env.loadAfter = loadavg();
+    env.timedOut = true;
+    print(results);
+    process.exit(1);
+  }, LIMIT.total);
+  try {
+    const probe = await within(launchBrowser(), LIMIT.step, 'launching Chromium');
+    env.chromium = probe.version();
+    await probe.close();
+    for (let run = 1; run <= OPTS.runs; run += 1) {
+      log(`targets 3 and 5, run ${run}/${OPTS.runs}`);
+      results.t3runs.push(await runBig(server, big, run));
+    }
+    for (let run = 1; run <= OPTS.runs; run += 1) {
+      log(`target 4, run ${run}/${OPTS.runs}`);
+      results.t4runs.push(await runEdits(server, small, run));
+    }
+  } finally {
+    finished = true;
+    clearTimeout(watchdog);
+    await server.stop();
+  }
+  env.loadAfter = loadavg();
+  env.seconds = (Date.now() - started) / 1000;
+  print(results);
+}
+
+main().catch((error) => {
+  log(`bench-browser: ${error?.stack ?? error}`);
+  process.exit(1);
+});
