@@ -35,7 +35,7 @@
 //   --ref REV        measure the page of commit REV instead of the working
 //                    tree's www/: `git archive REV` into
 //                    target/bench-browser/ref-SHA/, its wasm package built
-//                    there with wasm-pack (CARGO_TARGET_DIR=target) and its
+//                    there with wasm-pack (CARGO_TARGET_DIR=target/bench-browser/cargo) and its
 //                    editor bundle with esbuild (once per commit): figures
 //                    others can reproduce while www/ and src/ move on
 //   --count-calls    also count the canvas calls of each drawing (lineTo,
@@ -234,7 +234,9 @@ function buildRef(rev) {
   mkdirSync(dir, { recursive: true });
   build('sh', ['-c', `git -C "${ROOT}" archive ${sha} | tar -x -C "${dir}"`]);
   build('wasm-pack', ['build', '--target', 'web', '--out-dir', 'www/pkg'], {
-    cwd: dir, env: { ...process.env, CARGO_TARGET_DIR: join(ROOT, 'target') },
+    // Its own target directory: sharing the repository's made cargo take the
+    // snapshot's build for the working tree's (same package, same fingerprint).
+    cwd: dir, env: { ...process.env, CARGO_TARGET_DIR: join(ROOT, 'target', 'bench-browser', 'cargo') },
   });
   // The snapshot's own build:page script, with the repository's node_modules.
   build('npm', ['run', '--silent', 'build:page'], {
