@@ -158,6 +158,12 @@ export async function waitForLink(page) {
 
 /** Waits until the work is saved in localStorage, and returns it. */
 export async function savedWork(page) {
+  // The view state of the latest run comes a frame after its result and
+  // saves the work again (the current block may have moved): wait for it
+  // before waiting for the save.
+  await page.waitForFunction(() => document.body.dataset.rendered === undefined
+    || document.body.dataset.stateGen === document.body.dataset.rendered
+    || document.body.dataset.stopped !== undefined, null, { timeout: 20_000 });
   await page.waitForFunction(() => document.body.dataset.unsaved === undefined);
   return page.evaluate(() => JSON.parse(localStorage.getItem('offsetlab.work.v1')));
 }
