@@ -16,8 +16,9 @@ use web_sys::{OffscreenCanvas, OffscreenCanvasRenderingContext2d};
 
 use crate::diag::Diagnostic;
 use crate::document::{Document, ViewPlane, ViewState};
+use crate::render::canvas::{CanvasSurface, Layer};
 use crate::render::scene::{self, Scene};
-use crate::render::{self, Frame, Plane, Theme, canvas::CanvasSurface};
+use crate::render::{self, Frame, Plane, Raster, Theme};
 use crate::report::{BlockReport, End, Run};
 use crate::run::RunOptions;
 use crate::setup::{MachineKind, Setup};
@@ -65,6 +66,11 @@ pub struct Session {
     run: Run,
     toolpath: Toolpath,
     canvas: Option<(OffscreenCanvas, OffscreenCanvasRenderingContext2d)>,
+    /// The pixel layer large paths are drawn on, and what carries it to the
+    /// canvas (`render::canvas::Layer`); kept between frames for their memory.
+    raster: Raster,
+    scratch: Option<OffscreenCanvas>,
+    raster_bytes: Vec<u8>,
     /// Plane, zoom, pan, current block and colours.
     scene: Scene,
     /// The CSS size last drawn at, for zoom, pan and picking.
@@ -97,6 +103,9 @@ impl Default for Session {
             run,
             toolpath,
             canvas: None,
+            raster: Raster::new(),
+            scratch: None,
+            raster_bytes: Vec::new(),
             scene: Scene::default(),
             size: (300.0, 150.0),
             frame: None,
@@ -484,7 +493,17 @@ impl Session {
         let sx = f64::from(device(w)) / f64::from(w);
         let sy = f64::from(device(h)) / f64::from(h);
         ctx.set_transform(sx, 0.0, 0.0, sy, 0.0, 0.0)?;
-        let mut surface = CanvasSurface::new(ctx);
+        if self.scratch.is_none() {
+            self.scratch = Some(OffscreenCanvas::new(1, 1)?);
+        }
+        let layer = self.scratch.as_ref().map(|scratch| Layer {
+            raster: &mut self.raster,
+            scratch,
+            bytes: &mut self.raster_bytes,
+            size: (device(w), device(h)),
+            scale: (sx, sy),
+        });
+        let mut surface = CanvasSurface::new(ctx, layer);
         let frame = render::draw_scene(
             &mut surface,
             &self.toolpath,

@@ -3,37 +3,99 @@
 //! wasm memory and only drawing calls cross into the browser.
 
 use js_sys::Array;
-use wasm_bindgen::JsValue;
-use web_sys::OffscreenCanvasRenderingContext2d;
+use wasm_bindgen::{Clamped, JsValue};
+use web_sys::{ImageData, OffscreenCanvas, OffscreenCanvasRenderingContext2d};
 
 use super::style::{Align, FONT_FAMILY, Font, Stroke};
-use super::{Rect, Surface};
+use super::{Pen, Raster, Rect, Surface};
 
 /// A 2D context seen as a [`Surface`] in CSS pixels; the caller sets the
 /// device-pixel transform.
 pub struct CanvasSurface<'a> {
     ctx: &'a OffscreenCanvasRenderingContext2d,
     font: String,
+    layer: Option<Layer<'a>>,
+}
+
+/// The pixel layer of a canvas: the raster, the canvas's size in device
+/// pixels and CSS to device scale, and what carries the raster's pixels
+/// onto the canvas (an `ImageData` is put on `scratch`, which is then
+/// drawn: `putImageData` straight onto the canvas would replace the grid
+/// under the paths instead of drawing over it).
+pub struct Layer<'a> {
+    /// The pixels.
+    pub raster: &'a mut Raster,
+    /// A canvas as large as the drawn part of the raster (grown as needed).
+    pub scratch: &'a OffscreenCanvas,
+    /// Straight RGBA handed to `ImageData` (kept to reuse its memory).
+    pub bytes: &'a mut Vec<u8>,
+    /// Device pixels of the canvas.
+    pub size: (u32, u32),
+    /// Device pixels per CSS pixel.
+    pub scale: (f64, f64),
 }
 
 impl<'a> CanvasSurface<'a> {
-    /// Wraps a context.
-    pub fn new(ctx: &'a OffscreenCanvasRenderingContext2d) -> CanvasSurface<'a> {
+    /// Wraps a context; with a `layer`, large paths are drawn as pixels.
+    pub fn new(
+        ctx: &'a OffscreenCanvasRenderingContext2d,
+        layer: Option<Layer<'a>>,
+    ) -> CanvasSurface<'a> {
         ctx.set_line_cap("round");
         ctx.set_line_join("round");
         CanvasSurface {
             ctx,
             font: String::new(),
+            layer,
         }
+    }
+
+    fn put_layer(&mut self) -> Result<(), JsValue> {
+        let Some(layer) = &mut self.layer else {
+            return Ok(());
+        };
+        let Some((x, y, w, h)) = layer.raster.image(layer.bytes) else {
+            return Ok(());
+        };
+        let (x, y, w, h) = (x as u32, y as u32, w as u32, h as u32);
+        let image = ImageData::new_with_u8_clamped_array_and_sh(Clamped(&layer.bytes[..]), w, h)?;
+        if layer.scratch.width() < w {
+            layer.scratch.set_width(w);
+        }
+        if layer.scratch.height() < h {
+            layer.scratch.set_height(h);
+        }
+        let scratch = layer
+            .scratch
+            .get_context("2d")?
+            .and_then(|c| {
+                wasm_bindgen::JsCast::dyn_into::<OffscreenCanvasRenderingContext2d>(c).ok()
+            })
+            .ok_or_else(|| JsValue::from_str("no 2d context for the scratch canvas"))?;
+        scratch.put_image_data(&image, 0.0, 0.0)?;
+        // In device pixels, one to one.
+        self.ctx.save();
+        self.ctx.set_transform(1.0, 0.0, 0.0, 1.0, 0.0, 0.0)?;
+        let (x, y, w, h) = (f64::from(x), f64::from(y), f64::from(w), f64::from(h));
+        let drawn = self
+            .ctx
+            .draw_image_with_offscreen_canvas_and_sw_and_sh_and_dx_and_dy_and_dw_and_dh(
+                layer.scratch,
+                0.0,
+                0.0,
+                w,
+                h,
+                x,
+                y,
+                w,
+                h,
+            );
+        self.ctx.restore();
+        drawn
     }
 }
 
-impl Surface for CanvasSurface<'_> {
-    fn clear(&mut self, width: f64, height: f64, color: &str) {
-        self.ctx.set_fill_style_str(color);
-        self.ctx.fill_rect(0.0, 0.0, width, height);
-    }
-
+impl Pen for CanvasSurface<'_> {
     fn begin_path(&mut self, stroke: &Stroke) {
         self.ctx.set_stroke_style_str(stroke.color);
         self.ctx.set_line_width(stroke.width);
@@ -53,6 +115,29 @@ impl Surface for CanvasSurface<'_> {
 
     fn stroke(&mut self) {
         self.ctx.stroke();
+    }
+}
+
+impl Surface for CanvasSurface<'_> {
+    fn raster(&mut self) -> Option<&mut Raster> {
+        let layer = self.layer.as_mut()?;
+        let (w, h) = layer.size;
+        let raster = &mut *layer.raster;
+        raster
+            .begin(w as usize, h as usize, layer.scale)
+            .then_some(raster)
+    }
+
+    fn composite(&mut self) {
+        // Only fails when the browser runs out of memory for the image; the
+        // paths are then missing from this frame, and the next one tries
+        // again.
+        let _ = self.put_layer();
+    }
+
+    fn clear(&mut self, width: f64, height: f64, color: &str) {
+        self.ctx.set_fill_style_str(color);
+        self.ctx.fill_rect(0.0, 0.0, width, height);
     }
 
     fn fill_rect(&mut self, rect: Rect, fill: &str, border: Option<&str>) {

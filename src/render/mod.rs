@@ -13,6 +13,7 @@
 
 #[cfg(target_arch = "wasm32")]
 pub mod canvas;
+pub mod raster;
 pub mod scene;
 pub mod style;
 pub mod svg;
@@ -20,26 +21,39 @@ pub mod view;
 
 use crate::setup::MachineKind;
 use crate::toolpath::Toolpath;
+pub use raster::Raster;
 pub use scene::Scene;
 pub use style::{Align, Font, Stroke, Theme};
 pub use view::{Extent, Plane, Rect, Transform, nice_step};
 
-/// A 2D drawing surface in CSS pixels, y down.
-pub trait Surface {
-    /// Fills the whole surface with a colour.
-    fn clear(&mut self, width: f64, height: f64, color: &str);
-    /// Starts a named group of drawing (an SVG `<g class>`; a canvas ignores it).
-    fn begin_group(&mut self, _name: &str) {}
-    /// Ends the group started last.
-    fn end_group(&mut self) {}
-    /// Starts a path stroked with `stroke` when [`Surface::stroke`] is called.
+/// What draws the paths: strokes of straight segments in CSS pixels, y down.
+pub trait Pen {
+    /// Starts a path stroked with `stroke` when [`Pen::stroke`] is called.
     fn begin_path(&mut self, stroke: &Stroke);
     /// Starts a sub-path at a point.
     fn move_to(&mut self, x: f64, y: f64);
     /// Adds a straight segment to the current sub-path.
     fn line_to(&mut self, x: f64, y: f64);
-    /// Strokes the path begun by [`Surface::begin_path`].
+    /// Strokes the path begun by [`Pen::begin_path`].
     fn stroke(&mut self);
+    /// Starts a named group of drawing (an SVG `<g class>`; a canvas ignores it).
+    fn begin_group(&mut self, _name: &str) {}
+    /// Ends the group started last.
+    fn end_group(&mut self) {}
+}
+
+/// A 2D drawing surface in CSS pixels, y down.
+pub trait Surface: Pen {
+    /// Fills the whole surface with a colour.
+    fn clear(&mut self, width: f64, height: f64, color: &str);
+    /// A transparent pixel layer the size of the surface for the paths of a
+    /// large drawing, when the backend has one (the page's canvas; see
+    /// [`raster`] for why). None: draw them as vectors.
+    fn raster(&mut self) -> Option<&mut Raster> {
+        None
+    }
+    /// Puts what was drawn on the layer of [`Surface::raster`] on the surface.
+    fn composite(&mut self) {}
     /// Fills a rectangle, with an optional one-pixel border.
     fn fill_rect(&mut self, rect: Rect, fill: &str, border: Option<&str>);
     /// Draws a text; `y` is its alphabetic baseline. Text is data, never markup.
@@ -60,6 +74,10 @@ const MIN_SCALE_PX: f64 = 70.0;
 /// Vertices closer than this to the last one drawn are skipped (level of
 /// detail: a million tiny segments cost a million calls for nothing).
 const MIN_SEGMENT_PX: f64 = 0.5;
+/// Toolpaths of this many moves or more are drawn on the surface's pixel
+/// layer when it has one ([`Surface::raster`]); smaller ones as vector
+/// strokes, which have round joins and the browser's own anti-aliasing.
+pub const RASTER_FROM_MOVES: usize = 2_000;
 /// Arcs are drawn as polylines no farther than this (CSS pixels) from the
 /// true circle at the scale drawn: smooth at any zoom, and a few segments
 /// for an arc that is a few pixels across.
@@ -252,38 +270,16 @@ pub fn draw_scene(
     surface.clear(frame.width, frame.height, frame.theme.background);
     draw_grid(surface, &frame);
     draw_axes(surface, &frame);
-    if split < moves {
-        surface.begin_group("ghost");
-        let ghost = frame.theme.ghost();
-        draw_path(surface, &frame, toolpath, false, split..moves, |_| &ghost);
-        surface.end_group();
+    // Past a few thousand moves the canvas's own stroking is what makes a
+    // frame slow (`raster`): the paths go on a pixel layer instead.
+    if moves >= RASTER_FROM_MOVES
+        && let Some(raster) = surface.raster()
+    {
+        draw_paths(raster, &frame, toolpath, scene, split);
+        surface.composite();
+    } else {
+        draw_paths(surface, &frame, toolpath, scene, split);
     }
-    if let Some(step) = scene.step {
-        let first = toolpath.blocks.partition_point(|&b| b < step).min(split);
-        if first < split {
-            surface.begin_group("current");
-            let hl = frame.theme.highlight();
-            draw_path(surface, &frame, toolpath, false, first..split, |_| &hl);
-            surface.end_group();
-        }
-    }
-    let t = frame.theme;
-    let (af, ar, pf, pr) = (
-        t.actual_feed(),
-        t.actual_rapid(),
-        t.programmed_feed(),
-        t.programmed_rapid(),
-    );
-    surface.begin_group("actual");
-    draw_path(surface, &frame, toolpath, false, 0..split, |rapid| {
-        if rapid { &ar } else { &af }
-    });
-    surface.end_group();
-    surface.begin_group("programmed");
-    draw_path(surface, &frame, toolpath, true, 0..split, |rapid| {
-        if rapid { &pr } else { &pf }
-    });
-    surface.end_group();
     scene::draw_arrows(surface, &frame, toolpath, split);
     if let Some(marker) = scene.marker {
         scene::draw_marker(surface, &frame, marker);
@@ -293,13 +289,52 @@ pub fn draw_scene(
     frame
 }
 
+/// The paths of a scene, bottom to top: the moves after the current block
+/// (faint), the current block's highlight, the actual path and the
+/// programmed path up to the current block.
+fn draw_paths(pen: &mut impl Pen, frame: &Frame, toolpath: &Toolpath, scene: &Scene, split: usize) {
+    let moves = toolpath.len();
+    if split < moves {
+        pen.begin_group("ghost");
+        let ghost = frame.theme.ghost();
+        draw_path(pen, frame, toolpath, false, split..moves, |_| &ghost);
+        pen.end_group();
+    }
+    if let Some(step) = scene.step {
+        let first = toolpath.blocks.partition_point(|&b| b < step).min(split);
+        if first < split {
+            pen.begin_group("current");
+            let hl = frame.theme.highlight();
+            draw_path(pen, frame, toolpath, false, first..split, |_| &hl);
+            pen.end_group();
+        }
+    }
+    let t = frame.theme;
+    let (af, ar, pf, pr) = (
+        t.actual_feed(),
+        t.actual_rapid(),
+        t.programmed_feed(),
+        t.programmed_rapid(),
+    );
+    pen.begin_group("actual");
+    draw_path(pen, frame, toolpath, false, 0..split, |rapid| {
+        if rapid { &ar } else { &af }
+    });
+    pen.end_group();
+    pen.begin_group("programmed");
+    draw_path(pen, frame, toolpath, true, 0..split, |rapid| {
+        if rapid { &pr } else { &pf }
+    });
+    pen.end_group();
+}
+
 /// True for moves drawn in the rapid colour: G00 and offset motion in G00.
 pub fn is_rapid(kind: u8) -> bool {
     kind == 0 || kind == 4
 }
 
 fn draw_path<'a>(
-    s: &mut impl Surface,
+    s: &mut impl Pen,
     f: &Frame,
     tp: &Toolpath,
     programmed: bool,
@@ -737,8 +772,7 @@ mod tests {
             lines: usize,
             last: (f64, f64),
         }
-        impl Surface for Count {
-            fn clear(&mut self, _: f64, _: f64, _: &str) {}
+        impl Pen for Count {
             fn begin_path(&mut self, _: &Stroke) {}
             fn move_to(&mut self, _: f64, _: f64) {}
             fn line_to(&mut self, x: f64, y: f64) {
@@ -746,10 +780,6 @@ mod tests {
                 self.last = (x, y);
             }
             fn stroke(&mut self) {}
-            fn fill_rect(&mut self, _: Rect, _: &str, _: Option<&str>) {}
-            fn fill_text(&mut self, _: &str, _: f64, _: f64, _: &Font) {}
-            fn fill_polygon(&mut self, _: &[(f64, f64)], _: &str) {}
-            fn circle(&mut self, _: f64, _: f64, _: f64, _: Option<&str>, _: Option<&Stroke>) {}
         }
         // 5000 feed moves of 0.001 mm after one long move: on a small
         // surface almost all of them are below half a pixel.
@@ -787,5 +817,78 @@ mod tests {
             "{} segments for a circle 700 px across",
             count.lines
         );
+    }
+
+    /// A surface with a pixel layer, which counts what it is asked to do.
+    #[derive(Default)]
+    struct Layered {
+        raster: Raster,
+        composited: usize,
+        vector_paths: usize,
+    }
+    impl Pen for Layered {
+        fn begin_path(&mut self, _: &Stroke) {
+            self.vector_paths += 1;
+        }
+        fn move_to(&mut self, _: f64, _: f64) {}
+        fn line_to(&mut self, _: f64, _: f64) {}
+        fn stroke(&mut self) {}
+    }
+    impl Surface for Layered {
+        fn clear(&mut self, _: f64, _: f64, _: &str) {}
+        fn raster(&mut self) -> Option<&mut Raster> {
+            self.raster
+                .begin(400, 300, (1.0, 1.0))
+                .then_some(&mut self.raster)
+        }
+        fn composite(&mut self) {
+            self.composited += 1;
+        }
+        fn fill_rect(&mut self, _: Rect, _: &str, _: Option<&str>) {}
+        fn fill_text(&mut self, _: &str, _: f64, _: f64, _: &Font) {}
+        fn fill_polygon(&mut self, _: &[(f64, f64)], _: &str) {}
+        fn circle(&mut self, _: f64, _: f64, _: f64, _: Option<&str>, _: Option<&Stroke>) {}
+    }
+
+    #[test]
+    fn large_paths_go_on_the_pixel_layer_in_their_colours_small_ones_stay_vectors() {
+        // A zigzag of RASTER_FROM_MOVES feed moves after one rapid (which
+        // the first feed move does not retrace).
+        let mut program = String::from("G90 G00 X-10. Y60.\nG01 F100.\n");
+        for i in 0..RASTER_FROM_MOVES {
+            program.push_str(&format!("X{}. Y{}.\n", i % 50 + 5, (i % 2) * 40));
+        }
+        let tp = toolpath(&program);
+        assert!(tp.len() >= RASTER_FROM_MOVES);
+        let mut s = Layered::default();
+        draw_scene(&mut s, &tp, &Scene::default(), 400.0, 300.0);
+        assert_eq!(s.composited, 1);
+        let around = s.vector_paths; // grid, axes, scale bar, legend samples
+        let (w, h) = s.raster.size();
+        let mut colours = std::collections::HashSet::new();
+        for y in 0..h {
+            for x in 0..w {
+                let [r, g, b, a] = s.raster.pixel(x, y);
+                if a == 255 {
+                    colours.insert(format!("#{r:02x}{g:02x}{b:02x}"));
+                }
+            }
+        }
+        let drawn = [
+            style::ACTUAL_FEED.color,
+            style::PROGRAMMED_FEED.color,
+            style::ACTUAL_RAPID.color,
+            style::PROGRAMMED_RAPID.color,
+        ];
+        for c in drawn {
+            assert!(colours.contains(c), "{c} in {colours:?}");
+        }
+        // A small program: vector strokes, no layer.
+        let small = toolpath("G90 G00 X-10. Y20.\nG01 X10. F100.\n");
+        let mut s = Layered::default();
+        draw_scene(&mut s, &small, &Scene::default(), 400.0, 300.0);
+        assert_eq!(s.composited, 0);
+        // The same, and the four paths: actual and programmed, rapid and feed.
+        assert_eq!(s.vector_paths, around + 4);
     }
 }

@@ -5,7 +5,7 @@
 use std::fmt::Write;
 
 use super::style::{Align, FONT_FAMILY, Font, Stroke};
-use super::{Rect, Surface};
+use super::{Pen, Rect, Surface};
 use crate::toolpath::Toolpath;
 
 /// Collects SVG elements into a string.
@@ -58,17 +58,7 @@ pub fn render_scene(toolpath: &Toolpath, scene: &super::Scene, width: f64, heigh
     surface.finish(frame.width, frame.height)
 }
 
-impl Surface for SvgSurface {
-    fn clear(&mut self, width: f64, height: f64, color: &str) {
-        let _ = writeln!(
-            self.body,
-            "<rect class=\"background\" x=\"0\" y=\"0\" width=\"{}\" height=\"{}\" fill=\"{}\"/>",
-            num(width),
-            num(height),
-            escape(color)
-        );
-    }
-
+impl Pen for SvgSurface {
     fn begin_group(&mut self, name: &str) {
         let _ = writeln!(self.body, "<g class=\"{}\">", escape(name));
         self.depth += 1;
@@ -115,6 +105,18 @@ impl Surface for SvgSurface {
         }
         self.body.push_str("/>\n");
         self.path.clear();
+    }
+}
+
+impl Surface for SvgSurface {
+    fn clear(&mut self, width: f64, height: f64, color: &str) {
+        let _ = writeln!(
+            self.body,
+            "<rect class=\"background\" x=\"0\" y=\"0\" width=\"{}\" height=\"{}\" fill=\"{}\"/>",
+            num(width),
+            num(height),
+            escape(color)
+        );
     }
 
     fn fill_rect(&mut self, rect: Rect, fill: &str, border: Option<&str>) {

@@ -1,0 +1,91 @@
+//! Times drawing a program's toolpath on a pixel layer, as the page does for
+//! large paths: `cargo run --release --example render_time -- FILE [W H DPR]`.
+use std::time::Instant;
+
+use offsetlab::render::{self, Font, Pen, Raster, Rect, Scene, Stroke, Surface};
+use offsetlab::toolpath::Toolpath;
+
+struct Layer {
+    vector: bool,
+    segments: usize,
+    length: f64,
+    at: (f64, f64),
+    raster: Raster,
+    size: (usize, usize),
+    scale: f64,
+    bytes: Vec<u8>,
+}
+impl Pen for Layer {
+    fn begin_path(&mut self, _: &Stroke) {}
+    fn move_to(&mut self, x: f64, y: f64) {
+        self.at = (x, y);
+    }
+    fn line_to(&mut self, x: f64, y: f64) {
+        self.segments += 1;
+        self.length += (x - self.at.0).hypot(y - self.at.1);
+        self.at = (x, y);
+    }
+    fn stroke(&mut self) {}
+}
+impl Surface for Layer {
+    fn clear(&mut self, _: f64, _: f64, _: &str) {}
+    fn raster(&mut self) -> Option<&mut Raster> {
+        if self.vector {
+            return None;
+        }
+        let (w, h, s) = (self.size.0, self.size.1, self.scale);
+        self.raster.begin(w, h, (s, s)).then_some(&mut self.raster)
+    }
+    fn composite(&mut self) {
+        self.raster.image(&mut self.bytes);
+    }
+    fn fill_rect(&mut self, _: Rect, _: &str, _: Option<&str>) {}
+    fn fill_text(&mut self, _: &str, _: f64, _: f64, _: &Font) {}
+    fn fill_polygon(&mut self, _: &[(f64, f64)], _: &str) {}
+    fn circle(&mut self, _: f64, _: f64, _: f64, _: Option<&str>, _: Option<&Stroke>) {}
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let text = std::fs::read_to_string(&args[1]).expect("program");
+    let num = |i: usize, d: f64| args.get(i).and_then(|a| a.parse().ok()).unwrap_or(d);
+    let (w, h, dpr) = (num(2, 1000.0), num(3, 800.0), num(4, 2.0));
+    let mut setup = offsetlab::Setup::default();
+    setup.set_register("01=100").unwrap();
+    let run = offsetlab::run(&text, &setup);
+    let tp = Toolpath::from_run(&run);
+    let mut layer = Layer {
+        vector: std::env::var_os("VECTOR").is_some(),
+        segments: 0,
+        length: 0.0,
+        at: (0.0, 0.0),
+        raster: Raster::new(),
+        size: ((w * dpr) as usize, (h * dpr) as usize),
+        scale: dpr,
+        bytes: Vec::new(),
+    };
+    for _ in 0..num(5, 3.0) as usize {
+        let t = Instant::now();
+        render::draw_scene(&mut layer, &tp, &Scene::default(), w, h);
+        println!(
+            "{} moves: {:.1} ms; {} vector segments, {:.0} CSS px long",
+            tp.len(),
+            t.elapsed().as_secs_f64() * 1e3,
+            layer.segments,
+            layer.length
+        );
+        layer.segments = 0;
+        layer.length = 0.0;
+    }
+    if let Some(out) = args.get(6) {
+        let (w, h) = layer.raster.size();
+        let mut bytes = Vec::with_capacity(4 * w * h);
+        for y in 0..h {
+            for x in 0..w {
+                bytes.extend_from_slice(&layer.raster.pixel(x, y));
+            }
+        }
+        std::fs::write(out, bytes).unwrap();
+        println!("{w}x{h} RGBA written to {out}");
+    }
+}

@@ -1,0 +1,816 @@
+//! The paths of a large drawing as pixels, drawn here in wasm and handed to
+//! the canvas as one image.
+//!
+//! Why: a browser's 2D canvas records every `lineTo` and rasterises the
+//! recorded paths afterwards, and Chromium's cost for that grows faster than
+//! the path's length — the 1M-block benchmark program (4.2 M segments at
+//! full view, 850 M device pixels of line) was not painted within two
+//! minutes, a 10k-block program took 0.74 s a frame (`docs/performance.md`).
+//!
+//! How: the segments are recorded (clipped to the view, as `f32`), then
+//! drawn front to back — last path first, each path's segments last
+//! first — so that a pixel is final as soon as it is opaque, and the
+//! segments below it skip it. Finished pixels are counted per 8 × 8 tile
+//! and finished tiles per 64 × 64 block, so a segment crosses a finished
+//! region in steps of 64 or 8 pixels instead of pixel by pixel: a dense
+//! program, whose lines cover the same area many times over, costs about
+//! what its visible pixels and its segments cost, not its length in pixels.
+//!
+//! What it draws matches the vector drawing of small paths closely enough to
+//! read the same: the same colours and widths in device pixels, anti-aliased
+//! across the line, square caps (the canvas's are round), dashes that run
+//! on across the segments of a sub-path from where it starts, as the
+//! canvas's do. Each path (`begin_path` … `stroke`) is painted as the
+//! canvas paints one: where its own segments overlap, a pixel takes the
+//! larger coverage instead of being painted twice, so translucent strokes
+//! (the current block's highlight) keep their colour at joints.
+
+use super::Pen;
+use super::style::Stroke;
+
+/// Surfaces larger than this (device pixels) are drawn as vectors: the
+/// buffers take 8 bytes a pixel.
+pub const MAX_PIXELS: usize = 4096 * 4096;
+
+/// Finished pixels are counted per tile of `TILE` × `TILE`, finished tiles
+/// per block of `TILE` × `TILE` tiles.
+const TILE_BITS: usize = 3;
+const BLOCK_BITS: usize = 2 * TILE_BITS;
+const FULL: u8 = 1 << (2 * TILE_BITS);
+
+/// A premultiplied RGBA pixel buffer that strokes are recorded for and then
+/// drawn on, front to back.
+#[derive(Default)]
+pub struct Raster {
+    width: usize,
+    height: usize,
+    /// CSS to device pixels.
+    scale: (f64, f64),
+    /// Premultiplied RGBA, transparent where nothing is drawn.
+    rgba: Vec<u8>,
+    /// Per pixel: the path that last covered it (stamp, high 16 bits), the
+    /// alpha of what lay in front of it then (8 bits) and the alpha it gave
+    /// (low 8 bits) — so that a path covers a pixel once.
+    cover: Vec<u32>,
+    /// The stamp of the first path of this drawing.
+    base: u32,
+    /// Finished (opaque) pixels per tile, finished tiles per block; both
+    /// start at what lies outside the surface, so `FULL` means finished.
+    tiles: Vec<u8>,
+    blocks: Vec<u8>,
+    tiles_w: usize,
+    blocks_w: usize,
+    /// The box of the pixels drawn (x0, y0, x1, y1; exclusive ends).
+    dirty: Option<(usize, usize, usize, usize)>,
+    /// What was recorded since [`Raster::begin`].
+    styles: Vec<Ink>,
+    subs: Vec<Sub>,
+    points: Vec<[f32; 2]>,
+    pen: Recorder,
+}
+
+/// How a path is stroked, in device pixels.
+#[derive(Clone, Debug, Default)]
+struct Ink {
+    rgb: [u32; 3],
+    alpha: f32,
+    half_width: f64,
+    /// Dash pattern (even length) and its length; empty: solid.
+    dash: Vec<f64>,
+    period: f64,
+}
+
+/// A recorded sub-path: its points run from `first` to the next one's.
+#[derive(Clone, Copy, Debug)]
+struct Sub {
+    first: u32,
+    /// Where its first point is in the dash pattern.
+    phase: f32,
+    style: u16,
+}
+
+/// The pen while recording: where it is, how far along its sub-path, and
+/// whether the next segment drawn starts a new recorded sub-path.
+#[derive(Default)]
+struct Recorder {
+    style: Option<u16>,
+    at: Option<(f64, f64)>,
+    along: f64,
+    broken: bool,
+}
+
+impl Raster {
+    /// A raster with no pixels yet.
+    pub fn new() -> Raster {
+        Raster::default()
+    }
+
+    /// Starts a drawing of `width` × `height` device pixels, `scale` device
+    /// pixels per CSS pixel, all transparent; false (and nothing to draw)
+    /// when the surface is empty or larger than [`MAX_PIXELS`].
+    pub fn begin(&mut self, width: usize, height: usize, scale: (f64, f64)) -> bool {
+        let pixels = width.saturating_mul(height);
+        let scale_ok = [scale.0, scale.1].iter().all(|s| s.is_finite() && *s > 0.0);
+        if pixels == 0 || pixels > MAX_PIXELS || !scale_ok {
+            return false;
+        }
+        if (width, height) == (self.width, self.height) {
+            // Only what the last drawing touched needs clearing.
+            if let Some((x0, y0, x1, y1)) = self.dirty.take() {
+                for y in y0..y1 {
+                    let row = y * width;
+                    self.rgba[4 * (row + x0)..4 * (row + x1)].fill(0);
+                }
+            }
+        } else {
+            self.width = width;
+            self.height = height;
+            self.rgba.clear();
+            self.rgba.resize(4 * pixels, 0);
+            self.cover.clear();
+            self.cover.resize(pixels, 0);
+            self.base = 1;
+            self.dirty = None;
+        }
+        // Stamps are 16 bits: when this drawing's could wrap, start over.
+        self.base += self.styles.len() as u32;
+        if self.base + u32::from(u16::MAX / 2) > u32::from(u16::MAX) {
+            self.cover.fill(0);
+            self.base = 1;
+        }
+        self.scale = scale;
+        self.reset_tiles();
+        self.styles.clear();
+        self.subs.clear();
+        self.points.clear();
+        self.pen = Recorder::default();
+        true
+    }
+
+    fn reset_tiles(&mut self) {
+        let side = 1 << TILE_BITS;
+        let block_side = 1 << BLOCK_BITS;
+        self.tiles_w = self.width.div_ceil(side);
+        let tiles_h = self.height.div_ceil(side);
+        self.blocks_w = self.width.div_ceil(block_side);
+        let blocks_h = self.height.div_ceil(block_side);
+        self.tiles.clear();
+        self.tiles.resize(self.tiles_w * tiles_h, 0);
+        self.blocks.clear();
+        self.blocks.resize(self.blocks_w * blocks_h, 0);
+        // Pixels and tiles outside the surface count as finished.
+        let inside = |i: usize, n: usize, side: usize| (n - i * side).min(side);
+        for ty in 0..tiles_h {
+            for tx in 0..self.tiles_w {
+                let n = inside(tx, self.width, side) * inside(ty, self.height, side);
+                self.tiles[ty * self.tiles_w + tx] = FULL - n as u8;
+            }
+        }
+        for by in 0..blocks_h {
+            for bx in 0..self.blocks_w {
+                let n = inside(bx, self.tiles_w, side) * inside(by, tiles_h, side);
+                self.blocks[by * self.blocks_w + bx] = FULL - n as u8;
+            }
+        }
+    }
+
+    /// Width and height in device pixels.
+    pub fn size(&self) -> (usize, usize) {
+        (self.width, self.height)
+    }
+
+    /// Draws what was recorded (once; later calls draw what was recorded
+    /// since).
+    pub fn finish(&mut self) {
+        let subs = std::mem::take(&mut self.subs);
+        let points = std::mem::take(&mut self.points);
+        for (k, sub) in subs.iter().enumerate().rev() {
+            let end = subs.get(k + 1).map_or(points.len(), |n| n.first as usize);
+            let pts = &points[sub.first as usize..end];
+            let style = usize::from(sub.style);
+            let Some(ink) = self.styles.get(style).cloned() else {
+                continue;
+            };
+            let stamp = (self.base + style as u32) & 0xffff;
+            if ink.dash.is_empty() {
+                for w in pts.windows(2).rev() {
+                    self.line(&ink, stamp, w[0], w[1]);
+                }
+                continue;
+            }
+            // Dashes are laid from the sub-path's start; drawn from its end.
+            let length =
+                |w: &[[f32; 2]]| f64::from(w[1][0] - w[0][0]).hypot(f64::from(w[1][1] - w[0][1]));
+            let mut end_at = f64::from(sub.phase) + pts.windows(2).map(length).sum::<f64>();
+            for w in pts.windows(2).rev() {
+                let start_at = end_at - length(w);
+                self.dashed(&ink, stamp, w[0], w[1], start_at);
+                end_at = start_at;
+            }
+        }
+        // Keep the allocations for the next drawing.
+        self.subs = subs;
+        self.points = points;
+        self.subs.clear();
+        self.points.clear();
+    }
+
+    /// The box of the pixels drawn (x, y, width, height in device pixels),
+    /// or None when nothing was drawn.
+    pub fn dirty(&mut self) -> Option<(usize, usize, usize, usize)> {
+        self.finish();
+        self.dirty
+            .map(|(x0, y0, x1, y1)| (x0, y0, x1 - x0, y1 - y0))
+    }
+
+    /// The pixel at (x, y) as straight (not premultiplied) RGBA.
+    pub fn pixel(&mut self, x: usize, y: usize) -> [u8; 4] {
+        self.finish();
+        if x >= self.width || y >= self.height {
+            return [0; 4];
+        }
+        let i = 4 * (y * self.width + x);
+        straight(&self.rgba[i..i + 4])
+    }
+
+    /// The drawn box's pixels as straight RGBA rows (what `ImageData`
+    /// takes), written into `out`; returns the box, or None when nothing
+    /// was drawn.
+    pub fn image(&mut self, out: &mut Vec<u8>) -> Option<(usize, usize, usize, usize)> {
+        let (x, y, w, h) = self.dirty()?;
+        out.clear();
+        out.reserve(4 * w * h);
+        for row in y..y + h {
+            let start = 4 * (row * self.width + x);
+            for px in self.rgba[start..start + 4 * w].chunks_exact(4) {
+                out.extend_from_slice(&straight(px));
+            }
+        }
+        Some((x, y, w, h))
+    }
+
+    fn touch(&mut self, x0: usize, y0: usize, x1: usize, y1: usize) {
+        self.dirty = Some(match self.dirty {
+            None => (x0, y0, x1, y1),
+            Some((a, b, c, d)) => (a.min(x0), b.min(y0), c.max(x1), d.max(y1)),
+        });
+    }
+
+    /// The segment's dashes, `at` being where its start is in the pattern.
+    fn dashed(&mut self, ink: &Ink, stamp: u32, from: [f32; 2], to: [f32; 2], at: f64) {
+        let (x0, y0, x1, y1) = (
+            f64::from(from[0]),
+            f64::from(from[1]),
+            f64::from(to[0]),
+            f64::from(to[1]),
+        );
+        let length = (x1 - x0).hypot(y1 - y0);
+        if length.is_nan() || length <= 0.0 || ink.period.is_nan() || ink.period <= 0.0 {
+            return;
+        }
+        let point = |t: f64| {
+            let k = t / length;
+            [(x0 + (x1 - x0) * k) as f32, (y0 + (y1 - y0) * k) as f32]
+        };
+        // Find the dash or gap the segment starts in.
+        let mut phase = at.rem_euclid(ink.period);
+        let mut entry = 0;
+        while entry + 1 < ink.dash.len() && phase >= ink.dash[entry] {
+            phase -= ink.dash[entry];
+            entry += 1;
+        }
+        let mut t = 0.0;
+        // Recorded segments lie in the view, so this is a few hundred steps
+        // at most; the bound only guards against patterns of tiny entries.
+        let mut steps = 0;
+        while t < length && steps < 100_000 {
+            steps += 1;
+            let piece = (ink.dash[entry] - phase).max(0.0).min(length - t);
+            if entry.is_multiple_of(2) && piece > 0.0 {
+                self.line(ink, stamp, point(t), point(t + piece));
+            }
+            t += piece;
+            phase = 0.0;
+            entry = (entry + 1) % ink.dash.len();
+        }
+    }
+
+    /// A straight line in device pixels with square ends, anti-aliased
+    /// across its width.
+    fn line(&mut self, ink: &Ink, stamp: u32, from: [f32; 2], to: [f32; 2]) {
+        let [x0, y0] = from.map(f64::from);
+        let [x1, y1] = to.map(f64::from);
+        if self.cover.is_empty() {
+            return;
+        }
+        if (x1 - x0).abs() >= (y1 - y0).abs() {
+            self.sweep(ink, stamp, false, (x0, y0), (x1, y1));
+        } else {
+            self.sweep(ink, stamp, true, (y0, x0), (y1, x1));
+        }
+    }
+
+    /// Whether every tile (`coarse`: block) that the pixels from `a0` to
+    /// `a1` along the major axis and `b0` to `b1` across it fall in is
+    /// finished.
+    fn finished(
+        &self,
+        transposed: bool,
+        coarse: bool,
+        (a0, a1): (usize, usize),
+        (b0, b1): (usize, usize),
+    ) -> bool {
+        let (bits, cells, w) = if coarse {
+            (BLOCK_BITS, &self.blocks, self.blocks_w)
+        } else {
+            (TILE_BITS, &self.tiles, self.tiles_w)
+        };
+        for a in (a0 >> bits)..=(a1 >> bits) {
+            for b in (b0 >> bits)..=(b1 >> bits) {
+                let (x, y) = if transposed { (b, a) } else { (a, b) };
+                if cells[y * w + x] != FULL {
+                    return false;
+                }
+            }
+        }
+        true
+    }
+
+    /// Steps along the major axis and covers the span of the line across
+    /// each pixel it passes; `transposed` when the major axis is y. Regions
+    /// already finished are crossed a block or a tile at a time.
+    fn sweep(
+        &mut self,
+        ink: &Ink,
+        stamp: u32,
+        transposed: bool,
+        (a0, b0): (f64, f64),
+        (a1, b1): (f64, f64),
+    ) {
+        let ((a0, b0), (a1, b1)) = if a0 <= a1 {
+            ((a0, b0), (a1, b1))
+        } else {
+            ((a1, b1), (a0, b0))
+        };
+        let (major_len, minor_len) = if transposed {
+            (self.height, self.width)
+        } else {
+            (self.width, self.height)
+        };
+        let da = a1 - a0;
+        let slope = if da > 0.0 { (b1 - b0) / da } else { 0.0 };
+        let hw = ink.half_width;
+        // The line's extent across a pixel column: its width seen along the
+        // minor axis.
+        let across = hw * (1.0 + slope * slope).sqrt();
+        // Square ends: the line runs on by half its width at each end.
+        let first = (a0 - hw - 0.5).ceil().max(0.0);
+        let last = (a1 + hw - 0.5).floor().min(major_len as f64 - 1.0);
+        if first > last || first.is_nan() || last.is_nan() {
+            return;
+        }
+        let (first, last) = (first as usize, last as usize);
+        let centre = |a: usize| b0 + (a as f64 + 0.5 - a0) * slope;
+        // The pixels across the line between two positions along it.
+        let span = |p: usize, q: usize| {
+            let (c, d) = (centre(p), centre(q));
+            let lo = (c.min(d) - across).floor().max(0.0);
+            let hi = (c.max(d) + across).floor().min(minor_len as f64 - 1.0);
+            (lo <= hi).then_some((lo as usize, hi as usize))
+        };
+        let opaque = ink.alpha >= 1.0;
+        let mut touched: Option<(usize, usize, usize, usize)> = None;
+        let mut a = first;
+        while a <= last {
+            let block_end = (a | ((1 << BLOCK_BITS) - 1)).min(last);
+            match span(a, block_end) {
+                None => {
+                    a = block_end + 1;
+                    continue;
+                }
+                Some(b) if self.finished(transposed, true, (a, block_end), b) => {
+                    a = block_end + 1;
+                    continue;
+                }
+                Some(_) => {}
+            }
+            let tile_end = (a | ((1 << TILE_BITS) - 1)).min(last);
+            match span(a, tile_end) {
+                Some(b) if !self.finished(transposed, false, (a, tile_end), b) => {}
+                _ => {
+                    a = tile_end + 1;
+                    continue;
+                }
+            }
+            for col in a..=tile_end {
+                let c = centre(col);
+                let (top, bottom) = (c - across, c + across);
+                let r0 = top.floor().max(0.0);
+                let r1 = bottom.floor().min(minor_len as f64 - 1.0);
+                if r0 > r1 {
+                    continue;
+                }
+                let (r0, r1) = (r0 as usize, r1 as usize);
+                for row in r0..=r1 {
+                    let (x, y) = if transposed { (row, col) } else { (col, row) };
+                    let i = y * self.width + x;
+                    if self.rgba[4 * i + 3] == 255 {
+                        continue; // finished: something in front covers it
+                    }
+                    let coverage = (bottom.min(row as f64 + 1.0) - top.max(row as f64)) as f32;
+                    if coverage >= 1.0 && opaque {
+                        self.cover_fully(ink, i, x, y);
+                    } else if coverage > 0.0 {
+                        self.plot(ink, stamp, i, x, y, coverage);
+                    }
+                }
+                touched = Some(match touched {
+                    None => (col, col, r0, r1),
+                    Some((p, q, r, s)) => (p.min(col), q.max(col), r.min(r0), s.max(r1)),
+                });
+            }
+            a = tile_end + 1;
+        }
+        if let Some((p, q, r, s)) = touched {
+            if transposed {
+                self.touch(r, p, s + 1, q + 1);
+            } else {
+                self.touch(p, r, q + 1, s + 1);
+            }
+        }
+    }
+
+    /// Covers pixel `i`, at (x, y), by `coverage` (0–1) of the path
+    /// `stamp`, under what is already there (front to back).
+    #[inline]
+    fn plot(&mut self, ink: &Ink, stamp: u32, i: usize, x: usize, y: usize, coverage: f32) {
+        let a = self.rgba[4 * i + 3];
+        let new = (coverage.min(1.0) * ink.alpha * 255.0 + 0.5) as u32;
+        let cell = self.cover[i];
+        let (front, given) = if cell >> 16 == stamp {
+            (cell >> 8 & 0xff, cell & 0xff)
+        } else {
+            (u32::from(a), 0)
+        };
+        if new <= given {
+            return;
+        }
+        self.cover[i] = stamp << 16 | front << 8 | new;
+        // What lies in front lets 1 - front through; of that, this path
+        // adds what it covers beyond what it gave before.
+        let add = (255 - front) * (new - given);
+        let px = &mut self.rgba[4 * i..4 * i + 4];
+        for (c, v) in px.iter_mut().zip(ink.rgb) {
+            *c = (u32::from(*c) + (v * add + 32512) / 65025).min(255) as u8;
+        }
+        // Rounded up, so that a pixel covered again and again by the edges
+        // of lines does finish (rounded to nearest it would stop at 254).
+        let alpha = (u32::from(a) + add.div_ceil(255)).min(255);
+        px[3] = alpha as u8;
+        if alpha == 255 {
+            self.finished_pixel(x, y);
+        }
+    }
+
+    /// Covers pixel `i`, at (x, y), wholly with an opaque ink: what shows
+    /// through what lies in front is the ink, and the pixel is finished.
+    #[inline]
+    fn cover_fully(&mut self, ink: &Ink, i: usize, x: usize, y: usize) {
+        let px = &mut self.rgba[4 * i..4 * i + 4];
+        let through = 255 - u32::from(px[3]);
+        for (c, v) in px.iter_mut().zip(ink.rgb) {
+            *c = (u32::from(*c) + (v * through + 127) / 255).min(255) as u8;
+        }
+        px[3] = 255;
+        self.finished_pixel(x, y);
+    }
+
+    fn finished_pixel(&mut self, x: usize, y: usize) {
+        let tile = (y >> TILE_BITS) * self.tiles_w + (x >> TILE_BITS);
+        self.tiles[tile] += 1;
+        if self.tiles[tile] == FULL {
+            let block = (y >> BLOCK_BITS) * self.blocks_w + (x >> BLOCK_BITS);
+            self.blocks[block] += 1;
+        }
+    }
+
+    fn to_device(&self, x: f64, y: f64) -> (f64, f64) {
+        (x * self.scale.0, y * self.scale.1)
+    }
+
+    /// Where a segment (device pixels) is within the surface and the
+    /// line's width around it: the parameters (as lengths along it) where it
+    /// enters and leaves, or None when it never does.
+    fn clip(&self, from: (f64, f64), to: (f64, f64), margin: f64) -> Option<(f64, f64)> {
+        let length = (to.0 - from.0).hypot(to.1 - from.1);
+        if !(length > 0.0 && length.is_finite()) {
+            return None;
+        }
+        // Liang–Barsky, in units of length.
+        let (mut t0, mut t1) = (0.0_f64, length);
+        let (dx, dy) = ((to.0 - from.0) / length, (to.1 - from.1) / length);
+        let edges = [
+            (-dx, from.0 + margin),
+            (dx, self.width as f64 + margin - from.0),
+            (-dy, from.1 + margin),
+            (dy, self.height as f64 + margin - from.1),
+        ];
+        for (p, q) in edges {
+            if p == 0.0 {
+                if q < 0.0 {
+                    return None;
+                }
+            } else {
+                let r = q / p;
+                if p < 0.0 {
+                    t0 = t0.max(r);
+                } else {
+                    t1 = t1.min(r);
+                }
+            }
+        }
+        (t0 < t1).then_some((t0, t1))
+    }
+}
+
+impl Ink {
+    fn of(stroke: &Stroke, scale: f64) -> Ink {
+        let [r, g, b, alpha] = parse_color(stroke.color);
+        let mut dash: Vec<f64> = stroke.dash.iter().map(|d| d.max(0.0) * scale).collect();
+        // A pattern with nothing to draw (all zero) is drawn solid, as the
+        // canvas ignores it; an odd-length one is repeated to make it even,
+        // as the canvas does.
+        if !dash.iter().any(|d| *d > 0.0) || dash.iter().any(|d| !d.is_finite()) {
+            dash.clear();
+        }
+        if dash.len() % 2 == 1 {
+            dash.extend_from_within(..);
+        }
+        Ink {
+            rgb: [r as u32, g as u32, b as u32],
+            alpha,
+            half_width: stroke.width.max(0.0) * scale / 2.0,
+            period: dash.iter().sum(),
+            dash,
+        }
+    }
+}
+
+impl Pen for Raster {
+    fn begin_path(&mut self, stroke: &Stroke) {
+        let scale = (self.scale.0 + self.scale.1) / 2.0;
+        // A drawing has a few paths (six layers at most); past 2^15, further
+        // ones are not drawn rather than share a stamp.
+        let style = u16::try_from(self.styles.len())
+            .ok()
+            .filter(|s| *s < u16::MAX / 2);
+        if style.is_some() {
+            self.styles.push(Ink::of(stroke, scale));
+        }
+        self.pen = Recorder {
+            style,
+            ..Recorder::default()
+        };
+    }
+
+    fn move_to(&mut self, x: f64, y: f64) {
+        // Every sub-path starts its dash pattern afresh.
+        self.pen.at = Some(self.to_device(x, y));
+        self.pen.along = 0.0;
+        self.pen.broken = true;
+    }
+
+    fn line_to(&mut self, x: f64, y: f64) {
+        let to = self.to_device(x, y);
+        let (Some(style), Some(from)) = (self.pen.style, self.pen.at.replace(to)) else {
+            return;
+        };
+        let finite =
+            to.0.is_finite() && to.1.is_finite() && from.0.is_finite() && from.1.is_finite();
+        let length = (to.0 - from.0).hypot(to.1 - from.1);
+        if !finite || length.is_nan() || length <= 0.0 {
+            // A canvas skips such a segment; the pen moves on.
+            self.pen.broken = true;
+            return;
+        }
+        let margin = self.styles[usize::from(style)].half_width + 2.0;
+        let Some((t0, t1)) = self.clip(from, to, margin) else {
+            self.pen.along += length;
+            self.pen.broken = true;
+            return;
+        };
+        let at = |t: f64| {
+            let k = t / length;
+            [
+                (from.0 + (to.0 - from.0) * k) as f32,
+                (from.1 + (to.1 - from.1) * k) as f32,
+            ]
+        };
+        if self.pen.broken || t0 > 0.0 {
+            let period = self.styles[usize::from(style)].period;
+            let phase = if period > 0.0 {
+                (self.pen.along + t0).rem_euclid(period)
+            } else {
+                0.0
+            };
+            self.subs.push(Sub {
+                first: self.points.len() as u32,
+                phase: phase as f32,
+                style,
+            });
+            self.points.push(at(t0));
+        }
+        self.points.push(at(t1));
+        self.pen.along += length;
+        self.pen.broken = t1 < length;
+    }
+
+    fn stroke(&mut self) {
+        self.pen.at = None;
+    }
+}
+
+/// Straight RGBA from a premultiplied pixel.
+fn straight(px: &[u8]) -> [u8; 4] {
+    let a = px[3];
+    if a == 0 {
+        return [0; 4];
+    }
+    let un = |c: u8| ((u32::from(c) * 255 + u32::from(a) / 2) / u32::from(a)).min(255) as u8;
+    [un(px[0]), un(px[1]), un(px[2]), a]
+}
+
+/// `#rrggbb` or `rgba(r, g, b, a)` (the styles' forms) as RGB 0–255 and
+/// alpha 0–1; anything else is opaque black.
+pub fn parse_color(css: &str) -> [f32; 4] {
+    if let Some(hex) = css.strip_prefix('#')
+        && hex.len() == 6
+        && let Ok(v) = u32::from_str_radix(hex, 16)
+    {
+        return [
+            (v >> 16) as f32,
+            (v >> 8 & 0xff) as f32,
+            (v & 0xff) as f32,
+            1.0,
+        ];
+    }
+    if let Some(inner) = css.strip_prefix("rgba(").and_then(|s| s.strip_suffix(')')) {
+        let parts: Vec<f32> = inner
+            .split(',')
+            .filter_map(|p| p.trim().parse::<f32>().ok())
+            .collect();
+        if let [r, g, b, a] = parts[..] {
+            return [
+                r.clamp(0.0, 255.0),
+                g.clamp(0.0, 255.0),
+                b.clamp(0.0, 255.0),
+                a.clamp(0.0, 1.0),
+            ];
+        }
+    }
+    [0.0, 0.0, 0.0, 1.0]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::style::{ACTUAL_FEED, PROGRAMMED_FEED};
+
+    fn raster(w: usize, h: usize) -> Raster {
+        let mut r = Raster::new();
+        assert!(r.begin(w, h, (1.0, 1.0)));
+        r
+    }
+
+    #[test]
+    fn colours_of_the_styles_parse() {
+        assert_eq!(parse_color("#1c4fd8"), [28.0, 79.0, 216.0, 1.0]);
+        assert_eq!(
+            parse_color("rgba(252, 196, 25, 0.55)"),
+            [252.0, 196.0, 25.0, 0.55]
+        );
+        assert_eq!(parse_color("nonsense"), [0.0, 0.0, 0.0, 1.0]);
+    }
+
+    #[test]
+    fn a_horizontal_line_covers_its_width_in_its_colour() {
+        let mut r = raster(40, 20);
+        r.begin_path(&ACTUAL_FEED);
+        r.move_to(5.0, 10.0);
+        r.line_to(35.0, 10.0);
+        r.stroke();
+        // 2.25 px wide about y = 10: rows 9 and 10 fully, 8 and 11 by an eighth.
+        assert_eq!(r.pixel(20, 9), [0x1c, 0x4f, 0xd8, 255]);
+        assert_eq!(r.pixel(20, 10), [0x1c, 0x4f, 0xd8, 255]);
+        assert_eq!(r.pixel(20, 8)[3], 32);
+        assert_eq!(r.pixel(20, 5), [0; 4]);
+        // Square ends: half the width past each end, no farther.
+        assert_eq!(r.pixel(5, 10)[3], 255);
+        assert_eq!(r.pixel(3, 10)[3], 0);
+        assert_eq!(r.pixel(37, 10)[3], 0);
+    }
+
+    #[test]
+    fn a_path_covers_a_pixel_once_where_its_segments_overlap() {
+        let translucent = Stroke {
+            color: "rgba(0, 0, 255, 0.5)",
+            width: 4.0,
+            dash: &[],
+        };
+        let mut r = raster(40, 40);
+        r.begin_path(&translucent);
+        r.move_to(5.0, 20.0);
+        r.line_to(35.0, 20.0);
+        r.line_to(5.0, 20.0);
+        r.stroke();
+        assert_eq!(r.pixel(20, 20), [0, 0, 255, 128]);
+        // A second path over it paints again, as a second canvas stroke would.
+        r.begin_path(&translucent);
+        r.move_to(5.0, 20.0);
+        r.line_to(35.0, 20.0);
+        r.stroke();
+        // 1 - 0.5 × 0.5 (rounded)
+        assert_eq!(r.pixel(20, 20), [0, 0, 255, 192]);
+    }
+
+    #[test]
+    fn dashes_run_on_across_segments_and_restart_with_a_sub_path() {
+        // 6 on, 4 off: x in [0, 6) drawn, [6, 10) not, [10, 16) drawn.
+        let mut r = raster(40, 10);
+        r.begin_path(&PROGRAMMED_FEED);
+        r.move_to(0.0, 5.0);
+        r.line_to(3.0, 5.0);
+        r.line_to(30.0, 5.0);
+        r.stroke();
+        // 1.5 px wide about y = 5: rows 4 and 5 three quarters each.
+        assert_eq!(r.pixel(4, 5)[3], 191);
+        assert_eq!(r.pixel(8, 5)[3], 0);
+        assert_eq!(r.pixel(12, 5)[3], 191);
+        assert_eq!(r.pixel(18, 5)[3], 0);
+        assert_eq!(r.pixel(22, 5)[3], 191);
+    }
+
+    #[test]
+    fn steep_lines_are_drawn_along_y() {
+        let mut r = raster(20, 40);
+        r.begin_path(&ACTUAL_FEED);
+        r.move_to(10.0, 2.0);
+        r.line_to(11.0, 38.0);
+        r.stroke();
+        for y in 4..36 {
+            let x = (10.0 + (y as f64 + 0.5 - 2.0) / 36.0) as usize;
+            assert!(r.pixel(x, y)[3] > 200, "row {y}");
+        }
+        assert_eq!(r.dirty().map(|d| d.1), Some(1));
+    }
+
+    #[test]
+    fn lines_far_outside_or_not_finite_cost_nothing_and_draw_nothing() {
+        let mut r = raster(30, 30);
+        r.begin_path(&PROGRAMMED_FEED);
+        r.move_to(-1e300, -1e300);
+        r.line_to(1e300, 1e300);
+        r.line_to(f64::NAN, 5.0);
+        r.line_to(5.0, f64::INFINITY);
+        r.move_to(-1e9, 15.0);
+        r.line_to(1e9, 15.0);
+        r.stroke();
+        // The diagonal through the view is drawn (its dashes are counted up
+        // to a bound), the horizontal one too; nothing panicked or hung.
+        assert!(r.dirty().is_some());
+        let mut out = Vec::new();
+        let (_, _, w, h) = r.image(&mut out).unwrap();
+        assert_eq!(out.len(), 4 * w * h);
+    }
+
+    #[test]
+    fn begin_clears_the_last_drawing_and_refuses_huge_surfaces() {
+        let mut r = raster(20, 20);
+        r.begin_path(&ACTUAL_FEED);
+        r.move_to(0.0, 10.0);
+        r.line_to(20.0, 10.0);
+        r.stroke();
+        assert!(r.pixel(10, 10)[3] > 0);
+        assert!(r.begin(20, 20, (1.0, 1.0)));
+        assert_eq!(r.pixel(10, 10), [0; 4]);
+        assert_eq!(r.dirty(), None);
+        assert!(!r.begin(5000, 5000, (1.0, 1.0)));
+        assert!(!r.begin(0, 10, (1.0, 1.0)));
+        assert!(!r.begin(10, 10, (f64::NAN, 1.0)));
+    }
+
+    #[test]
+    fn device_pixels_scale_positions_and_widths() {
+        let mut r = Raster::new();
+        assert!(r.begin(80, 40, (2.0, 2.0)));
+        r.begin_path(&ACTUAL_FEED);
+        r.move_to(5.0, 10.0);
+        r.line_to(35.0, 10.0);
+        r.stroke();
+        // y = 20 device px, 4.5 px wide: rows 18..=21 solid.
+        for y in 18..=21 {
+            assert_eq!(r.pixel(40, y)[3], 255, "row {y}");
+        }
+        assert_eq!(r.pixel(40, 16)[3], 0);
+    }
+}
