@@ -36,7 +36,7 @@ impl Surface for Layer {
         let (w, h, s) = (self.size.0, self.size.1, self.scale);
         self.raster.begin(w, h, (s, s)).then_some(&mut self.raster)
     }
-    fn composite(&mut self) {
+    fn composite(&mut self, _: &offsetlab::render::Transform) {
         self.raster.image(&mut self.bytes);
     }
     fn fill_rect(&mut self, _: Rect, _: &str, _: Option<&str>) {}

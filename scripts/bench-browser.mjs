@@ -452,22 +452,30 @@ async function instrumentWorker(page) {
         }
       };
     }
-    const render = P.render;
-    P.render = function timedRender(...args) {
-      B.id += 1;
-      const id = B.id;
-      if (countCalls) B.calls = { lineTo: 0, moveTo: 0, stroke: 0 };
-      const t = at();
-      try {
-        return render.apply(this, args);
-      } finally {
-        const end = at();
-        const calls = B.calls;
-        B.calls = null;
-        channel.postMessage({ name: 'render', id, t, end, calls });
-        setTimeout(() => channel.postMessage({ name: 'frame', render: id, t: end, end: at(), wasm: B.memory.buffer.byteLength }), 0);
-      }
-    };
+    // render() draws a whole frame; render_moving() (since the pixel layer)
+    // a frame of a pan or zoom gesture, which returns true when it was the
+    // last whole frame's pixels moved.
+    for (const name of ['render', 'render_moving']) {
+      const render = P[name];
+      if (typeof render !== 'function') continue;
+      P[name] = function timedRender(...args) {
+        B.id += 1;
+        const id = B.id;
+        if (countCalls) B.calls = { lineTo: 0, moveTo: 0, stroke: 0 };
+        const t = at();
+        let result;
+        try {
+          result = render.apply(this, args);
+          return result;
+        } finally {
+          const end = at();
+          const calls = B.calls;
+          B.calls = null;
+          channel.postMessage({ name: 'render', id, t, end, calls, moving: result === true });
+          setTimeout(() => channel.postMessage({ name: 'frame', render: id, t: end, end: at(), wasm: B.memory.buffer.byteLength }), 0);
+        }
+      };
+    }
   }, [OPTS.countCalls, OPTS.experiment]), LIMIT.step, 'instrumenting the worker');
   return worker;
 }
@@ -774,10 +782,12 @@ async function panZoom(page) {
   const W = await page.evaluate(() => window.__bench.worker);
   const renders = new Map(W.filter((e) => e.name === 'render').map((e) => [e.id, e]));
   const frames = W.filter((e) => e.name === 'frame').map((e) => ({ ...e, start: renders.get(e.render)?.t ?? e.t }));
+  const isMoving = (f) => renders.get(f.render)?.moving === true;
   const each = (p) => {
     const done = frames.filter((f) => f.end >= p.t0 && f.end <= p.t1);
     const seconds = (p.t1 - p.t0) / 1000;
-    return { fps: done.length / seconds, frames: done.length, seconds, inputs: p.inputs };
+    const whole = done.filter((f) => !isMoving(f)).length;
+    return { fps: done.length / seconds, frames: done.length, whole, wholeFps: whole / seconds, seconds, inputs: p.inputs };
   };
   const begunIn = frames.filter((f) => f.start >= pan.t0 && f.start <= zoom.t1);
   const unfinished = [...renders.values()].filter((r) => r.t >= pan.t0 && r.t <= zoom.t1 && !frames.some((f) => f.render === r.id));
@@ -791,6 +801,9 @@ async function panZoom(page) {
     fps: (p.frames + z.frames) / seconds,
     pan: { ...p, main: mainPan },
     zoom: { ...z, main: mainZoom },
+    wholeFps: (p.whole + z.whole) / seconds,
+    movingFrameMs: stats(begunIn.filter(isMoving).map((f) => f.end - f.start)),
+    wholeFrameMs: stats(begunIn.filter((f) => !isMoving(f)).map((f) => f.end - f.start)),
     frameMs: stats(begunIn.map((f) => f.end - f.start)),
     renderMs: stats(begunIn.map((f) => renders.get(f.render).end - f.start)),
     rasterMs: stats(begunIn.map((f) => f.end - f.t)),
@@ -1074,7 +1087,10 @@ function report(results) {
       [`target 5 on ${name}: detail (median over runs)`, 'value'],
       ['pan (drag): frames drawn per second', range(f((x) => x.pan.fps), fps)],
       ['zoom (wheel): frames drawn per second', range(f((x) => x.zoom.fps), fps)],
+      ['  of which whole frames (the rest moved from the last whole frame)', range(f((x) => x.wholeFps), fps)],
       ['time per frame, render() to rasterised (median of each run)', range(f((x) => x.frameMs?.median), fmtMs)],
+      ['  moved frames (median of each run)', range(f((x) => x.movingFrameMs?.median), fmtMs)],
+      ['  whole frames (median of each run)', range(f((x) => x.wholeFrameMs?.median), fmtMs)],
       ['  of which Session.render (wasm)', range(f((x) => x.renderMs?.median), fmtMs)],
       ['  of which rasterisation', range(f((x) => x.rasterMs?.median), fmtMs)],
       ['frames begun and not finished 10 s after the input', range(f((x) => x.unfinished), fmtN(0))],

@@ -8,6 +8,8 @@
 //! serde-wasm-bindgen serializer; the toolpath goes as one copy of each flat
 //! buffer in a typed array, never one JS object per move.
 
+use std::hash::{DefaultHasher, Hash, Hasher};
+
 use js_sys::{Float64Array, JSON, Object, Reflect, Uint8Array, Uint32Array};
 use serde::Serialize;
 use serde_wasm_bindgen::Serializer;
@@ -16,7 +18,7 @@ use web_sys::{OffscreenCanvas, OffscreenCanvasRenderingContext2d};
 
 use crate::diag::Diagnostic;
 use crate::document::{Document, ViewPlane, ViewState};
-use crate::render::canvas::{CanvasSurface, Layer};
+use crate::render::canvas::{CanvasSurface, Layer, Shot};
 use crate::render::scene::{self, Scene};
 use crate::render::{self, Frame, Plane, Raster, Theme};
 use crate::report::{BlockReport, End, Run};
@@ -71,6 +73,11 @@ pub struct Session {
     raster: Raster,
     scratch: Option<OffscreenCanvas>,
     raster_bytes: Vec<u8>,
+    shot: Option<Shot>,
+    /// Runs so far (a kept layer shows one of them).
+    runs: u64,
+    /// Frames drawn from a kept layer.
+    moving_frames: u64,
     /// Plane, zoom, pan, current block and colours.
     scene: Scene,
     /// The CSS size last drawn at, for zoom, pan and picking.
@@ -106,6 +113,9 @@ impl Default for Session {
             raster: Raster::new(),
             scratch: None,
             raster_bytes: Vec::new(),
+            shot: None,
+            runs: 0,
+            moving_frames: 0,
             scene: Scene::default(),
             size: (300.0, 150.0),
             frame: None,
@@ -476,6 +486,23 @@ impl Session {
     /// device pixels per CSS pixel (sharp on high-DPI screens). Does nothing
     /// without an attached canvas.
     pub fn render(&mut self, width: u32, height: u32, dpr: f64) -> Result<(), JsValue> {
+        self.draw(width, height, dpr, false)
+    }
+
+    /// [`Session::render`] for a frame of a pan or zoom gesture: a large
+    /// path is the last drawing's pixels moved and scaled (without the
+    /// offset arrows), when the last drawing showed the same run, plane,
+    /// current block and colours at this size. The page draws a whole frame
+    /// with `render` once the gesture pauses. Returns true when it did so.
+    pub fn render_moving(&mut self, width: u32, height: u32, dpr: f64) -> Result<bool, JsValue> {
+        let before = self.moving_frames;
+        self.draw(width, height, dpr, true)?;
+        Ok(self.moving_frames != before)
+    }
+}
+
+impl Session {
+    fn draw(&mut self, width: u32, height: u32, dpr: f64, moving: bool) -> Result<(), JsValue> {
         let dpr = if dpr.is_finite() && dpr > 0.0 {
             dpr.min(8.0)
         } else {
@@ -487,34 +514,58 @@ impl Session {
             return Ok(());
         };
         let device = |css: u32| ((f64::from(css) * dpr).round() as u32).clamp(1, 16384);
-        // Resizing the canvas also resets the context's state.
-        canvas.set_width(device(w));
-        canvas.set_height(device(h));
+        // Resizing the canvas (even to its size) clears it and resets the
+        // context's state: only when the size changed (the transform is set
+        // below, and the drawing starts by filling the background).
+        if canvas.width() != device(w) || canvas.height() != device(h) {
+            canvas.set_width(device(w));
+            canvas.set_height(device(h));
+        }
         let sx = f64::from(device(w)) / f64::from(w);
         let sy = f64::from(device(h)) / f64::from(h);
         ctx.set_transform(sx, 0.0, 0.0, sy, 0.0, 0.0)?;
         if self.scratch.is_none() {
             self.scratch = Some(OffscreenCanvas::new(1, 1)?);
         }
+        // Everything a kept layer depends on but the zoom and pan.
+        let key = {
+            let mut hash = DefaultHasher::new();
+            (self.runs, self.scene.plane.name(), self.scene.step).hash(&mut hash);
+            (self.scene.theme.name, w, h, dpr.to_bits()).hash(&mut hash);
+            hash.finish()
+        };
         let layer = self.scratch.as_ref().map(|scratch| Layer {
             raster: &mut self.raster,
             scratch,
             bytes: &mut self.raster_bytes,
             size: (device(w), device(h)),
             scale: (sx, sy),
+            shot: &mut self.shot,
+            key,
         });
         let mut surface = CanvasSurface::new(ctx, layer);
-        let frame = render::draw_scene(
+        let draw = if moving {
+            render::draw_scene_moving
+        } else {
+            render::draw_scene
+        };
+        let frame = draw(
             &mut surface,
             &self.toolpath,
             &self.scene,
             f64::from(w),
             f64::from(h),
         );
+        if surface.reused() {
+            self.moving_frames += 1;
+        }
         self.frame = Some(frame);
         Ok(())
     }
+}
 
+#[wasm_bindgen]
+impl Session {
     /// The same drawing as an SVG document (same view state).
     pub fn render_svg(&self, width: u32, height: u32) -> String {
         render::svg::render_scene(
@@ -687,6 +738,7 @@ impl Session {
     /// to the last block, and a session that was at the last block stays at
     /// the last block (so editing at the end shows the whole program).
     fn after_run(&mut self) {
+        self.runs += 1;
         self.scene.adapt_to(self.run.machine);
         let count = self.run.block_count;
         if let Some(step) = self.scene.step {

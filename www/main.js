@@ -268,6 +268,10 @@ function onWorkerMessage(m) {
     // the benchmark read them).
     document.body.dataset.drawnGen = String(m.gen);
     document.body.dataset.drawMs = m.ms.toFixed(1);
+    // A frame of a pan or zoom gesture, moved from the last whole one; the
+    // whole frame follows when the gesture pauses.
+    if (m.moving) document.body.dataset.drawnMoving = 'true';
+    else delete document.body.dataset.drawnMoving;
   } else if (m.type === 'reply') {
     const pending = calls.get(m.id);
     calls.delete(m.id);

@@ -78,16 +78,37 @@ const nextFrame = typeof self.requestAnimationFrame === 'function'
   ? (f) => self.requestAnimationFrame(f)
   : (f) => setTimeout(f, 16);
 
-/** Asks for one redraw (and state report) on the next animation frame. */
-function invalidate(cause) {
+// During a pan or zoom gesture a large path is drawn from the last whole
+// frame's pixels, moved and scaled (Session.render_moving: a frame in the
+// time of an image copy); the whole frame follows once the gesture has
+// paused this long.
+const SETTLE_MS = 150;
+let gestureOnly = true; // every redraw asked for since the last frame was a pan or zoom step
+let settle = 0;
+
+/**
+ * Asks for one redraw (and state report) on the next animation frame;
+ * `gesture`: the redraw of a pan or zoom step, which may be a moving frame.
+ */
+function invalidate(cause, gesture = false) {
   if (cause) stateCause = cause;
+  if (!gesture) gestureOnly = false;
   if (frame) return;
   frame = nextFrame(() => {
     frame = 0;
+    const quick = gestureOnly;
+    gestureOnly = true;
     try {
       const started = performance.now();
-      session.render(size.width, size.height, size.dpr);
-      self.postMessage({ type: 'drawn', gen: shown, ms: performance.now() - started, ...size });
+      let moving = false;
+      if (quick) {
+        moving = session.render_moving(size.width, size.height, size.dpr);
+      } else {
+        session.render(size.width, size.height, size.dpr);
+      }
+      clearTimeout(settle);
+      if (moving) settle = setTimeout(() => invalidate('view'), SETTLE_MS);
+      self.postMessage({ type: 'drawn', gen: shown, ms: performance.now() - started, moving, ...size });
       postState();
     } catch (error) {
       self.postMessage({ type: 'failure', gen: shown, message: String(error?.message ?? error) });
@@ -167,7 +188,7 @@ function handle(message) {
     }
     case 'view':
       view(message);
-      invalidate('view');
+      invalidate('view', message.op === 'zoom' || message.op === 'pan');
       break;
     case 'step':
       session.set_step(message.index);

@@ -7,7 +7,7 @@ use wasm_bindgen::{Clamped, JsValue};
 use web_sys::{ImageData, OffscreenCanvas, OffscreenCanvasRenderingContext2d};
 
 use super::style::{Align, FONT_FAMILY, Font, Stroke};
-use super::{Pen, Raster, Rect, Surface};
+use super::{Pen, Raster, Rect, Surface, Transform};
 
 /// A 2D context seen as a [`Surface`] in CSS pixels; the caller sets the
 /// device-pixel transform.
@@ -15,6 +15,7 @@ pub struct CanvasSurface<'a> {
     ctx: &'a OffscreenCanvasRenderingContext2d,
     font: String,
     layer: Option<Layer<'a>>,
+    reused: bool,
 }
 
 /// The pixel layer of a canvas: the raster, the canvas's size in device
@@ -33,6 +34,22 @@ pub struct Layer<'a> {
     pub size: (u32, u32),
     /// Device pixels per CSS pixel.
     pub scale: (f64, f64),
+    /// What the last layer put on the canvas was (`scratch` still holds
+    /// it), for [`Surface::reuse_layer`].
+    pub shot: &'a mut Option<Shot>,
+    /// What this drawing shows besides the view's zoom and pan (the run,
+    /// plane, current block, colours, size): a kept layer is reused only
+    /// for the same key.
+    pub key: u64,
+}
+
+/// The layer last put on the canvas: its key, where it went (device
+/// pixels) and the transform it was drawn with.
+#[derive(Clone, Copy, Debug)]
+pub struct Shot {
+    key: u64,
+    rect: (f64, f64, f64, f64),
+    transform: Transform,
 }
 
 impl<'a> CanvasSurface<'a> {
@@ -47,13 +64,21 @@ impl<'a> CanvasSurface<'a> {
             ctx,
             font: String::new(),
             layer,
+            reused: false,
         }
     }
 
-    fn put_layer(&mut self) -> Result<(), JsValue> {
+    /// Whether the paths of the last drawing were a kept layer moved
+    /// ([`Surface::reuse_layer`]).
+    pub fn reused(&self) -> bool {
+        self.reused
+    }
+
+    fn put_layer(&mut self, transform: &Transform) -> Result<(), JsValue> {
         let Some(layer) = &mut self.layer else {
             return Ok(());
         };
+        *layer.shot = None;
         let Some((x, y, w, h)) = layer.raster.image(layer.bytes) else {
             return Ok(());
         };
@@ -73,24 +98,32 @@ impl<'a> CanvasSurface<'a> {
             })
             .ok_or_else(|| JsValue::from_str("no 2d context for the scratch canvas"))?;
         scratch.put_image_data(&image, 0.0, 0.0)?;
-        // In device pixels, one to one.
-        self.ctx.save();
-        self.ctx.set_transform(1.0, 0.0, 0.0, 1.0, 0.0, 0.0)?;
         let (x, y, w, h) = (f64::from(x), f64::from(y), f64::from(w), f64::from(h));
-        let drawn = self
-            .ctx
-            .draw_image_with_offscreen_canvas_and_sw_and_sh_and_dx_and_dy_and_dw_and_dh(
-                layer.scratch,
-                0.0,
-                0.0,
-                w,
-                h,
-                x,
-                y,
-                w,
-                h,
-            );
-        self.ctx.restore();
+        let drawn = Self::draw_scratch(self.ctx, layer.scratch, (w, h), (x, y, w, h));
+        drawn?;
+        *layer.shot = Some(Shot {
+            key: layer.key,
+            rect: (x, y, w, h),
+            transform: *transform,
+        });
+        Ok(())
+    }
+
+    /// Draws `scratch`'s first `w` × `h` pixels at (dx, dy) scaled to
+    /// (dw, dh), all in device pixels.
+    fn draw_scratch(
+        ctx: &OffscreenCanvasRenderingContext2d,
+        scratch: &OffscreenCanvas,
+        (w, h): (f64, f64),
+        dest: (f64, f64, f64, f64),
+    ) -> Result<(), JsValue> {
+        let (dx, dy, dw, dh) = dest;
+        ctx.save();
+        ctx.set_transform(1.0, 0.0, 0.0, 1.0, 0.0, 0.0)?;
+        let drawn = ctx.draw_image_with_offscreen_canvas_and_sw_and_sh_and_dx_and_dy_and_dw_and_dh(
+            scratch, 0.0, 0.0, w, h, dx, dy, dw, dh,
+        );
+        ctx.restore();
         drawn
     }
 }
@@ -128,11 +161,43 @@ impl Surface for CanvasSurface<'_> {
             .then_some(raster)
     }
 
-    fn composite(&mut self) {
+    fn composite(&mut self, transform: &Transform) {
         // Only fails when the browser runs out of memory for the image; the
         // paths are then missing from this frame, and the next one tries
         // again.
-        let _ = self.put_layer();
+        let _ = self.put_layer(transform);
+    }
+
+    fn reuse_layer(&mut self, transform: &Transform) -> bool {
+        let Some(layer) = &self.layer else {
+            return false;
+        };
+        let Some(shot) = *layer.shot else {
+            return false;
+        };
+        if shot.key != layer.key {
+            return false;
+        }
+        // A world point at screen s under the shot's transform is at
+        // k·s + (o − k·o_shot) under the new one (CSS pixels; the layer's
+        // rectangle is in device pixels).
+        let was = shot.transform;
+        let k = transform.scale / was.scale;
+        let (sx, sy) = layer.scale;
+        let (x, y, w, h) = shot.rect;
+        let dest = (
+            k * x + sx * (transform.origin_x - k * was.origin_x),
+            k * y + sy * (transform.origin_y - k * was.origin_y),
+            k * w,
+            k * h,
+        );
+        let sane = k.is_finite()
+            && k > 0.0
+            && [dest.0, dest.1, dest.2, dest.3]
+                .iter()
+                .all(|v| v.is_finite() && v.abs() < 1e9);
+        self.reused = sane && Self::draw_scratch(self.ctx, layer.scratch, (w, h), dest).is_ok();
+        self.reused
     }
 
     fn clear(&mut self, width: f64, height: f64, color: &str) {

@@ -52,8 +52,15 @@ pub trait Surface: Pen {
     fn raster(&mut self) -> Option<&mut Raster> {
         None
     }
-    /// Puts what was drawn on the layer of [`Surface::raster`] on the surface.
-    fn composite(&mut self) {}
+    /// Puts what was drawn on the layer of [`Surface::raster`] on the
+    /// surface; `transform` is the one it was drawn with.
+    fn composite(&mut self, _transform: &Transform) {}
+    /// Puts the last layer composited back on the surface, moved and scaled
+    /// from its transform to `transform`, if the backend kept it and it
+    /// shows the same thing; false when it did not (then draw the paths).
+    fn reuse_layer(&mut self, _transform: &Transform) -> bool {
+        false
+    }
     /// Fills a rectangle, with an optional one-pixel border.
     fn fill_rect(&mut self, rect: Rect, fill: &str, border: Option<&str>);
     /// Draws a text; `y` is its alphabetic baseline. Text is data, never markup.
@@ -264,6 +271,32 @@ pub fn draw_scene(
     width: f64,
     height: f64,
 ) -> Frame {
+    draw_scene_as(surface, toolpath, scene, width, height, false)
+}
+
+/// [`draw_scene`] while the view is being moved (a pan or zoom gesture):
+/// when the paths are drawn as pixels and the surface kept the last ones,
+/// they are that image moved and scaled (and the arrows left out) — a frame
+/// of a million-move path in the time of one image copy. The frame after
+/// the gesture is drawn with [`draw_scene`].
+pub fn draw_scene_moving(
+    surface: &mut impl Surface,
+    toolpath: &Toolpath,
+    scene: &Scene,
+    width: f64,
+    height: f64,
+) -> Frame {
+    draw_scene_as(surface, toolpath, scene, width, height, true)
+}
+
+fn draw_scene_as(
+    surface: &mut impl Surface,
+    toolpath: &Toolpath,
+    scene: &Scene,
+    width: f64,
+    height: f64,
+    moving: bool,
+) -> Frame {
     let frame = scene.frame(toolpath, width, height);
     let moves = toolpath.len();
     let split = scene.drawn_moves(toolpath);
@@ -272,15 +305,19 @@ pub fn draw_scene(
     draw_axes(surface, &frame);
     // Past a few thousand moves the canvas's own stroking is what makes a
     // frame slow (`raster`): the paths go on a pixel layer instead.
-    if moves >= RASTER_FROM_MOVES
-        && let Some(raster) = surface.raster()
-    {
+    let large = moves >= RASTER_FROM_MOVES;
+    let reused = large && moving && surface.reuse_layer(&frame.transform);
+    if reused {
+        // The arrows come back with the next whole frame.
+    } else if large && let Some(raster) = surface.raster() {
         draw_paths(raster, &frame, toolpath, scene, split);
-        surface.composite();
+        surface.composite(&frame.transform);
     } else {
         draw_paths(surface, &frame, toolpath, scene, split);
     }
-    scene::draw_arrows(surface, &frame, toolpath, split);
+    if !reused {
+        scene::draw_arrows(surface, &frame, toolpath, split);
+    }
     if let Some(marker) = scene.marker {
         scene::draw_marker(surface, &frame, marker);
     }
@@ -841,7 +878,7 @@ mod tests {
                 .begin(400, 300, (1.0, 1.0))
                 .then_some(&mut self.raster)
         }
-        fn composite(&mut self) {
+        fn composite(&mut self, _: &Transform) {
             self.composited += 1;
         }
         fn fill_rect(&mut self, _: Rect, _: &str, _: Option<&str>) {}

@@ -11,7 +11,7 @@ import { mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { describe, test } from 'node:test';
-import { shootCanvas, stateText, useBrowser, waitForRun, waitForView } from './harness.mjs';
+import { shootCanvas, stateText, useBrowser, viewOf, waitForRun, waitForView } from './harness.mjs';
 
 const { withPage } = useBrowser();
 const tmp = mkdtempSync(join(tmpdir(), 'offsetlab-large-'));
@@ -67,6 +67,26 @@ describe('large programs', () => {
       // reach the screen a moment after the worker drew it).
       const { counts } = await shootCanvas(page, 'large', (c) => c.programmedFeed + c.actualFeed > 100_000, 20_000);
       assert.ok(counts.programmedFeed + counts.actualFeed > 100_000, `the path is drawn (${JSON.stringify(counts)})`);
+      // Zooming: the frames of the gesture are the last whole frame's
+      // pixels scaled; once the wheel stops, the whole frame follows.
+      await page.evaluate(() => {
+        window.__movingFrames = 0;
+        new MutationObserver(() => {
+          if (document.body.dataset.drawnMoving) window.__movingFrames += 1;
+        }).observe(document.body, { attributes: true, attributeFilter: ['data-drawn-moving'] });
+      });
+      const box = await page.locator('#view').boundingBox();
+      await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+      for (let i = 0; i < 4; i += 1) {
+        await page.mouse.wheel(0, -100);
+        await page.waitForTimeout(40);
+      }
+      await page.waitForFunction(() => window.__movingFrames > 0, null, { timeout: 10_000 });
+      await page.waitForFunction(() => document.body.dataset.drawnMoving === undefined, null, { timeout: 20_000 });
+      const zoomed = await viewOf(page);
+      assert.ok(zoomed.zoom > 1.2, `zoomed in (${zoomed.zoom})`);
+      const whole = await shootCanvas(page, 'large-zoomed', (c) => c.programmedFeed + c.actualFeed > 100_000, 20_000);
+      assert.ok(whole.counts.programmedFeed + whole.counts.actualFeed > 100_000, `the zoomed path is drawn whole (${JSON.stringify(whole.counts)})`);
       // The last block and the one before: their reports are made again
       // from the checkpoint before them.
       await page.locator('#step-last').click();
