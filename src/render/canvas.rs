@@ -48,6 +48,9 @@ pub struct Layer<'a> {
 #[derive(Clone, Copy, Debug)]
 pub struct Shot {
     key: u64,
+    /// Its size on `scratch`.
+    source: (f64, f64),
+    /// Where it went on the canvas.
     rect: (f64, f64, f64, f64),
     transform: Transform,
 }
@@ -98,12 +101,16 @@ impl<'a> CanvasSurface<'a> {
             })
             .ok_or_else(|| JsValue::from_str("no 2d context for the scratch canvas"))?;
         scratch.put_image_data(&image, 0.0, 0.0)?;
+        // A drawing on the coarse grid is scaled up to device pixels.
+        let f = layer.raster.factor() as f64;
         let (x, y, w, h) = (f64::from(x), f64::from(y), f64::from(w), f64::from(h));
-        let drawn = Self::draw_scratch(self.ctx, layer.scratch, (w, h), (x, y, w, h));
+        let rect = (x * f, y * f, w * f, h * f);
+        let drawn = Self::draw_scratch(self.ctx, layer.scratch, (w, h), rect);
         drawn?;
         *layer.shot = Some(Shot {
             key: layer.key,
-            rect: (x, y, w, h),
+            source: (w, h),
+            rect,
             transform: *transform,
         });
         Ok(())
@@ -196,7 +203,8 @@ impl Surface for CanvasSurface<'_> {
             && [dest.0, dest.1, dest.2, dest.3]
                 .iter()
                 .all(|v| v.is_finite() && v.abs() < 1e9);
-        self.reused = sane && Self::draw_scratch(self.ctx, layer.scratch, (w, h), dest).is_ok();
+        self.reused =
+            sane && Self::draw_scratch(self.ctx, layer.scratch, shot.source, dest).is_ok();
         self.reused
     }
 

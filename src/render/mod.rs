@@ -887,20 +887,8 @@ mod tests {
         fn circle(&mut self, _: f64, _: f64, _: f64, _: Option<&str>, _: Option<&Stroke>) {}
     }
 
-    #[test]
-    fn large_paths_go_on_the_pixel_layer_in_their_colours_small_ones_stay_vectors() {
-        // A zigzag of RASTER_FROM_MOVES feed moves after one rapid (which
-        // the first feed move does not retrace).
-        let mut program = String::from("G90 G00 X-10. Y60.\nG01 F100.\n");
-        for i in 0..RASTER_FROM_MOVES {
-            program.push_str(&format!("X{}. Y{}.\n", i % 50 + 5, (i % 2) * 40));
-        }
-        let tp = toolpath(&program);
-        assert!(tp.len() >= RASTER_FROM_MOVES);
-        let mut s = Layered::default();
-        draw_scene(&mut s, &tp, &Scene::default(), 400.0, 300.0);
-        assert_eq!(s.composited, 1);
-        let around = s.vector_paths; // grid, axes, scale bar, legend samples
+    /// The opaque colours of a surface's pixel layer.
+    fn layer_colours(s: &mut Layered) -> std::collections::HashSet<String> {
         let (w, h) = s.raster.size();
         let mut colours = std::collections::HashSet::new();
         for y in 0..h {
@@ -911,6 +899,32 @@ mod tests {
                 }
             }
         }
+        colours
+    }
+
+    /// Two rapids (the second, upwards at X-50, apart from everything
+    /// else), then RASTER_FROM_MOVES feed moves zigzagging `dy` mm up and
+    /// down, `dx` mm apart.
+    fn zigzag(dx: f64, dy: f64) -> Toolpath {
+        let mut program = String::from("G90 G00 X-50. Y30.\nY80.\nG01 F100.\n");
+        for i in 0..RASTER_FROM_MOVES {
+            let x = 5.0 + dx * (i % 2000) as f64;
+            program.push_str(&format!("X{x:.3} Y{:.3}\n", (i % 2) as f64 * dy));
+        }
+        toolpath(&program)
+    }
+
+    #[test]
+    fn large_paths_go_on_the_pixel_layer_in_their_colours_small_ones_stay_vectors() {
+        // 2,000 moves along 1,000 mm: a band of lines, on the full grid.
+        let tp = zigzag(0.5, 1.0);
+        assert!(tp.len() >= RASTER_FROM_MOVES);
+        let mut s = Layered::default();
+        draw_scene(&mut s, &tp, &Scene::default(), 400.0, 300.0);
+        assert_eq!(s.composited, 1);
+        assert_eq!(s.raster.factor(), 1);
+        let around = s.vector_paths; // grid, axes, scale bar, legend samples
+        let colours = layer_colours(&mut s);
         let drawn = [
             style::ACTUAL_FEED.color,
             style::PROGRAMMED_FEED.color,
@@ -927,5 +941,23 @@ mod tests {
         assert_eq!(s.composited, 0);
         // The same, and the four paths: actual and programmed, rapid and feed.
         assert_eq!(s.vector_paths, around + 4);
+    }
+
+    #[test]
+    fn dense_paths_are_drawn_on_the_coarse_grid() {
+        // The same number of moves, 40 mm up and down within 50 mm: the
+        // lines cover the 400 x 300 surface many times over.
+        let tp = zigzag(0.025, 40.0);
+        let mut s = Layered::default();
+        draw_scene(&mut s, &tp, &Scene::default(), 400.0, 300.0);
+        assert_eq!(s.composited, 1);
+        assert_eq!(s.raster.factor(), 2);
+        assert_eq!(s.raster.size(), (200, 150));
+        // The actual path's lines (2.25 px) still have pixels of their own
+        // colour; the thinner programmed ones blend with what lies below.
+        let colours = layer_colours(&mut s);
+        for c in [style::ACTUAL_FEED.color, style::ACTUAL_RAPID.color] {
+            assert!(colours.contains(c), "{c} in {colours:?}");
+        }
     }
 }

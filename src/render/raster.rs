@@ -38,12 +38,21 @@ const TILE_BITS: usize = 3;
 const BLOCK_BITS: usize = 2 * TILE_BITS;
 const FULL: u8 = 1 << (2 * TILE_BITS);
 
+/// Drawings whose lines would cover the surface more than this many times
+/// over are made on the coarse grid ([`Raster::choose_grid`]).
+const DENSE: f64 = 3.0;
+
 /// A premultiplied RGBA pixel buffer that strokes are recorded for and then
 /// drawn on, front to back.
 #[derive(Default)]
 pub struct Raster {
+    /// The surface in device pixels.
+    full: (usize, usize),
+    /// The grid drawn on: the surface, or half of it ([`Raster::choose_grid`]).
     width: usize,
     height: usize,
+    /// Whether this drawing is on the coarse grid; None until decided.
+    coarse: Option<bool>,
     /// CSS to device pixels.
     scale: (f64, f64),
     /// Premultiplied RGBA, transparent where nothing is drawn.
@@ -67,6 +76,9 @@ pub struct Raster {
     subs: Vec<Sub>,
     points: Vec<[f32; 2]>,
     pen: Recorder,
+    /// The area the recorded lines cover, overlaps counted (device
+    /// pixels²).
+    ink_area: f64,
 }
 
 /// How a path is stroked, in device pixels.
@@ -114,17 +126,17 @@ impl Raster {
         if pixels == 0 || pixels > MAX_PIXELS || !scale_ok {
             return false;
         }
-        if (width, height) == (self.width, self.height) {
-            // Only what the last drawing touched needs clearing.
+        if (width, height) == self.full {
+            // Only what the last drawing touched needs clearing (in its own
+            // grid, which may have been the coarse one).
             if let Some((x0, y0, x1, y1)) = self.dirty.take() {
                 for y in y0..y1 {
-                    let row = y * width;
+                    let row = y * self.width;
                     self.rgba[4 * (row + x0)..4 * (row + x1)].fill(0);
                 }
             }
         } else {
-            self.width = width;
-            self.height = height;
+            self.full = (width, height);
             self.rgba.clear();
             self.rgba.resize(4 * pixels, 0);
             self.cover.clear();
@@ -132,6 +144,8 @@ impl Raster {
             self.base = 1;
             self.dirty = None;
         }
+        (self.width, self.height) = self.full;
+        self.coarse = None;
         // Stamps are 16 bits: when this drawing's could wrap, start over.
         self.base += self.styles.len() as u32;
         if self.base + u32::from(u16::MAX / 2) > u32::from(u16::MAX) {
@@ -139,11 +153,11 @@ impl Raster {
             self.base = 1;
         }
         self.scale = scale;
-        self.reset_tiles();
         self.styles.clear();
         self.subs.clear();
         self.points.clear();
         self.pen = Recorder::default();
+        self.ink_area = 0.0;
         true
     }
 
@@ -174,14 +188,52 @@ impl Raster {
         }
     }
 
-    /// Width and height in device pixels.
-    pub fn size(&self) -> (usize, usize) {
+    /// Width and height in pixels of the drawing ([`Raster::factor`]
+    /// device pixels each).
+    pub fn size(&mut self) -> (usize, usize) {
+        self.finish();
         (self.width, self.height)
+    }
+
+    /// Level of detail: lines that would cover the surface several times
+    /// over make an area of solid colour, whose pixels cost the same to
+    /// fill at any resolution but four times as much at full resolution as
+    /// at half: such a drawing is made on a grid of half the device pixels
+    /// and scaled up when it is put on the canvas ([`Raster::factor`]).
+    fn choose_grid(&mut self) {
+        let (w, h) = self.full;
+        let coarse = self.ink_area > DENSE * (w * h) as f64;
+        self.coarse = Some(coarse);
+        if coarse {
+            (self.width, self.height) = (w.div_ceil(2), h.div_ceil(2));
+            for p in &mut self.points {
+                *p = p.map(|v| v / 2.0);
+            }
+            for sub in &mut self.subs {
+                sub.phase /= 2.0;
+            }
+            for ink in &mut self.styles {
+                ink.half_width /= 2.0;
+                ink.dash.iter_mut().for_each(|d| *d /= 2.0);
+                ink.period /= 2.0;
+            }
+        }
+        self.reset_tiles();
+    }
+
+    /// Device pixels per pixel of the drawing: 2 when it was made on the
+    /// coarse grid ([`Raster::choose_grid`]), else 1.
+    pub fn factor(&mut self) -> usize {
+        self.finish();
+        if self.coarse == Some(true) { 2 } else { 1 }
     }
 
     /// Draws what was recorded (once; later calls draw what was recorded
     /// since).
     pub fn finish(&mut self) {
+        if self.coarse.is_none() {
+            self.choose_grid();
+        }
         let subs = std::mem::take(&mut self.subs);
         let points = std::mem::take(&mut self.points);
         for (k, sub) in subs.iter().enumerate().rev() {
@@ -215,8 +267,9 @@ impl Raster {
         self.points.clear();
     }
 
-    /// The box of the pixels drawn (x, y, width, height in device pixels),
-    /// or None when nothing was drawn.
+    /// The box of the pixels drawn (x, y, width, height in pixels of the
+    /// drawing: [`Raster::factor`] device pixels each), or None when
+    /// nothing was drawn.
     pub fn dirty(&mut self) -> Option<(usize, usize, usize, usize)> {
         self.finish();
         self.dirty
@@ -511,9 +564,9 @@ impl Raster {
         let (dx, dy) = ((to.0 - from.0) / length, (to.1 - from.1) / length);
         let edges = [
             (-dx, from.0 + margin),
-            (dx, self.width as f64 + margin - from.0),
+            (dx, self.full.0 as f64 + margin - from.0),
             (-dy, from.1 + margin),
-            (dy, self.height as f64 + margin - from.1),
+            (dy, self.full.1 as f64 + margin - from.1),
         ];
         for (p, q) in edges {
             if p == 0.0 {
@@ -621,6 +674,7 @@ impl Pen for Raster {
             self.points.push(at(t0));
         }
         self.points.push(at(t1));
+        self.ink_area += (t1 - t0) * 2.0 * self.styles[usize::from(style)].half_width;
         self.pen.along += length;
         self.pen.broken = t1 < length;
     }
