@@ -22,6 +22,7 @@ let failing = false;
 let enabled = true;
 let unavailable = false; // the browser does not let this page use localStorage at all
 let previousInMemory = null; // when storage refuses, the displaced work lives here
+let tooLarge = null; // the program text the storage was too full for, while it stays the same
 
 /** Turns saving off (embed mode): loadWork() is null, saveWork() does nothing. */
 export function disableStorage() {
@@ -86,8 +87,13 @@ function flush() {
   if (!pending) return;
   const work = pending;
   pending = null;
+  // A full storage stays full for the same program: a pan or a step does
+  // not make a 30 MB program fit, and writing it again would cost the page
+  // a tenth of a second each time. The message stays up.
+  if (tooLarge !== null && work.program === tooLarge) return;
   try {
     localStorage.setItem(KEY, JSON.stringify(work));
+    tooLarge = null;
     document.body.dataset.saved = String(Date.now());
     if (failing) {
       failing = false;
@@ -95,6 +101,7 @@ function flush() {
     }
   } catch (error) {
     failing = true;
+    tooLarge = reason(error) === 'the browser’s storage is full' ? work.program : null;
     document.body.dataset.saveFailed = 'true';
     onProblem(`Your work is not being saved: ${reason(error)}. Copy your program somewhere safe before you leave.`);
     return;

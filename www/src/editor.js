@@ -114,7 +114,7 @@ const theme = EditorView.theme({
 
 /**
  * Creates the editor in `parent` (`readOnly`: no edits by the user).
- * `onChange(text)` follows every edit;
+ * `onChange()` follows every edit (`getText()` has the text);
  * `onCursorLine(line)` is called when the user moves the cursor (click or
  * arrow keys) without editing.
  */
@@ -148,7 +148,7 @@ export function createEditor(parent, { doc = '', label = 'Program', readOnly = f
         }),
         EditorView.updateListener.of((update) => {
           if (update.docChanged) {
-            onChange?.(update.state.doc.toString());
+            onChange?.();
           } else if (update.selectionSet && update.transactions.some((t) => t.isUserEvent('select'))) {
             const head = update.state.selection.main.head;
             onCursorLine?.(update.state.doc.lineAt(head).number);
@@ -158,9 +158,20 @@ export function createEditor(parent, { doc = '', label = 'Program', readOnly = f
     }),
   });
 
+  // The text of a document is made once: a page handler may ask for it
+  // several times per edit (run, autosave, address), and a 30 MB program
+  // takes a tenth of a second each time.
+  let textOf = null;
+  let text = '';
   return {
     view,
-    getText: () => view.state.doc.toString(),
+    getText() {
+      if (view.state.doc !== textOf) {
+        textOf = view.state.doc;
+        text = textOf.toString();
+      }
+      return text;
+    },
     /** The selected text (for tests and the console). */
     selection: () => view.state.sliceDoc(view.state.selection.main.from, view.state.selection.main.to),
     /** Replaces the whole text as one undoable edit. */
