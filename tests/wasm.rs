@@ -323,6 +323,49 @@ fn render_draws_on_an_offscreen_canvas_at_device_pixels() {
     assert!(svg.contains("<g class=\"actual\">") && svg.contains("<g class=\"programmed\">"));
 }
 
+/// The painted (not background) pixels of an OffscreenCanvas.
+fn painted_pixels(canvas: &OffscreenCanvas) -> usize {
+    let ctx = canvas.get_context("2d").expect("ctx").expect("2d");
+    let get_image_data: Function = get(&ctx, "getImageData").dyn_into().expect("function");
+    let (w, h) = (canvas.width(), canvas.height());
+    let args = Array::of4(&0.into(), &0.into(), &w.into(), &h.into());
+    let image = get_image_data.apply(&ctx, &args).expect("image data");
+    get(&image, "data")
+        .unchecked_into::<js_sys::Uint8ClampedArray>()
+        .to_vec()
+        .chunks_exact(4)
+        .filter(|p| p[0] < 200 || p[1] < 200 || p[2] < 200)
+        .count()
+}
+
+#[wasm_bindgen_test]
+fn a_large_path_is_drawn_as_pixels_and_moved_while_the_view_moves() {
+    // 3,000 feed moves: past the renderer's RASTER_FROM_MOVES.
+    let mut program = String::from("G90 G00 X0 Y0\nG01 F100.\n");
+    for i in 0..3000 {
+        program.push_str(&format!("X{}. Y{}.\n", i % 100, (i % 2) * 50));
+    }
+    let mut s = Session::new();
+    s.run(&program, JsValue::NULL).expect("run");
+    let canvas = OffscreenCanvas::new(10, 10).expect("OffscreenCanvas");
+    s.attach_canvas(canvas.clone()).expect("attach");
+    // Before a whole frame there is nothing to move: it draws in full.
+    assert!(!s.render_moving(400, 300, 2.0).expect("render_moving"));
+    s.render(400, 300, 2.0).expect("render");
+    let whole = painted_pixels(&canvas);
+    assert!(whole > 50_000, "only {whole} painted pixels");
+    // A zoom step: the last drawing, scaled.
+    s.zoom_at(200.0, 150.0, 1.25);
+    assert!(s.render_moving(400, 300, 2.0).expect("render_moving"));
+    assert!(painted_pixels(&canvas) > whole / 2);
+    // Another run (or plane, step, colours, size): drawn in full again.
+    s.run(&program, JsValue::NULL).expect("run");
+    assert!(!s.render_moving(400, 300, 2.0).expect("render_moving"));
+    assert!(s.render_moving(400, 300, 2.0).expect("render_moving"));
+    s.set_step(10);
+    assert!(!s.render_moving(400, 300, 2.0).expect("render_moving"));
+}
+
 fn view_of(s: &Session) -> JsValue {
     let v = s.view().expect("view");
     assert_keys(&v, &["plane", "zoom", "pan", "step"]);
