@@ -76,6 +76,9 @@ pub struct Session {
     shot: Option<Shot>,
     /// Runs so far (a kept layer shows one of them).
     runs: u64,
+    /// The last run's setup was refused: it ran nothing (its diagnostics
+    /// say why), and an export has no moves to run again for.
+    setup_refused: bool,
     /// Frames drawn from a kept layer.
     moving_frames: u64,
     /// Plane, zoom, pan, current block and colours.
@@ -115,6 +118,7 @@ impl Default for Session {
             raster_bytes: Vec::new(),
             shot: None,
             runs: 0,
+            setup_refused: false,
             moving_frames: 0,
             scene: Scene::default(),
             size: (300.0, 150.0),
@@ -386,6 +390,7 @@ impl Session {
                 toolpath.shrink_to_fit();
                 self.toolpath = toolpath;
                 self.setup = setup;
+                self.setup_refused = false;
             }
             Err(diagnostics) => {
                 self.setup = Setup::default();
@@ -394,6 +399,7 @@ impl Session {
                 run.end = End::Error { line: 0 };
                 self.run = run;
                 self.toolpath = Toolpath::new(self.setup.machine, self.setup.units);
+                self.setup_refused = true;
             }
         }
         self.after_run();
@@ -700,7 +706,7 @@ impl Session {
     /// The last run again, keeping its moves (for the exports: the session
     /// keeps only the toolpath). After a bad setup, the empty run.
     fn with_moves(&self) -> Run {
-        if self.run.end == (End::Error { line: 0 }) && self.run.block_count == 0 {
+        if self.setup_refused {
             return self.run.clone();
         }
         let options = RunOptions {

@@ -719,6 +719,19 @@ fn moves_export_as_the_cli_json_and_csv() {
         "{}",
         lines[2]
     );
+    // After a refused setup nothing ran: the exports have no moves (and the
+    // program is not run again with some other setup).
+    s.run(SQUARE, JsValue::from_str("{\"version\": 99}"))
+        .expect("run");
+    let file: serde_json::Value = serde_json::from_str(&s.moves_json()).expect("JSON");
+    assert_eq!(file["moves"].as_array().map(Vec::len), Some(0));
+    assert_eq!(
+        s.moves_csv()
+            .split("\r\n")
+            .filter(|l| !l.is_empty())
+            .count(),
+        1
+    );
 }
 
 #[wasm_bindgen_test]
