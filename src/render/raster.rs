@@ -79,6 +79,9 @@ pub struct Raster {
     /// The area the recorded lines cover, overlaps counted (device
     /// pixels²).
     ink_area: f64,
+    /// The drawn stretches of the dashed segment being drawn (kept for its
+    /// memory).
+    dashes: Vec<(f64, f64)>,
 }
 
 /// How a path is stroked, in device pixels.
@@ -246,7 +249,7 @@ impl Raster {
             let stamp = (self.base + style as u32) & 0xffff;
             if ink.dash.is_empty() {
                 for w in pts.windows(2).rev() {
-                    self.line(&ink, stamp, w[0], w[1]);
+                    self.line(&ink, stamp, w[0], w[1], None);
                 }
                 continue;
             }
@@ -309,22 +312,14 @@ impl Raster {
         });
     }
 
-    /// The segment's dashes, `at` being where its start is in the pattern.
+    /// The segment's dashes, `at` being where its start is in the pattern:
+    /// the stretches along it that are drawn, then one sweep over it that
+    /// draws the columns within them.
     fn dashed(&mut self, ink: &Ink, stamp: u32, from: [f32; 2], to: [f32; 2], at: f64) {
-        let (x0, y0, x1, y1) = (
-            f64::from(from[0]),
-            f64::from(from[1]),
-            f64::from(to[0]),
-            f64::from(to[1]),
-        );
-        let length = (x1 - x0).hypot(y1 - y0);
+        let length = f64::from(to[0] - from[0]).hypot(f64::from(to[1] - from[1]));
         if length.is_nan() || length <= 0.0 || ink.period.is_nan() || ink.period <= 0.0 {
             return;
         }
-        let point = |t: f64| {
-            let k = t / length;
-            [(x0 + (x1 - x0) * k) as f32, (y0 + (y1 - y0) * k) as f32]
-        };
         // Find the dash or gap the segment starts in.
         let mut phase = at.rem_euclid(ink.period);
         let mut entry = 0;
@@ -332,6 +327,8 @@ impl Raster {
             phase -= ink.dash[entry];
             entry += 1;
         }
+        let mut on = std::mem::take(&mut self.dashes);
+        on.clear();
         let mut t = 0.0;
         // Recorded segments lie in the view, so this is a few hundred steps
         // at most; the bound only guards against patterns of tiny entries.
@@ -340,26 +337,38 @@ impl Raster {
             steps += 1;
             let piece = (ink.dash[entry] - phase).max(0.0).min(length - t);
             if entry.is_multiple_of(2) && piece > 0.0 {
-                self.line(ink, stamp, point(t), point(t + piece));
+                on.push((t, t + piece));
             }
             t += piece;
             phase = 0.0;
             entry = (entry + 1) % ink.dash.len();
         }
+        if !on.is_empty() {
+            self.line(ink, stamp, from, to, Some(&on));
+        }
+        self.dashes = on;
     }
 
     /// A straight line in device pixels with square ends, anti-aliased
-    /// across its width.
-    fn line(&mut self, ink: &Ink, stamp: u32, from: [f32; 2], to: [f32; 2]) {
+    /// across its width; with `dashes`, only the stretches along it
+    /// (distances from `from`) they list, in order.
+    fn line(
+        &mut self,
+        ink: &Ink,
+        stamp: u32,
+        from: [f32; 2],
+        to: [f32; 2],
+        dashes: Option<&[(f64, f64)]>,
+    ) {
         let [x0, y0] = from.map(f64::from);
         let [x1, y1] = to.map(f64::from);
         if self.cover.is_empty() {
             return;
         }
         if (x1 - x0).abs() >= (y1 - y0).abs() {
-            self.sweep(ink, stamp, false, (x0, y0), (x1, y1));
+            self.sweep(ink, stamp, false, (x0, y0), (x1, y1), dashes);
         } else {
-            self.sweep(ink, stamp, true, (y0, x0), (y1, x1));
+            self.sweep(ink, stamp, true, (y0, x0), (y1, x1), dashes);
         }
     }
 
@@ -399,11 +408,13 @@ impl Raster {
         transposed: bool,
         (a0, b0): (f64, f64),
         (a1, b1): (f64, f64),
+        dashes: Option<&[(f64, f64)]>,
     ) {
-        let ((a0, b0), (a1, b1)) = if a0 <= a1 {
-            ((a0, b0), (a1, b1))
-        } else {
+        let reversed = a0 > a1;
+        let ((a0, b0), (a1, b1)) = if reversed {
             ((a1, b1), (a0, b0))
+        } else {
+            ((a0, b0), (a1, b1))
         };
         let (major_len, minor_len) = if transposed {
             (self.height, self.width)
@@ -432,6 +443,30 @@ impl Raster {
             (lo <= hi).then_some((lo as usize, hi as usize))
         };
         let opaque = ink.alpha >= 1.0;
+        // Dashes: the distance along the line from its first point (`from`,
+        // which is the far end when `reversed`) decides whether a column is
+        // drawn; the dashes have square ends, as the line has.
+        let k = (1.0 + slope * slope).sqrt();
+        let length = da * k;
+        let mut dash = dashes.map(|on| (on, if reversed { on.len() } else { 0 }));
+        let mut in_dash = |col: usize| {
+            let Some((on, next)) = &mut dash else {
+                return true;
+            };
+            let along = (col as f64 + 0.5 - a0) * k;
+            if reversed {
+                let t = length - along;
+                while *next > 0 && t < on[*next - 1].0 - hw {
+                    *next -= 1;
+                }
+                *next > 0 && t <= on[*next - 1].1 + hw
+            } else {
+                while *next < on.len() && along > on[*next].1 + hw {
+                    *next += 1;
+                }
+                *next < on.len() && along >= on[*next].0 - hw
+            }
+        };
         let mut touched: Option<(usize, usize, usize, usize)> = None;
         let mut a = first;
         while a <= last {
@@ -456,6 +491,9 @@ impl Raster {
                 }
             }
             for col in a..=tile_end {
+                if !in_dash(col) {
+                    continue;
+                }
                 let c = centre(col);
                 let (top, bottom) = (c - across, c + across);
                 let r0 = top.floor().max(0.0);
