@@ -163,20 +163,29 @@ export function createEditor(parent, { doc = '', label = 'Program', readOnly = f
   // takes a tenth of a second each time.
   let textOf = null;
   let text = '';
+  let given = null;
   return {
     view,
     getText() {
       if (view.state.doc !== textOf) {
         textOf = view.state.doc;
-        text = textOf.toString();
+        text = given !== null && given.length === textOf.length ? given : textOf.toString();
       }
       return text;
     },
     /** The selected text (for tests and the console). */
     selection: () => view.state.sliceDoc(view.state.selection.main.from, view.state.selection.main.to),
     /** Replaces the whole text as one undoable edit. */
-    setText(text) {
-      view.dispatch({ changes: { from: 0, to: view.state.doc.length, insert: text } });
+    setText(value) {
+      // The new document's text is the text given (no need to make it again
+      // for the handlers of this edit), unless CodeMirror changes its line
+      // breaks (CR LF and CR become LF).
+      given = value.includes('\r') ? null : value;
+      try {
+        view.dispatch({ changes: { from: 0, to: view.state.doc.length, insert: value } });
+      } finally {
+        given = null;
+      }
     },
     undo: () => undo(view),
     redo: () => redo(view),
