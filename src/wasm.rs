@@ -326,7 +326,7 @@ impl Session {
     /// Runs `program` with `setup` and keeps the result. Returns
     /// `{ summary, diagnostics }`; a bad setup gives `setup-…` diagnostics
     /// (line 0) and an empty path, never an exception.
-    pub fn run(&mut self, program: &str, setup: JsValue) -> Result<JsValue, JsValue> {
+    pub fn run(&mut self, program: String, setup: JsValue) -> Result<JsValue, JsValue> {
         self.run_reporting(program, setup, None)
     }
 
@@ -336,7 +336,7 @@ impl Session {
     /// messages reach the page during the run).
     pub fn run_with_progress(
         &mut self,
-        program: &str,
+        program: String,
         setup: JsValue,
         progress: &js_sys::Function,
     ) -> Result<JsValue, JsValue> {
@@ -368,11 +368,14 @@ impl crate::run::Observer for SessionObserver<'_> {
 impl Session {
     fn run_reporting(
         &mut self,
-        program: &str,
+        // Owned: the text wasm-bindgen copies into wasm memory is kept as
+        // it is (a 31 MB program is not held twice at the run's peak).
+        program: String,
         setup: JsValue,
         progress: Option<&js_sys::Function>,
     ) -> Result<JsValue, JsValue> {
-        self.text = program.to_owned();
+        // The last program goes before the new one's run allocates.
+        self.text = program;
         match read_setup(&setup) {
             Ok(setup) => {
                 let mut toolpath = Toolpath::new(setup.machine, setup.units);

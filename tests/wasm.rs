@@ -69,7 +69,7 @@ fn square_setup() -> JsValue {
 #[wasm_bindgen_test]
 fn run_returns_summary_and_diagnostics() {
     let mut s = Session::new();
-    let result = s.run(SQUARE, square_setup()).expect("run");
+    let result = s.run(SQUARE.into(), square_setup()).expect("run");
     assert_keys(&result, &["summary", "diagnostics"]);
     let summary = get(&result, "summary");
     assert_keys(
@@ -95,7 +95,7 @@ fn run_returns_summary_and_diagnostics() {
 #[wasm_bindgen_test]
 fn block_shape_uses_null_for_absent_values() {
     let mut s = Session::new();
-    s.run(SQUARE, square_setup()).expect("run");
+    s.run(SQUARE.into(), square_setup()).expect("run");
     // Block 1 is line 3: G91 G00 G46 X30. Y20. D01 from (-30, -20): the
     // programmed point is the origin, the actual one 6 short of it (seed 000).
     let b = s.block(1).expect("block");
@@ -148,7 +148,7 @@ fn block_shape_uses_null_for_absent_values() {
 #[wasm_bindgen_test]
 fn toolpath_is_flat_typed_arrays() {
     let mut s = Session::new();
-    s.run(SQUARE, square_setup()).expect("run");
+    s.run(SQUARE.into(), square_setup()).expect("run");
     let t = s.toolpath().expect("toolpath");
     assert_keys(
         &t,
@@ -188,7 +188,7 @@ fn toolpath_is_flat_typed_arrays() {
     assert_eq!(&actual.to_vec()[end..end + 3], &[-6.0, -6.0, 0.0]);
     assert_eq!(&programmed.to_vec()[end..end + 3], &[0.0, 0.0, 0.0]);
     // A copy: a later run does not change arrays JS already holds.
-    s.run("G00 X1.", JsValue::NULL).expect("run");
+    s.run("G00 X1.".into(), JsValue::NULL).expect("run");
     assert_eq!(kinds.length(), 7);
 }
 
@@ -196,7 +196,7 @@ fn toolpath_is_flat_typed_arrays() {
 fn a_syntax_error_is_a_diagnostic_with_line_and_column() {
     let mut s = Session::new();
     let result = s
-        .run("G00 X10.\nG01 X1.2.3 F100.\n", JsValue::UNDEFINED)
+        .run("G00 X10.\nG01 X1.2.3 F100.\n".into(), JsValue::UNDEFINED)
         .expect("run");
     let diagnostics = array(&get(&result, "diagnostics"));
     assert_eq!(diagnostics.length(), 1);
@@ -236,7 +236,7 @@ fn a_bad_setup_gives_diagnostics_not_an_exception() {
     ];
     for setup in cases {
         let mut s = Session::new();
-        let result = s.run(SQUARE, setup).expect("never throws");
+        let result = s.run(SQUARE.into(), setup).expect("never throws");
         let diagnostics = array(&get(&result, "diagnostics"));
         assert!(diagnostics.length() >= 1);
         for d in diagnostics.iter() {
@@ -255,7 +255,10 @@ fn a_bad_setup_gives_diagnostics_not_an_exception() {
 fn setup_may_be_json_text() {
     let mut s = Session::new();
     let result = s
-        .run(SQUARE, JsValue::from_str(r#"{"offsets":{"01":6.0}}"#))
+        .run(
+            SQUARE.into(),
+            JsValue::from_str(r#"{"offsets":{"01":6.0}}"#),
+        )
         .expect("run");
     assert_eq!(num(&get(&result, "summary"), "errors"), 0.0);
     let setup = s.setup().expect("setup");
@@ -269,7 +272,7 @@ fn lathe_positions_have_x_and_z_only() {
     let setup = json(r#"{"machine":"lathe","lathe_offsets":{"08":{"x":0.4,"z":-0.2}}}"#);
     let result = s
         .run(
-            "G50 X120. Z60.\nG00 S800 M03 T0108;\nX50. Z3.;\nT0100;",
+            "G50 X120. Z60.\nG00 S800 M03 T0108;\nX50. Z3.;\nT0100;".into(),
             setup,
         )
         .expect("run");
@@ -296,7 +299,7 @@ fn lathe_positions_have_x_and_z_only() {
 #[wasm_bindgen_test]
 fn render_draws_on_an_offscreen_canvas_at_device_pixels() {
     let mut s = Session::new();
-    s.run(SQUARE, square_setup()).expect("run");
+    s.run(SQUARE.into(), square_setup()).expect("run");
     // Without a canvas, render does nothing and does not throw.
     s.render(300, 200, 2.0).expect("render without canvas");
     let canvas = OffscreenCanvas::new(10, 10).expect("OffscreenCanvas");
@@ -346,7 +349,7 @@ fn a_large_path_is_drawn_as_pixels_and_moved_while_the_view_moves() {
         program.push_str(&format!("X{}. Y{}.\n", i % 100, (i % 2) * 50));
     }
     let mut s = Session::new();
-    s.run(&program, JsValue::NULL).expect("run");
+    s.run(program.clone(), JsValue::NULL).expect("run");
     let canvas = OffscreenCanvas::new(10, 10).expect("OffscreenCanvas");
     s.attach_canvas(canvas.clone()).expect("attach");
     // Before a whole frame there is nothing to move: it draws in full.
@@ -359,7 +362,7 @@ fn a_large_path_is_drawn_as_pixels_and_moved_while_the_view_moves() {
     assert!(s.render_moving(400, 300, 2.0).expect("render_moving"));
     assert!(painted_pixels(&canvas) > whole / 2);
     // Another run (or plane, step, colours, size): drawn in full again.
-    s.run(&program, JsValue::NULL).expect("run");
+    s.run(program.clone(), JsValue::NULL).expect("run");
     assert!(!s.render_moving(400, 300, 2.0).expect("render_moving"));
     assert!(s.render_moving(400, 300, 2.0).expect("render_moving"));
     s.set_step(10);
@@ -384,7 +387,7 @@ fn pan_of(v: &JsValue) -> (f64, f64) {
 #[wasm_bindgen_test]
 fn view_state_is_plane_zoom_pan_and_step() {
     let mut s = Session::new();
-    s.run(SQUARE, square_setup()).expect("run");
+    s.run(SQUARE.into(), square_setup()).expect("run");
     let v = view_of(&s);
     assert_eq!(string(&v, "plane"), "XY");
     assert_eq!(num(&v, "zoom"), 1.0);
@@ -415,10 +418,10 @@ fn view_state_is_plane_zoom_pan_and_step() {
     assert_eq!(num(&v, "step"), 3.0);
     assert!(s.set_view(json(r#"{"zoom":"big"}"#)).is_err());
     // A lathe run is drawn in ZX.
-    s.run("G50 X120. Z60.\nG00 X50. Z3.", JsValue::NULL)
+    s.run("G50 X120. Z60.\nG00 X50. Z3.".into(), JsValue::NULL)
         .expect("run");
     s.run(
-        "G50 X120. Z60.\nG00 X50. Z3.",
+        "G50 X120. Z60.\nG00 X50. Z3.".into(),
         json(r#"{"machine":"lathe"}"#),
     )
     .expect("run");
@@ -428,7 +431,7 @@ fn view_state_is_plane_zoom_pan_and_step() {
 #[wasm_bindgen_test]
 fn step_is_clamped_and_follows_the_end() {
     let mut s = Session::new();
-    s.run(SQUARE, square_setup()).expect("run");
+    s.run(SQUARE.into(), square_setup()).expect("run");
     assert_eq!(s.step(), -1);
     assert_eq!(s.set_step(2), 2);
     assert_eq!(s.set_step(999), 7, "past the end: the last block");
@@ -436,20 +439,20 @@ fn step_is_clamped_and_follows_the_end() {
     // At the last block, a longer program keeps the session at its last block.
     s.set_step(7);
     let longer = SQUARE.replace("M30;\n", "G01 X5.;\nM30;\n");
-    s.run(&longer, square_setup()).expect("run");
+    s.run(longer.clone(), square_setup()).expect("run");
     assert_eq!(s.step(), 8);
     // Elsewhere, the step stays; past a shorter program's end it is clamped.
     s.set_step(2);
-    s.run(SQUARE, square_setup()).expect("run");
+    s.run(SQUARE.into(), square_setup()).expect("run");
     assert_eq!(s.step(), 2);
-    s.run("G00 X1.", JsValue::NULL).expect("run");
+    s.run("G00 X1.".into(), JsValue::NULL).expect("run");
     assert_eq!(s.step(), 0);
 }
 
 #[wasm_bindgen_test]
 fn block_at_line_is_the_last_block_at_or_before_the_line() {
     let mut s = Session::new();
-    s.run(SQUARE, square_setup()).expect("run");
+    s.run(SQUARE.into(), square_setup()).expect("run");
     // Line 1 is a comment before any block.
     assert_eq!(s.block_at_line(1), -1);
     assert_eq!(s.block_at_line(2), 0);
@@ -462,7 +465,7 @@ fn block_at_line_is_the_last_block_at_or_before_the_line() {
 #[wasm_bindgen_test]
 fn pick_returns_the_block_under_the_pointer() {
     let mut s = Session::new();
-    s.run(SQUARE, square_setup()).expect("run");
+    s.run(SQUARE.into(), square_setup()).expect("run");
     // Nothing drawn yet: -1.
     assert_eq!(s.pick(10.0, 10.0, 6.0), -1);
     let canvas = OffscreenCanvas::new(10, 10).expect("OffscreenCanvas");
@@ -487,7 +490,7 @@ fn pick_returns_the_block_under_the_pointer() {
 #[wasm_bindgen_test]
 fn dark_theme_and_step_draw_on_the_canvas() {
     let mut s = Session::new();
-    s.run(SQUARE, square_setup()).expect("run");
+    s.run(SQUARE.into(), square_setup()).expect("run");
     let canvas = OffscreenCanvas::new(10, 10).expect("OffscreenCanvas");
     s.attach_canvas(canvas.clone()).expect("attach");
     s.set_theme("dark");
@@ -531,7 +534,7 @@ fn native(value: &JsValue) -> Document {
 #[wasm_bindgen_test]
 fn document_is_program_setup_view_and_step() {
     let mut s = Session::new();
-    s.run(SQUARE, square_setup()).expect("run");
+    s.run(SQUARE.into(), square_setup()).expect("run");
     // The machine's default view and no current block: both null.
     let d = s.document().expect("document");
     assert_keys(
@@ -562,7 +565,7 @@ fn document_is_program_setup_view_and_step() {
 #[wasm_bindgen_test]
 fn links_round_trip_through_the_exports() {
     let mut s = Session::new();
-    s.run(SQUARE, square_setup()).expect("run");
+    s.run(SQUARE.into(), square_setup()).expect("run");
     s.set_view(json(r#"{"plane":"YZ","step":2}"#))
         .expect("set_view");
     let d = s.document().expect("document");
@@ -672,7 +675,7 @@ fn golden_links_decode_in_wasm_to_the_native_documents() {
 #[wasm_bindgen_test]
 fn document_files_read_and_write() {
     let mut s = Session::new();
-    s.run(SQUARE, square_setup()).expect("run");
+    s.run(SQUARE.into(), square_setup()).expect("run");
     s.set_step(4);
     let text = document_json(s.document().expect("document")).expect("json");
     assert!(text.contains("\n  \"program\": "), "indented: {text}");
@@ -700,7 +703,7 @@ fn document_files_read_and_write() {
 #[wasm_bindgen_test]
 fn moves_export_as_the_cli_json_and_csv() {
     let mut s = Session::new();
-    s.run(SQUARE, square_setup()).expect("run");
+    s.run(SQUARE.into(), square_setup()).expect("run");
     let file: serde_json::Value = serde_json::from_str(&s.moves_json()).expect("JSON");
     let moves = file["moves"].as_array().expect("moves");
     assert_eq!(moves.len(), 7);
@@ -721,7 +724,7 @@ fn moves_export_as_the_cli_json_and_csv() {
     );
     // After a refused setup nothing ran: the exports have no moves (and the
     // program is not run again with some other setup).
-    s.run(SQUARE, JsValue::from_str("{\"version\": 99}"))
+    s.run(SQUARE.into(), JsValue::from_str("{\"version\": 99}"))
         .expect("run");
     let file: serde_json::Value = serde_json::from_str(&s.moves_json()).expect("JSON");
     assert_eq!(file["moves"].as_array().map(Vec::len), Some(0));
@@ -744,7 +747,7 @@ fn run_with_progress_reports_growing_fractions_and_the_same_result() {
             .unchecked_into();
     let mut s = Session::new();
     let with = s
-        .run_with_progress(&program, square_setup(), &record)
+        .run_with_progress(program.clone(), square_setup(), &record)
         .expect("run");
     let fractions: Vec<f64> = seen.iter().map(|v| v.as_f64().expect("a number")).collect();
     assert!(fractions.len() >= 2, "{fractions:?}");
@@ -753,7 +756,9 @@ fn run_with_progress_reports_growing_fractions_and_the_same_result() {
         fractions.iter().all(|f| *f > 0.0 && *f <= 1.0),
         "{fractions:?}"
     );
-    let without = Session::new().run(&program, square_setup()).expect("run");
+    let without = Session::new()
+        .run(program.clone(), square_setup())
+        .expect("run");
     assert_eq!(
         JSON::stringify(&get(&with, "summary")).unwrap(),
         JSON::stringify(&get(&without, "summary")).unwrap()
@@ -762,7 +767,7 @@ fn run_with_progress_reports_growing_fractions_and_the_same_result() {
     let throwing: Function =
         JsValue::from(Function::new_with_args("f", "throw new Error('no')")).unchecked_into();
     let r = s
-        .run_with_progress(&program, square_setup(), &throwing)
+        .run_with_progress(program.clone(), square_setup(), &throwing)
         .expect("run");
     assert_eq!(num(&get(&r, "summary"), "blocks"), 220_000.0);
 }
