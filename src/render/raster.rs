@@ -249,7 +249,9 @@ impl Raster {
             let stamp = (self.base + style as u32) & 0xffff;
             if ink.dash.is_empty() {
                 for w in pts.windows(2).rev() {
-                    self.line(&ink, stamp, w[0], w[1], None);
+                    if !self.hidden(w[0], w[1], ink.half_width) {
+                        self.line(&ink, stamp, w[0], w[1], None);
+                    }
                 }
                 continue;
             }
@@ -259,7 +261,9 @@ impl Raster {
             let mut end_at = f64::from(sub.phase) + pts.windows(2).map(length).sum::<f64>();
             for w in pts.windows(2).rev() {
                 let start_at = end_at - length(w);
-                self.dashed(&ink, stamp, w[0], w[1], start_at);
+                if !self.hidden(w[0], w[1], ink.half_width) {
+                    self.dashed(&ink, stamp, w[0], w[1], start_at);
+                }
                 end_at = start_at;
             }
         }
@@ -310,6 +314,29 @@ impl Raster {
             None => (x0, y0, x1, y1),
             Some((a, b, c, d)) => (a.min(x0), b.min(y0), c.max(x1), d.max(y1)),
         });
+    }
+
+    /// Whether the box around a segment (and its width) lies wholly in
+    /// finished blocks: once a dense drawing has filled an area, most of
+    /// the segments below are hidden, and cost this look-up only.
+    fn hidden(&self, from: [f32; 2], to: [f32; 2], half_width: f64) -> bool {
+        let hw = half_width + 1.0;
+        let [x0, x1] = [
+            f64::from(from[0].min(to[0])) - hw,
+            f64::from(from[0].max(to[0])) + hw,
+        ];
+        let [y0, y1] = [
+            f64::from(from[1].min(to[1])) - hw,
+            f64::from(from[1].max(to[1])) + hw,
+        ];
+        let (w, h) = (self.width as f64 - 1.0, self.height as f64 - 1.0);
+        if x1 < 0.0 || y1 < 0.0 || x0 > w || y0 > h {
+            return true; // off the surface
+        }
+        let cell = |v: f64, max: f64| (v.clamp(0.0, max) as usize) >> BLOCK_BITS;
+        let (bx0, bx1) = (cell(x0, w), cell(x1, w));
+        let (by0, by1) = (cell(y0, h), cell(y1, h));
+        (by0..=by1).all(|by| (bx0..=bx1).all(|bx| self.blocks[by * self.blocks_w + bx] == FULL))
     }
 
     /// The segment's dashes, `at` being where its start is in the pattern:
