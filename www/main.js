@@ -186,10 +186,10 @@ if (setupOverride !== null) $('setup').value = setupOverride;
 let requested = 0;
 let timer = 0;
 const sameRun = (a, b) => Boolean(a && b) && a.program === b.program && a.setup === b.setup;
-function requestRun() {
+function requestRun(program = editor.getText()) {
   clearTimeout(timer);
   delete document.body.dataset.pending;
-  const doc = { program: editor.getText(), setup: setupOverride ?? JSON.stringify(setup) };
+  const doc = { program, setup: setupOverride ?? JSON.stringify(setup) };
   // The program that stopped the interpreter runs again only once edited.
   if (sameRun(doc, parked)) return;
   parked = null;
@@ -459,17 +459,25 @@ function loadDocument(work) {
     fromLink = Boolean(work.link);
     setup = cloneSetup(work.setup);
     setupOverride = typeof work.setupText === 'string' ? work.setupText : null;
+    pendingView = viewOf(work);
+    // The run first: the worker runs a large program while this thread
+    // gives it to the editor (half a second for 31 MB) — unless the editor
+    // will change its line breaks (CR LF, CR): then it runs what it shows.
+    const asGiven = !work.program.includes('\r');
+    if (asGiven) requestRun(work.program);
     editor.setText(work.program);
+    if (!asGiven) requestRun();
   } finally {
     loading = false;
   }
+  // The editor's change asked for a run of the text just sent.
+  clearTimeout(timer);
+  delete document.body.dataset.pending;
   renderOffsets({ force: true });
   renderSettings();
   if (setupOverride !== null) $('setup').value = setupOverride;
   if (exampleId) exampleSelect.value = exampleId;
   showNote();
-  pendingView = viewOf(work);
-  requestRun();
   persist();
 }
 
