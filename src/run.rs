@@ -112,9 +112,30 @@ struct Runner<'t> {
 
 impl<'t> Runner<'t> {
     fn new(text: &'t str, setup: &Setup, options: RunOptions) -> Runner<'t> {
+        let machine = Machine::new(Arc::new(setup.clone()));
+        Runner::at(
+            Blocks::new(text, ParseOptions::from(setup)),
+            machine,
+            setup,
+            options,
+        )
+    }
+
+    /// Resumes at a checkpoint, whose machine already holds the setup (a
+    /// report made again for the page does not copy the setup).
+    fn resume(text: &'t str, setup: &Setup, options: RunOptions, at: &Checkpoint) -> Runner<'t> {
+        let parser = Blocks::resume(text, ParseOptions::from(setup), at.parser);
         Runner {
-            parser: Blocks::new(text, ParseOptions::from(setup)),
-            machine: Machine::new(Arc::new(setup.clone())),
+            index: at.index,
+            move_count: at.move_count,
+            ..Runner::at(parser, at.machine.clone(), setup, options)
+        }
+    }
+
+    fn at(parser: Blocks<'t>, machine: Machine, setup: &Setup, options: RunOptions) -> Runner<'t> {
+        Runner {
+            parser,
+            machine,
             block: Block::default(),
             out: Out::default(),
             options,
@@ -122,16 +143,6 @@ impl<'t> Runner<'t> {
             index: 0,
             move_count: 0,
             stopped: false,
-        }
-    }
-
-    fn resume(text: &'t str, setup: &Setup, options: RunOptions, at: &Checkpoint) -> Runner<'t> {
-        Runner {
-            parser: Blocks::resume(text, ParseOptions::from(setup), at.parser),
-            machine: at.machine.clone(),
-            index: at.index,
-            move_count: at.move_count,
-            ..Runner::new("", setup, options)
         }
     }
 
