@@ -253,8 +253,11 @@ impl Toolpath {
     }
 
     /// Index of the first arc of move `m` or later.
-    fn first_arc(&self, m: usize) -> usize {
-        self.arc_moves.partition_point(|&a| (a as usize) < m)
+    /// A cursor over the arcs for a walk over the moves from `m` on.
+    fn arcs_from(&self, m: usize) -> ArcCursor {
+        ArcCursor {
+            next: self.arc_moves.partition_point(|&a| (a as usize) < m),
+        }
     }
 
     /// Calls `f(move, i, point)` for the points of every move in `range`
@@ -275,12 +278,9 @@ impl Toolpath {
         } else {
             &self.actual
         };
-        let mut arc = self.first_arc(range.start);
+        let mut arcs = self.arcs_from(range.start);
         for m in range.start..range.end.min(self.len()) {
-            let is_arc = self.arc_moves.get(arc) == Some(&(m as u32));
-            if is_arc {
-                arc += 1;
-            }
+            let arc = arcs.of(self, m);
             if !keep(m) {
                 continue;
             }
@@ -289,7 +289,7 @@ impl Toolpath {
             else {
                 continue;
             };
-            match self.arcs.get(arc.wrapping_sub(1)).filter(|_| is_arc) {
+            match arc {
                 Some(c) => {
                     let count = c.segments(tolerance);
                     for i in 0..=count {
@@ -315,17 +315,12 @@ impl Toolpath {
         let tolerance = CHORD_TOLERANCE_MM * self.k;
         let budget = ArcBudget::of(self, tolerance, max_vertices);
         let mut out = Polylines::default();
-        let mut arc = 0;
+        let mut arcs = self.arcs_from(0);
         for m in 0..self.len() {
             out.starts.push((out.actual.len() / 3) as u32);
             let [[a0, a1], [p0, p1]] = self.ends(m).unwrap_or_default();
-            let c = self
-                .arcs
-                .get(arc)
-                .filter(|_| self.arc_moves.get(arc) == Some(&(m as u32)));
-            match c {
+            match arcs.of(self, m) {
                 Some(c) => {
-                    arc += 1;
                     let count = budget.segments(c.segments(tolerance));
                     for i in 0..=count {
                         out.actual.extend(c.point(false, a0, a1, i, count));
@@ -346,6 +341,23 @@ impl Toolpath {
     /// moves.
     pub fn bounds(&self) -> Option<(Xyz, Xyz)> {
         self.bounds
+    }
+}
+
+/// Where a walk over the moves in order is among the arcs: the index of
+/// the next arc move.
+struct ArcCursor {
+    next: usize,
+}
+
+impl ArcCursor {
+    /// The circle of move `m` if it is an arc; moves are asked in order.
+    fn of<'a>(&mut self, t: &'a Toolpath, m: usize) -> Option<&'a ToolArc> {
+        if t.arc_moves.get(self.next) != Some(&(m as u32)) {
+            return None;
+        }
+        self.next += 1;
+        t.arcs.get(self.next - 1)
     }
 }
 
