@@ -1,5 +1,5 @@
-//! Token-level grammar of a block, written with nom over bytes: blanks,
-//! comments and a word's number (spec 1).
+//! Token-level grammar of a block over bytes: blanks, comments (nom) and a
+//! word's number (spec 1).
 //!
 //! Tape controls ignore spaces anywhere in a word, so `X 1 2 . 5` is `X12.5`;
 //! the number grammar therefore runs on the word's characters with blanks
@@ -8,12 +8,7 @@
 //! number, measured with callgrind), and the nom grammar [`number_grammar`]
 //! is kept as its specification, which a property test holds it to.
 
-use nom::{
-    IResult, Parser,
-    bytes::complete::{take_till, take_while},
-    character::complete::char,
-    sequence::pair,
-};
+use nom::{IResult, Parser, bytes::complete::take_till, character::complete::char, sequence::pair};
 #[cfg(test)]
 use nom::{
     character::complete::{digit0, one_of},
@@ -26,14 +21,13 @@ type Res<'a, T> = IResult<In<'a>, T, ()>;
 #[cfg(test)]
 type NumberParts<'a> = (Option<char>, In<'a>, Option<(char, In<'a>)>);
 
-fn is_blank(c: u8) -> bool {
-    c == b' ' || c == b'\t'
-}
-
-/// Skips spaces and tabs.
-pub fn blanks(i: In<'_>) -> In<'_> {
-    let r: Res<'_, In<'_>> = take_while(is_blank).parse(i);
-    r.map_or(i, |(rest, _)| rest)
+/// Skips spaces and tabs from `i`: the position of the first other byte
+/// (or the end). Blanks separate nearly every word, so this is a plain loop.
+pub fn skip_blanks(bytes: In<'_>, mut i: usize) -> usize {
+    while let Some(b' ' | b'\t') = bytes.get(i) {
+        i += 1;
+    }
+    i
 }
 
 /// A comment `( … )`, not nested. Returns the rest of the input and whether
@@ -88,47 +82,55 @@ const MAX_DIGITS: usize = 15;
 /// This is the hot loop of the parser, so it is one hand-written pass; the
 /// grammar it implements is [`number_grammar`], written with nom, and a test
 /// checks that the two agree on every input.
+#[inline]
 pub fn number(i: In<'_>) -> (In<'_>, Result<Number, NumberError>) {
     // Fast path for the shape nearly every word has: `[+-]digits[.digits]`
-    // followed by something that is not part of a number — one loop over
-    // the digits and the point.
-    let (negative, mut p) = match i.first() {
+    // followed by something that is not part of a number — a loop over the
+    // whole digits and one over the fraction's.
+    let (negative, start) = match i.first() {
         Some(b'-') => (true, 1),
         Some(b'+') => (false, 1),
         _ => (false, 0),
     };
-    let start = p;
-    let mut mantissa = 0u64;
-    let mut point_at = None;
-    while let Some(&c) = i.get(p) {
-        let digit = c.wrapping_sub(b'0');
-        if digit < 10 {
-            mantissa = mantissa.wrapping_mul(10).wrapping_add(u64::from(digit));
-        } else if c == b'.' && point_at.is_none() {
-            point_at = Some(p);
-        } else {
-            break;
-        }
-        p += 1;
-    }
-    let digits = p - start - usize::from(point_at.is_some());
+    let (int_end, mantissa) = digits(i, start, 0);
+    let point = i.get(int_end) == Some(&b'.');
+    let (p, mantissa) = if point {
+        digits(i, int_end + 1, mantissa)
+    } else {
+        (int_end, mantissa)
+    };
+    let frac_digits = if point { p - int_end - 1 } else { 0 };
+    let count = p - start - usize::from(point);
     // What follows must not continue the number (after blanks: a digit, a
     // second point or a sign means spaces inside it or a malformed one).
-    let mut q = p;
-    while matches!(i.get(q), Some(b' ' | b'\t')) {
-        q += 1;
-    }
+    let q = skip_blanks(i, p);
     let clean = !matches!(i.get(q), Some(b'0'..=b'9' | b'.' | b'+' | b'-'));
-    if clean && digits > 0 && digits <= MAX_DIGITS {
+    if clean && count > 0 && count <= MAX_DIGITS {
         let number = Number {
             negative,
             mantissa,
-            frac_digits: point_at.map_or(0, |at| (p - at - 1) as u8),
-            point: point_at.is_some(),
+            frac_digits: frac_digits as u8,
+            point,
         };
         return (&i[p..], Ok(number));
     }
     number_general(i)
+}
+
+/// Reads the digits of `i` from `p` on into `mantissa` (wrapping: a number
+/// with more than [`MAX_DIGITS`] digits is refused by the caller). Returns
+/// the position after the last digit and the mantissa.
+#[inline]
+fn digits(i: In<'_>, mut p: usize, mut mantissa: u64) -> (usize, u64) {
+    while p < i.len() {
+        let digit = i[p].wrapping_sub(b'0');
+        if digit >= 10 {
+            break;
+        }
+        mantissa = mantissa.wrapping_mul(10).wrapping_add(u64::from(digit));
+        p += 1;
+    }
+    (p, mantissa)
 }
 
 /// The general case of [`number`]: blanks inside the number, malformed and

@@ -303,7 +303,7 @@ impl<'a> Blocks<'a> {
         let bytes = self.text.as_bytes();
         let n = bytes.len();
         let is_end = |c: u8| c == b'\n' || c == b'\r' || c == b';';
-        let mut i = n - lexer::blanks(&bytes[start..]).len();
+        let mut i = lexer::skip_blanks(bytes, start);
         if i >= n || is_end(bytes[i]) {
             return (i, false);
         }
@@ -336,10 +336,15 @@ impl<'a> Blocks<'a> {
             }
             last = i;
         }
+        // A skipped block's G20/G21 do not count when block skip is on.
+        let counts = !(block.skip && self.options.block_skip);
 
-        // Lex: comments, words, and anything else as an error.
+        // Lex: comments, words, and anything else as an error. Words are
+        // typed once the whole block is lexed, because a G code anywhere in
+        // it (G20/G21, a canned cycle) changes how its numbers are read;
+        // those G codes are noted as they are lexed.
         loop {
-            i = n - lexer::blanks(&bytes[i..]).len();
+            i = lexer::skip_blanks(bytes, i);
             if i >= n || is_end(bytes[i]) {
                 break;
             }
@@ -347,8 +352,15 @@ impl<'a> Blocks<'a> {
             if c.is_ascii_alphabetic() {
                 let (after, number) = lexer::number(&bytes[i + 1..]);
                 let word_end = n - after.len();
+                let letter = c.to_ascii_uppercase();
+                if letter == b'G'
+                    && counts
+                    && let Ok(number) = number
+                {
+                    self.note_context(number);
+                }
                 self.raw.push(RawWord {
-                    letter: c.to_ascii_uppercase(),
+                    letter,
                     number,
                     start: i,
                     end: word_end,
@@ -391,15 +403,8 @@ impl<'a> Blocks<'a> {
         block.span = Span::new(first, last, line);
         let end = i;
 
-        // First pass: G codes that change how this block's numbers are read.
         let raw = std::mem::take(&mut self.raw);
-        let counts = !(block.skip && self.options.block_skip);
-        for w in raw.iter().filter(|w| w.letter == b'G') {
-            if let (Ok(n), true) = (w.number, counts) {
-                self.note_context(n);
-            }
-        }
-        // Second pass: type every word.
+        // Type every word.
         let mut seen = 0u32;
         let mut groups: [Option<usize>; Group::COUNT] = [None; Group::COUNT];
         let mut m_groups: [(u32, usize); 8] = [(0, 0); 8];
@@ -490,7 +495,9 @@ impl<'a> Blocks<'a> {
     /// Types one lexed word, reporting what is wrong with it.
     fn type_word(&mut self, w: &RawWord, line: u32, block: &mut Block) -> Option<Word> {
         let span = Span::new(w.start, w.end, line);
-        let text = &self.text[w.start..w.end];
+        // The word as written, sliced only for a message.
+        let all = self.text;
+        let text = || &all[w.start..w.end];
         let letter = w.letter as char;
         let Some(address) = Address::from_letter(w.letter) else {
             let msg = match letter {
@@ -509,12 +516,12 @@ impl<'a> Blocks<'a> {
                 return None;
             }
             Err(NumberError::Malformed) => {
-                let msg = format!("{text}: `{}` is not a number", text[1..].trim());
+                let msg = format!("{}: `{}` is not a number", text(), text()[1..].trim());
                 self.error_span(block, "malformed-number", span, &msg);
                 return None;
             }
             Err(NumberError::TooLong) => {
-                let msg = format!("{text}: too many digits for a control to read");
+                let msg = format!("{}: too many digits for a control to read", text());
                 self.error_span(block, "out-of-range", span, &msg);
                 return None;
             }
@@ -527,7 +534,7 @@ impl<'a> Blocks<'a> {
         let value = match kind {
             WordKind::Integer if address == Address::G => {
                 if n.negative || n.frac_digits > 1 || (n.point && n.frac_digits == 0) {
-                    let msg = format!("{text}: a G code is a number such as G01 or G05.1");
+                    let msg = format!("{}: a G code is a number such as G01 or G05.1", text());
                     self.error_span(block, "malformed-number", span, &msg);
                     return None;
                 }
@@ -536,14 +543,15 @@ impl<'a> Blocks<'a> {
             WordKind::Integer => {
                 if n.point {
                     let msg = format!(
-                        "{text}: {letter} takes a whole number, written without a decimal point"
+                        "{}: {letter} takes a whole number, written without a decimal point",
+                        text()
                     );
                     self.error_span(block, "decimal-point", span, &msg);
                     return None;
                 }
                 let limit = integer_limit(self.options, address, self.in_cycle);
                 if n.negative && n.mantissa != 0 || n.mantissa > limit {
-                    let msg = integer_range_message(text, letter, address, limit, self.options);
+                    let msg = integer_range_message(text(), letter, address, limit, self.options);
                     self.error_span(block, "out-of-range", span, &msg);
                     return None;
                 }
@@ -552,7 +560,8 @@ impl<'a> Blocks<'a> {
                     && n.mantissa % 100 > u64::from(self.options.table_size)
                 {
                     let msg = format!(
-                        "{text}: offset number {:02} is beyond the offset table (00 to {:02})",
+                        "{}: offset number {:02} is beyond the offset table (00 to {:02})",
+                        text(),
                         n.mantissa % 100,
                         self.options.table_size
                     );
@@ -564,7 +573,7 @@ impl<'a> Blocks<'a> {
             WordKind::Feed => {
                 let v = n.value();
                 if !(0.0..=999_999.0).contains(&v) {
-                    let msg = format!("{text}: a feed rate is 0 to 999999");
+                    let msg = format!("{}: a feed rate is 0 to 999999", text());
                     self.error_span(block, "out-of-range", span, &msg);
                     return None;
                 }
@@ -580,7 +589,8 @@ impl<'a> Blocks<'a> {
                 let max = units.max_dimension();
                 if v.abs() > max + 1e-9 {
                     let msg = format!(
-                        "{text} is outside ±{max:.*} {} (spec 1)",
+                        "{} is outside ±{max:.*} {} (spec 1)",
+                        text(),
                         units.decimals(),
                         units.as_str()
                     );
@@ -594,6 +604,7 @@ impl<'a> Blocks<'a> {
                 {
                     self.warned_integer = true;
                     let d = units.decimals();
+                    let text = text();
                     let msg = format!(
                         "{text} has no decimal point: read as {v:.d$} {u} (least input increment {inc:.d$} {u}); \
                          write {letter}{v:.d$} for {v:.d$} {u}, or {text}. for {whole} {u} (setting decimal_input)",
