@@ -16,10 +16,11 @@ impl Machine {
     pub(super) fn mill_block(
         &mut self,
         b: &Block,
-        c: &Codes,
+        c: &Codes<'_>,
         out: &mut Out,
     ) -> Result<(), Diagnostic> {
-        for w in &b.words {
+        let lathe_words = b.holds(Address::U) || b.holds(Address::W);
+        for w in b.words.iter().filter(|_| lathe_words) {
             if matches!(w.address, Address::U | Address::W) {
                 return Err(self.error(
                     "lathe-address",
@@ -85,7 +86,7 @@ impl Machine {
     fn length_words(
         &mut self,
         b: &Block,
-        c: &Codes,
+        c: &Codes<'_>,
         out: &mut Out,
     ) -> Result<LengthState, Diagnostic> {
         let code = c.get(Group::Length);
@@ -380,7 +381,7 @@ impl Machine {
     fn position_offset_block(
         &mut self,
         b: &Block,
-        c: &Codes,
+        c: &Codes<'_>,
         code: u16,
         out: &mut Out,
     ) -> Result<(), Diagnostic> {
@@ -443,7 +444,7 @@ impl Machine {
     /// G28: to the intermediate point, then to the reference position on the
     /// named axes; the length and position vectors are cleared on the axes
     /// that reach it, and G43/G44 applies again at the next Z move (spec 2).
-    fn g28(&mut self, b: &Block, c: &Codes, out: &mut Out) -> Result<(), Diagnostic> {
+    fn g28(&mut self, b: &Block, c: &Codes<'_>, out: &mut Out) -> Result<(), Diagnostic> {
         if !AXES.iter().any(|(a, _)| b.has(*a)) {
             return Err(self.error(
                 "g28-without-axis",
