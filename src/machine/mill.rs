@@ -547,13 +547,27 @@ impl Machine {
 
     /// The sentence for what the length offset did in this block (spec 3).
     /// `z_amount` is the programmed Z movement when the block moved along Z.
+    /// Nearly every block leaves the offset as it was: that test is inlined
+    /// where the machine calls this, the sentence is written out of line.
+    #[inline]
     pub(super) fn length_note(&self, old: LengthState, z_amount: Option<f64>, out: &mut Out) {
         let new = self.state.length;
         let mode_changed = new.sign != old.sign || new.h != old.h || new.target != old.target;
-        let vector_change = new.vector - old.vector;
-        if !mode_changed && vector_change == 0.0 {
-            return;
+        if mode_changed || new.vector - old.vector != 0.0 {
+            self.write_length_note(old, mode_changed, z_amount, out);
         }
+    }
+
+    #[inline(never)]
+    fn write_length_note(
+        &self,
+        old: LengthState,
+        mode_changed: bool,
+        z_amount: Option<f64>,
+        out: &mut Out,
+    ) {
+        let new = self.state.length;
+        let vector_change = new.vector - old.vector;
         let label = if mode_changed {
             if new.target == 0.0 && old.target != 0.0 {
                 if new.sign == 0 {

@@ -142,6 +142,15 @@ impl Word {
 
     /// The code of a G word.
     pub fn gcode(&self) -> GCode {
+        // Nearly every G code is a whole number: it needs no `trunc` and
+        // `round` (library calls on x86-64).
+        let whole = self.value as u16;
+        if f64::from(whole) == self.value {
+            return GCode {
+                major: whole,
+                minor: 0,
+            };
+        }
         let major = self.value.trunc();
         GCode {
             major: major as u16,
