@@ -326,7 +326,11 @@ pub fn run_observed(
         if every > 0 {
             result.lines.push(block.span.line);
         }
-        for w in &block.words {
+        let offset_words = match setup.machine {
+            MachineKind::Mill => block.holds(Address::D) || block.holds(Address::H),
+            MachineKind::Lathe => block.holds(Address::T),
+        };
+        for w in block.words.iter().filter(|_| offset_words) {
             let n = match (w.address, setup.machine) {
                 (Address::D | Address::H, MachineKind::Mill) => w.int() as u16,
                 (Address::T, MachineKind::Lathe) => (w.int() % 100) as u16,

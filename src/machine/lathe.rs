@@ -25,7 +25,7 @@ impl Machine {
     pub(super) fn lathe_block(
         &mut self,
         b: &Block,
-        c: &Codes,
+        c: &Codes<'_>,
         out: &mut Out,
     ) -> Result<(), Diagnostic> {
         for w in &b.words {

@@ -16,10 +16,11 @@ impl Machine {
     pub(super) fn mill_block(
         &mut self,
         b: &Block,
-        c: &Codes,
+        c: &Codes<'_>,
         out: &mut Out,
     ) -> Result<(), Diagnostic> {
-        for w in &b.words {
+        let lathe_words = b.holds(Address::U) || b.holds(Address::W);
+        for w in b.words.iter().filter(|_| lathe_words) {
             if matches!(w.address, Address::U | Address::W) {
                 return Err(self.error(
                     "lathe-address",
@@ -85,7 +86,7 @@ impl Machine {
     fn length_words(
         &mut self,
         b: &Block,
-        c: &Codes,
+        c: &Codes<'_>,
         out: &mut Out,
     ) -> Result<LengthState, Diagnostic> {
         let code = c.get(Group::Length);
@@ -380,7 +381,7 @@ impl Machine {
     fn position_offset_block(
         &mut self,
         b: &Block,
-        c: &Codes,
+        c: &Codes<'_>,
         code: u16,
         out: &mut Out,
     ) -> Result<(), Diagnostic> {
@@ -443,7 +444,7 @@ impl Machine {
     /// G28: to the intermediate point, then to the reference position on the
     /// named axes; the length and position vectors are cleared on the axes
     /// that reach it, and G43/G44 applies again at the next Z move (spec 2).
-    fn g28(&mut self, b: &Block, c: &Codes, out: &mut Out) -> Result<(), Diagnostic> {
+    fn g28(&mut self, b: &Block, c: &Codes<'_>, out: &mut Out) -> Result<(), Diagnostic> {
         if !AXES.iter().any(|(a, _)| b.has(*a)) {
             return Err(self.error(
                 "g28-without-axis",
@@ -546,13 +547,27 @@ impl Machine {
 
     /// The sentence for what the length offset did in this block (spec 3).
     /// `z_amount` is the programmed Z movement when the block moved along Z.
+    /// Nearly every block leaves the offset as it was: that test is inlined
+    /// where the machine calls this, the sentence is written out of line.
+    #[inline]
     pub(super) fn length_note(&self, old: LengthState, z_amount: Option<f64>, out: &mut Out) {
         let new = self.state.length;
         let mode_changed = new.sign != old.sign || new.h != old.h || new.target != old.target;
-        let vector_change = new.vector - old.vector;
-        if !mode_changed && vector_change == 0.0 {
-            return;
+        if mode_changed || new.vector - old.vector != 0.0 {
+            self.write_length_note(old, mode_changed, z_amount, out);
         }
+    }
+
+    #[inline(never)]
+    fn write_length_note(
+        &self,
+        old: LengthState,
+        mode_changed: bool,
+        z_amount: Option<f64>,
+        out: &mut Out,
+    ) {
+        let new = self.state.length;
+        let vector_change = new.vector - old.vector;
         let label = if mode_changed {
             if new.target == 0.0 && old.target != 0.0 {
                 if new.sign == 0 {

@@ -20,7 +20,7 @@ use crate::report::{
     to_units,
 };
 use crate::setup::{MachineKind, Setup, Units};
-use crate::syntax::codes::{Group, g_group};
+use crate::syntax::codes::Group;
 use crate::syntax::{Address, Block};
 use arc::{ArcError, Circle};
 use modal::{Modal, Plane};
@@ -53,33 +53,28 @@ impl Out {
     }
 }
 
-/// The G codes of a block, one per group (the parser has refused blocks with
-/// two of a group or an unknown code).
-#[derive(Clone, Copy, Debug, Default)]
-pub(crate) struct Codes([Option<(u16, Span)>; Group::COUNT]);
+/// The G codes of a block, one per group: the parser classified them (and
+/// refused blocks with two of a group or an unknown code).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Codes<'b>(&'b Block);
 
-impl Codes {
-    fn of(block: &Block, machine: MachineKind) -> Codes {
-        let mut c = Codes::default();
-        for (g, w) in block.gcodes() {
-            if let Ok(group) = g_group(machine, g) {
-                c.0[group.index()] = Some((g.major, w.span));
-            }
-        }
-        c
+impl<'b> Codes<'b> {
+    fn of(block: &'b Block) -> Codes<'b> {
+        Codes(block)
     }
+    /// The code of a group; a code in a group is a whole number (G05.1 is
+    /// in none), so the value's integer part is all of it.
     pub fn get(&self, group: Group) -> Option<u16> {
-        self.0[group.index()].map(|(n, _)| n)
+        self.0.group_word(group).map(|w| w.value as u16)
     }
     pub fn span(&self, group: Group) -> Span {
-        self.0[group.index()].map(|(_, s)| s).unwrap_or_default()
+        self.0.group_word(group).map(|w| w.span).unwrap_or_default()
     }
     /// The codes present, with their groups.
     pub fn present(&self) -> impl Iterator<Item = (usize, u16, Span)> + '_ {
-        self.0
+        Group::ALL
             .iter()
-            .enumerate()
-            .filter_map(|(i, c)| c.map(|(n, s)| (i, n, s)))
+            .filter_map(|&g| self.get(g).map(|n| (g.index(), n, self.span(g))))
     }
 }
 
@@ -196,7 +191,7 @@ impl Machine {
         self.line = block.span.line;
         self.span = block.span;
         self.overflow = false;
-        let codes = Codes::of(block, self.setup.machine);
+        let codes = Codes::of(block);
         match self.setup.machine {
             MachineKind::Mill => self.mill_block(block, &codes, out)?,
             MachineKind::Lathe => self.lathe_block(block, &codes, out)?,
@@ -209,16 +204,16 @@ impl Machine {
             ));
         }
         self.state.actual = self.actual();
-        for v in self.state.actual.iter().chain(&self.state.programmed) {
-            if !v.is_finite() || v.abs() > 1e9 {
-                return Err(self.error(
-                    "numeric-overflow",
-                    block.span,
-                    "this block takes the tool beyond any machine's travel",
-                ));
-            }
+        // `abs() <= 1e9` is false for NaN and the infinities too.
+        let within = |v: &f64| v.abs() <= 1e9;
+        if !(self.state.actual.iter().all(within) && self.state.programmed.iter().all(within)) {
+            return Err(self.error(
+                "numeric-overflow",
+                block.span,
+                "this block takes the tool beyond any machine's travel",
+            ));
         }
-        let end = block.mcodes().any(|(m, _)| m == 2 || m == 30);
+        let end = block.holds(Address::M) && block.mcodes().any(|(m, _)| m == 2 || m == 30);
         Ok(if end { Flow::End } else { Flow::Continue })
     }
 
@@ -413,6 +408,9 @@ impl Machine {
             if !(machine == MachineKind::Lathe && c.get(Group::NonModal) == Some(50)) {
                 self.state.spindle = Some(s);
             }
+        }
+        if !b.holds(Address::M) {
+            return;
         }
         for (m, _) in b.mcodes() {
             let kind = match m {

@@ -3,7 +3,7 @@
 
 use serde::Serialize;
 
-use super::codes::GCode;
+use super::codes::{GCode, Group};
 use crate::diag::Span;
 
 /// The address letters offsetlab reads.
@@ -142,6 +142,15 @@ impl Word {
 
     /// The code of a G word.
     pub fn gcode(&self) -> GCode {
+        // Nearly every G code is a whole number: it needs no `trunc` and
+        // `round` (library calls on x86-64).
+        let whole = self.value as u16;
+        if f64::from(whole) == self.value {
+            return GCode {
+                major: whole,
+                minor: 0,
+            };
+        }
         let major = self.value.trunc();
         GCode {
             major: major as u16,
@@ -165,6 +174,12 @@ pub struct Block {
     /// Per address, 1 + the index of its (first) word, or 0: the machine
     /// looks words up by address many times per block.
     slots: [u8; Address::COUNT],
+    /// The addresses of all the words, a bit each ([`Address::bit`]).
+    addresses: u32,
+    /// Per G-code modal group, 1 + the index of the block's G word of that
+    /// group, or 0: the parser classifies every G code (and refuses a
+    /// second one of a group), so the machine need not do it again.
+    groups: [u32; Group::COUNT],
 }
 
 impl Block {
@@ -172,10 +187,26 @@ impl Block {
     pub fn clear(&mut self) {
         self.words.clear();
         self.slots = [0; Address::COUNT];
+        self.addresses = 0;
+        self.groups = [0; Group::COUNT];
+    }
+
+    /// Notes that the next word pushed is the block's G code of `group`.
+    pub(super) fn set_group(&mut self, group: Group) {
+        self.groups[group.index()] = self.words.len() as u32 + 1;
+    }
+
+    /// The G word of a modal group.
+    pub fn group_word(&self, group: Group) -> Option<&Word> {
+        match self.groups[group.index()] {
+            0 => None,
+            i => self.words.get(i as usize - 1),
+        }
     }
 
     /// Appends a word.
     pub fn push(&mut self, word: Word) {
+        self.addresses |= word.address.bit();
         let slot = &mut self.slots[word.address as usize];
         if *slot == 0 && self.words.len() < usize::from(u8::MAX) {
             *slot = self.words.len() as u8 + 1;
@@ -199,6 +230,13 @@ impl Block {
     /// True if the block has a word with this address.
     pub fn has(&self, address: Address) -> bool {
         self.get(address).is_some()
+    }
+
+    /// True if any word has this address. Unlike [`Block::has`] this counts
+    /// every word (a slot holds only the first 255): a cheap test before
+    /// a loop over the words.
+    pub fn holds(&self, address: Address) -> bool {
+        self.addresses & address.bit() != 0
     }
 
     /// The G codes of the block with their words.

@@ -41,6 +41,21 @@ impl Group {
     }
     /// Number of groups.
     pub const COUNT: usize = 12;
+    /// Every group, in index order.
+    pub const ALL: [Group; Group::COUNT] = [
+        Group::NonModal,
+        Group::Motion,
+        Group::Plane,
+        Group::Distance,
+        Group::FeedMode,
+        Group::Units,
+        Group::Cutter,
+        Group::Length,
+        Group::Cycle,
+        Group::Return,
+        Group::Work,
+        Group::SurfaceSpeed,
+    ];
     /// The group's name in the manuals.
     pub fn label(self) -> &'static str {
         match self {

@@ -406,7 +406,6 @@ impl<'a> Blocks<'a> {
         let raw = std::mem::take(&mut self.raw);
         // Type every word.
         let mut seen = 0u32;
-        let mut groups: [Option<usize>; Group::COUNT] = [None; Group::COUNT];
         let mut m_groups: [(u32, usize); 8] = [(0, 0); 8];
         let mut m_count = 0;
         for w in &raw {
@@ -416,8 +415,8 @@ impl<'a> Blocks<'a> {
                 match a {
                     Address::G => match g_group(self.options.machine, word.gcode()) {
                         Ok(group) => {
-                            if let Some(other) = groups[group.index()] {
-                                let first = block.words[other].gcode();
+                            if let Some(other) = block.group_word(group) {
+                                let first = other.gcode();
                                 let msg = format!(
                                     "{first} and {} are both in group {}; a block may hold one of them{}",
                                     word.gcode(),
@@ -427,7 +426,7 @@ impl<'a> Blocks<'a> {
                                 self.error_word(block, "modal-conflict", &word, &msg);
                                 continue;
                             }
-                            groups[group.index()] = Some(idx);
+                            block.set_group(group);
                         }
                         Err(why) => {
                             self.error_word(block, "unsupported-g-code", &word, &why);
