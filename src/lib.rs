@@ -40,7 +40,8 @@ pub use diag::{Diagnostic, Severity, Span};
 pub use document::Document;
 pub use report::{BlockReport, End, Event, Move, MoveKind, Run};
 pub use run::{
-    Checkpoint, MAX_BLOCKS, MAX_MOVES, RunOptions, report_at, run, run_observed, run_with,
+    Checkpoint, Earlier, MAX_BLOCKS, MAX_MOVES, Observer, Reuse, RunOptions, Tail, report_at,
+    rerun_observed, run, run_observed, run_with,
 };
 pub use setup::{MachineKind, Setup, Units};
 pub use syntax::{ParseOptions, Program, parse};

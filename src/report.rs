@@ -334,8 +334,11 @@ pub enum End {
 pub struct Run {
     /// Mill or lathe.
     pub machine: MachineKind,
-    /// Units for drawing: those of the first move (or the setup's).
+    /// Units for drawing: those of the first move (without moves, those
+    /// in effect at the end).
     pub units: Units,
+    /// Units in effect at the end of the run (G20/G21).
+    pub end_units: Units,
     /// One report per executed block (empty when run without block reports).
     pub blocks: Vec<BlockReport>,
     /// Every move, in order.

@@ -116,6 +116,60 @@ pub struct Toolpath {
     k: f64,
 }
 
+/// Builds the toolpath of a run as its moves are made (an
+/// [`crate::run::Observer`]); for a run made again after an edit
+/// ([`crate::rerun_observed`]), from the earlier run's toolpath before and
+/// after the moves made again.
+pub struct PathBuilder<'a> {
+    path: Toolpath,
+    earlier: Option<&'a Toolpath>,
+}
+
+impl<'a> PathBuilder<'a> {
+    /// A builder for a run of a `machine` set up in `units`; `earlier` is
+    /// the toolpath of the earlier run when the run is made again.
+    pub fn new(machine: MachineKind, units: Units, earlier: Option<&'a Toolpath>) -> Self {
+        PathBuilder {
+            path: Toolpath::new(machine, units),
+            earlier,
+        }
+    }
+
+    /// The toolpath of `run`, which `reuse` says what it took from the
+    /// earlier run.
+    pub fn finish(mut self, run: &Run, reuse: &crate::Reuse) -> Toolpath {
+        if let (Some(earlier), Some(tail)) = (self.earlier, reuse.tail) {
+            self.path.append_moves(
+                earlier,
+                tail.from_move..earlier.len(),
+                tail.blocks,
+                tail.lines,
+            );
+        }
+        if self.earlier.is_some() && (reuse.prefix_moves > 0 || reuse.tail.is_some()) {
+            self.path.set_bounds(run.bounds);
+        }
+        if self.path.is_empty() {
+            // No move to take the units from: the run's (G20/G21 may still
+            // have been read).
+            self.path = Toolpath::new(run.machine, run.units);
+        }
+        self.path
+    }
+}
+
+impl crate::run::Observer for PathBuilder<'_> {
+    fn on_move(&mut self, m: &Move) {
+        self.path.push(m);
+    }
+
+    fn on_resume(&mut self, prefix_moves: usize) {
+        if let Some(earlier) = self.earlier {
+            self.path.append_moves(earlier, 0..prefix_moves, 0, 0);
+        }
+    }
+}
+
 /// The tessellated form of a toolpath (see [`Toolpath::polylines`]).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Polylines {
@@ -188,6 +242,54 @@ impl Toolpath {
                 programmed: circle(a.programmed_circle()),
             });
         }
+    }
+
+    /// Appends the moves `moves` of `from` (a toolpath in the same units),
+    /// their blocks `blocks` and lines `lines` further on: how a run made
+    /// again keeps the parts of the earlier run's path before and after an
+    /// edit ([`crate::rerun_observed`]). The moves join on as
+    /// [`Toolpath::push`] joins them.
+    pub fn append_moves(&mut self, from: &Toolpath, moves: Range<usize>, blocks: i64, lines: i64) {
+        let moves = moves.start.min(from.len())..moves.end.min(from.len());
+        if moves.is_empty() {
+            return;
+        }
+        if self.kinds.is_empty() {
+            self.units = from.units;
+            self.k = from.k;
+        }
+        let shift = |v: u32, by: i64| (i64::from(v) + by).clamp(0, i64::from(u32::MAX)) as u32;
+        let mut arcs = from.arcs_from(moves.start);
+        for m in moves {
+            let Some([[a0, a1], [p0, p1]]) = from.ends(m) else {
+                break;
+            };
+            let continues = self.vertex_count() > 0 && {
+                let i = self.actual.len() - 3;
+                self.actual[i..] == a0 && self.programmed[i..] == p0
+            };
+            if !continues {
+                self.push_vertex(a0, p0);
+            }
+            self.starts.push(self.vertex_count() as u32 - 1);
+            self.push_vertex(a1, p1);
+            self.kinds.push(from.kinds[m]);
+            self.blocks.push(shift(from.blocks[m], blocks));
+            self.lines.push(shift(from.lines[m], lines));
+            if let Some(arc) = arcs.of(from, m) {
+                self.arc_moves.push(self.kinds.len() as u32 - 1);
+                self.arcs.push(*arc);
+            }
+        }
+    }
+
+    /// Sets the bounds from a run's (mm): a toolpath made with
+    /// [`Toolpath::append_moves`] takes the bounds of the run made again.
+    /// Scaling by a positive factor keeps the order of numbers, so this is
+    /// the box [`Toolpath::push`] would have grown.
+    pub fn set_bounds(&mut self, bounds: Option<crate::report::Bounds>) {
+        let k = self.k;
+        self.bounds = bounds.map(|b| (b.min.map(|v| v * k), b.max.map(|v| v * k)));
     }
 
     fn push_vertex(&mut self, actual: Xyz, programmed: Xyz) {

@@ -25,7 +25,7 @@ use crate::report::{BlockReport, End, Run};
 use crate::run::RunOptions;
 use crate::setup::{MachineKind, Setup};
 use crate::share;
-use crate::toolpath::Toolpath;
+use crate::toolpath::{PathBuilder, Toolpath};
 use crate::view::{Summary, block_view, summary};
 
 /// How the page runs a program: a checkpoint every 512 blocks instead of a
@@ -89,6 +89,9 @@ pub struct Session {
     frame: Option<Frame>,
     /// Blocks of the previous run (None before the first).
     last_count: Option<u32>,
+    /// What the last run took from the run before it (an edit is run again
+    /// from there, and drawn again only where it changed the path).
+    last_reuse: crate::Reuse,
 }
 
 /// What `view()` returns and `set_view()` reads: the document's `view`
@@ -124,6 +127,7 @@ impl Default for Session {
             size: (300.0, 150.0),
             frame: None,
             last_count: None,
+            last_reuse: crate::Reuse::default(),
         }
     }
 }
@@ -347,14 +351,18 @@ impl Session {
 /// Builds the session's toolpath from the moves as they are made and
 /// passes the progress on to JavaScript.
 struct SessionObserver<'a> {
-    toolpath: &'a mut Toolpath,
+    path: PathBuilder<'a>,
     progress: Option<&'a js_sys::Function>,
     len: f64,
 }
 
 impl crate::run::Observer for SessionObserver<'_> {
     fn on_move(&mut self, m: &crate::report::Move) {
-        self.toolpath.push(m);
+        self.path.on_move(m);
+    }
+
+    fn on_resume(&mut self, prefix_moves: usize) {
+        self.path.on_resume(prefix_moves);
     }
 
     fn on_progress(&mut self, read: usize) {
@@ -374,23 +382,46 @@ impl Session {
         setup: JsValue,
         progress: Option<&js_sys::Function>,
     ) -> Result<JsValue, JsValue> {
-        // The last program goes before the new one's run allocates.
-        self.text = program;
-        match read_setup(&setup) {
+        let setup = read_setup(&setup);
+        // An edit of the last program with the same setup is run again from
+        // the last run (`rerun_observed`): from its checkpoint before the
+        // edit until the run catches up with it. Another program (less than
+        // half of its text in common with the last one) is run afresh, and
+        // the last one goes before the new one's run allocates.
+        let earlier_text = match &setup {
+            Ok(setup)
+                if !self.setup_refused && *setup == self.setup && similar(&self.text, &program) =>
+            {
+                Some(std::mem::replace(&mut self.text, program))
+            }
+            _ => {
+                self.text = program;
+                self.run = crate::run("", &Setup::default());
+                self.toolpath = Toolpath::default();
+                None
+            }
+        };
+        match setup {
             Ok(setup) => {
-                let mut toolpath = Toolpath::new(setup.machine, setup.units);
+                let earlier = earlier_text.as_deref().map(|text| crate::Earlier {
+                    text,
+                    run: &self.run,
+                });
                 let mut observer = SessionObserver {
-                    toolpath: &mut toolpath,
+                    path: PathBuilder::new(
+                        setup.machine,
+                        setup.units,
+                        earlier.map(|_| &self.toolpath),
+                    ),
                     progress,
                     len: self.text.len().max(1) as f64,
                 };
-                self.run = crate::run_observed(&self.text, &setup, SESSION_RUN, &mut observer);
-                if toolpath.is_empty() {
-                    // No move to take the units from: the run's (G20/G21
-                    // may still have been read).
-                    toolpath = Toolpath::new(self.run.machine, self.run.units);
-                }
+                let (run, reuse) =
+                    crate::rerun_observed(&self.text, &setup, SESSION_RUN, earlier, &mut observer);
+                let mut toolpath = observer.path.finish(&run, &reuse);
                 toolpath.shrink_to_fit();
+                self.last_reuse = reuse;
+                self.run = run;
                 self.toolpath = toolpath;
                 self.setup = setup;
                 self.setup_refused = false;
@@ -403,14 +434,23 @@ impl Session {
                 self.run = run;
                 self.toolpath = Toolpath::new(self.setup.machine, self.setup.units);
                 self.setup_refused = true;
+                self.last_reuse = crate::Reuse::default();
             }
         }
+        drop(earlier_text);
         self.after_run();
         to_js(&RunResult {
             summary: summary(&self.run),
             diagnostics: &self.run.diagnostics,
         })
     }
+}
+
+/// True when `new` keeps at least half of `old` unchanged at its start and
+/// end together: an edit, worth running again from the last run.
+fn similar(old: &str, new: &str) -> bool {
+    let (prefix, suffix) = crate::run::common_ends(old.as_bytes(), new.as_bytes());
+    prefix + suffix >= new.len() / 2
 }
 
 #[wasm_bindgen]

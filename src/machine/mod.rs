@@ -179,6 +179,41 @@ impl Machine {
         &self.state
     }
 
+    /// The setup this machine runs with.
+    pub(crate) fn setup(&self) -> &Setup {
+        &self.setup
+    }
+
+    /// True when this machine runs any block exactly as `other` does: every
+    /// position, modal value, offset and cycle datum equal to the bit (a
+    /// run made again after an edit goes on with the earlier run's result
+    /// from the first place where the two machines agree). The current
+    /// block's place, the moves left and the overflow flag are set afresh
+    /// by every block; the setup is compared by whoever makes the run.
+    pub(crate) fn same_course(&self, other: &Machine) -> bool {
+        // `==` would take -0.0 for 0.0 (a sign that can reach a report);
+        // the Debug form of a float is its shortest round-trip text, which
+        // tells them apart. The positions first: they differ most often.
+        fn key(m: &Machine) -> String {
+            format!(
+                "{:?}",
+                (
+                    &m.state,
+                    m.origin,
+                    m.shift,
+                    m.mirror,
+                    m.mirror_center,
+                    m.cycle,
+                    m.turning,
+                    m.feed_warned
+                )
+            )
+        }
+        self.state.actual == other.state.actual
+            && self.state.programmed == other.state.programmed
+            && key(self) == key(other)
+    }
+
     /// Runs one block. On error the block has no effect that matters: the
     /// run stops there (spec 2).
     pub(crate) fn execute(

@@ -142,6 +142,39 @@ impl Resume {
     pub fn offset(&self) -> usize {
         self.pos
     }
+
+    /// The line of the next unread character (1-based).
+    pub fn line(&self) -> u32 {
+        self.line
+    }
+
+    /// True when a parser at `other` reads the same text the way one here
+    /// does: the same G20/G21 and canned-cycle context, tape state and
+    /// warnings given (the place in the text aside).
+    pub fn same_course(&self, other: &Resume) -> bool {
+        (self.units, self.in_cycle, self.tape, self.warned_integer)
+            == (
+                other.units,
+                other.in_cycle,
+                other.tape,
+                other.warned_integer,
+            )
+    }
+
+    /// The same state `bytes` further on and `lines` lines further down
+    /// (the place of this point in a text edited before it).
+    pub fn shifted(self, bytes: i64, lines: i64) -> Resume {
+        Resume {
+            pos: shift(self.pos as i64, bytes) as usize,
+            line: shift(i64::from(self.line), lines) as u32,
+            ..self
+        }
+    }
+}
+
+/// `at + by`, never below 0 (places after an edit are past its start).
+pub(crate) fn shift(at: i64, by: i64) -> i64 {
+    (at + by).max(0)
 }
 
 /// A word as lexed, before it is typed.
@@ -214,9 +247,36 @@ impl<'a> Blocks<'a> {
         }
     }
 
+    /// [`Blocks::resume`] with the diagnostics reported before `at` (they
+    /// count against [`MAX_DIAGNOSTICS`] as they did then).
+    pub fn resume_after(
+        text: &'a str,
+        options: ParseOptions,
+        at: Resume,
+        diagnostics: Vec<Diagnostic>,
+    ) -> Blocks<'a> {
+        Blocks {
+            diagnostics,
+            ..Blocks::resume(text, options, at)
+        }
+    }
+
     /// The diagnostics so far (without columns; see [`crate::diag::finish`]).
     pub fn diagnostics(&self) -> &[Diagnostic] {
         &self.diagnostics
+    }
+
+    /// Diagnostics passed over so far for being past [`MAX_DIAGNOSTICS`].
+    pub fn dropped(&self) -> usize {
+        self.dropped
+    }
+
+    /// Adds diagnostics reported elsewhere for text after this point (a
+    /// run made again takes those of the earlier run's end), under the cap.
+    pub(crate) fn report_all(&mut self, diagnostics: impl IntoIterator<Item = Diagnostic>) {
+        for d in diagnostics {
+            self.report(d);
+        }
     }
 
     /// Every diagnostic, once parsing is done.
