@@ -14,7 +14,8 @@
 //      editor (a 7 typed after the first digit of an N number in the middle
 //      of the program, then Backspace, alternately) until the re-run is
 //      drawn, with the time to the run request (the page's debounce, if
-//      any) shown apart.
+//      any) shown apart; then the same typed into the X word of that line
+//      (4b: the edit moves the path, which is drawn again).
 //   5  the 1M-block path panned (mouse drag on #view) and zoomed (wheel)
 //      for a few seconds: frames the worker finished per second.
 //
@@ -22,7 +23,7 @@
 //
 //   node scripts/bench-browser.mjs [--blocks 1000000] [--edit-blocks 10000]
 //        [--runs 3] [--edits 30] [--seconds 3] [--limit 120] [--ref REV] [--count-calls]
-//        [--canvas-experiment split=N,nodash] [--json]
+//        [--canvas-experiment split=N,nodash] [--only 3,4,5] [--json]
 //
 //   --blocks N       size of the program of targets 3 and 5 (default 1000000)
 //   --edit-blocks N  size of the program of target 4 (default 10000)
@@ -46,6 +47,8 @@
 //                    split=N strokes each path every N lineTo calls and goes
 //                    on with a new one; nodash draws dashed lines solid.
 //                    What would change if the renderer did the same.
+//   --only LIST      measure only these targets (3 and 5 share their runs),
+//                    e.g. --only 4
 //   --json           print the results as JSON instead of the tables
 //
 // The programs come from the repository's deterministic generator
@@ -93,7 +96,7 @@ import { ROOT, launchBrowser, openPage, startServer, waitForRun } from '../tests
 // ---------------------------------------------------------------- options
 
 function parseArgs(argv) {
-  const opts = { blocks: 1_000_000, editBlocks: 10_000, runs: 3, edits: 30, seconds: 3, limit: 120, json: false, ref: null, countCalls: false, experiment: null };
+  const opts = { blocks: 1_000_000, editBlocks: 10_000, runs: 3, edits: 30, seconds: 3, limit: 120, json: false, ref: null, countCalls: false, experiment: null, only: new Set(['3', '4', '5']) };
   const numeric = { '--blocks': 'blocks', '--edit-blocks': 'editBlocks', '--runs': 'runs', '--edits': 'edits', '--seconds': 'seconds', '--limit': 'limit' };
   for (let i = 0; i < argv.length; i += 1) {
     const a = argv[i];
@@ -105,6 +108,11 @@ function parseArgs(argv) {
       const spec = argv[i + 1] ?? '';
       if (!/^(?:split=\d+|nodash)(?:,(?:split=\d+|nodash))*$/.test(spec)) usage('--canvas-experiment needs split=N and/or nodash, e.g. split=256,nodash');
       opts.experiment = { spec, split: Number(/split=(\d+)/.exec(spec)?.[1] ?? 0), nodash: spec.split(',').includes('nodash') };
+      i += 1;
+    } else if (a === '--only') {
+      const list = (argv[i + 1] ?? '').split(',');
+      if (!list.length || list.some((t) => !['3', '4', '5'].includes(t))) usage('--only needs targets among 3, 4, 5, e.g. --only 4 or --only 3,5');
+      opts.only = new Set(list);
       i += 1;
     } else if (a === '--ref') {
       if (!argv[i + 1]) usage('--ref needs a commit');
@@ -133,7 +141,7 @@ function parseArgs(argv) {
 }
 
 function usage(message) {
-  process.stderr.write(`bench-browser: ${message}\nusage: node scripts/bench-browser.mjs [--blocks N] [--edit-blocks N] [--runs N] [--edits N] [--seconds S] [--limit S] [--ref REV] [--count-calls] [--canvas-experiment SPEC] [--json]\n`);
+  process.stderr.write(`bench-browser: ${message}\nusage: node scripts/bench-browser.mjs [--blocks N] [--edit-blocks N] [--runs N] [--edits N] [--seconds S] [--limit S] [--ref REV] [--count-calls] [--canvas-experiment SPEC] [--only 3,4,5] [--json]\n`);
   process.exit(2);
 }
 
@@ -819,6 +827,51 @@ async function panZoom(page) {
 
 // ---------------------------------------------------------------- target 4
 
+/** Types a 7 and Backspace in turn where the editor's cursor is, `OPTS.edits` times. */
+async function typeEdits(page, kind, out, run) {
+    for (let i = 0; i < OPTS.edits; i += 1) {
+      const key = i % 2 === 0 ? '7' : 'Backspace';
+      const from = await page.evaluate(() => window.__bench.log.length);
+      await page.keyboard.press(key);
+      let settled;
+      try {
+        const h = await page.waitForFunction((f) => {
+          const B = window.__bench;
+          const post = B.log.slice(f).find((e) => e.k === 'out' && e.type === 'run');
+          const s = post && B.settled(post.gen);
+          return s && s.drawnMessage !== null && s.frame ? s : null;
+        }, from, { timeout: LIMIT.edit, polling: 10 });
+        settled = await h.jsonValue();
+      } catch (error) {
+        if (!isTimeout(error)) throw error;
+        out.edits.push({ kind, key, timedOut: true });
+        log(`  run ${run}: edit ${i + 1} not drawn within ${LIMIT.edit / 1000} s`);
+        await sleep(2000);
+        continue;
+      }
+      const keyT = await page.evaluate(([f, k]) => window.__bench.log.slice(f).find((e) => e.k === 'key' && e.key === k).t, [from, key]);
+      const { run: wrun, render, frame } = settled;
+      out.edits.push({
+        kind,
+        key,
+        keyToFrame: frame.end - keyT,
+        keyToDrawnMessage: settled.drawnMessage - keyT,
+        debounce: settled.post - keyT,
+        requestToFrame: frame.end - settled.post,
+        postMessage: settled.postEnd - settled.post,
+        toWorker: Math.max(0, wrun.t - settled.postEnd),
+        run: wrun.end - wrun.t,
+        resultToPage: (settled.rendered ?? settled.result) - wrun.end,
+        waitFrame: render.t - wrun.end,
+        render: render.end - render.t,
+        raster: frame.end - frame.t,
+        calls: render.calls,
+      });
+      // A typist's pause, so the autosave and the address bar get their turn too.
+      await sleep(150);
+    }
+}
+
 async function runEdits(server, small, run) {
   const out = { run, edits: [] };
   const browser = await within(launchBrowser(), LIMIT.step, 'launching Chromium');
@@ -851,52 +904,15 @@ async function runEdits(server, small, run) {
       return best;
     });
     if (!target) throw new Error('no G01 line visible in the middle of the editor');
-    await page.mouse.click(target.x, target.y);
-    await page.keyboard.press('Home');
-    await page.keyboard.press('ArrowRight');
-    await page.keyboard.press('ArrowRight');
-    await sleep(1000);
     out.line = target.text;
-
-    for (let i = 0; i < OPTS.edits; i += 1) {
-      const key = i % 2 === 0 ? '7' : 'Backspace';
-      const from = await page.evaluate(() => window.__bench.log.length);
-      await page.keyboard.press(key);
-      let settled;
-      try {
-        const h = await page.waitForFunction((f) => {
-          const B = window.__bench;
-          const post = B.log.slice(f).find((e) => e.k === 'out' && e.type === 'run');
-          const s = post && B.settled(post.gen);
-          return s && s.drawnMessage !== null && s.frame ? s : null;
-        }, from, { timeout: LIMIT.edit, polling: 10 });
-        settled = await h.jsonValue();
-      } catch (error) {
-        if (!isTimeout(error)) throw error;
-        out.edits.push({ key, timedOut: true });
-        log(`  run ${run}: edit ${i + 1} not drawn within ${LIMIT.edit / 1000} s`);
-        await sleep(2000);
-        continue;
-      }
-      const keyT = await page.evaluate(([f, k]) => window.__bench.log.slice(f).find((e) => e.k === 'key' && e.key === k).t, [from, key]);
-      const { run: wrun, render, frame } = settled;
-      out.edits.push({
-        key,
-        keyToFrame: frame.end - keyT,
-        keyToDrawnMessage: settled.drawnMessage - keyT,
-        debounce: settled.post - keyT,
-        requestToFrame: frame.end - settled.post,
-        postMessage: settled.postEnd - settled.post,
-        toWorker: Math.max(0, wrun.t - settled.postEnd),
-        run: wrun.end - wrun.t,
-        resultToPage: (settled.rendered ?? settled.result) - wrun.end,
-        waitFrame: render.t - wrun.end,
-        render: render.end - render.t,
-        raster: frame.end - frame.t,
-        calls: render.calls,
-      });
-      // A typist's pause, so the autosave and the address bar get their turn too.
-      await sleep(150);
+    // The N number's first digit, then the X word's (after the sign).
+    const xAt = 1 + /X-?/.exec(target.text).index + /X-?/.exec(target.text)[0].length - 1;
+    for (const [kind, column] of [['n', 2], ['x', xAt + 1]]) {
+      await page.mouse.click(target.x, target.y);
+      await page.keyboard.press('Home');
+      for (let c = 0; c < column; c += 1) await page.keyboard.press('ArrowRight');
+      await sleep(1000);
+      await typeEdits(page, kind, out, run);
     }
     // Target 5 on this smaller path, for comparison.
     await sleep(500);
@@ -946,8 +962,11 @@ function headline(results) {
   const drawn = t3.filter((x) => !x.timedOut);
   const t5 = t3runs.map((r) => r.t5).filter(Boolean);
   const t5small = t4runs.map((r) => r.t5).filter(Boolean);
-  const edits = t4runs.flatMap((r) => r.edits.filter((e) => !e.timedOut));
+  const edits = t4runs.flatMap((r) => r.edits.filter((e) => !e.timedOut && e.kind !== 'x'));
+  const editsX = t4runs.flatMap((r) => r.edits.filter((e) => !e.timedOut && e.kind === 'x'));
   const h = {
+    keyToFrameX: stats(editsX.map((e) => e.keyToFrame)),
+    requestToFrameX: stats(editsX.map((e) => e.requestToFrame)),
     total: stats(drawn.map((x) => x.total)),
     totalTimedOut: t3.length - drawn.length,
     pageDrawn: stats(t3.map((x) => x.pageDrawn)),
@@ -968,6 +987,7 @@ function headline(results) {
     memory: verdict(h.peak, (v) => v < 400e6),
     edit: verdict(h.keyToFrame, (v) => v < 16),
     editNoDebounce: verdict(h.requestToFrame, (v) => v < 16),
+    editX: verdict(h.keyToFrameX, (v) => v < 16),
     fps: verdict(h.fps, (v) => v >= 30),
   };
   return h;
@@ -997,6 +1017,8 @@ function report(results) {
     ['4', '  of which keystroke to run request (editor, the page\'s debounce if any)', range(h.debounce, fmtMs), '—', ''],
     ['4', '  run request until drawn', range(h.requestToFrame, fmtMs), '< 16 ms', h.status.editNoDebounce],
     ['4', '  keystroke until the page\'s `drawn` message', range(h.keyToDrawnMessage, fmtMs), '—', ''],
+    ['4b', `${smallName}: the same typed into the X word (the path moves), keystroke until drawn`, range(h.keyToFrameX, fmtMs), '< 16 ms', h.status.editX],
+    ['4b', '  run request until drawn', range(h.requestToFrameX, fmtMs), '—', ''],
     ['5', `${bigName}: pan + zoom, frames drawn per second`,
       h.fps ? `${range(h.fps, fps)}${t5none.length ? ` (${t5none.length} of ${t5none.length + t5.length} runs: ${t5none[0].noFrame})` : ''}` : '—',
       '≥ 30', h.status.fps],
@@ -1057,10 +1079,12 @@ function report(results) {
       + `localStorage writes (run 1): ${st.length ? st.map((e) => `${(e.chars / 1e6).toFixed(1)} M characters in ${fmtMs(e.ms)}`).join(', ') : 'none'}.`);
     out.push(`Summary line of the page: ${t3.find((x) => x.summary)?.summary ?? '—'}`);
   }
-  if (edits.length) {
-    const e = (k) => stats(edits.map((x) => x[k]));
+  for (const [kind, label] of [['n', 'N number'], ['x', 'X word']]) {
+    const these = edits.filter((x) => (x.kind ?? 'n') === kind);
+    if (!these.length) continue;
+    const e = (k) => stats(these.map((x) => x[k]));
     const rowsE = [
-      ['target 4: where the time goes (median over edits)', 'time'],
+      [`target 4 (${label}): where the time goes (median over edits)`, 'time'],
       ['keystroke to run request (editor, the page\'s debounce if any)', range(e('debounce'), fmtMs)],
       ['postMessage of the run request', range(e('postMessage'), fmtMs)],
       ['to the worker (until Session.run starts)', range(e('toWorker'), fmtMs)],
@@ -1072,11 +1096,13 @@ function report(results) {
     ];
     out.push('');
     out.push(table(rowsE));
-    const calls = edits.find((x) => x.calls)?.calls;
+    const calls = these.find((x) => x.calls)?.calls;
     if (calls) out.push('', `Canvas calls of each drawing: ${calls.lineTo.toLocaleString('en')} lineTo, ${calls.moveTo.toLocaleString('en')} moveTo, ${calls.stroke} stroke.`);
+  }
+  if (edits.length) {
     const timed = t4runs.flatMap((r) => r.edits).filter((x) => x.timedOut).length;
     out.push('');
-    out.push(`Edited line: ${t4runs.find((r) => r.line)?.line ?? '—'} (a 7 typed after its first digit, then Backspace); `
+    out.push(`Edited line: ${t4runs.find((r) => r.line)?.line ?? '—'} (a 7 typed after the first digit of its N number, then Backspace, and the same in its X word); `
       + `${edits.length} edits${timed ? `, ${timed} not drawn within ${LIMIT.edit / 1000} s` : ''}. `
       + `Summary line of the page: ${t4runs.find((r) => r.summary)?.summary ?? '—'}`);
   }
@@ -1157,11 +1183,11 @@ async function main() {
     const probe = await within(launchBrowser(), LIMIT.step, 'launching Chromium');
     env.chromium = probe.version();
     await probe.close();
-    for (let run = 1; run <= OPTS.runs; run += 1) {
+    for (let run = 1; run <= OPTS.runs && (OPTS.only.has('3') || OPTS.only.has('5')); run += 1) {
       log(`targets 3 and 5, run ${run}/${OPTS.runs}`);
       results.t3runs.push(await runBig(server, big, run));
     }
-    for (let run = 1; run <= OPTS.runs; run += 1) {
+    for (let run = 1; run <= OPTS.runs && OPTS.only.has('4'); run += 1) {
       log(`target 4, run ${run}/${OPTS.runs}`);
       results.t4runs.push(await runEdits(server, small, run));
     }

@@ -74,13 +74,22 @@ pub struct Session {
     scratch: Option<OffscreenCanvas>,
     raster_bytes: Vec<u8>,
     shot: Option<Shot>,
-    /// Runs so far (a kept layer shows one of them).
+    /// Runs so far.
     runs: u64,
+    /// Counts the runs whose toolpath differed from the one before: a kept
+    /// layer shows one of them (a run that changed nothing drawn, such as
+    /// an edit of an N number, keeps it).
+    drawing: u64,
     /// The last run's setup was refused: it ran nothing (its diagnostics
     /// say why), and an export has no moves to run again for.
     setup_refused: bool,
     /// Frames drawn from a kept layer.
     moving_frames: u64,
+    /// What the last whole frame on the canvas showed: the drawing, the
+    /// view state, the size in CSS pixels and the device pixel ratio. A
+    /// frame asked for the same (a run that changed nothing drawn) is that
+    /// one, and is not drawn again.
+    last_whole: Option<(u64, Scene, (u32, u32), u64)>,
     /// Plane, zoom, pan, current block and colours.
     scene: Scene,
     /// The CSS size last drawn at, for zoom, pan and picking.
@@ -121,8 +130,10 @@ impl Default for Session {
             raster_bytes: Vec::new(),
             shot: None,
             runs: 0,
+            drawing: 0,
             setup_refused: false,
             moving_frames: 0,
+            last_whole: None,
             scene: Scene::default(),
             size: (300.0, 150.0),
             frame: None,
@@ -420,6 +431,9 @@ impl Session {
                     crate::rerun_observed(&self.text, &setup, SESSION_RUN, earlier, &mut observer);
                 let mut toolpath = observer.path.finish(&run, &reuse);
                 toolpath.shrink_to_fit();
+                if toolpath != self.toolpath {
+                    self.drawing += 1;
+                }
                 self.last_reuse = reuse;
                 self.run = run;
                 self.toolpath = toolpath;
@@ -433,6 +447,7 @@ impl Session {
                 run.end = End::Error { line: 0 };
                 self.run = run;
                 self.toolpath = Toolpath::new(self.setup.machine, self.setup.units);
+                self.drawing += 1;
                 self.setup_refused = true;
                 self.last_reuse = crate::Reuse::default();
             }
@@ -527,6 +542,7 @@ impl Session {
             .ok_or_else(|| JsValue::from_str("the canvas has no 2d context"))?
             .dyn_into::<OffscreenCanvasRenderingContext2d>()?;
         self.canvas = Some((canvas, ctx));
+        self.last_whole = None;
         Ok(())
     }
 
@@ -562,6 +578,10 @@ impl Session {
         let Some((canvas, ctx)) = &self.canvas else {
             return Ok(());
         };
+        let whole = (self.drawing, self.scene, (w, h), dpr.to_bits());
+        if self.last_whole == Some(whole) && self.frame.is_some() {
+            return Ok(());
+        }
         let device = |css: u32| ((f64::from(css) * dpr).round() as u32).clamp(1, 16384);
         // Resizing the canvas (even to its size) clears it and resets the
         // context's state: only when the size changed (the transform is set
@@ -579,7 +599,7 @@ impl Session {
         // Everything a kept layer depends on but the zoom and pan.
         let key = {
             let mut hash = DefaultHasher::new();
-            (self.runs, self.scene.plane.name(), self.scene.step).hash(&mut hash);
+            (self.drawing, self.scene.plane.name(), self.scene.step).hash(&mut hash);
             (self.scene.theme.name, w, h, dpr.to_bits()).hash(&mut hash);
             hash.finish()
         };
@@ -605,9 +625,11 @@ impl Session {
             f64::from(w),
             f64::from(h),
         );
-        if surface.reused() {
+        let moved = moving && surface.reused();
+        if moved {
             self.moving_frames += 1;
         }
+        self.last_whole = (!moved).then_some(whole);
         self.frame = Some(frame);
         Ok(())
     }
@@ -800,7 +822,14 @@ impl Session {
         }
         self.last_count = Some(count);
         self.update_marker();
-        self.frame = None;
+        // The layout drawn (which picking measures against) holds while the
+        // drawing is the one drawn last.
+        if self
+            .last_whole
+            .is_none_or(|(drawing, ..)| drawing != self.drawing)
+        {
+            self.frame = None;
+        }
     }
 
     fn update_marker(&mut self) {

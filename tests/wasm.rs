@@ -8,7 +8,7 @@ use js_sys::{Array, Float64Array, Function, JSON, Reflect, Uint8Array, Uint32Arr
 use offsetlab::wasm::Session;
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::{wasm_bindgen_test, wasm_bindgen_test_configure};
-use web_sys::OffscreenCanvas;
+use web_sys::{OffscreenCanvas, OffscreenCanvasRenderingContext2d};
 
 wasm_bindgen_test_configure!(run_in_browser);
 
@@ -361,9 +361,16 @@ fn a_large_path_is_drawn_as_pixels_and_moved_while_the_view_moves() {
     s.zoom_at(200.0, 150.0, 1.25);
     assert!(s.render_moving(400, 300, 2.0).expect("render_moving"));
     assert!(painted_pixels(&canvas) > whole / 2);
-    // Another run (or plane, step, colours, size): drawn in full again.
+    // A run of the same path keeps the drawing: it is still moved.
     s.run(program.clone(), JsValue::NULL).expect("run");
+    assert!(s.render_moving(400, 300, 2.0).expect("render_moving"));
+    // Another path (or plane, step, colours, size): drawn in full again;
+    // the same view asked for again is that frame, nothing is drawn.
+    s.run(program.replace("X7. Y50.", "X7. Y40."), JsValue::NULL)
+        .expect("run");
     assert!(!s.render_moving(400, 300, 2.0).expect("render_moving"));
+    assert!(!s.render_moving(400, 300, 2.0).expect("render_moving"));
+    s.pan_by(10.0, 0.0);
     assert!(s.render_moving(400, 300, 2.0).expect("render_moving"));
     s.set_step(10);
     assert!(!s.render_moving(400, 300, 2.0).expect("render_moving"));
@@ -770,4 +777,92 @@ fn run_with_progress_reports_growing_fractions_and_the_same_result() {
         .run_with_progress(program.clone(), square_setup(), &throwing)
         .expect("run");
     assert_eq!(num(&get(&r, "summary"), "blocks"), 220_000.0);
+}
+
+/// A large program of feed moves and arcs, with N numbers.
+fn numbered_program(blocks: usize) -> String {
+    let mut program = String::from("N1 G90 G00 X0 Y0\nN2 G01 F100.\n");
+    for i in 0..blocks {
+        if i % 5 == 4 {
+            program.push_str(&format!("N{} G02 X{}. Y0 R30.\n", i + 3, (i % 40) + 2));
+        } else {
+            program.push_str(&format!("N{} G01 X{}. Y{}.\n", i + 3, i % 40, (i % 3) * 20));
+        }
+    }
+    program
+}
+
+#[wasm_bindgen_test]
+fn an_edit_is_run_again_from_the_last_run_with_the_result_of_a_whole_run() {
+    let program = numbered_program(3000);
+    let edits = [
+        program.replacen("N1500 G01 X", "N1500 G01 X1", 1),
+        program.replacen("N1500 ", "N15007 ", 1),
+        program.replacen("N2000 G01", "(A NOTE)\nN2000 G01", 1),
+        program.replacen("N10 G01 X7.", "N10 G01 X7. Y1 E2", 1),
+        program.replacen("N2", "N2 G91", 1),
+    ];
+    for edited in edits {
+        let mut again = Session::new();
+        again.run(program.clone(), JsValue::NULL).expect("run");
+        let got = again.run(edited.clone(), JsValue::NULL).expect("run again");
+        let mut fresh = Session::new();
+        let want = fresh.run(edited.clone(), JsValue::NULL).expect("run");
+        assert_eq!(stringify(&got), stringify(&want), "{}", &edited[..60]);
+        let (a, b) = (
+            again.toolpath().expect("toolpath"),
+            fresh.toolpath().expect("toolpath"),
+        );
+        for key in ["actual", "programmed", "starts", "kinds", "blocks", "lines"] {
+            assert_eq!(
+                stringify(&Array::from(&get(&a, key))),
+                stringify(&Array::from(&get(&b, key))),
+                "{key}"
+            );
+        }
+        assert_eq!(again.block_count(), fresh.block_count());
+        for index in [0, 1499, 1500, 2999] {
+            assert_eq!(
+                stringify(&again.block(index).expect("block")),
+                stringify(&fresh.block(index).expect("block")),
+                "block {index}"
+            );
+        }
+    }
+}
+
+#[wasm_bindgen_test]
+fn a_run_that_changes_nothing_drawn_leaves_the_canvas_as_it_is() {
+    let program = numbered_program(3000);
+    let mut s = Session::new();
+    s.run(program.clone(), JsValue::NULL).expect("run");
+    let canvas = OffscreenCanvas::new(10, 10).expect("OffscreenCanvas");
+    s.attach_canvas(canvas.clone()).expect("attach");
+    s.render(400, 300, 1.0).expect("render");
+    let drawn = painted_pixels(&canvas);
+    // Mark the canvas: a frame drawn again would paint over the mark.
+    let ctx: OffscreenCanvasRenderingContext2d = canvas
+        .get_context("2d")
+        .expect("ctx")
+        .expect("2d")
+        .dyn_into()
+        .expect("2d context");
+    ctx.set_fill_style_str("#000");
+    ctx.fill_rect(0.0, 0.0, 400.0, 300.0);
+    let black = painted_pixels(&canvas);
+    assert!(black > drawn);
+    // An N number typed: the same path, the same frame — not drawn again.
+    s.run(program.replacen("N1500 ", "N15007 ", 1), JsValue::NULL)
+        .expect("run");
+    s.render(400, 300, 1.0).expect("render");
+    assert_eq!(painted_pixels(&canvas), black);
+    // A coordinate typed: the path moved, the frame is drawn again.
+    s.run(
+        program.replacen("N1500 G01 X", "N1500 G01 X1", 1),
+        JsValue::NULL,
+    )
+    .expect("run");
+    s.render(400, 300, 1.0).expect("render");
+    let again = painted_pixels(&canvas);
+    assert!(again < black && again > drawn / 2, "{again} of {black}");
 }

@@ -16,6 +16,7 @@ pub struct CanvasSurface<'a> {
     font: String,
     layer: Option<Layer<'a>>,
     reused: bool,
+    moved: bool,
 }
 
 /// The pixel layer of a canvas: the raster, the canvas's size in device
@@ -68,11 +69,17 @@ impl<'a> CanvasSurface<'a> {
             font: String::new(),
             layer,
             reused: false,
+            moved: false,
         }
     }
 
-    /// Whether the paths of the last drawing were a kept layer moved
+    /// Whether the paths of this drawing were a kept layer moved or scaled
     /// ([`Surface::reuse_layer`]).
+    pub fn moved(&self) -> bool {
+        self.moved
+    }
+
+    /// Whether the paths of this drawing were a kept layer, moved or not.
     pub fn reused(&self) -> bool {
         self.reused
     }
@@ -175,14 +182,14 @@ impl Surface for CanvasSurface<'_> {
         let _ = self.put_layer(transform);
     }
 
-    fn reuse_layer(&mut self, transform: &Transform) -> bool {
+    fn reuse_layer(&mut self, transform: &Transform, exact: bool) -> bool {
         let Some(layer) = &self.layer else {
             return false;
         };
         let Some(shot) = *layer.shot else {
             return false;
         };
-        if shot.key != layer.key {
+        if shot.key != layer.key || (exact && shot.transform != *transform) {
             return false;
         }
         // A world point at screen s under the shot's transform is at
@@ -205,6 +212,7 @@ impl Surface for CanvasSurface<'_> {
                 .all(|v| v.is_finite() && v.abs() < 1e9);
         self.reused =
             sane && Self::draw_scratch(self.ctx, layer.scratch, shot.source, dest).is_ok();
+        self.moved = self.reused && shot.transform != *transform;
         self.reused
     }
 

@@ -58,7 +58,9 @@ pub trait Surface: Pen {
     /// Puts the last layer composited back on the surface, moved and scaled
     /// from its transform to `transform`, if the backend kept it and it
     /// shows the same thing; false when it did not (then draw the paths).
-    fn reuse_layer(&mut self, _transform: &Transform) -> bool {
+    /// With `exact`, only when `transform` is the one it was drawn with: the
+    /// same pixels as drawing it again.
+    fn reuse_layer(&mut self, _transform: &Transform, _exact: bool) -> bool {
         false
     }
     /// Fills a rectangle, with an optional one-pixel border.
@@ -306,16 +308,20 @@ fn draw_scene_as(
     // Past a few thousand moves the canvas's own stroking is what makes a
     // frame slow (`raster`): the paths go on a pixel layer instead.
     let large = moves >= RASTER_FROM_MOVES;
-    let reused = large && moving && surface.reuse_layer(&frame.transform);
+    // A layer kept from a drawing of the same paths at the same place (a
+    // run whose path did not change: an edit of an N number, a comment, a
+    // feed) is that drawing; during a gesture it is moved and scaled.
+    let reused = large && surface.reuse_layer(&frame.transform, !moving);
+    let moved = reused && moving;
     if reused {
-        // The arrows come back with the next whole frame.
+        // A moved layer's arrows come back with the next whole frame.
     } else if large && let Some(raster) = surface.raster() {
         draw_paths(raster, &frame, toolpath, scene, split);
         surface.composite(&frame.transform);
     } else {
         draw_paths(surface, &frame, toolpath, scene, split);
     }
-    if !reused {
+    if !moved {
         scene::draw_arrows(surface, &frame, toolpath, split);
     }
     if let Some(marker) = scene.marker {
