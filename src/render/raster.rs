@@ -55,12 +55,8 @@ pub struct Raster {
     coarse: Option<bool>,
     /// CSS to device pixels.
     scale: (f64, f64),
-    /// Premultiplied RGBA, transparent where nothing is drawn.
-    rgba: Vec<u8>,
-    /// Per pixel: the path that last covered it (stamp, high 16 bits), the
-    /// alpha of what lay in front of it then (8 bits) and the alpha it gave
-    /// (low 8 bits) — so that a path covers a pixel once.
-    cover: Vec<u32>,
+    /// The pixels, row by row.
+    px: Vec<Pixel>,
     /// The stamp of the first path of this drawing.
     base: u32,
     /// Finished (opaque) pixels per tile, finished tiles per block; both
@@ -82,6 +78,20 @@ pub struct Raster {
     /// The drawn stretches of the dashed segment being drawn (kept for its
     /// memory).
     dashes: Vec<(f64, f64)>,
+}
+
+/// A pixel of the drawing: its colour and which path covered it last,
+/// side by side (a line's pixels are read and written together: one cache
+/// line instead of two, where the buffers are larger than the caches).
+#[derive(Clone, Copy, Debug, Default)]
+#[repr(C, align(8))]
+struct Pixel {
+    /// Premultiplied RGBA, transparent where nothing is drawn.
+    rgba: [u8; 4],
+    /// The path that last covered it (stamp, high 16 bits), the alpha of
+    /// what lay in front of it then (8 bits) and the alpha it gave (low 8
+    /// bits) — so that a path covers a pixel once.
+    cover: u32,
 }
 
 /// How a path is stroked, in device pixels.
@@ -135,15 +145,13 @@ impl Raster {
             if let Some((x0, y0, x1, y1)) = self.dirty.take() {
                 for y in y0..y1 {
                     let row = y * self.width;
-                    self.rgba[4 * (row + x0)..4 * (row + x1)].fill(0);
+                    self.px[row + x0..row + x1].fill(Pixel::default());
                 }
             }
         } else {
             self.full = (width, height);
-            self.rgba.clear();
-            self.rgba.resize(4 * pixels, 0);
-            self.cover.clear();
-            self.cover.resize(pixels, 0);
+            self.px.clear();
+            self.px.resize(pixels, Pixel::default());
             self.base = 1;
             self.dirty = None;
         }
@@ -152,7 +160,7 @@ impl Raster {
         // Stamps are 16 bits: when this drawing's could wrap, start over.
         self.base += self.styles.len() as u32;
         if self.base + u32::from(u16::MAX / 2) > u32::from(u16::MAX) {
-            self.cover.fill(0);
+            self.px.iter_mut().for_each(|p| p.cover = 0);
             self.base = 1;
         }
         self.scale = scale;
@@ -289,8 +297,7 @@ impl Raster {
         if x >= self.width || y >= self.height {
             return [0; 4];
         }
-        let i = 4 * (y * self.width + x);
-        straight(&self.rgba[i..i + 4])
+        straight(&self.px[y * self.width + x].rgba)
     }
 
     /// The drawn box's pixels as straight RGBA rows (what `ImageData`
@@ -301,9 +308,9 @@ impl Raster {
         out.clear();
         out.reserve(4 * w * h);
         for row in y..y + h {
-            let start = 4 * (row * self.width + x);
-            for px in self.rgba[start..start + 4 * w].chunks_exact(4) {
-                out.extend_from_slice(&straight(px));
+            let start = row * self.width + x;
+            for px in &self.px[start..start + w] {
+                out.extend_from_slice(&straight(&px.rgba));
             }
         }
         Some((x, y, w, h))
@@ -389,7 +396,7 @@ impl Raster {
     ) {
         let [x0, y0] = from.map(f64::from);
         let [x1, y1] = to.map(f64::from);
-        if self.cover.is_empty() {
+        if self.px.is_empty() {
             return;
         }
         if (x1 - x0).abs() >= (y1 - y0).abs() {
@@ -532,7 +539,7 @@ impl Raster {
                 for row in r0..=r1 {
                     let (x, y) = if transposed { (row, col) } else { (col, row) };
                     let i = y * self.width + x;
-                    if self.rgba[4 * i + 3] == 255 {
+                    if self.px[i].rgba[3] == 255 {
                         continue; // finished: something in front covers it
                     }
                     let coverage = (bottom.min(row as f64 + 1.0) - top.max(row as f64)) as f32;
@@ -562,9 +569,10 @@ impl Raster {
     /// `stamp`, under what is already there (front to back).
     #[inline]
     fn plot(&mut self, ink: &Ink, stamp: u32, i: usize, x: usize, y: usize, coverage: f32) {
-        let a = self.rgba[4 * i + 3];
+        let p = &mut self.px[i];
+        let a = p.rgba[3];
         let new = (coverage.min(1.0) * ink.alpha * 255.0 + 0.5) as u32;
-        let cell = self.cover[i];
+        let cell = p.cover;
         let (front, given) = if cell >> 16 == stamp {
             (cell >> 8 & 0xff, cell & 0xff)
         } else {
@@ -573,11 +581,11 @@ impl Raster {
         if new <= given {
             return;
         }
-        self.cover[i] = stamp << 16 | front << 8 | new;
+        p.cover = stamp << 16 | front << 8 | new;
         // What lies in front lets 1 - front through; of that, this path
         // adds what it covers beyond what it gave before.
         let add = (255 - front) * (new - given);
-        let px = &mut self.rgba[4 * i..4 * i + 4];
+        let px = &mut p.rgba;
         for (c, v) in px.iter_mut().zip(ink.rgb) {
             *c = (u32::from(*c) + (v * add + 32512) / 65025).min(255) as u8;
         }
@@ -594,7 +602,7 @@ impl Raster {
     /// through what lies in front is the ink, and the pixel is finished.
     #[inline]
     fn cover_fully(&mut self, ink: &Ink, i: usize, x: usize, y: usize) {
-        let px = &mut self.rgba[4 * i..4 * i + 4];
+        let px = &mut self.px[i].rgba;
         let through = 255 - u32::from(px[3]);
         for (c, v) in px.iter_mut().zip(ink.rgb) {
             *c = (u32::from(*c) + (v * through + 127) / 255).min(255) as u8;
