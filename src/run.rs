@@ -466,14 +466,12 @@ pub(crate) fn common_ends(a: &[u8], b: &[u8]) -> (usize, usize) {
 
 /// Length of the common start of `a` and `b`.
 fn common_prefix(a: &[u8], b: &[u8]) -> usize {
-    // Sixteen bytes at a time, then byte by byte (a 30 MB text in a few
-    // milliseconds).
+    // A page at a time (`==` on slices is a `memcmp`), then byte by byte:
+    // a 30 MB text in a few milliseconds.
+    const STEP: usize = 4096;
     let mut n = 0;
-    for (x, y) in a.chunks_exact(16).zip(b.chunks_exact(16)) {
-        if x != y {
-            break;
-        }
-        n += 16;
+    while n + STEP <= a.len().min(b.len()) && a[n..n + STEP] == b[n..n + STEP] {
+        n += STEP;
     }
     n + a[n..]
         .iter()
@@ -484,12 +482,12 @@ fn common_prefix(a: &[u8], b: &[u8]) -> usize {
 
 /// Length of the common end of `a` and `b`, at most `max`.
 fn common_suffix(a: &[u8], b: &[u8], max: usize) -> usize {
+    const STEP: usize = 4096;
     let mut n = 0;
-    for (x, y) in a.rchunks_exact(16).zip(b.rchunks_exact(16)) {
-        if n + 16 > max || x != y {
-            break;
-        }
-        n += 16;
+    while n + STEP <= max
+        && a[a.len() - n - STEP..a.len() - n] == b[b.len() - n - STEP..b.len() - n]
+    {
+        n += STEP;
     }
     let (a, b) = (&a[..a.len() - n], &b[..b.len() - n]);
     n + a

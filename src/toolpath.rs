@@ -247,11 +247,12 @@ impl Toolpath {
     /// Appends the moves `moves` of `from` (a toolpath in the same units),
     /// their blocks `blocks` and lines `lines` further on: how a run made
     /// again keeps the parts of the earlier run's path before and after an
-    /// edit ([`crate::rerun_observed`]). The moves join on as
-    /// [`Toolpath::push`] joins them.
+    /// edit ([`crate::rerun_observed`]). The first move joins on as
+    /// [`Toolpath::push`] joins a move; the others keep their joins, so
+    /// their vertices and arcs are copied whole.
     pub fn append_moves(&mut self, from: &Toolpath, moves: Range<usize>, blocks: i64, lines: i64) {
-        let moves = moves.start.min(from.len())..moves.end.min(from.len());
-        if moves.is_empty() {
+        let (first, end) = (moves.start.min(from.len()), moves.end.min(from.len()));
+        if first >= end {
             return;
         }
         if self.kinds.is_empty() {
@@ -259,28 +260,43 @@ impl Toolpath {
             self.k = from.k;
         }
         let shift = |v: u32, by: i64| (i64::from(v) + by).clamp(0, i64::from(u32::MAX)) as u32;
-        let mut arcs = from.arcs_from(moves.start);
-        for m in moves {
-            let Some([[a0, a1], [p0, p1]]) = from.ends(m) else {
-                break;
-            };
-            let continues = self.vertex_count() > 0 && {
-                let i = self.actual.len() - 3;
-                self.actual[i..] == a0 && self.programmed[i..] == p0
-            };
-            if !continues {
-                self.push_vertex(a0, p0);
-            }
-            self.starts.push(self.vertex_count() as u32 - 1);
-            self.push_vertex(a1, p1);
-            self.kinds.push(from.kinds[m]);
-            self.blocks.push(shift(from.blocks[m], blocks));
-            self.lines.push(shift(from.lines[m], lines));
-            if let Some(arc) = arcs.of(from, m) {
-                self.arc_moves.push(self.kinds.len() as u32 - 1);
-                self.arcs.push(*arc);
-            }
+        let moves_before = self.kinds.len();
+        // The first move: its start vertex unless it continues this path.
+        let Some([[a0, a1], [p0, p1]]) = from.ends(first) else {
+            return;
+        };
+        let continues = self.vertex_count() > 0 && {
+            let i = self.actual.len() - 3;
+            self.actual[i..] == a0 && self.programmed[i..] == p0
+        };
+        if !continues {
+            self.push_vertex(a0, p0);
         }
+        self.starts.push(self.vertex_count() as u32 - 1);
+        self.push_vertex(a1, p1);
+        // The others: the vertices after the first move's end, as they are.
+        let end_vertex = from.starts[first] as usize + 1;
+        let last_vertex = from.starts[end - 1] as usize + 1;
+        let offset = (self.vertex_count() - 1) as i64 - end_vertex as i64;
+        self.actual
+            .extend_from_slice(&from.actual[3 * (end_vertex + 1)..3 * (last_vertex + 1)]);
+        self.programmed
+            .extend_from_slice(&from.programmed[3 * (end_vertex + 1)..3 * (last_vertex + 1)]);
+        self.starts.extend(
+            from.starts[first + 1..end]
+                .iter()
+                .map(|&v| shift(v, offset)),
+        );
+        self.kinds.extend_from_slice(&from.kinds[first..end]);
+        self.blocks
+            .extend(from.blocks[first..end].iter().map(|&b| shift(b, blocks)));
+        self.lines
+            .extend(from.lines[first..end].iter().map(|&l| shift(l, lines)));
+        let arcs = from.arcs_from(first).next..from.arcs_from(end).next;
+        self.arcs.extend_from_slice(&from.arcs[arcs.clone()]);
+        let moved = moves_before as i64 - first as i64;
+        self.arc_moves
+            .extend(from.arc_moves[arcs].iter().map(|&m| shift(m, moved)));
     }
 
     /// Sets the bounds from a run's (mm): a toolpath made with
