@@ -205,6 +205,7 @@ impl Block {
     }
 
     /// Appends a word.
+    #[inline]
     pub fn push(&mut self, word: Word) {
         self.addresses |= word.address.bit();
         let slot = &mut self.slots[word.address as usize];

@@ -82,7 +82,7 @@ const MAX_DIGITS: usize = 15;
 /// This is the hot loop of the parser, so it is one hand-written pass; the
 /// grammar it implements is [`number_grammar`], written with nom, and a test
 /// checks that the two agree on every input.
-#[inline]
+#[inline(always)]
 pub fn number(i: In<'_>) -> (In<'_>, Result<Number, NumberError>) {
     // Fast path for the shape nearly every word has: `[+-]digits[.digits]`
     // followed by something that is not part of a number — a loop over the
