@@ -17,7 +17,7 @@ pub use block::{Address, Block, Word, WordKind};
 
 use crate::diag::{Diagnostic, Span};
 use crate::setup::{DecimalInput, MachineKind, Setup, Units};
-use codes::{Group, g_group, m_group};
+use codes::{Group, g_group, group_of, m_group};
 use lexer::{Number, NumberError};
 
 /// Most diagnostics one program reports; past this one more says so.
@@ -212,7 +212,11 @@ impl Checks {
         let a = word.address;
         match a {
             Address::G => {
-                let group = g_group(machine, word.gcode()).map_err(Clash::UnknownGCode)?;
+                let code = word.gcode();
+                let Some(group) = group_of(machine, code) else {
+                    let why = g_group(machine, code).err().unwrap_or_default();
+                    return Err(Clash::UnknownGCode(why));
+                };
                 if block.group_word(group).is_some() {
                     return Err(Clash::Group(group));
                 }
@@ -495,8 +499,7 @@ impl<'a> Blocks<'a> {
                     _ => return None,
                 }
             };
-            let (after, number) = lexer::number(&bytes[i + 1..]);
-            let word_end = n - after.len();
+            let (word_end, next, number) = lexer::number(bytes, i + 1);
             let number = number.ok()?;
             if address == Address::G && counts {
                 let before = (self.units, self.in_cycle);
@@ -517,8 +520,8 @@ impl<'a> Blocks<'a> {
             }
             read_k |= address == Address::K;
             checks.admit(self.options.machine, block, word).ok()?;
-            i = word_end;
-            last = i;
+            last = word_end;
+            i = next;
         }
         Some((i, last))
     }
@@ -554,8 +557,7 @@ impl<'a> Blocks<'a> {
             }
             let c = bytes[i];
             if c.is_ascii_alphabetic() {
-                let (after, number) = lexer::number(&bytes[i + 1..]);
-                let word_end = n - after.len();
+                let (word_end, _, number) = lexer::number(bytes, i + 1);
                 let letter = c.to_ascii_uppercase();
                 if letter == b'G'
                     && counts
@@ -671,7 +673,7 @@ impl<'a> Blocks<'a> {
                 {
                     return Err(Refusal::LatheOffset);
                 }
-                n.mantissa as f64
+                n.mantissa_f64()
             }
             WordKind::Feed => {
                 let v = n.value();
