@@ -180,6 +180,8 @@ pub struct Block {
     /// group, or 0: the parser classifies every G code (and refuses a
     /// second one of a group), so the machine need not do it again.
     groups: [u32; Group::COUNT],
+    /// The groups of the block's G codes, a bit each (by [`Group::index`]).
+    group_bits: u16,
 }
 
 impl Block {
@@ -189,11 +191,13 @@ impl Block {
         self.slots = [0; Address::COUNT];
         self.addresses = 0;
         self.groups = [0; Group::COUNT];
+        self.group_bits = 0;
     }
 
     /// Notes that the next word pushed is the block's G code of `group`.
     pub(super) fn set_group(&mut self, group: Group) {
         self.groups[group.index()] = self.words.len() as u32 + 1;
+        self.group_bits |= 1 << group.index();
     }
 
     /// The G word of a modal group.
@@ -238,6 +242,16 @@ impl Block {
     /// a loop over the words.
     pub fn holds(&self, address: Address) -> bool {
         self.addresses & address.bit() != 0
+    }
+
+    /// True if every word of the block has one of these addresses and every
+    /// G code is in one of these groups: a cheap test that a block needs
+    /// none of the handling of the others.
+    #[inline]
+    pub fn holds_only(&self, addresses: &[Address], groups: &[Group]) -> bool {
+        let words = addresses.iter().fold(0, |bits, a| bits | a.bit());
+        let codes = groups.iter().fold(0, |bits, g| bits | 1 << g.index());
+        self.addresses & !words == 0 && self.group_bits & !codes == 0
     }
 
     /// The G codes of the block with their words.
