@@ -48,8 +48,25 @@ impl Address {
     /// Number of addresses.
     pub const COUNT: usize = 21;
 
+    /// The address for a byte of program text, a letter of either case, if
+    /// offsetlab reads it: one load from a table (the parser's dispatch on a
+    /// word's letter).
+    #[inline]
+    pub fn from_byte(c: u8) -> Option<Address> {
+        const BY_BYTE: [Option<Address>; 256] = {
+            let mut table = [None; 256];
+            let mut c = 0;
+            while c < 256 {
+                table[c] = Address::from_letter((c as u8).to_ascii_uppercase());
+                c += 1;
+            }
+            table
+        };
+        BY_BYTE[usize::from(c)]
+    }
+
     /// The address for an upper-case letter, if offsetlab reads it.
-    pub fn from_letter(c: u8) -> Option<Address> {
+    pub const fn from_letter(c: u8) -> Option<Address> {
         use Address::*;
         Some(match c {
             b'D' => D,

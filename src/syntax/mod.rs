@@ -187,8 +187,8 @@ enum Clash {
     UnknownGCode(String),
     /// A second G code of a modal group.
     Group(Group),
-    /// An M code of the same group as an earlier one (its index).
-    MCode(usize),
+    /// An M code of the same group as an earlier one.
+    MCode,
     /// A second word of an address that may appear once.
     Duplicate,
 }
@@ -196,12 +196,13 @@ enum Clash {
 /// What a block's words so far exclude of the next one: a second word of an
 /// address (but G and M), a second G code of a modal group (the block keeps
 /// those), a second M code of an M group.
+/// (The block's own record of its addresses says which it holds.)
 #[derive(Default)]
 struct Checks {
-    /// Addresses seen, a bit each ([`Address::bit`]).
-    seen: u32,
-    /// The M groups seen, with the index of their word (the first eight).
-    m_groups: [(u32, usize); 8],
+    /// The M groups seen (the first eight; the message finds their words
+    /// again: clearing a table of their indexes too took a tenth of a short
+    /// block's instructions, callgrind).
+    m_groups: [u32; 8],
     m_count: usize,
 }
 
@@ -224,20 +225,18 @@ impl Checks {
             }
             Address::M => {
                 let g = m_group(word.int());
-                let earlier = &self.m_groups[..self.m_count];
-                if let Some(&(_, other)) = earlier.iter().find(|(gr, _)| *gr == g) {
-                    return Err(Clash::MCode(other));
+                if self.m_groups[..self.m_count].contains(&g) {
+                    return Err(Clash::MCode);
                 }
                 if self.m_count < self.m_groups.len() {
-                    self.m_groups[self.m_count] = (g, block.words.len());
+                    self.m_groups[self.m_count] = g;
                     self.m_count += 1;
                 }
             }
             _ => {
-                if self.seen & a.bit() != 0 {
+                if block.holds(a) {
                     return Err(Clash::Duplicate);
                 }
-                self.seen |= a.bit();
             }
         }
         block.push(word);
@@ -482,7 +481,7 @@ impl<'a> Blocks<'a> {
         loop {
             i = lexer::skip_blanks(bytes, i);
             let Some(&c) = bytes.get(i) else { break };
-            let Some(address) = Address::from_letter(c.to_ascii_uppercase()) else {
+            let Some(address) = Address::from_byte(c) else {
                 match c {
                     b'\n' | b'\r' | b';' => break,
                     b'(' => {
@@ -842,10 +841,16 @@ impl<'a> Blocks<'a> {
                 );
                 ("modal-conflict", msg)
             }
-            Clash::MCode(other) => {
+            Clash::MCode => {
+                // The block holds one M code of the group: the earlier one.
+                let group = m_group(word.int());
+                let earlier = block
+                    .mcodes()
+                    .map(|(m, _)| m)
+                    .find(|m| m_group(*m) == group)
+                    .unwrap_or_default();
                 let msg = format!(
-                    "M{:02} and M{:02} exclude each other; a block may hold one of them",
-                    block.words[other].int(),
+                    "M{earlier:02} and M{:02} exclude each other; a block may hold one of them",
                     word.int()
                 );
                 ("modal-conflict", msg)
