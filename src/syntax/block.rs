@@ -217,6 +217,12 @@ impl Block {
         self.group_bits |= 1 << group.index();
     }
 
+    /// True if the block has a G code of this modal group.
+    #[inline]
+    pub fn holds_group(&self, group: Group) -> bool {
+        self.group_bits & 1 << group.index() != 0
+    }
+
     /// The G word of a modal group.
     pub fn group_word(&self, group: Group) -> Option<&Word> {
         match self.groups[group.index()] {

@@ -218,7 +218,7 @@ impl Checks {
                     let why = g_group(machine, code).err().unwrap_or_default();
                     return Err(Clash::UnknownGCode(why));
                 };
-                if block.group_word(group).is_some() {
+                if block.holds_group(group) {
                     return Err(Clash::Group(group));
                 }
                 block.set_group(group);
@@ -626,11 +626,12 @@ impl<'a> Blocks<'a> {
         if n.frac_digits != 0 || n.negative {
             return;
         }
+        // G00–G03 first: nearly every block has one.
         match (self.options.machine, n.mantissa) {
+            (MachineKind::Mill, 0..=3 | 80) => self.in_cycle = false,
             (_, 20) => self.units = Units::Inch,
             (_, 21) => self.units = Units::Mm,
             (MachineKind::Mill, 73 | 74 | 76 | 81..=89) => self.in_cycle = true,
-            (MachineKind::Mill, 0..=3 | 80) => self.in_cycle = false,
             _ => {}
         }
     }
