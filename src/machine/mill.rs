@@ -431,8 +431,11 @@ impl Machine {
     }
 
     /// Ends a straight move: updates the position and the vectors, notes
-    /// what the length offset did and records the move.
+    /// what the length offset did and records the move. Inlined where it is
+    /// called: the target then goes to the state from registers, not through
+    /// a copy on the stack (callgrind: 1 M of 202 M instructions).
     #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
     fn finish_line(
         &mut self,
         out: &mut Out,
