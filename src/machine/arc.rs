@@ -100,11 +100,18 @@ pub fn from_center(
     }
     let full = same_point(start, end);
     let a0 = angle(center, start);
+    // A full circle's sweep is a whole turn: its end angle (an `atan2`) is
+    // not needed.
+    let sweep = if full {
+        sweep_between(a0, a0, ccw, true)
+    } else {
+        sweep_between(a0, angle(center, end), ccw, false)
+    };
     Ok(Circle {
         center,
         radius: r0,
         start_angle: a0,
-        sweep: sweep_between(a0, angle(center, end), ccw, full),
+        sweep,
     })
 }
 

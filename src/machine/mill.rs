@@ -12,6 +12,21 @@ use crate::syntax::Address;
 use crate::syntax::Block;
 use crate::syntax::codes::Group;
 
+/// The words of a block that only moves: sequence number, G codes of group
+/// 01, axes, arc centre and radius, feed ([`Machine::motion_block`]).
+const MOTION_WORDS: [Address; 10] = [
+    Address::N,
+    Address::G,
+    Address::X,
+    Address::Y,
+    Address::Z,
+    Address::I,
+    Address::J,
+    Address::K,
+    Address::R,
+    Address::F,
+];
+
 impl Machine {
     pub(super) fn mill_block(
         &mut self,
@@ -19,6 +34,9 @@ impl Machine {
         c: &Codes<'_>,
         out: &mut Out,
     ) -> Result<(), Diagnostic> {
+        if b.holds_only(&MOTION_WORDS, &[Group::Motion]) {
+            return self.motion_block(b, c, out);
+        }
         let lathe_words = b.holds(Address::U) || b.holds(Address::W);
         for w in b.words.iter().filter(|_| lathe_words) {
             if matches!(w.address, Address::U | Address::W) {
@@ -75,6 +93,29 @@ impl Machine {
             _ => {}
         }
         let old_length = self.length_words(b, c, out)?;
+        if self.state.modal.cycle.active() {
+            self.cycle_block(b, out, old_length)
+        } else {
+            self.mill_motion(b, out, old_length, None)
+        }
+    }
+
+    /// A block of motion words alone (most blocks of a CAM program): what
+    /// [`Machine::mill_block`] does with it, without the steps that cannot
+    /// apply (its other G codes, M, S, T, D, H words, U/W): the feed, the
+    /// motion mode, then the move (callgrind: a seventh of the machine's
+    /// instructions went to those steps).
+    fn motion_block(&mut self, b: &Block, c: &Codes<'_>, out: &mut Out) -> Result<(), Diagnostic> {
+        if let Some(f) = b.value(Address::F) {
+            self.state.feed = Some(f);
+        }
+        if let Some(m) = c.get(Group::Motion) {
+            self.state.modal.motion =
+                Motion::from_code(self.setup.machine, m).unwrap_or(Motion::Rapid);
+            // A group 01 code cancels the canned cycle (Fanuc/YASNAC M).
+            self.cancel_cycle();
+        }
+        let old_length = self.state.length;
         if self.state.modal.cycle.active() {
             self.cycle_block(b, out, old_length)
         } else {
@@ -145,9 +186,10 @@ impl Machine {
         let incremental = self.state.modal.distance == Distance::Incremental;
         let words: [Option<f64>; 3] = AXES.map(|(a, _)| b.value(a));
         let any_axis = words.iter().any(Option::is_some);
-        let centre_words = [Address::I, Address::J, Address::K].map(|a| b.value(a));
-        let arc_words =
-            motion.is_arc() && (centre_words.iter().any(Option::is_some) || b.has(Address::R));
+        let arc_words = motion.is_arc()
+            && [Address::I, Address::J, Address::K, Address::R]
+                .iter()
+                .any(|a| b.has(*a));
         let setting = self.setup.settings.length_offset_without_z;
 
         if !any_axis && !arc_words {
@@ -213,126 +255,15 @@ impl Machine {
             };
 
         if motion.is_arc() {
-            let mut req = ArcRequest {
+            let planned = Planned {
+                start,
                 target,
-                ..ArcRequest::default()
+                amount,
+                delta,
+                register,
+                new_length,
             };
-            let (ia, ib, _) = self.state.modal.plane.axes();
-            req.ccw = (motion == Motion::ArcCcw) != (self.mirror[ia] != self.mirror[ib]);
-            let mut pv = self.state.position.vector;
-            for i in 0..3 {
-                pv[i] += delta[i];
-            }
-            let mut end = [target[0] + pv[0], target[1] + pv[1], target[2] + pv[2]];
-            end[2] += new_length;
-            req.actual_end = end;
-            if let Some(r) = b.get(Address::R) {
-                if centre_words.iter().any(Option::is_some) {
-                    out.warnings.push(Diagnostic::warning(
-                        "arc-r-and-center",
-                        r.span,
-                        "R and I/J/K in one arc: R is used and I/J/K are ignored (Fanuc)",
-                    ));
-                }
-                let (ia, ib, _) = self.state.modal.plane.axes();
-                let p0 = [self.state.programmed[ia], self.state.programmed[ib]];
-                if super::arc::same_point(p0, [target[ia], target[ib]]) {
-                    out.warnings.push(Diagnostic::warning(
-                        "arc-r-no-motion",
-                        b.span,
-                        "an R arc whose end is its start makes no circle (a full circle needs I/J/K); only the axis across the plane moves",
-                    ));
-                    let z_word = words[2].is_some();
-                    return self.finish_line(
-                        out,
-                        start,
-                        target,
-                        delta,
-                        new_length,
-                        MoveKind::Feed,
-                        old_length,
-                        z_word,
-                    );
-                }
-                let r_mm = self.mm(r.value);
-                let dr = pos.map_or(0.0, |code| position::radius_change(code, r_mm, register));
-                if let Some(code) = pos {
-                    out.notes.push(format!(
-                        "{}: R {} becomes {} (R changed as a radius)",
-                        gname(code),
-                        self.fmt(r_mm),
-                        self.fmt(r_mm + dr)
-                    ));
-                }
-                req.radius = Some((r_mm, dr));
-            } else {
-                let (ia, ib, _) = self.state.modal.plane.axes();
-                let in_plane = |i: usize| i == ia || i == ib;
-                if !(0..3).any(|i| in_plane(i) && centre_words[i].is_some()) {
-                    let names = match self.state.modal.plane {
-                        super::modal::Plane::XY => "I/J",
-                        super::modal::Plane::ZX => "K/I",
-                        super::modal::Plane::YZ => "J/K",
-                    };
-                    return Err(self.error(
-                        "arc-without-center",
-                        b.span,
-                        format!(
-                            "{} needs R or the centre words {names} of the {} plane",
-                            motion.gcode(),
-                            self.state.modal.plane.gcode()
-                        ),
-                    ));
-                }
-                for (i, w) in centre_words.iter().enumerate() {
-                    let Some(v) = w else { continue };
-                    if !in_plane(i) {
-                        out.warnings.push(Diagnostic::warning(
-                            "arc-center-word",
-                            self.word_span(b, [Address::I, Address::J, Address::K][i]),
-                            format!(
-                                "{} is not a centre word of the {} plane and is ignored",
-                                ['I', 'J', 'K'][i],
-                                self.state.modal.plane.gcode()
-                            ),
-                        ));
-                        continue;
-                    }
-                    let mut off = self.mm(*v);
-                    if self.mirror[i] {
-                        off = -off;
-                    }
-                    req.center[i] = off;
-                    if let Some(code) = pos {
-                        // Spec 4.8: I/J/K are incremental amounts, changed like axis words.
-                        let dc = position::change(code, off, register, true, self.mirror[i]);
-                        req.center_change[i] = dc;
-                        out.notes.push(format!(
-                            "{}: {} {} becomes {}",
-                            gname(code),
-                            ['I', 'J', 'K'][i],
-                            self.fmt(off),
-                            self.fmt(off + dc)
-                        ));
-                    }
-                }
-            }
-            let info = self.arc_geometry(b, &req)?;
-            self.state.programmed = target;
-            self.state.position.vector = pv;
-            self.state.length.vector = new_length;
-            self.length_note(
-                old_length,
-                Some(amount[2]).filter(|_| words[2].is_some()),
-                out,
-            );
-            let kind = if info.sweep > 0.0 {
-                MoveKind::ArcCcw
-            } else {
-                MoveKind::ArcCw
-            };
-            self.emit(out, start, kind, true, Some(info));
-            return Ok(());
+            return self.arc_move(b, out, old_length, pos, words, planned);
         }
 
         let kind = if motion == Motion::Linear {
@@ -352,9 +283,159 @@ impl Machine {
         )
     }
 
+    /// Ends a G02/G03 move (spec 2; with G45–G48, spec 4.8): solves the
+    /// arc from R or I/J/K, updates the position and the vectors, notes what
+    /// the length offset did and records the move. Kept out of line: inlined
+    /// in [`Machine::mill_motion`], its locals made every straight move's
+    /// stack frame larger (callgrind: about a hundred instructions a block).
+    #[inline(never)]
+    fn arc_move(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+        old_length: LengthState,
+        pos: Option<u16>,
+        words: [Option<f64>; 3],
+        planned: Planned,
+    ) -> Result<(), Diagnostic> {
+        let Planned {
+            start,
+            target,
+            amount,
+            delta,
+            register,
+            new_length,
+        } = planned;
+        let motion = self.state.modal.motion;
+        let centre_words = [Address::I, Address::J, Address::K].map(|a| b.value(a));
+        let mut req = ArcRequest {
+            target,
+            ..ArcRequest::default()
+        };
+        let (ia, ib, _) = self.state.modal.plane.axes();
+        req.ccw = (motion == Motion::ArcCcw) != (self.mirror[ia] != self.mirror[ib]);
+        let mut pv = self.state.position.vector;
+        for i in 0..3 {
+            pv[i] += delta[i];
+        }
+        let mut end = [target[0] + pv[0], target[1] + pv[1], target[2] + pv[2]];
+        end[2] += new_length;
+        req.actual_end = end;
+        if let Some(r) = b.get(Address::R) {
+            if centre_words.iter().any(Option::is_some) {
+                out.warnings.push(Diagnostic::warning(
+                    "arc-r-and-center",
+                    r.span,
+                    "R and I/J/K in one arc: R is used and I/J/K are ignored (Fanuc)",
+                ));
+            }
+            let (ia, ib, _) = self.state.modal.plane.axes();
+            let p0 = [self.state.programmed[ia], self.state.programmed[ib]];
+            if super::arc::same_point(p0, [target[ia], target[ib]]) {
+                out.warnings.push(Diagnostic::warning(
+                    "arc-r-no-motion",
+                    b.span,
+                    "an R arc whose end is its start makes no circle (a full circle needs I/J/K); only the axis across the plane moves",
+                ));
+                let z_word = words[2].is_some();
+                return self.finish_line(
+                    out,
+                    start,
+                    target,
+                    delta,
+                    new_length,
+                    MoveKind::Feed,
+                    old_length,
+                    z_word,
+                );
+            }
+            let r_mm = self.mm(r.value);
+            let dr = pos.map_or(0.0, |code| position::radius_change(code, r_mm, register));
+            if let Some(code) = pos {
+                out.notes.push(format!(
+                    "{}: R {} becomes {} (R changed as a radius)",
+                    gname(code),
+                    self.fmt(r_mm),
+                    self.fmt(r_mm + dr)
+                ));
+            }
+            req.radius = Some((r_mm, dr));
+        } else {
+            let (ia, ib, _) = self.state.modal.plane.axes();
+            let in_plane = |i: usize| i == ia || i == ib;
+            if !(0..3).any(|i| in_plane(i) && centre_words[i].is_some()) {
+                let names = match self.state.modal.plane {
+                    super::modal::Plane::XY => "I/J",
+                    super::modal::Plane::ZX => "K/I",
+                    super::modal::Plane::YZ => "J/K",
+                };
+                return Err(self.error(
+                    "arc-without-center",
+                    b.span,
+                    format!(
+                        "{} needs R or the centre words {names} of the {} plane",
+                        motion.gcode(),
+                        self.state.modal.plane.gcode()
+                    ),
+                ));
+            }
+            for (i, w) in centre_words.iter().enumerate() {
+                let Some(v) = w else { continue };
+                if !in_plane(i) {
+                    out.warnings.push(Diagnostic::warning(
+                        "arc-center-word",
+                        self.word_span(b, [Address::I, Address::J, Address::K][i]),
+                        format!(
+                            "{} is not a centre word of the {} plane and is ignored",
+                            ['I', 'J', 'K'][i],
+                            self.state.modal.plane.gcode()
+                        ),
+                    ));
+                    continue;
+                }
+                let mut off = self.mm(*v);
+                if self.mirror[i] {
+                    off = -off;
+                }
+                req.center[i] = off;
+                if let Some(code) = pos {
+                    // Spec 4.8: I/J/K are incremental amounts, changed like axis words.
+                    let dc = position::change(code, off, register, true, self.mirror[i]);
+                    req.center_change[i] = dc;
+                    out.notes.push(format!(
+                        "{}: {} {} becomes {}",
+                        gname(code),
+                        ['I', 'J', 'K'][i],
+                        self.fmt(off),
+                        self.fmt(off + dc)
+                    ));
+                }
+            }
+        }
+        let info = self.arc_geometry(b, &req)?;
+        self.state.programmed = target;
+        self.state.position.vector = pv;
+        self.state.length.vector = new_length;
+        self.length_note(
+            old_length,
+            Some(amount[2]).filter(|_| words[2].is_some()),
+            out,
+        );
+        let kind = if info.sweep > 0.0 {
+            MoveKind::ArcCcw
+        } else {
+            MoveKind::ArcCw
+        };
+        self.emit(out, start, kind, true, Some(info));
+        Ok(())
+    }
+
     /// Ends a straight move: updates the position and the vectors, notes
-    /// what the length offset did and records the move.
+    /// what the length offset did and records the move. Inlined where it is
+    /// called: the target then goes to the state from registers, not through
+    /// a copy on the stack (callgrind: 1 M of 202 M instructions).
     #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
     fn finish_line(
         &mut self,
         out: &mut Out,
@@ -624,6 +705,23 @@ impl Machine {
         };
         out.notes.push(format!("{label}: {effect}"));
     }
+}
+
+/// A motion block's move as its axis words and the offsets plan it, before
+/// it is made.
+struct Planned {
+    /// Where the move starts.
+    start: super::Mark,
+    /// The programmed end point.
+    target: Xyz,
+    /// The programmed amount of each axis word.
+    amount: Xyz,
+    /// What G45–G48 change of each axis's amount.
+    delta: Xyz,
+    /// The G45–G48 register value (mm), or 0.
+    register: f64,
+    /// The length vector at the end of the move.
+    new_length: f64,
 }
 
 /// True if a block changed the length offset mode, number or target.

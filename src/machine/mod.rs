@@ -299,7 +299,11 @@ impl Machine {
     }
 
     /// Records the motion from `from` to the current position. Line moves
-    /// that go nowhere (on both paths) are not recorded.
+    /// that go nowhere (on both paths) are not recorded. Inlined where it is
+    /// called: a straight move's `None` arc then costs its tag alone, not a
+    /// copy of the 120 bytes of an `Option<ArcInfo>` (callgrind: 2 M of 204 M
+    /// instructions for 100k blocks).
+    #[inline(always)]
     fn emit(
         &mut self,
         out: &mut Out,

@@ -48,8 +48,25 @@ impl Address {
     /// Number of addresses.
     pub const COUNT: usize = 21;
 
+    /// The address for a byte of program text, a letter of either case, if
+    /// offsetlab reads it: one load from a table (the parser's dispatch on a
+    /// word's letter).
+    #[inline]
+    pub fn from_byte(c: u8) -> Option<Address> {
+        const BY_BYTE: [Option<Address>; 256] = {
+            let mut table = [None; 256];
+            let mut c = 0;
+            while c < 256 {
+                table[c] = Address::from_letter((c as u8).to_ascii_uppercase());
+                c += 1;
+            }
+            table
+        };
+        BY_BYTE[usize::from(c)]
+    }
+
     /// The address for an upper-case letter, if offsetlab reads it.
-    pub fn from_letter(c: u8) -> Option<Address> {
+    pub const fn from_letter(c: u8) -> Option<Address> {
         use Address::*;
         Some(match c {
             b'D' => D,
@@ -180,6 +197,8 @@ pub struct Block {
     /// group, or 0: the parser classifies every G code (and refuses a
     /// second one of a group), so the machine need not do it again.
     groups: [u32; Group::COUNT],
+    /// The groups of the block's G codes, a bit each (by [`Group::index`]).
+    group_bits: u16,
 }
 
 impl Block {
@@ -189,11 +208,19 @@ impl Block {
         self.slots = [0; Address::COUNT];
         self.addresses = 0;
         self.groups = [0; Group::COUNT];
+        self.group_bits = 0;
     }
 
     /// Notes that the next word pushed is the block's G code of `group`.
     pub(super) fn set_group(&mut self, group: Group) {
         self.groups[group.index()] = self.words.len() as u32 + 1;
+        self.group_bits |= 1 << group.index();
+    }
+
+    /// True if the block has a G code of this modal group.
+    #[inline]
+    pub fn holds_group(&self, group: Group) -> bool {
+        self.group_bits & 1 << group.index() != 0
     }
 
     /// The G word of a modal group.
@@ -205,6 +232,7 @@ impl Block {
     }
 
     /// Appends a word.
+    #[inline]
     pub fn push(&mut self, word: Word) {
         self.addresses |= word.address.bit();
         let slot = &mut self.slots[word.address as usize];
@@ -237,6 +265,16 @@ impl Block {
     /// a loop over the words.
     pub fn holds(&self, address: Address) -> bool {
         self.addresses & address.bit() != 0
+    }
+
+    /// True if every word of the block has one of these addresses and every
+    /// G code is in one of these groups: a cheap test that a block needs
+    /// none of the handling of the others.
+    #[inline]
+    pub fn holds_only(&self, addresses: &[Address], groups: &[Group]) -> bool {
+        let words = addresses.iter().fold(0, |bits, a| bits | a.bit());
+        let codes = groups.iter().fold(0, |bits, g| bits | 1 << g.index());
+        self.addresses & !words == 0 && self.group_bits & !codes == 0
     }
 
     /// The G codes of the block with their words.

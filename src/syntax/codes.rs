@@ -106,8 +106,18 @@ pub fn g_group(machine: MachineKind, g: GCode) -> Result<Group, String> {
     if g.minor != 0 {
         return Err(format!("{g} is not supported by offsetlab"));
     }
+    group_of(machine, g).ok_or_else(|| unsupported_reason(machine, g))
+}
+
+/// The modal group of a G code this machine models (the parser's check of
+/// every G word: [`g_group`] says why a code has none).
+#[inline(always)]
+pub fn group_of(machine: MachineKind, g: GCode) -> Option<Group> {
+    if g.minor != 0 {
+        return None;
+    }
     let n = g.major;
-    let group = match machine {
+    match machine {
         MachineKind::Mill => match n {
             0..=3 => Some(Group::Motion),
             4 | 28 | 45..=48 | 92 => Some(Group::NonModal),
@@ -133,8 +143,7 @@ pub fn g_group(machine: MachineKind, g: GCode) -> Result<Group, String> {
             98 | 99 => Some(Group::FeedMode),
             _ => None,
         },
-    };
-    group.ok_or_else(|| unsupported_reason(machine, g))
+    }
 }
 
 fn unsupported_reason(machine: MachineKind, g: GCode) -> String {

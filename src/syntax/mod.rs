@@ -17,7 +17,7 @@ pub use block::{Address, Block, Word, WordKind};
 
 use crate::diag::{Diagnostic, Span};
 use crate::setup::{DecimalInput, MachineKind, Setup, Units};
-use codes::{Group, g_group, m_group};
+use codes::{Group, g_group, group_of, m_group};
 use lexer::{Number, NumberError};
 
 /// Most diagnostics one program reports; past this one more says so.
@@ -186,6 +186,97 @@ struct RawWord {
     end: usize,
 }
 
+/// True for the characters that end a block (spec 1).
+fn is_end(c: u8) -> bool {
+    c == b'\n' || c == b'\r' || c == b';'
+}
+
+/// Why a word is refused (spec 1); [`Blocks::refusal_message`] says it.
+#[derive(Clone, Copy, Debug)]
+enum Refusal {
+    /// A letter offsetlab does not read.
+    Address,
+    /// The number is missing, malformed or too long.
+    Number(NumberError),
+    /// A G code written otherwise than `G01` or `G05.1`.
+    GCode,
+    /// A decimal point in a word that takes a whole number.
+    DecimalPoint,
+    /// A whole number beyond its limit.
+    Integer(u64),
+    /// A lathe T code's offset number beyond the offset table.
+    LatheOffset,
+    /// A feed rate beyond 0 to 999999.
+    Feed,
+    /// A dimension beyond the units' range.
+    Dimension,
+}
+
+/// Why the words before a word in its block exclude it (spec 1);
+/// [`Blocks::clash_message`] says it.
+#[derive(Clone, Debug)]
+enum Clash {
+    /// A G code this machine does not model, and why.
+    UnknownGCode(String),
+    /// A second G code of a modal group.
+    Group(Group),
+    /// An M code of the same group as an earlier one.
+    MCode,
+    /// A second word of an address that may appear once.
+    Duplicate,
+}
+
+/// What a block's words so far exclude of the next one: a second word of an
+/// address (but G and M), a second G code of a modal group (the block keeps
+/// those), a second M code of an M group.
+/// (The block's own record of its addresses says which it holds.)
+#[derive(Default)]
+struct Checks {
+    /// The M groups seen (the first eight; the message finds their words
+    /// again: clearing a table of their indexes too took a tenth of a short
+    /// block's instructions, callgrind).
+    m_groups: [u32; 8],
+    m_count: usize,
+}
+
+impl Checks {
+    /// Adds `word` to `block` unless an earlier word excludes it.
+    #[inline(always)]
+    fn admit(&mut self, machine: MachineKind, block: &mut Block, word: Word) -> Result<(), Clash> {
+        let a = word.address;
+        match a {
+            Address::G => {
+                let code = word.gcode();
+                let Some(group) = group_of(machine, code) else {
+                    let why = g_group(machine, code).err().unwrap_or_default();
+                    return Err(Clash::UnknownGCode(why));
+                };
+                if block.holds_group(group) {
+                    return Err(Clash::Group(group));
+                }
+                block.set_group(group);
+            }
+            Address::M => {
+                let g = m_group(word.int());
+                if self.m_groups[..self.m_count].contains(&g) {
+                    return Err(Clash::MCode);
+                }
+                if self.m_count < self.m_groups.len() {
+                    self.m_groups[self.m_count] = g;
+                    self.m_count += 1;
+                }
+            }
+            _ => {
+                if block.holds(a) {
+                    return Err(Clash::Duplicate);
+                }
+            }
+        }
+        block.push(word);
+        Ok(())
+    }
+}
+
 /// Streaming parser: yields one block at a time and collects diagnostics.
 pub struct Blocks<'a> {
     text: &'a str,
@@ -201,6 +292,9 @@ pub struct Blocks<'a> {
     diagnostics: Vec<Diagnostic>,
     dropped: usize,
     raw: Vec<RawWord>,
+    /// Blocks are read in one pass where they can be (false in tests that
+    /// compare it with the two-pass reading).
+    one_pass: bool,
 }
 
 impl<'a> Blocks<'a> {
@@ -218,6 +312,7 @@ impl<'a> Blocks<'a> {
             diagnostics: Vec::new(),
             dropped: 0,
             raw: Vec::with_capacity(16),
+            one_pass: true,
         }
     }
 
@@ -362,7 +457,6 @@ impl<'a> Blocks<'a> {
     fn parse_block(&mut self, start: usize, line: u32, block: &mut Block) -> (usize, bool) {
         let bytes = self.text.as_bytes();
         let n = bytes.len();
-        let is_end = |c: u8| c == b'\n' || c == b'\r' || c == b';';
         let mut i = lexer::skip_blanks(bytes, start);
         if i >= n || is_end(bytes[i]) {
             return (i, false);
@@ -381,11 +475,9 @@ impl<'a> Blocks<'a> {
             return (i, false);
         }
         let first = i;
-        let mut last = i;
         block.skip = false;
         block.clear();
         block.error = false;
-        self.raw.clear();
 
         if bytes[i] == b'/' {
             block.skip = true;
@@ -394,10 +486,124 @@ impl<'a> Blocks<'a> {
             if i < n && (b'1'..=b'9').contains(&bytes[i]) {
                 i += 1;
             }
-            last = i;
         }
         // A skipped block's G20/G21 do not count when block skip is on.
         let counts = !(block.skip && self.options.block_skip);
+
+        // Nearly every block reads in one pass; the rest is read again, from
+        // the context the block started with, the way the two-pass reading
+        // (its specification) reads it.
+        let context = (self.units, self.in_cycle);
+        let read = match self.one_pass {
+            true => self.read_one_pass(i, line, counts, block),
+            false => None,
+        };
+        let (end, mut last) = read.unwrap_or_else(|| {
+            (self.units, self.in_cycle) = context;
+            block.clear();
+            self.read_two_pass(i, line, counts, block)
+        });
+        while last > first && matches!(bytes[last - 1], b' ' | b'\t') {
+            last -= 1;
+        }
+        block.span = Span::new(first, last, line);
+        if self.tape == Tape::Before {
+            self.tape = Tape::Reading;
+        }
+        (end, !block.words.is_empty() || block.error)
+    }
+
+    /// Reads the words of a block from `i` (after any `/`) in one pass,
+    /// typing each word as it is lexed with the G20/G21 and canned-cycle
+    /// context so far. Returns the end of the block and the end of its last
+    /// word or comment, or None if the block must be read in two passes
+    /// ([`Blocks::read_two_pass`]) instead: when it has anything to report
+    /// (the two-pass reading reports the lexing errors first, then each
+    /// word's, and the cap of [`MAX_DIAGNOSTICS`] keeps the first ones), or
+    /// when a G code changes how a word already read is read. Nothing is
+    /// reported here, so there is nothing to undo but the words pushed and
+    /// the context, which the caller restores.
+    fn read_one_pass(
+        &mut self,
+        mut i: usize,
+        line: u32,
+        counts: bool,
+        block: &mut Block,
+    ) -> Option<(usize, usize)> {
+        let bytes = self.text.as_bytes();
+        let n = bytes.len();
+        let mut last = i;
+        let mut checks = Checks::default();
+        // A G20/G21 after a dimension word, or a cycle code changing the
+        // cycle state after a K word, changes how that word is read.
+        let mut read_dimension = false;
+        let mut read_k = false;
+        loop {
+            i = lexer::skip_blanks(bytes, i);
+            let Some(&c) = bytes.get(i) else { break };
+            let Some(address) = Address::from_byte(c) else {
+                match c {
+                    b'\n' | b'\r' | b';' => break,
+                    b'(' => {
+                        let (after, closed) = lexer::comment(&bytes[i..])?;
+                        if !closed {
+                            return None;
+                        }
+                        i = n - after.len();
+                        last = i;
+                        continue;
+                    }
+                    // A letter offsetlab does not read, a character outside
+                    // a word: errors.
+                    _ => return None,
+                }
+            };
+            let (word_end, next, number) = lexer::number(bytes, i + 1);
+            let number = number.ok()?;
+            if address == Address::G && counts {
+                let before = (self.units, self.in_cycle);
+                self.note_context(number);
+                if (read_dimension && self.units != before.0)
+                    || (read_k && self.in_cycle != before.1)
+                {
+                    return None;
+                }
+            }
+            let span = Span::new(i, word_end, line);
+            let (word, kind) = self.read_word(address, number, span).ok()?;
+            if kind == WordKind::Dimension {
+                if self.integer_warning_due(number) {
+                    return None;
+                }
+                read_dimension = true;
+            }
+            read_k |= address == Address::K;
+            checks.admit(self.options.machine, block, word).ok()?;
+            last = word_end;
+            i = next;
+        }
+        Some((i, last))
+    }
+
+    /// Reads the words of a block from `i` (after any `/`) in two passes:
+    /// lexes the whole block (reporting comment and character errors, and
+    /// noting the G codes that change how numbers are read), then types
+    /// every word with the block's context and checks it against the words
+    /// before it, reporting what is wrong with each. This is the reading of
+    /// spec 1 as written; [`Blocks::read_one_pass`] gives the same blocks
+    /// and diagnostics faster for the blocks it reads. Returns what
+    /// [`Blocks::read_one_pass`] returns.
+    fn read_two_pass(
+        &mut self,
+        mut i: usize,
+        line: u32,
+        counts: bool,
+        block: &mut Block,
+    ) -> (usize, usize) {
+        let bytes = self.text.as_bytes();
+        let n = bytes.len();
+        let mut last = i;
+        self.raw.clear();
 
         // Lex: comments, words, and anything else as an error. Words are
         // typed once the whole block is lexed, because a G code anywhere in
@@ -410,8 +616,7 @@ impl<'a> Blocks<'a> {
             }
             let c = bytes[i];
             if c.is_ascii_alphabetic() {
-                let (after, number) = lexer::number(&bytes[i + 1..]);
-                let word_end = n - after.len();
+                let (word_end, _, number) = lexer::number(bytes, i + 1);
                 let letter = c.to_ascii_uppercase();
                 if letter == b'G'
                     && counts
@@ -457,83 +662,22 @@ impl<'a> Blocks<'a> {
             }
             last = i;
         }
-        while last > first && matches!(bytes[last - 1], b' ' | b'\t') {
-            last -= 1;
-        }
-        block.span = Span::new(first, last, line);
         let end = i;
 
         let raw = std::mem::take(&mut self.raw);
         // Type every word.
-        let mut seen = 0u32;
-        let mut m_groups: [(u32, usize); 8] = [(0, 0); 8];
-        let mut m_count = 0;
+        let mut checks = Checks::default();
         for w in &raw {
-            if let Some(word) = self.type_word(w, line, block) {
-                let a = word.address;
-                let idx = block.words.len();
-                match a {
-                    Address::G => match g_group(self.options.machine, word.gcode()) {
-                        Ok(group) => {
-                            if let Some(other) = block.group_word(group) {
-                                let first = other.gcode();
-                                let msg = format!(
-                                    "{first} and {} are both in group {}; a block may hold one of them{}",
-                                    word.gcode(),
-                                    group.label(),
-                                    conflict_hint(self.options.machine, group)
-                                );
-                                self.error_word(block, "modal-conflict", &word, &msg);
-                                continue;
-                            }
-                            block.set_group(group);
-                        }
-                        Err(why) => {
-                            self.error_word(block, "unsupported-g-code", &word, &why);
-                            continue;
-                        }
-                    },
-                    Address::M => {
-                        let g = m_group(word.int());
-                        if let Some(&(_, other)) =
-                            m_groups[..m_count].iter().find(|(gr, _)| *gr == g)
-                        {
-                            let msg = format!(
-                                "M{:02} and M{:02} exclude each other; a block may hold one of them",
-                                block.words[other].int(),
-                                word.int()
-                            );
-                            self.error_word(block, "modal-conflict", &word, &msg);
-                            continue;
-                        }
-                        if m_count < m_groups.len() {
-                            m_groups[m_count] = (g, idx);
-                            m_count += 1;
-                        }
-                    }
-                    _ => {
-                        if seen & a.bit() != 0 {
-                            let first = block.get(a).map(|f| f.span).unwrap_or(word.span);
-                            let msg = format!(
-                                "{} appears twice in this block ({} and {}); each address may appear once",
-                                a.letter(),
-                                &self.text[first.start as usize..first.end as usize],
-                                &self.text[word.span.start as usize..word.span.end as usize],
-                            );
-                            self.error_word(block, "duplicate-address", &word, &msg);
-                            continue;
-                        }
-                        seen |= a.bit();
-                    }
-                }
-                block.push(word);
+            let Some(word) = self.type_word(w, line, block) else {
+                continue;
+            };
+            if let Err(clash) = checks.admit(self.options.machine, block, word) {
+                let (code, msg) = self.clash_message(block, &word, clash);
+                self.error_word(block, code, &word, &msg);
             }
         }
         self.raw = raw;
-        if self.tape == Tape::Before {
-            self.tape = Tape::Reading;
-        }
-        (end, !block.words.is_empty() || block.error)
+        (end, last)
     }
 
     /// Tracks the G codes that change how numbers are read: G20/G21 (least
@@ -542,49 +686,27 @@ impl<'a> Blocks<'a> {
         if n.frac_digits != 0 || n.negative {
             return;
         }
+        // G00–G03 first: nearly every block has one.
         match (self.options.machine, n.mantissa) {
+            (MachineKind::Mill, 0..=3 | 80) => self.in_cycle = false,
             (_, 20) => self.units = Units::Inch,
             (_, 21) => self.units = Units::Mm,
             (MachineKind::Mill, 73 | 74 | 76 | 81..=89) => self.in_cycle = true,
-            (MachineKind::Mill, 0..=3 | 80) => self.in_cycle = false,
             _ => {}
         }
     }
 
-    /// Types one lexed word, reporting what is wrong with it.
-    fn type_word(&mut self, w: &RawWord, line: u32, block: &mut Block) -> Option<Word> {
-        let span = Span::new(w.start, w.end, line);
-        // The word as written, sliced only for a message.
-        let all = self.text;
-        let text = || &all[w.start..w.end];
-        let letter = w.letter as char;
-        let Some(address) = Address::from_letter(w.letter) else {
-            let msg = match letter {
-                'A' | 'B' | 'C' => format!("{letter}: rotary axes are not modelled by offsetlab"),
-                'E' => "E (thread lead) is not supported".to_string(),
-                _ => format!("{letter} is not an address offsetlab reads"),
-            };
-            self.error_span(block, "unsupported-address", span, &msg);
-            return None;
-        };
-        let n = match w.number {
-            Ok(n) => n,
-            Err(NumberError::Missing) => {
-                let msg = format!("{letter} has no number: an address letter needs a value");
-                self.error_span(block, "missing-number", span, &msg);
-                return None;
-            }
-            Err(NumberError::Malformed) => {
-                let msg = format!("{}: `{}` is not a number", text(), text()[1..].trim());
-                self.error_span(block, "malformed-number", span, &msg);
-                return None;
-            }
-            Err(NumberError::TooLong) => {
-                let msg = format!("{}: too many digits for a control to read", text());
-                self.error_span(block, "out-of-range", span, &msg);
-                return None;
-            }
-        };
+    /// Types a word of an address offsetlab reads with the context the
+    /// parser has now (units, canned cycle): the word and how its number was
+    /// read, or why it is refused (spec 1). Both readings of a block type
+    /// words with this.
+    #[inline(always)]
+    fn read_word(
+        &self,
+        address: Address,
+        n: Number,
+        span: Span,
+    ) -> Result<(Word, WordKind), Refusal> {
         let kind = if address == Address::K && self.in_cycle {
             WordKind::Integer
         } else {
@@ -593,95 +715,219 @@ impl<'a> Blocks<'a> {
         let value = match kind {
             WordKind::Integer if address == Address::G => {
                 if n.negative || n.frac_digits > 1 || (n.point && n.frac_digits == 0) {
-                    let msg = format!("{}: a G code is a number such as G01 or G05.1", text());
-                    self.error_span(block, "malformed-number", span, &msg);
-                    return None;
+                    return Err(Refusal::GCode);
                 }
                 n.value()
             }
             WordKind::Integer => {
                 if n.point {
-                    let msg = format!(
-                        "{}: {letter} takes a whole number, written without a decimal point",
-                        text()
-                    );
-                    self.error_span(block, "decimal-point", span, &msg);
-                    return None;
+                    return Err(Refusal::DecimalPoint);
                 }
                 let limit = integer_limit(self.options, address, self.in_cycle);
                 if n.negative && n.mantissa != 0 || n.mantissa > limit {
-                    let msg = integer_range_message(text(), letter, address, limit, self.options);
-                    self.error_span(block, "out-of-range", span, &msg);
-                    return None;
+                    return Err(Refusal::Integer(limit));
                 }
                 if address == Address::T
                     && self.options.machine == MachineKind::Lathe
                     && n.mantissa % 100 > u64::from(self.options.table_size)
                 {
-                    let msg = format!(
-                        "{}: offset number {:02} is beyond the offset table (00 to {:02})",
-                        text(),
-                        n.mantissa % 100,
-                        self.options.table_size
-                    );
-                    self.error_span(block, "out-of-range", span, &msg);
-                    return None;
+                    return Err(Refusal::LatheOffset);
                 }
-                n.mantissa as f64
+                n.mantissa_f64()
             }
             WordKind::Feed => {
                 let v = n.value();
                 if !(0.0..=999_999.0).contains(&v) {
-                    let msg = format!("{}: a feed rate is 0 to 999999", text());
-                    self.error_span(block, "out-of-range", span, &msg);
-                    return None;
+                    return Err(Refusal::Feed);
                 }
                 v
             }
             WordKind::Dimension => {
-                let units = self.units;
-                let v = if n.point || self.options.decimal_input == DecimalInput::Calculator {
-                    n.value()
-                } else {
-                    n.scaled(units.decimals() as u8)
-                };
-                let max = units.max_dimension();
-                if v.abs() > max + 1e-9 {
-                    let msg = format!(
-                        "{} is outside ±{max:.*} {} (spec 1)",
-                        text(),
-                        units.decimals(),
-                        units.as_str()
-                    );
-                    self.error_span(block, "out-of-range", span, &msg);
-                    return None;
-                }
-                if !n.point
-                    && n.mantissa != 0
-                    && self.options.decimal_input == DecimalInput::Increment
-                    && !self.warned_integer
-                {
-                    self.warned_integer = true;
-                    let d = units.decimals();
-                    let text = text();
-                    let msg = format!(
-                        "{text} has no decimal point: read as {v:.d$} {u} (least input increment {inc:.d$} {u}); \
-                         write {letter}{v:.d$} for {v:.d$} {u}, or {text}. for {whole} {u} (setting decimal_input)",
-                        u = units.as_str(),
-                        inc = units.increment(),
-                        whole = n.value(),
-                    );
-                    self.report(Diagnostic::warning("integer-dimension", span, msg));
+                let v = self.dimension(n);
+                if v.abs() > self.units.max_dimension() + 1e-9 {
+                    return Err(Refusal::Dimension);
                 }
                 v
             }
         };
-        Some(Word {
+        let word = Word {
             address,
             value,
             point: n.point,
             span,
-        })
+        };
+        Ok((word, kind))
+    }
+
+    /// The value of a dimension word in the current units (decimal input,
+    /// spec 1).
+    fn dimension(&self, n: Number) -> f64 {
+        if n.point || self.options.decimal_input == DecimalInput::Calculator {
+            n.value()
+        } else {
+            n.scaled(self.units.decimals() as u8)
+        }
+    }
+
+    /// True if this dimension word's number is read in least increments and
+    /// the program has not been warned about it yet (one warning a program).
+    fn integer_warning_due(&self, n: Number) -> bool {
+        !n.point
+            && n.mantissa != 0
+            && self.options.decimal_input == DecimalInput::Increment
+            && !self.warned_integer
+    }
+
+    /// Types one lexed word, reporting what is wrong with it.
+    fn type_word(&mut self, w: &RawWord, line: u32, block: &mut Block) -> Option<Word> {
+        let span = Span::new(w.start, w.end, line);
+        let read = Address::from_letter(w.letter)
+            .ok_or(Refusal::Address)
+            .and_then(|a| Ok((a, w.number.map_err(Refusal::Number)?)))
+            .and_then(|(a, n)| self.read_word(a, n, span));
+        match read {
+            Ok((word, kind)) => {
+                if kind == WordKind::Dimension
+                    && let Ok(n) = w.number
+                    && self.integer_warning_due(n)
+                {
+                    self.warned_integer = true;
+                    let msg = self.integer_warning(w, n);
+                    self.report(Diagnostic::warning("integer-dimension", span, msg));
+                }
+                Some(word)
+            }
+            Err(refusal) => {
+                let (code, msg) = self.refusal_message(w, refusal);
+                self.error_span(block, code, span, &msg);
+                None
+            }
+        }
+    }
+
+    /// The `integer-dimension` warning's sentence.
+    fn integer_warning(&self, w: &RawWord, n: Number) -> String {
+        let units = self.units;
+        let d = units.decimals();
+        let v = self.dimension(n);
+        let letter = w.letter as char;
+        let text = &self.text[w.start..w.end];
+        format!(
+            "{text} has no decimal point: read as {v:.d$} {u} (least input increment {inc:.d$} {u}); \
+             write {letter}{v:.d$} for {v:.d$} {u}, or {text}. for {whole} {u} (setting decimal_input)",
+            u = units.as_str(),
+            inc = units.increment(),
+            whole = n.value(),
+        )
+    }
+
+    /// The diagnostic code and sentence of a refused word.
+    fn refusal_message(&self, w: &RawWord, refusal: Refusal) -> (&'static str, String) {
+        // The word as written.
+        let text = &self.text[w.start..w.end];
+        let letter = w.letter as char;
+        match refusal {
+            Refusal::Address => {
+                let msg = match letter {
+                    'A' | 'B' | 'C' => {
+                        format!("{letter}: rotary axes are not modelled by offsetlab")
+                    }
+                    'E' => "E (thread lead) is not supported".to_string(),
+                    _ => format!("{letter} is not an address offsetlab reads"),
+                };
+                ("unsupported-address", msg)
+            }
+            Refusal::Number(NumberError::Missing) => (
+                "missing-number",
+                format!("{letter} has no number: an address letter needs a value"),
+            ),
+            Refusal::Number(NumberError::Malformed) => (
+                "malformed-number",
+                format!("{text}: `{}` is not a number", text[1..].trim()),
+            ),
+            Refusal::Number(NumberError::TooLong) => (
+                "out-of-range",
+                format!("{text}: too many digits for a control to read"),
+            ),
+            Refusal::GCode => (
+                "malformed-number",
+                format!("{text}: a G code is a number such as G01 or G05.1"),
+            ),
+            Refusal::DecimalPoint => (
+                "decimal-point",
+                format!("{text}: {letter} takes a whole number, written without a decimal point"),
+            ),
+            Refusal::Integer(limit) => {
+                let address = Address::from_letter(w.letter).unwrap_or(Address::N);
+                let msg = integer_range_message(text, letter, address, limit, self.options);
+                ("out-of-range", msg)
+            }
+            Refusal::LatheOffset => {
+                let offset = w.number.map_or(0, |n| n.mantissa % 100);
+                let msg = format!(
+                    "{text}: offset number {offset:02} is beyond the offset table (00 to {:02})",
+                    self.options.table_size
+                );
+                ("out-of-range", msg)
+            }
+            Refusal::Feed => (
+                "out-of-range",
+                format!("{text}: a feed rate is 0 to 999999"),
+            ),
+            Refusal::Dimension => {
+                let units = self.units;
+                let msg = format!(
+                    "{text} is outside ±{max:.*} {} (spec 1)",
+                    units.decimals(),
+                    units.as_str(),
+                    max = units.max_dimension(),
+                );
+                ("out-of-range", msg)
+            }
+        }
+    }
+
+    /// The diagnostic code and sentence of a word the block's earlier words
+    /// exclude.
+    fn clash_message(&self, block: &Block, word: &Word, clash: Clash) -> (&'static str, String) {
+        match clash {
+            Clash::UnknownGCode(why) => ("unsupported-g-code", why),
+            Clash::Group(group) => {
+                let first = block.group_word(group).map_or(word.gcode(), Word::gcode);
+                let msg = format!(
+                    "{first} and {} are both in group {}; a block may hold one of them{}",
+                    word.gcode(),
+                    group.label(),
+                    conflict_hint(self.options.machine, group)
+                );
+                ("modal-conflict", msg)
+            }
+            Clash::MCode => {
+                // The block holds one M code of the group: the earlier one.
+                let group = m_group(word.int());
+                let earlier = block
+                    .mcodes()
+                    .map(|(m, _)| m)
+                    .find(|m| m_group(*m) == group)
+                    .unwrap_or_default();
+                let msg = format!(
+                    "M{earlier:02} and M{:02} exclude each other; a block may hold one of them",
+                    word.int()
+                );
+                ("modal-conflict", msg)
+            }
+            Clash::Duplicate => {
+                let a = word.address;
+                let first = block.get(a).map_or(word.span, |f| f.span);
+                let msg = format!(
+                    "{} appears twice in this block ({} and {}); each address may appear once",
+                    a.letter(),
+                    &self.text[first.start as usize..first.end as usize],
+                    &self.text[word.span.start as usize..word.span.end as usize],
+                );
+                ("duplicate-address", msg)
+            }
+        }
     }
 
     fn error_span(&mut self, block: &mut Block, code: &'static str, span: Span, msg: &str) {
