@@ -165,7 +165,18 @@ impl crate::run::Observer for PathBuilder<'_> {
 
     fn on_resume(&mut self, prefix_moves: usize) {
         if let Some(earlier) = self.earlier {
-            self.path.append_moves(earlier, 0..prefix_moves, 0, 0);
+            // An edit's path is about as long as the earlier one: room for
+            // it at once, instead of growing (copying) the arrays.
+            let p = &mut self.path;
+            p.actual.reserve(earlier.actual.len());
+            p.programmed.reserve(earlier.programmed.len());
+            p.starts.reserve(earlier.starts.len());
+            p.kinds.reserve(earlier.kinds.len());
+            p.blocks.reserve(earlier.blocks.len());
+            p.lines.reserve(earlier.lines.len());
+            p.arcs.reserve(earlier.arcs.len());
+            p.arc_moves.reserve(earlier.arc_moves.len());
+            p.append_moves(earlier, 0..prefix_moves, 0, 0);
         }
     }
 }
