@@ -4,7 +4,7 @@
 // has got while the page stays responsive, the result is drawn and
 // stepping works (block reports made again from checkpoints); a program
 // that runs in under 30 ms runs again at once on every keystroke, without
-// the 150 ms typing pause a slower one waits for (www/main.js).
+// the 150 ms typing pause a slower one waits for (www/modules/runner.js).
 
 import assert from 'node:assert/strict';
 import { mkdtempSync, writeFileSync } from 'node:fs';
