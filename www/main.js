@@ -68,6 +68,8 @@ const editor = createEditor($('editor'), {
   label: EMBED ? 'Program (G-code, read-only)' : 'Program (G-code)',
   readOnly: EMBED,
   onChange: () => {
+    // A document being loaded is run and saved by loadDocument.
+    if (work.loading) return;
     edited();
     scheduleRun();
     persist();

@@ -56,7 +56,7 @@ export function loadDocument(w) {
   } finally {
     work.loading = false;
   }
-  // The editor's change asked for a run of the text just sent.
+  // An edit waiting for its run is replaced by the run just sent.
   cancelScheduledRun();
   renderOffsets({ force: true });
   renderSettings();

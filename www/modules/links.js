@@ -95,7 +95,7 @@ export async function openLink(fragment, { initial = false } = {}) {
  */
 async function currentFragment() {
   if (isParked()) return null; // not run: the worker has no document to make the link of
-  if (editor.view.state.doc.length > ADDRESS_MAX_PROGRAM) return '';
+  if (editor.length() > ADDRESS_MAX_PROGRAM) return '';
   flushRun();
   const answer = await call('document', { base, forms: ['link'] });
   if (answer.setupFailed) return null;

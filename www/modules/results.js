@@ -76,7 +76,7 @@ export function showViewState(m) {
   editor.showCurrent(currentBlock ? currentBlock.line : null, m.cause !== 'line');
   if (['view', 'step', 'pick', 'line'].includes(m.cause)) persist();
   // A run may move the current block (a shorter program): the autosave follows.
-  else if (m.cause === 'run' && work.viewKnown) saveWork(currentWork());
+  else if (m.cause === 'run' && work.viewKnown) saveWork(currentWork);
 }
 
 /** The worker's `drawn`: which run the canvas shows and how long drawing it took (tests and the benchmark read them). */

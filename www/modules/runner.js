@@ -11,8 +11,10 @@ import { setupDocument } from './work.js';
 /** Re-run this long after the last keystroke. */
 const DEBOUNCE_MS = 150;
 // A program that ran in under this many milliseconds runs again at once on
-// an edit (typing in a small or mid-sized program redraws in the same
-// frame); a slower one waits for a pause in the typing (DEBOUNCE_MS).
+// an edit — the request goes out in the keystroke's own task, before the
+// editor draws it, so the worker runs while this thread updates the editor
+// (typing in a small or mid-sized program redraws in the same frame); a
+// slower one waits for a pause in the typing (DEBOUNCE_MS).
 const QUICK_RUN_MS = 30;
 /** Calls that need the session's run: refused while the shown program is not run. */
 const NEEDS_RUN = new Set(['document', 'export']);
@@ -82,12 +84,16 @@ export function requestRun(text = program()) {
   pendingView = null;
 }
 
-/** An edit: runs soon. */
+/** An edit: runs now if the last run was quick, else after a pause in the typing. */
 export function scheduleRun() {
   clearTimeout(timer);
+  if (lastRunMs < QUICK_RUN_MS) {
+    requestRun();
+    return;
+  }
   // Tests (and anyone curious) can tell an edit waiting for its run.
   document.body.dataset.pending = 'true';
-  timer = setTimeout(requestRun, lastRunMs < QUICK_RUN_MS ? 0 : DEBOUNCE_MS);
+  timer = setTimeout(requestRun, DEBOUNCE_MS);
 }
 
 /** Sends an edit still waiting for its run, so a call that follows sees it. */

@@ -70,9 +70,9 @@ export function currentWork() {
   };
 }
 
-/** Saves the work (throttled) and lets the address bar follow. */
+/** Saves the work (throttled; it is made when saved) and lets the address bar follow. */
 export function persist() {
-  saveWork(currentWork());
+  saveWork(currentWork);
   addressChanged();
 }
 

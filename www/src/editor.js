@@ -114,13 +114,31 @@ const theme = EditorView.theme({
 
 /**
  * Creates the editor in `parent` (`readOnly`: no edits by the user).
- * `onChange()` follows every edit (`getText()` has the text);
- * `onCursorLine(line)` is called when the user moves the cursor (click or
- * arrow keys) without editing.
+ * `onChange()` follows every edit (`getText()` has the new text): it is
+ * called before the editor updates its view, so that the page can send the
+ * program to the worker at once and the worker runs it while this thread
+ * draws the edit (issue 6, target 4: the view update is most of the time
+ * of a keystroke). `onCursorLine(line)` is called when the user moves the
+ * cursor (click or arrow keys) without editing.
  */
 export function createEditor(parent, { doc = '', label = 'Program', readOnly = false, onChange, onCursorLine } = {}) {
+  // The document of the edit being dispatched, before the view has it.
+  let incoming = null;
   const view = new EditorView({
     parent,
+    dispatchTransactions(trs, v) {
+      if (onChange && trs.some((tr) => tr.docChanged)) {
+        incoming = trs[trs.length - 1].newDoc;
+        try {
+          onChange();
+        } finally {
+          incoming = null;
+          v.update(trs);
+        }
+      } else {
+        v.update(trs);
+      }
+    },
     state: EditorState.create({
       doc,
       extensions: [
@@ -147,9 +165,7 @@ export function createEditor(parent, { doc = '', label = 'Program', readOnly = f
           autocorrect: 'off',
         }),
         EditorView.updateListener.of((update) => {
-          if (update.docChanged) {
-            onChange?.();
-          } else if (update.selectionSet && update.transactions.some((t) => t.isUserEvent('select'))) {
+          if (!update.docChanged && update.selectionSet && update.transactions.some((t) => t.isUserEvent('select'))) {
             const head = update.state.selection.main.head;
             onCursorLine?.(update.state.doc.lineAt(head).number);
           }
@@ -164,15 +180,22 @@ export function createEditor(parent, { doc = '', label = 'Program', readOnly = f
   let textOf = null;
   let text = '';
   let given = null;
+  const currentDoc = () => incoming ?? view.state.doc;
+  // Diagnostics and the current line shown, so that a run that changes
+  // neither costs no editor update (each is one over the whole document).
+  let marked = false;
   return {
     view,
     getText() {
-      if (view.state.doc !== textOf) {
-        textOf = view.state.doc;
+      const d = currentDoc();
+      if (d !== textOf) {
+        textOf = d;
         text = given !== null && given.length === textOf.length ? given : textOf.toString();
       }
       return text;
     },
+    /** The length of the text (without making it). */
+    length: () => currentDoc().length,
     /** The selected text (for tests and the console). */
     selection: () => view.state.sliceDoc(view.state.selection.main.from, view.state.selection.main.to),
     /** Replaces the whole text as one undoable edit. */
@@ -183,6 +206,10 @@ export function createEditor(parent, { doc = '', label = 'Program', readOnly = f
       given = value.includes('\r') ? null : value;
       try {
         view.dispatch({ changes: { from: 0, to: view.state.doc.length, insert: value } });
+        if (given !== null) {
+          textOf = view.state.doc;
+          text = given;
+        }
       } finally {
         given = null;
       }
@@ -194,6 +221,9 @@ export function createEditor(parent, { doc = '', label = 'Program', readOnly = f
     setDiagnostics(list) {
       const doc = view.state.doc;
       const inDoc = list.filter((d) => d.line > 0 && d.line <= doc.lines);
+      // None before and none now: nothing to change (marks follow the edits).
+      if (inDoc.length === 0 && !marked) return;
+      marked = inDoc.length > 0;
       const at = columnOffsets(doc);
       const marks = inDoc.map((d) => {
         const from = at(d.line, d.column);
@@ -214,6 +244,8 @@ export function createEditor(parent, { doc = '', label = 'Program', readOnly = f
     },
     /** Highlights 1-based `line` as the current block (null: none). */
     showCurrent(line, scroll = true) {
+      // No current line before and none now: nothing to change.
+      if ((line === null || line < 1) && view.state.field(currentLine).size === 0) return;
       const effects = [setCurrent.of(line)];
       if (scroll && line >= 1 && line <= view.state.doc.lines) {
         effects.push(EditorView.scrollIntoView(view.state.doc.line(line).from, { y: 'nearest' }));
