@@ -6,7 +6,7 @@
 // the document (modules/address.js) with its compact link; `embed=1` shows
 // the drawing, the step controls and a read-only editor only.
 
-import { initAddress, writtenFragment } from './address.js';
+import { initAddress, ownFragment, writtenFragment } from './address.js';
 import { showBanner } from './banner.js';
 import {
   loadDocument, openWork, sameDocument, viewOf, workOf,
@@ -120,7 +120,7 @@ export function initLinks(theEditor) {
  */
 export async function openFirst(saved) {
   const fragment = location.hash.slice(1);
-  const own = fragment && fragment === writtenFragment() && saved;
+  const own = ownFragment(fragment) && saved;
   if (fragment && !own) await openLink(fragment, { initial: true });
   else requestRun();
   if (!EMBED) initAddress(currentFragment);
