@@ -99,6 +99,37 @@ describe('large programs', () => {
     });
   });
 
+  test('a long program with CR LF line breaks is taken by the editor in steps: its lines, its marks, then typing as usual', { timeout: 120_000 }, async () => {
+    await withPage(async (page) => {
+      // 100,000 lines, 3.6 MB: past the 2 MiB the editor takes in one go;
+      // a malformed number on line 70,001.
+      const lines = ['G90 G21 G17 G00 X0 Y0', 'G01 F1000.'];
+      for (let i = 0; lines.length < 99_999; i += 1) {
+        lines.push(lines.length === 70_000 ? 'G01 X1.2.3 Y4.' : `G01 X${(i % 200) * 0.5} Y${Math.floor(i / 200) % 100}.`);
+      }
+      lines.push('M30');
+      const file = join(tmp, 'crlf.nc');
+      writeFileSync(file, `${lines.join('\r\n')}\r\n`);
+      await page.locator('#open-file').setInputFiles(file);
+      await page.waitForFunction(() => document.body.dataset.opened === 'crlf.nc');
+      await waitForRun(page);
+      await page.waitForFunction(() => !document.getElementById('editor').hasAttribute('aria-busy'), null, { timeout: 60_000 });
+      // The editor's text: the file's lines with LF line breaks, as CodeMirror reads them.
+      assert.equal(await page.evaluate(() => window.offsetlab.program()), `${lines.join('\n')}\n`);
+      assert.equal(await page.locator('.cm-content').getAttribute('aria-label'), 'Program (G-code)');
+      assert.match(await page.locator('#summary').textContent(), /^\d+ blocks · \d+ moves · 1 error/);
+      // The diagnostic jumps to its word on line 70,001 of the editor.
+      await page.locator('#diagnostics li.error').first().click();
+      assert.equal(await page.evaluate(() => window.offsetlab.selection()), 'X1.2.3');
+      await page.waitForFunction(() => document.querySelector('.cm-lintRange-error') !== null);
+      // Typing goes on as usual once the text is in.
+      await page.keyboard.press('End');
+      await page.keyboard.type(' Z1.');
+      await waitForRun(page);
+      assert.ok((await page.evaluate(() => window.offsetlab.program())).includes('\nG01 X1.2.3 Y4. Z1.\n'));
+    });
+  });
+
   test('a program that runs quickly runs again at once on every keystroke, without the typing pause', async () => {
     await withPage(async (page) => {
       // The default example runs in a few milliseconds: an edit is sent

@@ -46,13 +46,10 @@ export function loadDocument(w) {
     work.setup = cloneSetup(w.setup);
     work.setupText = typeof w.setupText === 'string' ? w.setupText : null;
     setPendingView(viewOf(w));
-    // The run first: the worker runs a large program while this thread
-    // gives it to the editor (half a second for 31 MB) — unless the editor
-    // will change its line breaks (CR LF, CR): then it runs what it shows.
-    const asGiven = !w.program.includes('\r');
-    if (asGiven) requestRun(w.program);
-    editor.setText(w.program);
-    if (!asGiven) requestRun();
+    // The editor takes a long text in steps (a few tenths of a second for
+    // 31 MB) while the worker runs it.
+    const { text } = editor.setText(w.program);
+    requestRun(text);
   } finally {
     work.loading = false;
   }

@@ -4,7 +4,9 @@
 // highlighted while stepping. Bundled by esbuild into www/dist/editor.js
 // (see the Makefile); the page imports only what this module exports.
 
-import { EditorState, StateEffect, StateField } from '@codemirror/state';
+import {
+  Annotation, EditorState, StateEffect, StateField,
+} from '@codemirror/state';
 import {
   Decoration, EditorView, WidgetType, drawSelection, highlightActiveLineGutter,
   highlightSpecialChars, keymap, lineNumbers,
@@ -13,9 +15,15 @@ import { defaultKeymap, history, historyKeymap, redo, undo } from '@codemirror/c
 import { syntaxHighlighting } from '@codemirror/language';
 import { lintGutter, setDiagnostics } from '@codemirror/lint';
 import { gcodeHighlight, gcodeLanguage } from './gcode.js';
+import { buildDocument } from './text.js';
 
 const setCurrent = StateEffect.define();
 const setMessages = StateEffect.define();
+/** The page's own replacement of the whole text (setText): not an edit of the user's. */
+const loaded = Annotation.define();
+
+/** Texts longer than this (UTF-16 units) are taken in steps (text.js). */
+const LARGE_TEXT = 2 * 1024 * 1024;
 
 /** The line of the current block (stepping), as a line decoration. */
 const currentLine = StateField.define({
@@ -124,10 +132,15 @@ const theme = EditorView.theme({
 export function createEditor(parent, { doc = '', label = 'Program', readOnly = false, onChange, onCursorLine } = {}) {
   // The document of the edit being dispatched, before the view has it.
   let incoming = null;
+  // A long text being taken in steps: { text } (see setText).
+  let pending = null;
   const view = new EditorView({
     parent,
     dispatchTransactions(trs, v) {
-      if (onChange && trs.some((tr) => tr.docChanged)) {
+      const edit = trs.some((tr) => tr.docChanged && !tr.annotation(loaded));
+      // No edits while a new text is on its way: it would replace them.
+      if (edit && pending) return;
+      if (edit && onChange) {
         incoming = trs[trs.length - 1].newDoc;
         try {
           onChange();
@@ -179,87 +192,145 @@ export function createEditor(parent, { doc = '', label = 'Program', readOnly = f
   // takes a tenth of a second each time.
   let textOf = null;
   let text = '';
-  let given = null;
   const currentDoc = () => incoming ?? view.state.doc;
-  // Diagnostics and the current line shown, so that a run that changes
-  // neither costs no editor update (each is one over the whole document).
+  // Diagnostics shown, so that a run without any costs no editor update
+  // (each is one over the whole document).
   let marked = false;
-  return {
+  // What the page asked to show while a text is on its way, shown with it.
+  let later = [];
+  let serial = 0;
+
+  /** The whole document replaced by `insert` (its text is `value`): one undoable edit. */
+  function replaceDocument(insert, value) {
+    view.dispatch({
+      changes: { from: 0, to: view.state.doc.length, insert },
+      annotations: loaded.of(true),
+      filter: false,
+    });
+    textOf = view.state.doc;
+    text = value;
+    const todo = later;
+    later = [];
+    for (const f of todo) f();
+  }
+
+  /** Runs `f` now, or once the text on its way is shown. */
+  const whenShown = (key, f) => {
+    if (!pending) {
+      f();
+      return;
+    }
+    later = later.filter((g) => g.key !== key);
+    f.key = key;
+    later.push(f);
+  };
+
+  const api = {
     view,
     getText() {
+      if (pending) return pending.text;
       const d = currentDoc();
       if (d !== textOf) {
         textOf = d;
-        text = given !== null && given.length === textOf.length ? given : textOf.toString();
+        text = textOf.toString();
       }
       return text;
     },
     /** The length of the text (without making it). */
-    length: () => currentDoc().length,
+    length: () => (pending ? pending.text.length : currentDoc().length),
     /** The selected text (for tests and the console). */
     selection: () => view.state.sliceDoc(view.state.selection.main.from, view.state.selection.main.to),
-    /** Replaces the whole text as one undoable edit. */
+    /**
+     * Replaces the whole text as one undoable edit (not an edit of the
+     * user's: `onChange` is not called). Returns `{ text, shown }`: the text
+     * as the editor holds it now and a promise of the moment it is shown. A
+     * long text (LARGE_TEXT) is taken in steps: meanwhile `getText()` is
+     * already the new text (with its line breaks as given: CR LF and CR,
+     * which the interpreter reads as CodeMirror does, become LF once the
+     * editor has it), the editor takes no edits, diagnostics, the current
+     * line and jumps wait for it, and the editor is `aria-busy`.
+     */
     setText(value) {
-      // The new document's text is the text given (no need to make it again
-      // for the handlers of this edit), unless CodeMirror changes its line
-      // breaks (CR LF and CR become LF).
-      given = value.includes('\r') ? null : value;
-      try {
-        view.dispatch({ changes: { from: 0, to: view.state.doc.length, insert: value } });
-        if (given !== null) {
-          textOf = view.state.doc;
-          text = given;
-        }
-      } finally {
-        given = null;
+      serial += 1;
+      const mine = serial;
+      later = []; // what was asked for the text before this one
+      if (value.length <= LARGE_TEXT) {
+        pending = null;
+        parent.removeAttribute('aria-busy');
+        const given = value.includes('\r') ? value.replace(/\r\n?/g, '\n') : value;
+        replaceDocument(given, given);
+        return { text: given, shown: Promise.resolve() };
       }
+      pending = { text: value };
+      parent.setAttribute('aria-busy', 'true');
+      const shown = buildDocument(value, { stale: () => mine !== serial }).then((built) => {
+        if (mine !== serial || !built) return; // a newer text replaced it
+        pending = null;
+        parent.removeAttribute('aria-busy');
+        replaceDocument(built.doc, built.text);
+      });
+      return { text: value, shown };
     },
     undo: () => undo(view),
     redo: () => redo(view),
     focus: () => view.focus(),
     /** Diagnostics [{severity, message, line, column, end_column}] (line > 0). */
     setDiagnostics(list) {
-      const doc = view.state.doc;
-      const inDoc = list.filter((d) => d.line > 0 && d.line <= doc.lines);
-      // None before and none now: nothing to change (marks follow the edits).
-      if (inDoc.length === 0 && !marked) return;
-      marked = inDoc.length > 0;
-      const at = columnOffsets(doc);
-      const marks = inDoc.map((d) => {
-        const from = at(d.line, d.column);
-        const to = Math.max(from, at(d.line, d.end_column));
-        return { from, to, severity: d.severity === 'error' ? 'error' : 'warning', message: `${d.code}: ${d.message}` };
-      });
-      const firstOnLine = new Map();
-      for (const d of inDoc) if (!firstOnLine.has(d.line)) firstOnLine.set(d.line, { d, more: 0 });
-      for (const d of inDoc) if (firstOnLine.get(d.line).d !== d) firstOnLine.get(d.line).more += 1;
-      const widgets = [...firstOnLine.values()]
-        .sort((a, b) => a.d.line - b.d.line)
-        .map(({ d, more }) => Decoration.widget({
-          widget: new MessageWidget(d.severity, more ? `${d.message} (+${more} more)` : d.message),
-          side: 1,
-        }).range(doc.line(d.line).to));
-      view.dispatch(setDiagnostics(view.state, marks));
-      view.dispatch({ effects: setMessages.of(Decoration.set(widgets, true)) });
+      whenShown('diagnostics', () => showDiagnostics(list));
     },
     /** Highlights 1-based `line` as the current block (null: none). */
     showCurrent(line, scroll = true) {
-      // No current line before and none now: nothing to change.
-      if ((line === null || line < 1) && view.state.field(currentLine).size === 0) return;
-      const effects = [setCurrent.of(line)];
-      if (scroll && line >= 1 && line <= view.state.doc.lines) {
-        effects.push(EditorView.scrollIntoView(view.state.doc.line(line).from, { y: 'nearest' }));
-      }
-      view.dispatch({ effects });
+      whenShown('current', () => showCurrentLine(line, scroll));
     },
     /** Selects line:column..endColumn and focuses the editor. */
     jumpTo(line, column, endColumn) {
-      const doc = view.state.doc;
-      if (line < 1 || line > doc.lines) return;
-      const anchor = offsetAt(doc, line, column);
-      const head = Math.max(anchor, offsetAt(doc, line, endColumn ?? column));
-      view.dispatch({ selection: { anchor, head }, scrollIntoView: true, userEvent: 'select' });
-      view.focus();
+      whenShown('jump', () => jump(line, column, endColumn));
     },
   };
+
+  function showDiagnostics(list) {
+    const doc = view.state.doc;
+    const inDoc = list.filter((d) => d.line > 0 && d.line <= doc.lines);
+    // None before and none now: nothing to change (marks follow the edits).
+    if (inDoc.length === 0 && !marked) return;
+    marked = inDoc.length > 0;
+    const at = columnOffsets(doc);
+    const marks = inDoc.map((d) => {
+      const from = at(d.line, d.column);
+      const to = Math.max(from, at(d.line, d.end_column));
+      return { from, to, severity: d.severity === 'error' ? 'error' : 'warning', message: `${d.code}: ${d.message}` };
+    });
+    const firstOnLine = new Map();
+    for (const d of inDoc) if (!firstOnLine.has(d.line)) firstOnLine.set(d.line, { d, more: 0 });
+    for (const d of inDoc) if (firstOnLine.get(d.line).d !== d) firstOnLine.get(d.line).more += 1;
+    const widgets = [...firstOnLine.values()]
+      .sort((a, b) => a.d.line - b.d.line)
+      .map(({ d, more }) => Decoration.widget({
+        widget: new MessageWidget(d.severity, more ? `${d.message} (+${more} more)` : d.message),
+        side: 1,
+      }).range(doc.line(d.line).to));
+    view.dispatch(setDiagnostics(view.state, marks));
+    view.dispatch({ effects: setMessages.of(Decoration.set(widgets, true)) });
+  }
+
+  function showCurrentLine(line, scroll) {
+    // No current line before and none now: nothing to change.
+    if ((line === null || line < 1) && view.state.field(currentLine).size === 0) return;
+    const effects = [setCurrent.of(line)];
+    if (scroll && line >= 1 && line <= view.state.doc.lines) {
+      effects.push(EditorView.scrollIntoView(view.state.doc.line(line).from, { y: 'nearest' }));
+    }
+    view.dispatch({ effects });
+  }
+
+  function jump(line, column, endColumn) {
+    const doc = view.state.doc;
+    if (line < 1 || line > doc.lines) return;
+    const anchor = offsetAt(doc, line, column);
+    const head = Math.max(anchor, offsetAt(doc, line, endColumn ?? column));
+    view.dispatch({ selection: { anchor, head }, scrollIntoView: true, userEvent: 'select' });
+    view.focus();
+  }
+
+  return api;
 }
