@@ -12,7 +12,7 @@ import { mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { describe, test } from 'node:test';
-import { shootCanvas, stateText, useBrowser, viewOf, waitForRun, waitForView } from './harness.mjs';
+import { savedWork, shootCanvas, stateText, useBrowser, viewOf, waitForRun, waitForView } from './harness.mjs';
 
 const { withPage } = useBrowser();
 const tmp = mkdtempSync(join(tmpdir(), 'offsetlab-large-'));
@@ -127,6 +127,28 @@ describe('large programs', () => {
       await page.keyboard.type(' Z1.');
       await waitForRun(page);
       assert.ok((await page.evaluate(() => window.offsetlab.program())).includes('\nG01 X1.2.3 Y4. Z1.\n'));
+    });
+  });
+
+  test('a long autosaved program comes back after a reload, taken in steps, and is not an edit to undo', { timeout: 120_000 }, async () => {
+    await withPage(async (page) => {
+      const program = zigzag(150_000);
+      assert.ok(program.length > 2 * 1024 * 1024 && program.length < 5 * 1024 * 1024);
+      const file = join(tmp, 'long.nc');
+      writeFileSync(file, program);
+      await page.locator('#open-file').setInputFiles(file);
+      await page.waitForFunction(() => document.body.dataset.opened === 'long.nc');
+      await waitForRun(page);
+      assert.equal((await savedWork(page)).program, program);
+      await page.reload();
+      await waitForRun(page);
+      await page.waitForFunction(() => !document.getElementById('editor').hasAttribute('aria-busy'), null, { timeout: 60_000 });
+      assert.equal(await page.evaluate(() => window.offsetlab.program()), program);
+      assert.match(await page.locator('#summary').textContent(), /^150000 blocks · /);
+      await page.locator('.cm-content').click();
+      await page.keyboard.press('Control+z');
+      await page.locator('#undo').click();
+      assert.equal(await page.evaluate(() => window.offsetlab.program()), program, 'nothing to undo');
     });
   });
 

@@ -5,7 +5,7 @@
 // (see the Makefile); the page imports only what this module exports.
 
 import {
-  Annotation, EditorState, StateEffect, StateField,
+  Annotation, EditorState, StateEffect, StateField, Transaction,
 } from '@codemirror/state';
 import {
   Decoration, EditorView, WidgetType, drawSelection, highlightActiveLineGutter,
@@ -153,7 +153,8 @@ export function createEditor(parent, { doc = '', label = 'Program', readOnly = f
       }
     },
     state: EditorState.create({
-      doc,
+      // A long first text is taken in steps too (below).
+      doc: doc.length > LARGE_TEXT ? '' : doc,
       extensions: [
         lineNumbers(),
         highlightActiveLineGutter(),
@@ -200,11 +201,11 @@ export function createEditor(parent, { doc = '', label = 'Program', readOnly = f
   let later = [];
   let serial = 0;
 
-  /** The whole document replaced by `insert` (its text is `value`): one undoable edit. */
-  function replaceDocument(insert, value) {
+  /** The whole document replaced by `insert` (its text is `value`): one edit, undoable or not. */
+  function replaceDocument(insert, value, undoable) {
     view.dispatch({
       changes: { from: 0, to: view.state.doc.length, insert },
-      annotations: loaded.of(true),
+      annotations: [loaded.of(true), Transaction.addToHistory.of(undoable)],
       filter: false,
     });
     textOf = view.state.doc;
@@ -249,8 +250,9 @@ export function createEditor(parent, { doc = '', label = 'Program', readOnly = f
      * which the interpreter reads as CodeMirror does, become LF once the
      * editor has it), the editor takes no edits, diagnostics, the current
      * line and jumps wait for it, and the editor is `aria-busy`.
+     * `undoable: false`: not an edit to undo (the editor's first text).
      */
-    setText(value) {
+    setText(value, { undoable = true } = {}) {
       serial += 1;
       const mine = serial;
       later = []; // what was asked for the text before this one
@@ -258,7 +260,7 @@ export function createEditor(parent, { doc = '', label = 'Program', readOnly = f
         pending = null;
         parent.removeAttribute('aria-busy');
         const given = value.includes('\r') ? value.replace(/\r\n?/g, '\n') : value;
-        replaceDocument(given, given);
+        replaceDocument(given, given, undoable);
         return { text: given, shown: Promise.resolve() };
       }
       pending = { text: value };
@@ -267,7 +269,7 @@ export function createEditor(parent, { doc = '', label = 'Program', readOnly = f
         if (mine !== serial || !built) return; // a newer text replaced it
         pending = null;
         parent.removeAttribute('aria-busy');
-        replaceDocument(built.doc, built.text);
+        replaceDocument(built.doc, built.text, undoable);
       });
       return { text: value, shown };
     },
@@ -332,5 +334,7 @@ export function createEditor(parent, { doc = '', label = 'Program', readOnly = f
     view.focus();
   }
 
+  // The first text, if long: not an edit to undo.
+  if (doc.length > LARGE_TEXT) api.setText(doc, { undoable: false });
   return api;
 }
