@@ -1,13 +1,14 @@
-// The editor's document of a long text built in steps (www/src/text.js,
-// issue 6 target 3), checked in Node against CodeMirror's own reading of the
-// whole text at once: every line break (LF, CR LF, a lone CR, at the end or
-// not) and every place a step can end, including between the CR and the LF
-// of a CR LF.
+// www/src/text.js, checked in Node against CodeMirror itself: the editor's
+// document of a long text built in steps (issue 6 target 3) against
+// CodeMirror's reading of the whole text at once — every line break (LF,
+// CR LF, a lone CR, at the end or not) and every place a step can end,
+// including between the CR and the LF of a CR LF; and the editor's text
+// kept through edits (applyChanges) against the document's own text.
 
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
-import { Text } from '@codemirror/state';
-import { buildDocument } from '../../www/src/text.js';
+import { ChangeSet, Text } from '@codemirror/state';
+import { applyChanges, buildDocument } from '../../www/src/text.js';
 
 const now = () => Promise.resolve();
 /** What CodeMirror makes of the text at once (EditorState.toText). */
@@ -44,5 +45,31 @@ describe('a long text taken into the editor in steps', () => {
     let steps = 0;
     const built = await buildDocument('a\nb\nc\nd\n', { chunk: 1, pause: now, stale: () => (steps += 1) > 2 });
     assert.equal(built, null);
+  });
+});
+
+describe('the editor’s text follows an edit without writing out the document', () => {
+  test('random edits of a text give what CodeMirror makes of them', () => {
+    let seed = 7;
+    const random = (n) => {
+      seed = (seed * 1103515245 + 12345) % 2147483648;
+      return seed % n;
+    };
+    const words = ['', 'G', '7', '\n', 'X1.5 ', 'N10 G01\nY2.', '\n\n', ';'];
+    let doc = Text.of('N10 G00 X0 Y0\nN20 G01 X10. F100.\nM30\n'.split('\n'));
+    let text = doc.toString();
+    for (let i = 0; i < 2000; i += 1) {
+      const specs = [];
+      for (let n = random(3) + 1, at = 0; n > 0 && at <= doc.length; n -= 1) {
+        const from = at + random(doc.length - at + 1);
+        const to = from + random(Math.min(5, doc.length - from) + 1);
+        specs.push({ from, to, insert: words[random(words.length)] });
+        at = to + 1;
+      }
+      const changes = ChangeSet.of(specs.filter((c) => c.to <= doc.length), doc.length);
+      doc = changes.apply(doc);
+      text = applyChanges(text, changes);
+      assert.equal(text, doc.toString(), `edit ${i}`);
+    }
   });
 });

@@ -15,7 +15,7 @@ import { defaultKeymap, history, historyKeymap, redo, undo } from '@codemirror/c
 import { syntaxHighlighting } from '@codemirror/language';
 import { lintGutter, setDiagnostics } from '@codemirror/lint';
 import { gcodeHighlight, gcodeLanguage } from './gcode.js';
-import { buildDocument } from './text.js';
+import { applyChanges, buildDocument } from './text.js';
 
 const setCurrent = StateEffect.define();
 const setMessages = StateEffect.define();
@@ -140,6 +140,7 @@ export function createEditor(parent, { doc = '', label = 'Program', readOnly = f
       const edit = trs.some((tr) => tr.docChanged && !tr.annotation(loaded));
       // No edits while a new text is on its way: it would replace them.
       if (edit && pending) return;
+      if (edit) keepText(trs);
       if (edit && onChange) {
         incoming = trs[trs.length - 1].newDoc;
         try {
@@ -188,12 +189,19 @@ export function createEditor(parent, { doc = '', label = 'Program', readOnly = f
     }),
   });
 
-  // The text of a document is made once: a page handler may ask for it
-  // several times per edit (run, autosave, address), and a 30 MB program
-  // takes a tenth of a second each time.
+  // The text of a document is made once, and an edit changes it rather
+  // than making it again: a page handler may ask for it several times per
+  // edit (run, autosave, address), and writing out a 30 MB program's
+  // document takes a tenth of a second each time.
   let textOf = null;
   let text = '';
   const currentDoc = () => incoming ?? view.state.doc;
+  /** The text made already follows an edit of its document. */
+  function keepText(trs) {
+    if (textOf !== trs[0].startState.doc) return;
+    for (const tr of trs) text = applyChanges(text, tr.changes);
+    textOf = trs[trs.length - 1].newDoc;
+  }
   // Diagnostics shown, so that a run without any costs no editor update
   // (each is one over the whole document).
   let marked = false;
@@ -270,6 +278,14 @@ export function createEditor(parent, { doc = '', label = 'Program', readOnly = f
         pending = null;
         parent.removeAttribute('aria-busy');
         replaceDocument(built.doc, built.text, undoable);
+      }, (error) => {
+        // Never left waiting: the text in one go, as CodeMirror reads it.
+        console.warn('offsetlab: the editor could not take the text in steps:', error?.message ?? error);
+        if (mine !== serial) return;
+        pending = null;
+        parent.removeAttribute('aria-busy');
+        const whole = value.replace(/\r\n?/g, '\n');
+        replaceDocument(whole, whole, undoable);
       });
       return { text: value, shown };
     },
