@@ -1,8 +1,8 @@
 // No lost work: the program, the setup (offsets and settings) and the view
 // are saved in localStorage as the user types (at most every SAVE_MS, when
 // the page is idle, and at once when the page is hidden) and restored on the
-// next visit. The work is made when it is saved, not at every keystroke. When the
-// browser refuses (storage full, disabled, private mode), the page says so:
+// next visit; the work is made when it is saved, not at every keystroke. When
+// the browser refuses (storage full, disabled, private mode), the page says so:
 // at load if storage cannot be used at all, and at every save that fails
 // (the message goes again once a save succeeds). The message has its own
 // banner, so that no other message (a link, an example) can hide it.
