@@ -1,113 +1,28 @@
-// The program editor: CodeMirror 6 with line numbers, G-code highlighting,
-// undo/redo, the interpreter's diagnostics as inline marks (with their
-// messages at the end of the line), and the current block's line
-// highlighted while stepping. Bundled by esbuild into www/dist/editor.js
-// (see the Makefile); the page imports only what this module exports.
+// The program editor: CodeMirror 6 with line numbers, G-code highlighting
+// (gcode.js), undo/redo, the interpreter's diagnostics as inline marks with
+// their messages at the end of the line and the current block's line
+// highlighted while stepping (marks.js), long texts taken in steps
+// (text.js). Bundled by esbuild into www/dist/editor.js (see the Makefile);
+// the page imports only what this module exports.
 
+import { Annotation, EditorState, Transaction } from '@codemirror/state';
 import {
-  Annotation, EditorState, StateEffect, StateField, Transaction,
-} from '@codemirror/state';
-import {
-  Decoration, EditorView, WidgetType, drawSelection, highlightActiveLineGutter,
-  highlightSpecialChars, keymap, lineNumbers,
+  EditorView, drawSelection, highlightActiveLineGutter, highlightSpecialChars, keymap, lineNumbers,
 } from '@codemirror/view';
 import { defaultKeymap, history, historyKeymap, redo, undo } from '@codemirror/commands';
 import { syntaxHighlighting } from '@codemirror/language';
-import { lintGutter, setDiagnostics } from '@codemirror/lint';
+import { lintGutter } from '@codemirror/lint';
 import { gcodeHighlight, gcodeLanguage } from './gcode.js';
+import {
+  currentLineUpdate, diagnosticsUpdate, marks, offsetAt,
+} from './marks.js';
 import { applyChanges, buildDocument } from './text.js';
 
-const setCurrent = StateEffect.define();
-const setMessages = StateEffect.define();
 /** The page's own replacement of the whole text (setText): not an edit of the user's. */
 const loaded = Annotation.define();
 
 /** Texts longer than this (UTF-16 units) are taken in steps (text.js). */
 const LARGE_TEXT = 2 * 1024 * 1024;
-
-/** The line of the current block (stepping), as a line decoration. */
-const currentLine = StateField.define({
-  create: () => Decoration.none,
-  update(deco, tr) {
-    deco = deco.map(tr.changes);
-    for (const e of tr.effects) {
-      if (!e.is(setCurrent)) continue;
-      const n = e.value;
-      if (n === null || n < 1 || n > tr.state.doc.lines) return Decoration.none;
-      const line = tr.state.doc.line(n);
-      return Decoration.set([Decoration.line({ class: 'cm-current-block' }).range(line.from)]);
-    }
-    return deco;
-  },
-  provide: (f) => EditorView.decorations.from(f),
-});
-
-/** A diagnostic's message shown after the end of its line (text only). */
-class MessageWidget extends WidgetType {
-  constructor(severity, text) {
-    super();
-    this.severity = severity;
-    this.text = text;
-  }
-
-  eq(other) {
-    return other.severity === this.severity && other.text === this.text;
-  }
-
-  toDOM() {
-    const span = document.createElement('span');
-    span.className = `cm-diag-message cm-diag-${this.severity}`;
-    span.textContent = this.text;
-    return span;
-  }
-}
-
-const messages = StateField.define({
-  create: () => Decoration.none,
-  update(deco, tr) {
-    deco = deco.map(tr.changes);
-    for (const e of tr.effects) if (e.is(setMessages)) deco = e.value;
-    return deco;
-  },
-  provide: (f) => EditorView.decorations.from(f),
-});
-
-/**
- * Document offsets of 1-based columns (in characters, as the interpreter
- * counts them) on 1-based lines. A line without characters outside the
- * Basic Multilingual Plane maps columns directly; a line with some is
- * mapped once and the map kept for the other columns asked for, so a
- * thousand diagnostics on a 1 MiB line stay fast (issue 7).
- */
-function columnOffsets(doc) {
-  const maps = new Map(); // line number → UTF-16 offset of each character, or null (one unit each)
-  return (line, column) => {
-    const l = doc.line(Math.min(Math.max(1, line), doc.lines));
-    if (!maps.has(l.number)) {
-      let map = null;
-      if (/[\uD800-\uDBFF]/.test(l.text)) {
-        map = [];
-        for (let i = 0; i < l.text.length; i += 1) {
-          map.push(i);
-          // A surrogate pair is one character (as Array.from counts); a lone surrogate is one too.
-          const c = l.text.charCodeAt(i);
-          const next = l.text.charCodeAt(i + 1);
-          if (c >= 0xd800 && c <= 0xdbff && next >= 0xdc00 && next <= 0xdfff) i += 1;
-        }
-      }
-      maps.set(l.number, map);
-    }
-    const map = maps.get(l.number);
-    const index = Math.max(0, column - 1);
-    if (!map) return l.from + Math.min(index, l.length);
-    return l.from + (index < map.length ? map[index] : l.length);
-  };
-}
-
-/** Document offset of 1-based `column` (in characters) on 1-based `line`. */
-function offsetAt(doc, line, column) {
-  return columnOffsets(doc)(line, column);
-}
 
 const theme = EditorView.theme({
   '&': { color: 'var(--ink)', backgroundColor: 'var(--field)', height: '100%' },
@@ -165,8 +80,7 @@ export function createEditor(parent, { doc = '', label = 'Program', readOnly = f
         gcodeLanguage,
         syntaxHighlighting(gcodeHighlight),
         lintGutter(),
-        currentLine,
-        messages,
+        marks,
         theme,
         keymap.of([...defaultKeymap, ...historyKeymap]),
         // Read-only (embed mode): the text can be read, selected and copied,
@@ -202,9 +116,6 @@ export function createEditor(parent, { doc = '', label = 'Program', readOnly = f
     for (const tr of trs) text = applyChanges(text, tr.changes);
     textOf = trs[trs.length - 1].newDoc;
   }
-  // Diagnostics shown, so that a run without any costs no editor update
-  // (each is one over the whole document).
-  let marked = false;
   // What the page asked to show while a text is on its way, shown with it.
   let later = [];
   let serial = 0;
@@ -307,38 +218,12 @@ export function createEditor(parent, { doc = '', label = 'Program', readOnly = f
   };
 
   function showDiagnostics(list) {
-    const doc = view.state.doc;
-    const inDoc = list.filter((d) => d.line > 0 && d.line <= doc.lines);
-    // None before and none now: nothing to change (marks follow the edits).
-    if (inDoc.length === 0 && !marked) return;
-    marked = inDoc.length > 0;
-    const at = columnOffsets(doc);
-    const marks = inDoc.map((d) => {
-      const from = at(d.line, d.column);
-      const to = Math.max(from, at(d.line, d.end_column));
-      return { from, to, severity: d.severity === 'error' ? 'error' : 'warning', message: `${d.code}: ${d.message}` };
-    });
-    const firstOnLine = new Map();
-    for (const d of inDoc) if (!firstOnLine.has(d.line)) firstOnLine.set(d.line, { d, more: 0 });
-    for (const d of inDoc) if (firstOnLine.get(d.line).d !== d) firstOnLine.get(d.line).more += 1;
-    const widgets = [...firstOnLine.values()]
-      .sort((a, b) => a.d.line - b.d.line)
-      .map(({ d, more }) => Decoration.widget({
-        widget: new MessageWidget(d.severity, more ? `${d.message} (+${more} more)` : d.message),
-        side: 1,
-      }).range(doc.line(d.line).to));
-    view.dispatch(setDiagnostics(view.state, marks));
-    view.dispatch({ effects: setMessages.of(Decoration.set(widgets, true)) });
+    for (const spec of diagnosticsUpdate(view.state, list)) view.dispatch(spec);
   }
 
   function showCurrentLine(line, scroll) {
-    // No current line before and none now: nothing to change.
-    if ((line === null || line < 1) && view.state.field(currentLine).size === 0) return;
-    const effects = [setCurrent.of(line)];
-    if (scroll && line >= 1 && line <= view.state.doc.lines) {
-      effects.push(EditorView.scrollIntoView(view.state.doc.line(line).from, { y: 'nearest' }));
-    }
-    view.dispatch({ effects });
+    const spec = currentLineUpdate(view.state, line, scroll);
+    if (spec) view.dispatch(spec);
   }
 
   function jump(line, column, endColumn) {
