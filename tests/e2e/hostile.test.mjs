@@ -308,8 +308,8 @@ describe('markup in programs, diagnostics and links is text', () => {
 
 describe('worker supervision', () => {
   test('the time budget is 30 s, as the README says', () => {
-    const main = readFileSync(join(ROOT, 'www', 'main.js'), 'utf8');
-    assert.match(main, /const BUDGET_MS = positive\(TEST\?\.budgetMs\) \?\? 30_000;/);
+    const page = readFileSync(join(ROOT, 'www', 'modules', 'page.js'), 'utf8');
+    assert.match(page, /export const BUDGET_MS = positive\(TEST\?\.budgetMs\) \?\? 30_000;/);
     const readme = readFileSync(join(ROOT, 'README.md'), 'utf8');
     assert.ok(readme.includes("| time per task of the page's worker | 30 s |"), 'README Limits row');
     assert.ok(readme.includes('that takes longer than 30 s is stopped'), 'README page section');

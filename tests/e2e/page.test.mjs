@@ -197,6 +197,20 @@ describe('no lost work', () => {
     });
   });
 
+  test('an edit reloaded at once, before its autosave was due, is not lost', async () => {
+    await withPage(async (page) => {
+      await typeProgram(page, 'G00 X2.;\n');
+      await page.waitForFunction(() => document.body.dataset.unsaved === undefined);
+      // The save waits for a pause and for the page to be idle; the page
+      // being hidden (a reload, a closed tab) saves at once.
+      await page.keyboard.type('G01 Y3. F100.;\n');
+      assert.equal(await page.evaluate(() => document.body.dataset.unsaved), 'true', 'not saved yet');
+      await page.reload();
+      await waitForRun(page);
+      assert.equal(await page.evaluate(() => window.offsetlab.program()), 'G00 X2.;\nG01 Y3. F100.;\n');
+    });
+  });
+
   test('when storage is full the page says so', async () => {
     await withPage(async (page, { problems }) => {
       await typeProgram(page, 'G00 X1.;\n');

@@ -433,4 +433,23 @@ describe('the address bar', () => {
       },
     });
   });
+
+  test('a reload that took the address before its last write still keeps the newest work', async () => {
+    await withPage(async (page) => {
+      // Two writes of the address: the first program's, then the second's.
+      await typeProgram(page, 'G00 X1.;\n');
+      await page.waitForFunction(() => Number(document.body.dataset.addressWrites ?? 0) >= 1 && !document.body.dataset.pending);
+      const older = await page.evaluate(() => location.hash);
+      await typeProgram(page, 'G00 X2.;\n');
+      await page.waitForFunction((h) => location.hash !== h, older, { timeout: 10_000 });
+      await savedWork(page);
+      // A write that lands while the tab reloads changes the old page's
+      // address after the reload took it: the new page opens with the older one.
+      await page.evaluate((h) => history.replaceState(history.state, '', h), older);
+      await page.reload();
+      await waitForRun(page);
+      assert.equal(await page.evaluate(() => window.offsetlab.program()), 'G00 X2.;\n');
+      assert.equal(await page.locator('#banner').isVisible(), false);
+    });
+  });
 });

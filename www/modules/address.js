@@ -1,13 +1,16 @@
 // The address bar kept current: the compact link of the document in the
 // URL's fragment, written with history.replaceState (never pushState: no
 // history entries), at most once per MIN_INTERVAL_MS and again after the
-// last change. The fragment this tab wrote last is remembered in
+// last change. The fragments this tab wrote last are remembered in
 // sessionStorage, so a reload knows the address is its own state (the
 // autosave, which is at least as new, wins) and not a link someone opened.
+// The one before the last counts too: a write that lands while the tab is
+// being reloaded changes the old page's address after the reload took it.
 
 const MIN_INTERVAL_MS = 1000;
 const SETTLE_MS = 300; // wait this long after a change before writing
 const WROTE_KEY = 'offsetlab.address.v1';
+const WROTE_BEFORE_KEY = 'offsetlab.address.before.v1';
 
 let getFragment = async () => null;
 let timer = 0;
@@ -15,10 +18,12 @@ let last = -Infinity;
 let dirty = false;
 let writing = false;
 let wrote = null;
+let wroteBefore = null;
 let enabled = false;
 
 try {
   wrote = sessionStorage.getItem(WROTE_KEY);
+  wroteBefore = sessionStorage.getItem(WROTE_BEFORE_KEY);
 } catch {
   wrote = null;
 }
@@ -26,6 +31,11 @@ try {
 /** The fragment (without `#`) this tab last wrote, or null. */
 export function writtenFragment() {
   return wrote;
+}
+
+/** Whether `fragment` (without `#`) is the one this tab wrote last or the one before. */
+export function ownFragment(fragment) {
+  return Boolean(fragment) && (fragment === wrote || fragment === wroteBefore);
 }
 
 /**
@@ -61,8 +71,10 @@ async function write() {
     if (fragment !== null && hash !== location.hash) {
       // No fragment at all (not even `#`) when the document is too long for the address.
       history.replaceState(history.state, '', hash || location.href.split('#')[0]);
+      wroteBefore = wrote;
       wrote = fragment;
       try {
+        if (wroteBefore !== null) sessionStorage.setItem(WROTE_BEFORE_KEY, wroteBefore);
         sessionStorage.setItem(WROTE_KEY, fragment);
       } catch {
         // Without sessionStorage a reload compares documents instead.

@@ -1,7 +1,8 @@
 // No lost work: the program, the setup (offsets and settings) and the view
-// are saved in localStorage as the user types (at most every SAVE_MS, and at
-// once when the page is hidden) and restored on the next visit. When the
-// browser refuses (storage full, disabled, private mode), the page says so:
+// are saved in localStorage as the user types (at most every SAVE_MS, when
+// the page is idle, and at once when the page is hidden) and restored on the
+// next visit; the work is made when it is saved, not at every keystroke. When
+// the browser refuses (storage full, disabled, private mode), the page says so:
 // at load if storage cannot be used at all, and at every save that fails
 // (the message goes again once a save succeeds). The message has its own
 // banner, so that no other message (a link, an example) can hide it.
@@ -14,6 +15,18 @@
 const KEY = 'offsetlab.work.v1';
 const PREVIOUS_KEY = 'offsetlab.previous.v1';
 const SAVE_MS = 400;
+/** A save waits at most this long for the page to be idle. */
+const IDLE_WAIT_MS = 1000;
+/**
+ * Programs longer than this are never saved: no browser keeps that much for
+ * a page (Chromium 10 MiB of UTF-16, about 5.2 million characters; Firefox
+ * and Safari 5 MB), and trying would cost the page a tenth of a second
+ * each time (the JSON of a 31 MB program alone takes that long to make).
+ */
+const MAX_SAVED_CHARS = 5 * 1024 * 1024;
+const idle = typeof requestIdleCallback === 'function'
+  ? (f) => requestIdleCallback(f, { timeout: IDLE_WAIT_MS })
+  : (f) => setTimeout(f, 0);
 
 let timer = 0;
 let pending = null;
@@ -63,9 +76,16 @@ export function keepPrevious(work) {
   if (!enabled) return;
   previousInMemory = work;
   try {
+    if (work?.program.length > MAX_SAVED_CHARS) throw new DOMException('too large', 'QuotaExceededError');
     if (work) localStorage.setItem(PREVIOUS_KEY, JSON.stringify(work));
     else localStorage.removeItem(PREVIOUS_KEY);
   } catch (error) {
+    // An older work kept there must not come back in place of this one.
+    try {
+      localStorage.removeItem(PREVIOUS_KEY);
+    } catch {
+      // storage unavailable: nothing is kept there
+    }
     onProblem(`Your previous program is kept only until this page is closed: ${reason(error)}.`);
   }
 }
@@ -81,16 +101,28 @@ export function loadWork() {
   }
 }
 
+/** The storage refused `program` (it is full): said in the banner. */
+function refused(error, program) {
+  failing = true;
+  tooLarge = reason(error) === 'the browser’s storage is full' ? program : null;
+  document.body.dataset.saveFailed = 'true';
+  onProblem(`Your work is not being saved: ${reason(error)}. Copy your program somewhere safe before you leave.`);
+}
+
 function flush() {
   clearTimeout(timer);
   timer = 0;
   if (!pending) return;
-  const work = pending;
+  const work = typeof pending === 'function' ? pending() : pending;
   pending = null;
   // A full storage stays full for the same program: a pan or a step does
   // not make a 30 MB program fit, and writing it again would cost the page
   // a tenth of a second each time. The message stays up.
   if (tooLarge !== null && work.program === tooLarge) return;
+  if (work.program.length > MAX_SAVED_CHARS) {
+    refused({ name: 'QuotaExceededError' }, work.program);
+    return;
+  }
   try {
     localStorage.setItem(KEY, JSON.stringify(work));
     tooLarge = null;
@@ -100,25 +132,26 @@ function flush() {
       onProblem(null);
     }
   } catch (error) {
-    failing = true;
-    tooLarge = reason(error) === 'the browser’s storage is full' ? work.program : null;
-    document.body.dataset.saveFailed = 'true';
-    onProblem(`Your work is not being saved: ${reason(error)}. Copy your program somewhere safe before you leave.`);
+    refused(error, work.program);
     return;
   }
   delete document.body.dataset.saveFailed;
 }
 
-/** Saves `work` soon (throttled). */
+/**
+ * Saves the work soon (throttled, when the page is idle): `work` is the work
+ * or a function that makes it, called when it is saved.
+ */
 export function saveWork(work) {
   if (!enabled) return;
   pending = work;
   document.body.dataset.unsaved = 'true';
   if (!timer) {
-    timer = setTimeout(() => {
+    timer = setTimeout(() => idle(() => {
+      if (!timer) return; // saved meanwhile (the page was hidden)
       flush();
       delete document.body.dataset.unsaved;
-    }, SAVE_MS);
+    }), SAVE_MS);
   }
 }
 

@@ -21,7 +21,7 @@
 // - Start: a worker that fails (or takes `startupMs`) before it says
 //   `ready` is `onFailure({ kind: 'start', detail })`.
 //
-// The supervisor never restarts by itself: the page decides (main.js), so
+// The supervisor never restarts by itself: the page decides (recovery.js), so
 // that a program that fails again cannot make a restart loop. `start()`
 // makes a fresh worker and sends it `makeInit()` (the page's state: a new
 // canvas, the theme, the size); `post()` starts one when a run or a call

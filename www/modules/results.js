@@ -1,0 +1,110 @@
+// What the worker reports, shown: the summary line (and a long run's
+// progress), the diagnostics in their list and as marks in the editor, the
+// view state, the current block in the stepper, the editor and the state
+// panel — or, after a failure, that the program shown was not run.
+
+import { showBanner } from './banner.js';
+import { showDiagnostics, showNotRun } from './diagnostics.js';
+import { setProgramRegisters } from './offsets.js';
+import { openSetupJson } from './settings.js';
+import { showState } from './state.js';
+import { stepReported } from './stepper.js';
+import { saveWork } from './storage.js';
+import { setMachinePlanes, viewReported } from './view.js';
+import { currentWork, persist, work } from './work.js';
+
+// Past this, a running program shows how far it has got.
+const PROGRESS_AFTER_MS = 200;
+
+const $ = (id) => document.getElementById(id);
+const summaryLine = $('summary');
+let editor = null;
+let blockCount = 0;
+let currentBlock = null;
+let setupFailed = false; // the last run refused the setup
+
+export function initResults(theEditor) {
+  editor = theEditor;
+}
+
+/** The last run refused the setup (it ran with the default one). */
+export const setupRefused = () => setupFailed;
+
+/** A long run's progress (`progress` of the latest run). */
+export function showProgress(m) {
+  if (m.ms < PROGRESS_AFTER_MS) return;
+  summaryLine.textContent = `Running… ${Math.floor(m.fraction * 100)} % of the program read (${(m.ms / 1000).toFixed(1)} s)`;
+  document.body.dataset.progress = String(m.fraction);
+}
+
+const plural = (n, word) => `${n} ${word}${n === 1 ? '' : 's'}`;
+function endText(end) {
+  switch (end.reason) {
+    case 'program_end': return `program end at line ${end.line}`;
+    case 'error': return end.line > 0 ? `stopped at line ${end.line}` : 'stopped: bad setup';
+    default: return 'ran to the last block';
+  }
+}
+
+/** A run's result: the summary line, the diagnostics, the registers it names, the machine's planes. */
+export function showResult({ summary, diagnostics }) {
+  setupFailed = diagnostics.some((d) => d.line === 0 && d.code.startsWith('setup-'));
+  summaryLine.textContent = [
+    plural(summary.blocks, 'block'), plural(summary.moves, 'move'), plural(summary.errors, 'error'),
+    plural(summary.warnings, 'warning'), `${summary.machine}, ${summary.units}`, endText(summary.end),
+  ].join(' · ');
+  summaryLine.classList.toggle('has-errors', summary.errors > 0);
+  showDiagnostics($('diagnostics'), diagnostics, {
+    jump: (line, column, end) => editor.jumpTo(line, column, end),
+    openSetup: openSetupJson,
+  });
+  editor.setDiagnostics(diagnostics);
+  setProgramRegisters(summary.registers ?? []);
+  setMachinePlanes(summary.machine);
+}
+
+/** The worker's view state: the view, the current block and what changed it. */
+export function showViewState(m) {
+  if (m.gen > 0) work.viewKnown = true; // a state of a run, not the empty session's
+  document.body.dataset.stateGen = String(m.gen); // the run whose state is shown (tests wait for it)
+  viewReported(m.view);
+  blockCount = m.blocks;
+  if (m.block !== undefined) currentBlock = m.block;
+  if (m.step < 0) currentBlock = null;
+  stepReported(m.step, m.blocks, currentBlock, m.stepSeq);
+  showState($('state-panel'), currentBlock, { blocks: blockCount });
+  editor.showCurrent(currentBlock ? currentBlock.line : null, m.cause !== 'line');
+  if (['view', 'step', 'pick', 'line'].includes(m.cause)) persist();
+  // A run may move the current block (a shorter program): the autosave follows.
+  else if (m.cause === 'run' && work.viewKnown) saveWork(currentWork);
+}
+
+/** The worker's `drawn`: which run the canvas shows and how long drawing it took (tests and the benchmark read them). */
+export function showDrawn(m) {
+  document.body.dataset.drawn = `${m.width}x${m.height}@${m.dpr}`;
+  document.body.dataset.drawnGen = String(m.gen);
+  document.body.dataset.drawMs = m.ms.toFixed(1);
+  // A frame of a pan or zoom gesture, moved from the last whole one; the
+  // whole frame follows when the gesture pauses.
+  if (m.moving) document.body.dataset.drawnMoving = 'true';
+  else delete document.body.dataset.drawnMoving;
+}
+
+/**
+ * Shows that the program shown was not run (or not finished): banner,
+ * summary, diagnostics, steps. `stepSeq`: the stepper's last request.
+ */
+export function showStopped(text, { kind, stepSeq }) {
+  showBanner(text, { kind: 'worker' });
+  summaryLine.textContent = text;
+  summaryLine.classList.add('has-errors');
+  showNotRun($('diagnostics'), text);
+  editor.setDiagnostics([]);
+  // Nothing of the failed run is shown: no blocks, no current block.
+  blockCount = 0;
+  currentBlock = null;
+  stepReported(-1, 0, null, stepSeq);
+  showState($('state-panel'), null, { blocks: 0 });
+  editor.showCurrent(null, false);
+  document.body.dataset.stopped = kind;
+}

@@ -1,0 +1,173 @@
+// Runs and calls of the interpreter's worker. Every run request carries a
+// generation number; answers to older generations are dropped. An edit runs
+// again at once when the last run was quick, else after a pause in the
+// typing. Calls (links, documents, exports) are answered in order with the
+// runs, so a call posted after a run request sees that run. The program that
+// stopped the interpreter (modules/recovery.js parks it) is not run again
+// until it is edited.
+
+import { setupDocument } from './work.js';
+
+/** Re-run this long after the last keystroke. */
+const DEBOUNCE_MS = 150;
+// A program that ran in under this many milliseconds runs again at once on
+// an edit — the request goes out in the keystroke's own task, before the
+// editor draws it, so the worker runs while this thread updates the editor
+// (typing in a small or mid-sized program redraws in the same frame); a
+// slower one waits for a pause in the typing (DEBOUNCE_MS).
+const QUICK_RUN_MS = 30;
+/** Calls that need the session's run: refused while the shown program is not run. */
+const NEEDS_RUN = new Set(['document', 'export']);
+
+let send = () => {};
+let program = () => '';
+let lastRunMs = Infinity;
+let lastStepSeq = 0; // the stepper's last request, continued by a restarted worker
+let requested = 0;
+let timer = 0;
+let pendingView = null; // applied by the worker after the next run
+let parked = null; // the document not run again until it is edited ({ program, setup })
+let lastSent = null; // { program, setup, view } of the last run request
+const sent = new Map(); // generation → { program, setup, view } of run requests not yet begun
+let runningDoc = null; // the run the worker said it began and has not answered
+let callId = 0;
+const calls = new Map(); // call id → { resolve, reject }
+
+/** `post(message)` reaches the worker; `text()` is the editor's program; `view` the view of the first run. */
+export function initRunner({ post, text, view = null }) {
+  send = post;
+  program = text;
+  pendingView = view;
+}
+
+/** Sends `message` to the worker. */
+export function post(message) {
+  if (message.type === 'step' && message.seq) lastStepSeq = message.seq;
+  send(message);
+}
+
+/** The stepper's last step request. */
+export const stepSeq = () => lastStepSeq;
+
+/** True when `a` and `b` are runs of the same program and setup. */
+export const sameRun = (a, b) => Boolean(a && b) && a.program === b.program && a.setup === b.setup;
+
+/** The document shown: { program, setup } (the setup as JSON text). */
+export const currentDoc = () => ({ program: program(), setup: setupDocument() });
+
+/** Asks the worker `op`; resolves to its answer. */
+export function call(op, args = {}) {
+  if (parked && NEEDS_RUN.has(op)) {
+    return Promise.reject(new Error('the program shown stopped the interpreter and was not run; edit it first'));
+  }
+  callId += 1;
+  const id = callId;
+  return new Promise((resolve, reject) => {
+    calls.set(id, { resolve, reject });
+    post({ type: 'call', id, op, ...args });
+  });
+}
+
+/** Runs `text` (the editor's program) with the setup shown, and the view asked for. */
+export function requestRun(text = program()) {
+  clearTimeout(timer);
+  delete document.body.dataset.pending;
+  const doc = { program: text, setup: setupDocument() };
+  // The program that stopped the interpreter runs again only once edited.
+  if (sameRun(doc, parked)) return;
+  parked = null;
+  requested += 1;
+  document.body.dataset.requested = String(requested);
+  lastSent = { ...doc, view: pendingView };
+  sent.set(requested, lastSent);
+  post({ type: 'run', gen: requested, ...doc, view: pendingView });
+  pendingView = null;
+}
+
+/** An edit: runs now if the last run was quick, else after a pause in the typing. */
+export function scheduleRun() {
+  clearTimeout(timer);
+  if (lastRunMs < QUICK_RUN_MS) {
+    requestRun();
+    return;
+  }
+  // Tests (and anyone curious) can tell an edit waiting for its run.
+  document.body.dataset.pending = 'true';
+  timer = setTimeout(requestRun, DEBOUNCE_MS);
+}
+
+/** Sends an edit still waiting for its run, so a call that follows sees it. */
+export function flushRun() {
+  if (document.body.dataset.pending) requestRun();
+}
+
+/** Forgets an edit waiting for its run (its run was sent already). */
+export function cancelScheduledRun() {
+  clearTimeout(timer);
+  delete document.body.dataset.pending;
+}
+
+/** The view (and current block) the next run asks for. */
+export function setPendingView(view) {
+  pendingView = view;
+}
+
+/** The generation of the latest run request. */
+export const latestRun = () => requested;
+
+/** The last run request: { program, setup, view }, or null. */
+export const lastRun = () => lastSent;
+
+/** Whether the document shown stopped the interpreter and is not run until edited. */
+export const isParked = () => parked !== null;
+
+/** Parks `doc` ({ program, setup }): not run again until the program or setup changes. */
+export function park(doc) {
+  parked = doc;
+}
+
+function forget(gen) {
+  for (const g of sent.keys()) if (g <= gen) sent.delete(g);
+}
+
+/** The worker began a task (`busy`). */
+export function taskBegun(m) {
+  if (m.task !== 'run') return;
+  runningDoc = sent.get(m.gen) ?? null;
+  forget(m.gen);
+}
+
+/** A run's result arrived; true when it is the latest run's (else it is stale and dropped). */
+export function runAnswered(m) {
+  runningDoc = null;
+  forget(m.gen);
+  if (typeof m.ms === 'number') {
+    lastRunMs = m.ms;
+    document.body.dataset.runMs = m.ms.toFixed(1); // the benchmark reads it
+  }
+  delete document.body.dataset.progress;
+  return m.gen >= requested;
+}
+
+/** A call's reply arrived. */
+export function callAnswered(m) {
+  const pending = calls.get(m.id);
+  calls.delete(m.id);
+  if (!pending) return;
+  if (m.error !== undefined) pending.reject(new Error(m.error));
+  else pending.resolve(m.value);
+}
+
+/**
+ * The worker failed on `task`: every call waiting is refused, and the
+ * document it failed on is returned — the run it had begun, else the last
+ * one asked for, else the one shown.
+ */
+export function workerLost(task) {
+  for (const pending of calls.values()) pending.reject(new Error('the interpreter was stopped'));
+  calls.clear();
+  const doc = (task === 'run' ? runningDoc : null) ?? lastSent ?? currentDoc();
+  runningDoc = null;
+  sent.clear();
+  return doc;
+}
