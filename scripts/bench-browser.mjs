@@ -661,7 +661,13 @@ async function runBig(server, big, run) {
     const change = opened.change;
     const plog = await page.evaluate((f) => window.__bench.log.slice(f), opened.from);
     const read = plog.find((e) => e.k === 'blob-text');
-    const end = settled?.frame ? settled.frame.end : await now(page);
+    const drawnAt = settled?.frame ? settled.frame.end : await now(page);
+    // The editor may still be taking the text in steps (it is aria-busy
+    // meanwhile): the main thread is watched until both are done.
+    const editorReady = await page.waitForFunction(() => !document.querySelector('#editor[aria-busy]') && performance.now(),
+      null, { timeout: LIMIT.step, polling: 10 }).then((h) => h.jsonValue()).catch(() => null);
+    const end = Math.max(drawnAt, editorReady ?? 0);
+    t3.editorReady = editorReady === null ? null : editorReady - change;
     t3.main = await mainThread(page, change, end);
     t3.storage = plog.filter((e) => e.k === 'storage' && e.t >= change && e.t <= end).map((e) => ({ chars: e.chars, ms: e.end - e.t }));
     const at = (x) => (x === null || x === undefined ? null : x - change);
@@ -1010,7 +1016,8 @@ function report(results) {
     ['#', 'target', 'measured: median (min–max)', 'goal', 'status'],
     ['3', `${bigName} (${fmtMB(big.bytes)}) opened (Open…) until drawn`, totalText, '< 1.0 s', h.status.time],
     ['3', '  until the page\'s `drawn` message (before rasterisation)', range(h.pageDrawn, fmtMs), '—', ''],
-    ['3', 'responsive: longest main-thread task meanwhile', range(h.longest, fmtMs), '< 100 ms', h.status.responsive],
+    ['3', '  until the editor holds the whole text (it takes a long one in steps)', range(stats(t3.map((x) => x.editorReady)), fmtMs), '—', ''],
+    ['3', 'responsive: longest main-thread task meanwhile (until drawn and the editor done)', range(h.longest, fmtMs), '< 100 ms', h.status.responsive],
     ['3', '  longest gap between main-thread animation frames', range(h.gap, fmtMs), '—', ''],
     ['3', 'peak memory: renderer process (page + worker + wasm)', range(h.peak, fmtMB), '< 400 MB', h.status.memory],
     ['4', `${smallName}: one-character edit, keystroke until drawn`, range(h.keyToFrame, fmtMs), '< 16 ms', h.status.edit],
