@@ -464,7 +464,7 @@ impl Session {
 /// True when `new` keeps at least half of `old` unchanged at its start and
 /// end together: an edit, worth running again from the last run.
 fn similar(old: &str, new: &str) -> bool {
-    let (prefix, suffix) = crate::run::common_ends(old.as_bytes(), new.as_bytes());
+    let (prefix, suffix) = crate::run::again::common_ends(old.as_bytes(), new.as_bytes());
     prefix + suffix >= new.len() / 2
 }
 
