@@ -224,11 +224,7 @@ impl Toolpath {
         let k = self.k;
         let scaled = |p: Xyz| p.map(|v| v * k);
         let (from, pfrom) = (scaled(m.from), scaled(m.programmed_from));
-        let continues = self.vertex_count() > 0 && {
-            let i = self.actual.len() - 3;
-            self.actual[i..] == from && self.programmed[i..] == pfrom
-        };
-        if !continues {
+        if !self.ends_at(from, pfrom) {
             self.push_vertex(from, pfrom);
         }
         self.starts.push(self.vertex_count() as u32 - 1);
@@ -276,11 +272,7 @@ impl Toolpath {
         let Some([[a0, a1], [p0, p1]]) = from.ends(first) else {
             return;
         };
-        let continues = self.vertex_count() > 0 && {
-            let i = self.actual.len() - 3;
-            self.actual[i..] == a0 && self.programmed[i..] == p0
-        };
-        if !continues {
+        if !self.ends_at(a0, p0) {
             self.push_vertex(a0, p0);
         }
         self.starts.push(self.vertex_count() as u32 - 1);
@@ -317,6 +309,15 @@ impl Toolpath {
     pub fn set_bounds(&mut self, bounds: Option<crate::report::Bounds>) {
         let k = self.k;
         self.bounds = bounds.map(|b| (b.min.map(|v| v * k), b.max.map(|v| v * k)));
+    }
+
+    /// Whether the paths end at these points (a move starting there
+    /// continues them and shares their last vertex).
+    fn ends_at(&self, actual: Xyz, programmed: Xyz) -> bool {
+        self.vertex_count() > 0 && {
+            let i = self.actual.len() - 3;
+            self.actual[i..] == actual && self.programmed[i..] == programmed
+        }
     }
 
     fn push_vertex(&mut self, actual: Xyz, programmed: Xyz) {

@@ -5,15 +5,9 @@
 //! N — including across block skip, G92/G50, canned cycles, errors and
 //! M30.
 
+mod common;
+use common::fixture;
 use offsetlab::{RunOptions, Setup, report_at, run, run_with};
-
-fn fixture(name: &str) -> (String, Setup) {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/");
-    let text = std::fs::read_to_string(format!("{dir}{name}.nc")).unwrap();
-    let setup =
-        Setup::from_json(&std::fs::read_to_string(format!("{dir}{name}.json")).unwrap()).unwrap();
-    (text, setup)
-}
 
 fn checkpointed(text: &str, setup: &Setup, every: u32) -> offsetlab::report::Run {
     let options = RunOptions {

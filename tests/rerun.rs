@@ -9,20 +9,15 @@
 //! checkpoints' own totals are checked across chains of edits.
 #![cfg(not(target_arch = "wasm32"))]
 
+mod common;
 #[path = "../benches/programs.rs"]
 mod programs;
+
+use common::fixture;
 
 use offsetlab::toolpath::PathBuilder;
 use offsetlab::{Earlier, Reuse, Run, RunOptions, Setup, Toolpath, report_at, rerun_observed, run};
 use proptest::prelude::*;
-
-fn fixture(name: &str) -> (String, Setup) {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/");
-    let text = std::fs::read_to_string(format!("{dir}{name}.nc")).unwrap();
-    let setup =
-        Setup::from_json(&std::fs::read_to_string(format!("{dir}{name}.json")).unwrap()).unwrap();
-    (text, setup)
-}
 
 const FIXTURES: [&str; 5] = [
     "contour_g45",

@@ -79,3 +79,12 @@ pub fn programmed(r: &Run, i: usize) -> Xyz {
 pub fn explain(r: &Run, i: usize) -> String {
     r.blocks[i].explanation()
 }
+
+/// A fixture of `tests/data`: its program and its setup.
+pub fn fixture(name: &str) -> (String, Setup) {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/");
+    let text = std::fs::read_to_string(format!("{dir}{name}.nc")).unwrap();
+    let setup =
+        Setup::from_json(&std::fs::read_to_string(format!("{dir}{name}.json")).unwrap()).unwrap();
+    (text, setup)
+}
