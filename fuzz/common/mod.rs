@@ -13,6 +13,7 @@ use offsetlab::report::{BlockState, Move, Xyz};
 use offsetlab::setup::{
     DecimalInput, LatheRegister, LatheXOffset, LengthOffsetWithoutZ, MillRegister, Position,
 };
+use offsetlab::toolpath::PathBuilder;
 use offsetlab::view::RunView;
 use offsetlab::{
     Document, MachineKind, ParseOptions, RunOptions, Setup, Toolpath, Units, parse, run_with, share,
@@ -273,6 +274,7 @@ pub fn check_run_with(setup: &Setup, program: &str, max_moves: usize) {
             let again = offsetlab::report_at(program, setup, &light, b.index);
             assert_eq!(again.as_ref(), Some(b), "block {} made again", b.index);
         }
+        check_runs_made_again(setup, program, max_moves);
     }
 
     // The JSON the CLI prints (and the page's block view) is valid JSON.
@@ -416,5 +418,57 @@ pub fn round_trip(data: &[u8]) {
         let plain = plain.expect("plain link decodes");
         assert_eq!(plain.document, doc, "plain round trip");
         assert_eq!(plain.embed, flags & 16 != 0);
+    }
+}
+
+/// The page's way after an edit: the program run again from a run of it
+/// with a line taken out (and the other way round) equals a whole run of
+/// it — diagnostics, totals, lines, events and toolpath
+/// (`offsetlab::rerun_observed`).
+fn check_runs_made_again(setup: &Setup, program: &str, max_moves: usize) {
+    let options = RunOptions {
+        keep_blocks: false,
+        keep_moves: false,
+        checkpoint_every: 3,
+        max_moves,
+        ..RunOptions::default()
+    };
+    let page_run = |text: &str, earlier: Option<(&str, &(offsetlab::Run, Toolpath))>| {
+        let mut b = PathBuilder::new(setup.machine, setup.units, earlier.map(|(_, e)| &e.1));
+        let earlier = earlier.map(|(text, e)| offsetlab::Earlier { text, run: &e.0 });
+        let (run, reuse) = offsetlab::rerun_observed(text, setup, options, earlier, &mut b);
+        let path = b.finish(&run, &reuse);
+        (run, path)
+    };
+    // The middle line out: an edit that moves everything after it.
+    let lines: Vec<&str> = program.split_inclusive('\n').collect();
+    let cut: String = lines
+        .iter()
+        .enumerate()
+        .filter(|&(i, _)| i != lines.len() / 2)
+        .map(|(_, l)| *l)
+        .collect();
+    for (from, to) in [(cut.as_str(), program), (program, cut.as_str())] {
+        let earlier = page_run(from, None);
+        let (got, got_path) = page_run(to, Some((from, &earlier)));
+        let (want, want_path) = page_run(to, None);
+        assert_eq!(got.diagnostics, want.diagnostics, "diagnostics run again");
+        assert_eq!(
+            (got.block_count, got.move_count, &got.end, &got.registers),
+            (
+                want.block_count,
+                want.move_count,
+                &want.end,
+                &want.registers
+            ),
+            "totals run again"
+        );
+        assert_eq!(
+            (&got.lines, &got.events),
+            (&want.lines, &want.events),
+            "lines run again"
+        );
+        assert_eq!(got.bounds, want.bounds, "bounds run again");
+        assert_eq!(got_path, want_path, "toolpath run again");
     }
 }
