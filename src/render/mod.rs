@@ -408,7 +408,7 @@ fn draw_path<'a>(
                 // A move that starts where the last one ended continues
                 // the line; any other starts a new sub-path.
                 let last = pending.or(pen);
-                if last.is_some_and(|(lx, ly)| (x - lx).hypot(y - ly) <= 0.01) {
+                if last.is_some_and(|(lx, ly)| distance_near(x - lx, y - ly, 0.01) <= 0.01) {
                     return;
                 }
                 if let Some((px, py)) = pending.take() {
@@ -418,7 +418,9 @@ fn draw_path<'a>(
                 pen = Some((x, y));
                 return;
             }
-            if pen.is_some_and(|(px, py)| (x - px).hypot(y - py) < MIN_SEGMENT_PX) {
+            if pen.is_some_and(|(px, py)| {
+                distance_near(x - px, y - py, MIN_SEGMENT_PX) < MIN_SEGMENT_PX
+            }) {
                 pending = Some((x, y));
                 return;
             }
@@ -432,6 +434,24 @@ fn draw_path<'a>(
         if begun {
             s.stroke();
         }
+    }
+}
+
+/// `dx.hypot(dy)` where it is near `limit` or below; else a number that
+/// compares with `limit` as it does (`<`, `<=`, `>`, `>=`). The level of
+/// detail asks this of every point, and `hypot` was a tenth of a
+/// 1M-block frame natively: most points are far apart along an axis, and
+/// `hypot` (rounded faithfully) is never less than the longer side, nor
+/// more than the sum of the sides rounded up.
+fn distance_near(dx: f64, dy: f64, limit: f64) -> f64 {
+    let (ax, ay) = (dx.abs(), dy.abs());
+    let longer = ax.max(ay);
+    if longer > limit {
+        longer
+    } else if ax + ay < limit * (1.0 - 1e-9) {
+        ax + ay
+    } else {
+        dx.hypot(dy)
     }
 }
 

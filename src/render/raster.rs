@@ -75,9 +75,11 @@ pub struct Raster {
     /// The area the recorded lines cover, overlaps counted (device
     /// pixels²).
     ink_area: f64,
-    /// The drawn stretches of the dashed segment being drawn (kept for its
-    /// memory).
+    /// The drawn stretches of the dashed segment being drawn, the lengths
+    /// of the segments of the dashed sub-path being drawn (both kept for
+    /// their memory).
     dashes: Vec<(f64, f64)>,
+    lengths: Vec<f64>,
 }
 
 /// A pixel of the drawing: its colour and which path covered it last,
@@ -264,16 +266,23 @@ impl Raster {
                 continue;
             }
             // Dashes are laid from the sub-path's start; drawn from its end.
-            let length =
-                |w: &[[f32; 2]]| f64::from(w[1][0] - w[0][0]).hypot(f64::from(w[1][1] - w[0][1]));
-            let mut end_at = f64::from(sub.phase) + pts.windows(2).map(length).sum::<f64>();
-            for w in pts.windows(2).rev() {
-                let start_at = end_at - length(w);
+            // Each segment's length is worked out once (`hypot` was a tenth
+            // of a 1M-block frame natively when it was three times).
+            let mut lengths = std::mem::take(&mut self.lengths);
+            lengths.clear();
+            lengths.extend(
+                pts.windows(2)
+                    .map(|w| f64::from(w[1][0] - w[0][0]).hypot(f64::from(w[1][1] - w[0][1]))),
+            );
+            let mut end_at = f64::from(sub.phase) + lengths.iter().sum::<f64>();
+            for (w, &length) in pts.windows(2).zip(&lengths).rev() {
+                let start_at = end_at - length;
                 if !self.hidden(w[0], w[1], ink.half_width) {
-                    self.dashed(&ink, stamp, w[0], w[1], start_at);
+                    self.dashed(&ink, stamp, (w[0], w[1]), length, start_at);
                 }
                 end_at = start_at;
             }
+            self.lengths = lengths;
         }
         // Keep the allocations for the next drawing.
         self.subs = subs;
@@ -346,11 +355,17 @@ impl Raster {
         (by0..=by1).all(|by| (bx0..=bx1).all(|bx| self.blocks[by * self.blocks_w + bx] == FULL))
     }
 
-    /// The segment's dashes, `at` being where its start is in the pattern:
-    /// the stretches along it that are drawn, then one sweep over it that
-    /// draws the columns within them.
-    fn dashed(&mut self, ink: &Ink, stamp: u32, from: [f32; 2], to: [f32; 2], at: f64) {
-        let length = f64::from(to[0] - from[0]).hypot(f64::from(to[1] - from[1]));
+    /// The segment's dashes, `at` being where its start is in the pattern
+    /// and `length` its length: the stretches along it that are drawn, then
+    /// one sweep over it that draws the columns within them.
+    fn dashed(
+        &mut self,
+        ink: &Ink,
+        stamp: u32,
+        (from, to): ([f32; 2], [f32; 2]),
+        length: f64,
+        at: f64,
+    ) {
         if length.is_nan() || length <= 0.0 || ink.period.is_nan() || ink.period <= 0.0 {
             return;
         }
@@ -375,7 +390,11 @@ impl Raster {
             }
             t += piece;
             phase = 0.0;
-            entry = (entry + 1) % ink.dash.len();
+            // Not `%`: a division per dash was 2 % of a 1M-block frame.
+            entry += 1;
+            if entry == ink.dash.len() {
+                entry = 0;
+            }
         }
         if !on.is_empty() {
             self.line(ink, stamp, from, to, Some(&on));
@@ -624,22 +643,40 @@ impl Raster {
         (x * self.scale.0, y * self.scale.1)
     }
 
-    /// Where a segment (device pixels) is within the surface and the
-    /// line's width around it: the parameters (as lengths along it) where it
-    /// enters and leaves, or None when it never does.
-    fn clip(&self, from: (f64, f64), to: (f64, f64), margin: f64) -> Option<(f64, f64)> {
-        let length = (to.0 - from.0).hypot(to.1 - from.1);
+    /// Where a segment (device pixels) of `length` is within the surface
+    /// and the line's width around it: the parameters (as lengths along it)
+    /// where it enters and leaves, or None when it never does.
+    fn clip(
+        &self,
+        from: (f64, f64),
+        to: (f64, f64),
+        length: f64,
+        margin: f64,
+    ) -> Option<(f64, f64)> {
         if !(length > 0.0 && length.is_finite()) {
             return None;
+        }
+        // Most segments lie well inside. With both ends a pixel inside the
+        // edges, each edge is more than a pixel beyond the segment's ends
+        // along it, far more than the rounding of the divisions below: they
+        // would give (0, length) too (and were a twentieth of recording a
+        // 1M-block frame).
+        let (w, h) = (self.full.0 as f64, self.full.1 as f64);
+        let inside = |(x, y): (f64, f64)| {
+            (1.0 - margin..=w + margin - 1.0).contains(&x)
+                && (1.0 - margin..=h + margin - 1.0).contains(&y)
+        };
+        if inside(from) && inside(to) {
+            return Some((0.0, length));
         }
         // Liang–Barsky, in units of length.
         let (mut t0, mut t1) = (0.0_f64, length);
         let (dx, dy) = ((to.0 - from.0) / length, (to.1 - from.1) / length);
         let edges = [
             (-dx, from.0 + margin),
-            (dx, self.full.0 as f64 + margin - from.0),
+            (dx, w + margin - from.0),
             (-dy, from.1 + margin),
-            (dy, self.full.1 as f64 + margin - from.1),
+            (dy, h + margin - from.1),
         ];
         for (p, q) in edges {
             if p == 0.0 {
@@ -720,7 +757,7 @@ impl Pen for Raster {
             return;
         }
         let margin = self.styles[usize::from(style)].half_width + 2.0;
-        let Some((t0, t1)) = self.clip(from, to, margin) else {
+        let Some((t0, t1)) = self.clip(from, to, length, margin) else {
             self.pen.along += length;
             self.pen.broken = true;
             return;
