@@ -20,7 +20,7 @@ pub mod svg;
 pub mod view;
 
 use crate::setup::MachineKind;
-use crate::toolpath::Toolpath;
+use crate::toolpath::{ArcPoints, Toolpath};
 pub use raster::Raster;
 pub use scene::Scene;
 pub use style::{Align, Font, Stroke, Theme};
@@ -40,6 +40,12 @@ pub trait Pen {
     fn begin_group(&mut self, _name: &str) {}
     /// Ends the group started last.
     fn end_group(&mut self) {}
+    /// How the points of arcs are placed for this pen: exactly (the
+    /// default; a vector output's text must not change), or turned point
+    /// to point for a pixel layer ([`ArcPoints`]).
+    fn arc_points(&self) -> ArcPoints {
+        ArcPoints::Exact
+    }
 }
 
 /// A 2D drawing surface in CSS pixels, y down.
@@ -385,7 +391,7 @@ fn draw_path<'a>(
     stroke_for: impl Fn(bool) -> &'a Stroke,
 ) {
     // Arcs are tessellated for the scale they are drawn at.
-    let tolerance = DRAW_TOLERANCE_PX / f.transform.scale;
+    let arcs = (DRAW_TOLERANCE_PX / f.transform.scale, s.arc_points());
     for rapid in [true, false] {
         let stroke = stroke_for(rapid);
         // `pen` is the last point drawn, `pending` the last vertex passed
@@ -394,7 +400,7 @@ fn draw_path<'a>(
         let mut pending: Option<(f64, f64)> = None;
         let mut begun = false;
         let keep = |m: usize| tp.kinds.get(m).is_some_and(|&k| is_rapid(k) == rapid);
-        tp.for_each_point(range.clone(), programmed, tolerance, keep, |_, i, p| {
+        tp.for_each_point(range.clone(), programmed, arcs, keep, |_, i, p| {
             let (u, v) = f.plane.project(&p);
             let (x, y) = f.transform.to_screen(u, v);
             if !(x.is_finite() && y.is_finite()) {

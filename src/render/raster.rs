@@ -28,6 +28,7 @@
 
 use super::Pen;
 use super::style::Stroke;
+use crate::toolpath::ArcPoints;
 
 /// Surfaces larger than this (device pixels) are drawn as vectors: the
 /// buffers take 8 bytes a pixel.
@@ -776,6 +777,10 @@ impl Ink {
 }
 
 impl Pen for Raster {
+    fn arc_points(&self) -> ArcPoints {
+        ArcPoints::Rotated
+    }
+
     fn begin_path(&mut self, stroke: &Stroke) {
         let scale = (self.scale.0 + self.scale.1) / 2.0;
         // A drawing has a few paths (six layers at most); past 2^15, further
