@@ -915,8 +915,12 @@ fn length(dx: f64, dy: f64) -> f64 {
 /// Straight RGBA from a premultiplied pixel.
 fn straight(px: &[u8]) -> [u8; 4] {
     let a = px[3];
-    if a == 0 {
-        return [0; 4];
+    match a {
+        0 => return [0; 4],
+        // What the division below gives, without three divisions for
+        // each of the (most) pixels that are opaque.
+        255 => return [px[0], px[1], px[2], a],
+        _ => {}
     }
     let un = |c: u8| ((u32::from(c) * 255 + u32::from(a) / 2) / u32::from(a)).min(255) as u8;
     [un(px[0]), un(px[1]), un(px[2]), a]
