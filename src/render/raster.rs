@@ -547,7 +547,11 @@ impl Raster {
                 *next < on.len() && along >= on[*next].0 - hw
             }
         };
-        let mut touched: Option<(usize, usize, usize, usize)> = None;
+        // The first and the last column looked at, with their rows: the
+        // rows move one way along the line (the centre is monotonic in the
+        // column, and so are its rounding and clamping), so these bound the
+        // box of all the pixels looked at.
+        let mut touched: Option<[(usize, usize, usize); 2]> = None;
         let mut a = first;
         while a <= last {
             let block_end = (a | ((1 << BLOCK_BITS) - 1)).min(last);
@@ -612,14 +616,13 @@ impl Raster {
                     }
                     row = end + 1;
                 }
-                touched = Some(match touched {
-                    None => (col, col, r0, r1),
-                    Some((p, q, r, s)) => (p.min(col), q.max(col), r.min(r0), s.max(r1)),
-                });
+                let seen = (col, r0, r1);
+                touched = Some(touched.map_or([seen; 2], |[first, _]| [first, seen]));
             }
             a = tile_end + 1;
         }
-        if let Some((p, q, r, s)) = touched {
+        if let Some([(p, r0, r1), (q, r2, r3)]) = touched {
+            let (r, s) = (r0.min(r2), r1.max(r3));
             if transposed {
                 self.touch(r, p, s + 1, q + 1);
             } else {
