@@ -1122,6 +1122,33 @@ mod tests {
     }
 
     #[test]
+    fn a_drawing_after_one_on_the_coarse_grid_starts_clear() {
+        // Lines 3 px apart across a 50 x 37 surface (not whole tiles) cover
+        // it many times over: the coarse grid. The next drawing, one short
+        // line on the full grid, has nothing of the first left anywhere.
+        let mut r = raster(50, 37);
+        r.begin_path(&ACTUAL_FEED);
+        for k in 0..80 {
+            r.move_to(0.0, f64::from(k % 13) * 3.0);
+            r.line_to(50.0, f64::from((k + 5) % 13) * 3.0);
+        }
+        r.stroke();
+        assert_eq!(r.factor(), 2);
+        assert!(r.begin(50, 37, (1.0, 1.0)));
+        r.begin_path(&ACTUAL_FEED);
+        r.move_to(40.0, 30.0);
+        r.line_to(45.0, 30.0);
+        r.stroke();
+        assert_eq!(r.factor(), 1);
+        for y in 0..37 {
+            for x in 0..50 {
+                let drawn = (38..48).contains(&x) && (27..33).contains(&y);
+                assert!(drawn || r.pixel(x, y)[3] == 0, "({x}, {y})");
+            }
+        }
+    }
+
+    #[test]
     fn device_pixels_scale_positions_and_widths() {
         let mut r = Raster::new();
         assert!(r.begin(80, 40, (2.0, 2.0)));
