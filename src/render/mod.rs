@@ -449,6 +449,7 @@ fn draw_path<'a>(
 /// 1M-block frame natively: most points are far apart along an axis, and
 /// `hypot` (rounded faithfully) is never less than the longer side, nor
 /// more than the sum of the sides rounded up.
+#[inline(always)]
 fn distance_near(dx: f64, dy: f64, limit: f64) -> f64 {
     let (ax, ay) = (dx.abs(), dy.abs());
     let longer = ax.max(ay);

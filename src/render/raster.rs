@@ -482,6 +482,7 @@ impl Raster {
     /// Whether every tile (`coarse`: block) that the pixels from `a0` to
     /// `a1` along the major axis and `b0` to `b1` across it fall in is
     /// finished.
+    #[inline(always)]
     fn finished(
         &self,
         transposed: bool,
@@ -666,7 +667,7 @@ impl Raster {
 
     /// Covers pixel `i`, at (x, y), by `coverage` (0–1) of the path
     /// `stamp`, under what is already there (front to back).
-    #[inline]
+    #[inline(always)]
     fn plot(&mut self, ink: &Ink, stamp: u32, i: usize, x: usize, y: usize, coverage: f32) {
         let p = &mut self.px[i];
         let a = p.rgba[3];
@@ -699,7 +700,7 @@ impl Raster {
 
     /// Covers pixel `i`, at (x, y), wholly with an opaque ink: what shows
     /// through what lies in front is the ink, and the pixel is finished.
-    #[inline]
+    #[inline(always)]
     fn cover_fully(&mut self, ink: &Ink, i: usize, x: usize, y: usize) {
         let px = &mut self.px[i].rgba;
         let through = 255 - u32::from(px[3]);
