@@ -452,7 +452,9 @@ fn draw_path<'a>(
 #[inline(always)]
 fn distance_near(dx: f64, dy: f64, limit: f64) -> f64 {
     let (ax, ay) = (dx.abs(), dy.abs());
-    let longer = ax.max(ay);
+    // Not `f64::max`, which answers for NaN too (a call to libm in wasm):
+    // the points are finite.
+    let longer = if ay > ax { ay } else { ax };
     if longer > limit {
         longer
     } else if ax + ay < limit * (1.0 - 1e-9) {
