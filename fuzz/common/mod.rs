@@ -13,7 +13,7 @@ use offsetlab::report::{BlockState, Move, Xyz};
 use offsetlab::setup::{
     DecimalInput, LatheRegister, LatheXOffset, LengthOffsetWithoutZ, MillRegister, Position,
 };
-use offsetlab::toolpath::PathBuilder;
+use offsetlab::toolpath::{ArcPoints, PathBuilder};
 use offsetlab::view::RunView;
 use offsetlab::{
     Document, MachineKind, ParseOptions, RunOptions, Setup, Toolpath, Units, parse, run_with, share,
@@ -230,17 +230,20 @@ pub fn check_run_with(setup: &Setup, program: &str, max_moves: usize) {
             "toolpath bounds {min:?} {max:?}"
         );
     }
-    // Arcs tessellated at a coarse and a fine tolerance give finite points.
+    // Arcs tessellated at a coarse and a fine tolerance give finite points,
+    // placed either way.
     for tolerance in [1.0, 0.001] {
-        path.for_each_point(
-            0..path.len(),
-            false,
-            tolerance,
-            |_| true,
-            |_, _, p| {
-                assert!(finite(&p), "tessellated point {p:?}");
-            },
-        );
+        for arcs in [ArcPoints::Exact, ArcPoints::Rotated] {
+            path.for_each_point(
+                0..path.len(),
+                false,
+                (tolerance, arcs),
+                |_| true,
+                |_, _, p| {
+                    assert!(finite(&p), "tessellated point {p:?}");
+                },
+            );
+        }
     }
     if full.moves.len() <= 2_000 {
         let lines = path.polylines();

@@ -20,7 +20,7 @@ pub mod svg;
 pub mod view;
 
 use crate::setup::MachineKind;
-use crate::toolpath::Toolpath;
+use crate::toolpath::{ArcPoints, Toolpath};
 pub use raster::Raster;
 pub use scene::Scene;
 pub use style::{Align, Font, Stroke, Theme};
@@ -40,6 +40,12 @@ pub trait Pen {
     fn begin_group(&mut self, _name: &str) {}
     /// Ends the group started last.
     fn end_group(&mut self) {}
+    /// How the points of arcs are placed for this pen: exactly (the
+    /// default; a vector output's text must not change), or turned point
+    /// to point for a pixel layer ([`ArcPoints`]).
+    fn arc_points(&self) -> ArcPoints {
+        ArcPoints::Exact
+    }
 }
 
 /// A 2D drawing surface in CSS pixels, y down.
@@ -385,7 +391,7 @@ fn draw_path<'a>(
     stroke_for: impl Fn(bool) -> &'a Stroke,
 ) {
     // Arcs are tessellated for the scale they are drawn at.
-    let tolerance = DRAW_TOLERANCE_PX / f.transform.scale;
+    let arcs = (DRAW_TOLERANCE_PX / f.transform.scale, s.arc_points());
     for rapid in [true, false] {
         let stroke = stroke_for(rapid);
         // `pen` is the last point drawn, `pending` the last vertex passed
@@ -394,7 +400,7 @@ fn draw_path<'a>(
         let mut pending: Option<(f64, f64)> = None;
         let mut begun = false;
         let keep = |m: usize| tp.kinds.get(m).is_some_and(|&k| is_rapid(k) == rapid);
-        tp.for_each_point(range.clone(), programmed, tolerance, keep, |_, i, p| {
+        tp.for_each_point(range.clone(), programmed, arcs, keep, |_, i, p| {
             let (u, v) = f.plane.project(&p);
             let (x, y) = f.transform.to_screen(u, v);
             if !(x.is_finite() && y.is_finite()) {
@@ -408,7 +414,7 @@ fn draw_path<'a>(
                 // A move that starts where the last one ended continues
                 // the line; any other starts a new sub-path.
                 let last = pending.or(pen);
-                if last.is_some_and(|(lx, ly)| (x - lx).hypot(y - ly) <= 0.01) {
+                if last.is_some_and(|(lx, ly)| distance_near(x - lx, y - ly, 0.01) <= 0.01) {
                     return;
                 }
                 if let Some((px, py)) = pending.take() {
@@ -418,7 +424,9 @@ fn draw_path<'a>(
                 pen = Some((x, y));
                 return;
             }
-            if pen.is_some_and(|(px, py)| (x - px).hypot(y - py) < MIN_SEGMENT_PX) {
+            if pen.is_some_and(|(px, py)| {
+                distance_near(x - px, y - py, MIN_SEGMENT_PX) < MIN_SEGMENT_PX
+            }) {
                 pending = Some((x, y));
                 return;
             }
@@ -432,6 +440,28 @@ fn draw_path<'a>(
         if begun {
             s.stroke();
         }
+    }
+}
+
+/// `dx.hypot(dy)` where it is near `limit` or below; else a number that
+/// compares with `limit` as it does (`<`, `<=`, `>`, `>=`). The level of
+/// detail asks this of every point, and `hypot`, for this and for the
+/// lengths of segments, was 15 % of a 1M-block frame natively (perf):
+/// most points are far apart along an axis, and
+/// `hypot` (rounded faithfully) is never less than the longer side, nor
+/// more than the sum of the sides rounded up.
+#[inline(always)]
+fn distance_near(dx: f64, dy: f64, limit: f64) -> f64 {
+    let (ax, ay) = (dx.abs(), dy.abs());
+    // Not `f64::max`, which answers for NaN too (a call to libm in wasm):
+    // the points are finite.
+    let longer = if ay > ax { ay } else { ax };
+    if longer > limit {
+        longer
+    } else if ax + ay < limit * (1.0 - 1e-9) {
+        ax + ay
+    } else {
+        dx.hypot(dy)
     }
 }
 

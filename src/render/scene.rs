@@ -13,7 +13,7 @@ use super::style::{LIGHT, Stroke, Theme};
 use super::{Frame, Plane, Rect, Surface, Transform};
 use crate::document::{MAX_PAN, MAX_ZOOM, MIN_ZOOM};
 use crate::setup::MachineKind;
-use crate::toolpath::Toolpath;
+use crate::toolpath::{ArcPoints, Toolpath};
 
 /// Arrows shorter than this (CSS pixels) are not drawn: the offset is too
 /// small to see at this zoom.
@@ -293,7 +293,7 @@ pub fn pick(tp: &Toolpath, f: &Frame, x: f64, y: f64, tolerance: f64) -> Option<
         tp.for_each_point(
             0..tp.len(),
             programmed,
-            within,
+            (within, ArcPoints::Exact),
             |_| true,
             |m, i, q| {
                 let (u, v) = f.plane.project(&q);
