@@ -412,7 +412,12 @@ impl Raster {
     /// finished blocks: once a dense drawing has filled an area, most of
     /// the segments below are hidden, and cost this look-up only.
     fn hidden(&self, from: [f32; 2], to: [f32; 2], half_width: f64) -> bool {
-        let hw = half_width + 1.0;
+        // How far the sweep's pixels reach beyond the segment's box: its
+        // square end runs on by the half width along the major axis, and
+        // across it the line spans the half width times up to √2 (a
+        // diagonal), so a corner pixel lies up to hw·(1 + √2) out, plus
+        // the pixel itself. (hw + 1 missed faint end pixels of diagonals.)
+        let hw = half_width * (1.0 + std::f64::consts::SQRT_2) + 1.0;
         let [x0, x1] = [
             f64::from(smaller(from[0], to[0])) - hw,
             f64::from(larger(from[0], to[0])) + hw,
