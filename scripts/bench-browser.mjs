@@ -447,8 +447,9 @@ async function instrumentWorker(page) {
       }
     }
     const P = m.Session.prototype;
-    // The worker runs a program with run() or, since 5f0e44d, run_with_progress().
-    for (const name of ['run', 'run_with_progress']) {
+    // The worker runs a program with run(), since 5f0e44d run_with_progress(),
+    // since run_buffer() (the program written into wasm memory before the call).
+    for (const name of ['run', 'run_with_progress', 'run_buffer']) {
       const run = P[name];
       if (typeof run !== 'function') continue;
       P[name] = function timedRun(...args) {

@@ -178,6 +178,8 @@ pub struct Toolpath {
 pub struct PathBuilder<'a> {
     path: Toolpath,
     earlier: Option<&'a Toolpath>,
+    /// Whether [`PathBuilder::foresee`] has made room.
+    foreseen: bool,
 }
 
 impl<'a> PathBuilder<'a> {
@@ -187,7 +189,32 @@ impl<'a> PathBuilder<'a> {
         PathBuilder {
             path: Toolpath::new(machine, units),
             earlier,
+            foreseen: false,
         }
+    }
+
+    /// `read` of the program's `total` bytes have been run: room, at once,
+    /// for the moves of the rest at the rate so far (once, on the first
+    /// call). Growing the arrays by doubling copied each of them about
+    /// once more and touched twice the memory; in wasm, where every page
+    /// touched for the first time is a fault, that was a fifth of the first
+    /// run of a 1M-block program (V8 profile, `docs/performance.md`).
+    pub fn foresee(&mut self, read: usize, total: usize) {
+        if self.foreseen || read == 0 || total <= read {
+            return;
+        }
+        self.foreseen = true;
+        let scale = total as f64 / read as f64 * 1.05;
+        let more = |len: usize| ((len as f64 * scale) as usize).saturating_sub(len);
+        let p = &mut self.path;
+        p.actual.reserve(more(p.actual.len()));
+        p.programmed.reserve(more(p.programmed.len()));
+        p.starts.reserve(more(p.starts.len()));
+        p.kinds.reserve(more(p.kinds.len()));
+        p.blocks.reserve(more(p.blocks.len()));
+        p.lines.reserve(more(p.lines.len()));
+        p.arcs.reserve(more(p.arcs.len()));
+        p.arc_moves.reserve(more(p.arc_moves.len()));
     }
 
     /// The toolpath of `run`, which `reuse` says what it took from the
@@ -222,6 +249,7 @@ impl crate::run::Observer for PathBuilder<'_> {
         if let Some(earlier) = self.earlier {
             // An edit's path is about as long as the earlier one: room for
             // it at once, instead of growing (copying) the arrays.
+            self.foreseen = true;
             let p = &mut self.path;
             p.actual.reserve(earlier.actual.len());
             p.programmed.reserve(earlier.programmed.len());
@@ -601,6 +629,40 @@ impl ArcBudget {
 mod tests {
     use super::*;
     use crate::{Setup, run};
+
+    #[test]
+    fn room_foreseen_after_part_of_a_run_holds_the_rest_and_changes_nothing() {
+        let r = run(
+            &"G01 X1. Y2. F100.\nG02 X3. Y4. R5.\n".repeat(2000),
+            &Setup::default(),
+        );
+        let plain = Toolpath::from_run(&r);
+        let mut b = PathBuilder::new(r.machine, r.units, None);
+        for (i, m) in r.moves.iter().enumerate() {
+            if i == r.moves.len() / 4 {
+                // A quarter of the moves from a quarter of the text.
+                b.foresee(1, 4);
+                let room = b.path.kinds.capacity();
+                assert!(room >= r.moves.len(), "{room} for {} moves", r.moves.len());
+                b.foresee(1, 8); // once only
+                assert_eq!(b.path.kinds.capacity(), room);
+            }
+            crate::run::Observer::on_move(&mut b, m);
+        }
+        let room = (b.path.actual.capacity(), b.path.arcs.capacity());
+        let built = b.finish(&r, &crate::Reuse::default());
+        assert_eq!(built, plain);
+        assert_eq!(
+            (built.actual.capacity(), built.arcs.capacity()),
+            room,
+            "no copy grew them"
+        );
+        // Nothing read, or all of it: nothing to foresee.
+        let mut b = PathBuilder::new(r.machine, r.units, None);
+        b.foresee(0, 10);
+        b.foresee(10, 10);
+        assert_eq!(b.path.kinds.capacity(), 0);
+    }
 
     #[test]
     fn one_end_vertex_per_move_and_equal_lengths() {

@@ -90,6 +90,8 @@ pub struct Session {
     /// frame asked for the same (a run that changed nothing drawn) is that
     /// one, and is not drawn again.
     last_whole: Option<(u64, Scene, (u32, u32), u64)>,
+    /// The next program, written by JavaScript ([`Session::program_buffer`]).
+    incoming: Vec<u8>,
     /// Plane, zoom, pan, current block and colours.
     scene: Scene,
     /// The CSS size last drawn at, for zoom, pan and picking.
@@ -134,6 +136,7 @@ impl Default for Session {
             setup_refused: false,
             moving_frames: 0,
             last_whole: None,
+            incoming: Vec::new(),
             scene: Scene::default(),
             size: (300.0, 150.0),
             frame: None,
@@ -357,6 +360,41 @@ impl Session {
     ) -> Result<JsValue, JsValue> {
         self.run_reporting(program, setup, Some(progress))
     }
+
+    /// Room in wasm memory for a program of up to `capacity` bytes of
+    /// UTF-8, zeroed; returns its address, where the caller writes the
+    /// program (`TextEncoder.encodeInto` on a view of the memory, before
+    /// any other call) and then runs it with [`Session::run_buffer`]. The
+    /// page's worker runs programs this way: wasm-bindgen copies a
+    /// `String` argument into wasm memory a UTF-16 unit at a time in
+    /// JavaScript (70–160 ms for 31 MB in V8), and `TextEncoder.encode`
+    /// and a copy took 150 ms in Chromium's worker; `encodeInto` writes it
+    /// in place in about 50 (`docs/performance.md`). Returns 0 when there
+    /// is not that much memory.
+    pub fn program_buffer(&mut self, capacity: usize) -> *mut u8 {
+        self.incoming = Vec::new();
+        if self.incoming.try_reserve_exact(capacity).is_err() {
+            return std::ptr::null_mut();
+        }
+        self.incoming.resize(capacity, 0);
+        self.incoming.as_mut_ptr()
+    }
+
+    /// [`Session::run_with_progress`] for the program written into
+    /// [`Session::program_buffer`]: its first `length` bytes (at most the
+    /// room asked for; invalid UTF-8 is read with U+FFFD in its place).
+    pub fn run_buffer(
+        &mut self,
+        length: usize,
+        setup: JsValue,
+        progress: Option<js_sys::Function>,
+    ) -> Result<JsValue, JsValue> {
+        let mut bytes = std::mem::take(&mut self.incoming);
+        bytes.truncate(length);
+        let program = String::from_utf8(bytes)
+            .unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned());
+        self.run_reporting(program, setup, progress.as_ref())
+    }
 }
 
 /// Builds the session's toolpath from the moves as they are made and
@@ -365,6 +403,7 @@ struct SessionObserver<'a> {
     path: PathBuilder<'a>,
     progress: Option<&'a js_sys::Function>,
     len: f64,
+    text_len: usize,
 }
 
 impl crate::run::Observer for SessionObserver<'_> {
@@ -377,6 +416,7 @@ impl crate::run::Observer for SessionObserver<'_> {
     }
 
     fn on_progress(&mut self, read: usize) {
+        self.path.foresee(read, self.text_len);
         if let Some(f) = self.progress {
             // A throwing callback must not stop the run.
             let _ = f.call1(&JsValue::NULL, &JsValue::from_f64(read as f64 / self.len));
@@ -426,6 +466,7 @@ impl Session {
                     ),
                     progress,
                     len: self.text.len().max(1) as f64,
+                    text_len: self.text.len(),
                 };
                 let (run, reuse) =
                     crate::rerun_observed(&self.text, &setup, SESSION_RUN, earlier, &mut observer);
@@ -495,6 +536,36 @@ impl Session {
     /// after a bad one).
     pub fn setup(&self) -> Result<JsValue, JsValue> {
         to_js(&self.setup)
+    }
+
+    /// A program of about `bytes` bytes is on its way (the page is reading
+    /// a file): the memory its run will keep is taken from the browser
+    /// now, while this worker has nothing else to do, and handed back to
+    /// the allocator for the run to use. Each page of wasm memory costs a
+    /// fault the first time it is written, and those were a quarter of the
+    /// first run of a 1M-block program (V8 profile, `docs/performance.md`).
+    pub fn expect(&mut self, bytes: f64) {
+        // What a run keeps per byte of program: the text itself, the
+        // toolpath and the lines (3.75 bytes a byte for the benchmark's
+        // milling program, 31 bytes a block); more than the interpreter
+        // reads is not asked for.
+        const PER_BYTE: f64 = 4.0;
+        const AT_MOST: f64 = (crate::syntax::MAX_PROGRAM_BYTES as f64) * PER_BYTE;
+        if !(bytes.is_finite() && bytes > 0.0) {
+            return;
+        }
+        let want = (bytes * PER_BYTE).min(AT_MOST) as usize;
+        if want < 16 << 20 {
+            return; // a small program's run is quick anyway
+        }
+        let mut memory: Vec<u8> = Vec::new();
+        if memory.try_reserve_exact(want).is_ok() {
+            // Written (not zeroed, which the allocator may leave to fresh
+            // pages), so that the pages are the browser's already.
+            memory.resize(want, 1);
+            // (Not a dead store the optimiser may drop before the free.)
+            std::hint::black_box(&memory);
+        }
     }
 
     /// Number of executed blocks (each has a report).

@@ -866,3 +866,125 @@ fn a_run_that_changes_nothing_drawn_leaves_the_canvas_as_it_is() {
     let again = painted_pixels(&canvas);
     assert!(again < black && again > drawn / 2, "{again} of {black}");
 }
+
+/// Writes `bytes` at the start of the session's program buffer of `room`
+/// bytes, as the page's worker does with `TextEncoder.encodeInto`; false
+/// when the session had no room.
+fn write_program(s: &mut Session, bytes: &[u8], room: usize) -> bool {
+    let at = s.program_buffer(room);
+    if at.is_null() {
+        return false;
+    }
+    let memory: js_sys::WebAssembly::Memory = wasm_bindgen::memory().unchecked_into();
+    let view =
+        Uint8Array::new_with_byte_offset_and_length(&memory.buffer(), at as u32, room as u32);
+    view.subarray(0, bytes.len() as u32).copy_from(bytes);
+    true
+}
+
+/// Everything JavaScript reads of a run: its result, the toolpath's
+/// arrays and the last block's report.
+type Seen = (
+    String,
+    Vec<f64>,
+    Vec<f64>,
+    Vec<u32>,
+    Vec<u8>,
+    Vec<u32>,
+    Vec<u32>,
+    String,
+);
+
+fn seen(s: &Session, result: &JsValue) -> Seen {
+    let t = s.toolpath().expect("toolpath");
+    let f64s = |k: &str| get(&t, k).unchecked_into::<Float64Array>().to_vec();
+    let u32s = |k: &str| get(&t, k).unchecked_into::<Uint32Array>().to_vec();
+    let last = s.block(s.block_count().saturating_sub(1)).expect("block");
+    (
+        stringify(result),
+        f64s("actual"),
+        f64s("programmed"),
+        u32s("starts"),
+        get(&t, "kinds").unchecked_into::<Uint8Array>().to_vec(),
+        u32s("blocks"),
+        u32s("lines"),
+        stringify(&last),
+    )
+}
+
+#[wasm_bindgen_test]
+fn a_program_written_into_the_buffer_runs_as_its_text_does() {
+    // 2.6 MiB, beyond ASCII: the toolpath's room is foreseen after the
+    // first MiB (PathBuilder::foresee), the columns count characters.
+    let program = format!(
+        "(Fräsen — 2 µm)\n{}(ß) G01 X1.2.3\n",
+        "G01 X1. Y2. F100.\nG02 X3. Y4. R5.\n".repeat(80_000)
+    );
+    let mut by_text = Session::new();
+    let text_result = by_text.run(program.clone(), square_setup()).expect("run");
+    let mut by_buffer = Session::new();
+    assert!(write_program(
+        &mut by_buffer,
+        program.as_bytes(),
+        program.len()
+    ));
+    let buffer_result = by_buffer
+        .run_buffer(program.len(), square_setup(), None)
+        .expect("run");
+    assert_eq!(
+        seen(&by_buffer, &buffer_result),
+        seen(&by_text, &text_result)
+    );
+    let diagnostics = array(&get(&buffer_result, "diagnostics"));
+    assert_eq!(num(&diagnostics.get(0), "column"), 9.0);
+
+    // Invalid UTF-8 reads as U+FFFD, as the page's decoder shows it.
+    let mut s = Session::new();
+    let bytes = b"G00 X1.\n(\xff\xfe)\nG01 X2. F1. Y\xc3\n";
+    assert!(write_program(&mut s, bytes, bytes.len()));
+    let r = s.run_buffer(bytes.len(), JsValue::NULL, None).expect("run");
+    let mut t = Session::new();
+    let text = String::from_utf8_lossy(bytes).into_owned();
+    let tr = t.run(text, JsValue::NULL).expect("run");
+    assert_eq!(seen(&s, &r), seen(&t, &tr));
+
+    // A length past the room runs what the room holds; no room, nothing.
+    assert!(write_program(&mut s, b"G00 X7.", 7));
+    let r = s.run_buffer(1 << 20, JsValue::NULL, None).expect("run");
+    assert_eq!(num(&get(&r, "summary"), "moves"), 1.0);
+    assert!(
+        s.program_buffer(u32::MAX as usize).is_null(),
+        "more than wasm32 can hold"
+    );
+    let r = s.run_buffer(100, JsValue::NULL, None).expect("run");
+    assert_eq!(num(&get(&r, "summary"), "blocks"), 0.0);
+}
+
+#[wasm_bindgen_test]
+fn memory_made_ready_for_a_large_program_is_used_by_its_run() {
+    let mut s = Session::new();
+    // Not a size, or too small to matter: nothing happens.
+    for bytes in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY, -1.0, 0.0, 1e3] {
+        s.expect(bytes);
+    }
+    let memory: js_sys::WebAssembly::Memory = wasm_bindgen::memory().unchecked_into();
+    let size = || {
+        memory
+            .buffer()
+            .unchecked_into::<js_sys::ArrayBuffer>()
+            .byte_length()
+    };
+    s.expect(12e6); // 48 MB made ready
+    let ready = size();
+    let program = "G01 X1. Y2. F100.\nG02 X3. Y4. R5.\n".repeat(150_000); // 5 MB
+    let r = s.run(program.clone(), square_setup()).expect("run");
+    assert!(
+        size() <= ready + (1 << 20),
+        "the run took the memory made ready: {ready} -> {}",
+        size()
+    );
+    let mut fresh = Session::new();
+    let fr = fresh.run(program, square_setup()).expect("run");
+    assert_eq!(seen(&s, &r), seen(&fresh, &fr));
+    assert_eq!(num(&get(&r, "summary"), "blocks"), 300_000.0);
+}

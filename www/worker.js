@@ -40,6 +40,7 @@ let lastBlock = -2;
 let stepSeq = 0; // the last step request handled (the page counts its own)
 let canvas = null; // the OffscreenCanvas (also held by the session) for PNG export
 let setupFailed = false; // the last run's setup was refused (it ran with the default setup)
+const encoder = new TextEncoder();
 let testHooks = false; // honour the test-only `fault` of a run (see fault())
 
 /**
@@ -57,7 +58,9 @@ const alive = self.name && self.navigator?.locks
   })
   : Promise.resolve();
 
-const ready = Promise.all([init(), alive]).then(() => {
+let memory = null; // the wasm module's memory
+const ready = Promise.all([init(), alive]).then(([exports]) => {
+  memory = exports.memory;
   session = new Session();
   self.postMessage({ type: 'ready' });
 });
@@ -116,6 +119,22 @@ function invalidate(cause, gesture = false) {
   });
 }
 
+/**
+ * Writes `program` as UTF-8 into the session's program buffer, in wasm
+ * memory, and returns its length in bytes (Session.program_buffer: far
+ * quicker than passing the string). A UTF-16 unit is at most 3 bytes: a
+ * text that is not ASCII may need a second, larger buffer.
+ */
+function writeProgram(program) {
+  for (const room of [program.length, 3 * program.length]) {
+    const at = session.program_buffer(room);
+    if (at === 0) break;
+    const { read, written } = encoder.encodeInto(program, new Uint8Array(memory.buffer, at, room));
+    if (read === program.length) return written;
+  }
+  throw new Error('the program does not fit in memory');
+}
+
 function postState() {
   const view = session.view();
   const step = session.step();
@@ -147,6 +166,9 @@ function handle(message) {
       testHooks = message.testHooks === true;
       invalidate('init');
       break;
+    case 'expect':
+      session.expect(message.bytes);
+      break;
     case 'resize':
       size = { width: message.width, height: message.height, dpr: message.dpr };
       invalidate('resize');
@@ -172,7 +194,7 @@ function handle(message) {
         told = now;
         self.postMessage({ type: 'progress', gen: message.gen, fraction, ms: now - started });
       };
-      const result = session.run_with_progress(message.program, message.setup, progress);
+      const result = session.run_buffer(writeProgram(message.program), message.setup, progress);
       setupFailed = result.diagnostics.some((d) => d.line === 0 && d.code.startsWith('setup-'));
       shown = message.gen;
       if (message.view) session.set_view(message.view);

@@ -98,6 +98,26 @@ describe('editor', () => {
     });
   });
 
+  test('a program beyond ASCII runs as written: its error is where the CLI puts it (line:column in characters)', async () => {
+    await withPage(async (page) => {
+      // The worker writes the program into wasm memory as UTF-8, in a
+      // second, larger buffer when the text is not all ASCII
+      // (writeProgram in worker.js): both must give the program typed.
+      const program = 'G00 X10. (Fräsen — 2 µm, 𝑥 ≤ 3)\n(ß) G01 X1.2.3 F100.\n';
+      await page.locator('.cm-content').click();
+      await page.keyboard.press('ControlOrMeta+A');
+      await page.keyboard.insertText(program);
+      await waitForRun(page);
+      assert.equal(await page.evaluate(() => window.offsetlab.program()), program);
+      const item = page.locator('#diagnostics li.error');
+      assert.equal(await item.count(), 1);
+      assert.equal(await item.locator('.loc').textContent(), '2:9');
+      assert.equal(await item.locator('.code').textContent(), '[malformed-number]');
+      assert.equal(await page.locator('.cm-lintRange-error').textContent(), 'X1.2.3');
+      assert.match(await page.locator('#summary').textContent(), /^1 block · 1 move · 1 error\b/);
+    });
+  });
+
   test('program text in diagnostics and inline messages is text, never markup', async () => {
     await withPage(async (page) => {
       await typeProgram(page, 'G00 X<img src=x onerror=alert(1)>;\n');

@@ -5,7 +5,7 @@
 import { openWork, workOf } from './documents.js';
 import { showLinkError } from './links.js';
 import { EMBED, base } from './page.js';
-import { call } from './runner.js';
+import { call, post } from './runner.js';
 import { cloneSetup } from './setup.js';
 import { work } from './work.js';
 
@@ -21,6 +21,9 @@ async function openFile(file) {
     showLinkError({ code: 'file-too-large', message: `it is ${Math.round(file.size / 1048576)} MiB; at most ${MAX_FILE / 1048576} MiB are read` }, what);
     return;
   }
+  // The worker makes the memory of a large program's run ready while the
+  // file is read (Session.expect).
+  post({ type: 'expect', bytes: file.size });
   let text;
   try {
     text = await file.text();
