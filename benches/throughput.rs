@@ -1,4 +1,6 @@
-//! Throughput benchmarks (issue 6): parse, parse + run (the `check` path),
+//! Throughput benchmarks (issue 6): parse, parse + run (the `check` path,
+//! on one thread, and as the CLI makes it, with the parser on a thread of
+//! its own from 1 MiB of program),
 //! parse + run with block reports (the page and `run --format json`), and the
 //! `gcode` crate 0.6 parsing the same text, at 1k, 10k, 100k and 1M blocks.
 //!
@@ -9,7 +11,7 @@ mod programs;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use offsetlab::syntax::{Block, Blocks, ParseOptions};
-use offsetlab::{RunOptions, Setup, run_with};
+use offsetlab::{RunOptions, Setup, run_pipelined, run_with};
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -60,6 +62,11 @@ fn throughput(c: &mut Criterion) {
         group.bench_with_input(BenchmarkId::new("parse+run", blocks), &text, |b, t| {
             b.iter(|| black_box(run_with(t, &setup, check).block_count))
         });
+        group.bench_with_input(
+            BenchmarkId::new("parse+run, 2 threads", blocks),
+            &text,
+            |b, t| b.iter(|| black_box(run_pipelined(t, &setup, check).block_count)),
+        );
         group.bench_with_input(
             BenchmarkId::new("parse+run+reports", blocks),
             &text,

@@ -43,6 +43,8 @@ pub use run::{
     Checkpoint, Earlier, MAX_BLOCKS, MAX_MOVES, Observer, Reuse, RunOptions, Tail, report_at,
     rerun_observed, run, run_observed, run_with,
 };
+#[cfg(not(target_arch = "wasm32"))]
+pub use run::{PIPELINE_FROM_BYTES, run_on_two_threads, run_pipelined};
 pub use setup::{MachineKind, Setup, Units};
 pub use syntax::{ParseOptions, Program, parse};
 pub use toolpath::Toolpath;

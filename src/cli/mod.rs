@@ -11,7 +11,7 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 use offsetlab::document::{ViewPlane, ViewState};
 use offsetlab::share::{self, DEFAULT_BASE, LONG_LINK};
 use offsetlab::view::{RunView, summary};
-use offsetlab::{Document, MachineKind, RunOptions, run_with};
+use offsetlab::{Document, MachineKind, RunOptions, run_pipelined};
 
 #[derive(Parser)]
 #[command(
@@ -146,7 +146,8 @@ fn execute(cli: Cli, out: &mut impl Write) -> Result<ExitCode, Fatal> {
                 keep_blocks: true,
                 ..RunOptions::default()
             };
-            let run = run_with(&doc.program, &doc.setup, options);
+            // A large program's parser runs on a thread of its own.
+            let run = run_pipelined(&doc.program, &doc.setup, options);
             written(match format {
                 Format::Json => serde_json::to_writer(
                     &mut *out,
@@ -168,7 +169,7 @@ fn execute(cli: Cli, out: &mut impl Write) -> Result<ExitCode, Fatal> {
                 keep_moves: false,
                 ..RunOptions::default()
             };
-            let run = run_with(&doc.program, &doc.setup, options);
+            let run = run_pipelined(&doc.program, &doc.setup, options);
             written(check(out, &name, &run))?;
             Ok(exit(run.has_errors()))
         }

@@ -6,9 +6,13 @@
 use std::sync::Arc;
 
 pub(crate) mod again;
+#[cfg(not(target_arch = "wasm32"))]
+mod pipeline;
 
 pub use again::{Earlier, Reuse, Tail};
 use again::{Plan, take_tail};
+#[cfg(not(target_arch = "wasm32"))]
+pub use pipeline::{PIPELINE_FROM_BYTES, run_on_two_threads, run_pipelined};
 
 use crate::diag::{self, Diagnostic};
 use crate::machine::{Flow, Machine, Out};
@@ -229,6 +233,14 @@ impl<'t> Runner<'t> {
         if !self.parser.next_into(&mut self.block) {
             return None;
         }
+        self.execute()
+    }
+
+    /// Runs the block just read into `self.block`; always Some (the
+    /// answer of [`Runner::step`], made in place: a `Step` made here and
+    /// wrapped there was copied, 18 instructions a block).
+    #[inline(always)]
+    fn execute(&mut self) -> Option<Step> {
         let block = &self.block;
         if self.stopped {
             return Some(Step::Passed);
@@ -350,22 +362,7 @@ pub fn rerun_observed(
     earlier: Option<Earlier<'_>>,
     observer: &mut impl Observer,
 ) -> (Run, Reuse) {
-    let mut result = Run {
-        machine: setup.machine,
-        units: setup.units,
-        end_units: setup.units,
-        blocks: Vec::new(),
-        moves: Vec::new(),
-        events: Vec::new(),
-        diagnostics: Vec::new(),
-        block_count: 0,
-        registers: Vec::new(),
-        move_count: 0,
-        bounds: None,
-        end: End::Completed,
-        checkpoints: Vec::new(),
-        lines: Vec::new(),
-    };
+    let mut result = fresh(setup);
     let mut reuse = Reuse::default();
     let mut setup_problems = setup.validate();
     setup_problems.extend(crate::syntax::check_size(text));
@@ -422,91 +419,181 @@ pub fn rerun_observed(
         let flow = match step {
             Step::Passed => continue,
             Step::Stopped(d) => {
-                let line = r.block.span.line;
-                result.end = End::Error {
-                    line: d.as_ref().map_or(line, |d| d.span.line.max(line)),
-                };
-                run_diagnostics.extend(d);
+                stop(&mut result, &mut run_diagnostics, r.block.span.line, d);
                 continue;
             }
             Step::Ran(flow) => flow,
         };
-        let (block, out) = (&r.block, &mut r.out);
-        let segment = &mut totals.segment;
-        if segment.first_units.is_none() && !out.moves.is_empty() {
-            segment.first_units = Some(r.machine.state().modal.units);
-        }
-        for m in &out.moves {
-            include_move(&mut segment.bounds, m);
-            observer.on_move(m);
-        }
-        if options.keep_moves {
-            result.moves.extend_from_slice(&out.moves);
-        }
-        // Most blocks have no event and no warning: the tests skip setting
-        // up the two drains (callgrind: 30 instructions a block).
-        if !out.events.is_empty() {
-            result.events.extend(out.events.drain(..).map(|kind| Event {
-                block: index,
-                line: block.span.line,
-                kind,
-            }));
-        }
+        let Runner {
+            block,
+            out,
+            machine,
+            parser,
+            ..
+        } = &mut r;
+        let ran = Ran {
+            block,
+            out,
+            machine,
+            index,
+            first_move,
+            flow,
+        };
         // Warnings share the diagnostics cap with the parser's (a warning
         // per block could otherwise fill memory and the page's list).
-        if !out.warnings.is_empty() {
-            for w in out.warnings.drain(..) {
-                r.parser.report(w);
-            }
-        }
-        if options.keep_blocks {
-            result.blocks.push(BlockReport {
-                index,
-                span: block.span,
-                state: *r.machine.state(),
-                notes: std::mem::take(&mut out.notes),
-                first_move: first_move as u32,
-                move_count: out.moves.len() as u32,
-            });
-        }
-        if every > 0 {
-            result.lines.push(block.span.line);
-        }
-        let offset_words = match setup.machine {
-            MachineKind::Mill => block.holds(Address::D) || block.holds(Address::H),
-            MachineKind::Lathe => block.holds(Address::T),
-        };
-        for w in block.words.iter().filter(|_| offset_words) {
-            let n = match (w.address, setup.machine) {
-                (Address::D | Address::H, MachineKind::Mill) => w.int() as u16,
-                (Address::T, MachineKind::Lathe) => (w.int() % 100) as u16,
-                _ => 0,
-            };
-            if n != 0 && !segment.registers.contains(&n) {
-                segment.registers.push(n);
-            }
-        }
-        if flow == Flow::End {
-            result.end = End::ProgramEnd {
-                line: block.span.line,
-            };
-        }
+        account(
+            &mut result,
+            &mut totals,
+            observer,
+            &options,
+            setup.machine,
+            ran,
+            |w| parser.report(w),
+        );
     }
     if reuse.tail.is_none() {
-        result.block_count = r.index;
-        result.move_count = r.move_count;
-        result.end_units = r.machine.state().modal.units;
+        counts(&mut result, &r);
     }
+    let mut diagnostics = r.parser.into_diagnostics();
+    diagnostics.append(&mut run_diagnostics);
+    close(&mut result, totals, diagnostics, text);
+    (result, reuse)
+}
+
+/// A run of nothing yet.
+fn fresh(setup: &Setup) -> Run {
+    Run {
+        machine: setup.machine,
+        units: setup.units,
+        end_units: setup.units,
+        blocks: Vec::new(),
+        moves: Vec::new(),
+        events: Vec::new(),
+        diagnostics: Vec::new(),
+        block_count: 0,
+        registers: Vec::new(),
+        move_count: 0,
+        bounds: None,
+        end: End::Completed,
+        checkpoints: Vec::new(),
+        lines: Vec::new(),
+    }
+}
+
+/// The run's counts where the runner stopped.
+fn counts(result: &mut Run, r: &Runner<'_>) {
+    result.block_count = r.index;
+    result.move_count = r.move_count;
+    result.end_units = r.machine.state().modal.units;
+}
+
+/// The run's totals and its diagnostics, in order, with their columns.
+fn close(result: &mut Run, mut totals: Totals, mut diagnostics: Vec<Diagnostic>, text: &str) {
     totals.close(&mut result.checkpoints);
     let all = totals.before;
     result.bounds = all.bounds;
     result.registers = all.registers;
     result.units = all.first_units.unwrap_or(result.end_units);
-    let mut diagnostics = r.parser.into_diagnostics();
-    diagnostics.append(&mut run_diagnostics);
     diag::finish(&mut diagnostics, text);
     result.diagnostics = diagnostics;
-    (result, reuse)
+}
+
+/// A block that ran, and what it did.
+struct Ran<'a> {
+    block: &'a Block,
+    out: &'a mut Out,
+    machine: &'a Machine,
+    index: u32,
+    first_move: usize,
+    flow: Flow,
+}
+
+/// The run stops at a block on line `line` (an error or a limit).
+fn stop(result: &mut Run, run_diagnostics: &mut Vec<Diagnostic>, line: u32, d: Option<Diagnostic>) {
+    result.end = End::Error {
+        line: d.as_ref().map_or(line, |d| d.span.line.max(line)),
+    };
+    run_diagnostics.extend(d);
+}
+
+/// Adds what a block that ran did to the run and its totals, and tells the
+/// observer of its moves; its warnings go to `report`. (One place for the
+/// run on one thread and the run on two, [`pipeline`].)
+#[inline(always)]
+fn account(
+    result: &mut Run,
+    totals: &mut Totals,
+    observer: &mut impl Observer,
+    options: &RunOptions,
+    kind: MachineKind,
+    ran: Ran<'_>,
+    mut report: impl FnMut(Diagnostic),
+) {
+    let Ran {
+        block,
+        out,
+        machine,
+        index,
+        first_move,
+        flow,
+    } = ran;
+    let segment = &mut totals.segment;
+    if segment.first_units.is_none() && !out.moves.is_empty() {
+        segment.first_units = Some(machine.state().modal.units);
+    }
+    for m in &out.moves {
+        include_move(&mut segment.bounds, m);
+        observer.on_move(m);
+    }
+    if options.keep_moves {
+        result.moves.extend_from_slice(&out.moves);
+    }
+    // Most blocks have no event and no warning: the tests skip setting
+    // up the two drains (callgrind: 30 instructions a block).
+    if !out.events.is_empty() {
+        result.events.extend(out.events.drain(..).map(|kind| Event {
+            block: index,
+            line: block.span.line,
+            kind,
+        }));
+    }
+    if !out.warnings.is_empty() {
+        for w in out.warnings.drain(..) {
+            report(w);
+        }
+    }
+    if options.keep_blocks {
+        result.blocks.push(BlockReport {
+            index,
+            span: block.span,
+            state: *machine.state(),
+            notes: std::mem::take(&mut out.notes),
+            first_move: first_move as u32,
+            move_count: out.moves.len() as u32,
+        });
+    }
+    if options.checkpoint_every > 0 {
+        result.lines.push(block.span.line);
+    }
+    let offset_words = match kind {
+        MachineKind::Mill => block.holds(Address::D) || block.holds(Address::H),
+        MachineKind::Lathe => block.holds(Address::T),
+    };
+    for w in block.words.iter().filter(|_| offset_words) {
+        let n = match (w.address, kind) {
+            (Address::D | Address::H, MachineKind::Mill) => w.int() as u16,
+            (Address::T, MachineKind::Lathe) => (w.int() % 100) as u16,
+            _ => 0,
+        };
+        if n != 0 && !segment.registers.contains(&n) {
+            segment.registers.push(n);
+        }
+    }
+    if flow == Flow::End {
+        result.end = End::ProgramEnd {
+            line: block.span.line,
+        };
+    }
 }
 
 /// The report of block `index` of `run` (a run of `text` and `setup` made

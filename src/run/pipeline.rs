@@ -1,0 +1,192 @@
+//! A large program's run on two threads, for the CLI: one thread reads the
+//! blocks, the other runs them, so that the parser (about half of a run,
+//! `docs/performance.md`) and the machine work at the same time. The
+//! parser never depends on the machine (it reads the whole program whether
+//! or not the run stops, for its diagnostics), so the blocks can be read
+//! ahead; what the machine adds to the parser's diagnostics (its warnings,
+//! which share their cap) is put back in the order one thread reports it.
+//! The result is the one-thread run's, field for field (`tests/pipeline.rs`).
+
+use std::sync::Arc;
+use std::sync::mpsc::{channel, sync_channel};
+
+use super::{Observer, Ran, RunOptions, Runner, Step, Totals, account, close, counts, fresh, stop};
+use crate::diag::Diagnostic;
+use crate::machine::Machine;
+use crate::report::Run;
+use crate::setup::Setup;
+use crate::syntax::{Block, Blocks, MAX_DIAGNOSTICS, ParseOptions, check_size};
+
+/// Programs shorter than this run on one thread: a thread and its hand-overs
+/// cost more than they save (a MiB of program runs in about 5 ms).
+pub const PIPELINE_FROM_BYTES: usize = 1 << 20;
+
+/// Blocks handed over at a time, and how many such batches are under way:
+/// enough for either thread to run ahead of the other by a few thousand
+/// blocks, few enough to stay in the caches.
+const BATCH: usize = 256;
+const BATCHES: usize = 8;
+
+/// Blocks read by the parser's thread for the machine's.
+struct Batch {
+    /// The blocks (reused from batch to batch: their words keep their room).
+    blocks: Vec<Block>,
+    /// How many of `blocks` were read.
+    len: usize,
+    /// Per block read, how many diagnostics the parser had reported by its
+    /// end: the machine's warnings about the block come after these.
+    reported: Vec<u32>,
+}
+
+/// The run [`super::run_with`] makes, on two threads when `text` is at
+/// least [`PIPELINE_FROM_BYTES`] long, the machine has two cores and the run
+/// keeps no checkpoints; otherwise, or when the diagnostics would reach
+/// their cap (where the order of the two threads' reports decides which are
+/// kept), on one.
+pub fn run_pipelined(text: &str, setup: &Setup, options: RunOptions) -> Run {
+    let two = std::thread::available_parallelism().is_ok_and(|n| n.get() >= 2);
+    if two
+        && options.checkpoint_every == 0
+        && text.len() >= PIPELINE_FROM_BYTES
+        && let Some(run) = on_two_threads(text, setup, options, &mut ())
+    {
+        return run;
+    }
+    super::run_with(text, setup, options)
+}
+
+/// The run on two threads whatever the program's size, or None where
+/// [`run_pipelined`] runs on one thread. For the tests, which compare it
+/// with the one-thread run on programs of every size.
+#[doc(hidden)]
+pub fn run_on_two_threads(text: &str, setup: &Setup, options: RunOptions) -> Option<Run> {
+    if options.checkpoint_every != 0 {
+        return None;
+    }
+    on_two_threads(text, setup, options, &mut ())
+}
+
+/// The run on two threads, or None when it cannot be told apart from the
+/// one-thread run only by running that (a refused setup or program is left
+/// to it too).
+fn on_two_threads(
+    text: &str,
+    setup: &Setup,
+    options: RunOptions,
+    observer: &mut impl Observer,
+) -> Option<Run> {
+    if !setup.validate().is_empty() || check_size(text).is_some() {
+        return None;
+    }
+    std::thread::scope(|scope| {
+        let (full, filled) = sync_channel::<Batch>(BATCHES);
+        let (give_back, emptied) = channel::<Batch>();
+        for _ in 0..BATCHES {
+            let batch = Batch {
+                blocks: Vec::new(),
+                len: 0,
+                reported: Vec::with_capacity(BATCH),
+            };
+            give_back.send(batch).ok()?;
+        }
+        let reader = scope.spawn(move || {
+            let mut parser = Blocks::new(text, ParseOptions::from(setup));
+            // Ends at the program's end, or when the machine's thread has
+            // gone (it panicked).
+            while let Ok(mut batch) = emptied.recv() {
+                batch.len = 0;
+                batch.reported.clear();
+                while batch.len < BATCH {
+                    if batch.blocks.len() == batch.len {
+                        batch.blocks.push(Block::default());
+                    }
+                    if !parser.next_into(&mut batch.blocks[batch.len]) {
+                        break;
+                    }
+                    batch.len += 1;
+                    batch.reported.push(parser.diagnostics().len() as u32);
+                }
+                let last = batch.len < BATCH;
+                if full.send(batch).is_err() || last {
+                    break;
+                }
+            }
+            parser
+        });
+
+        let mut result = fresh(setup);
+        let mut totals = Totals::default();
+        let machine = Machine::new(Arc::new(setup.clone()));
+        let mut r = Runner::at(
+            Blocks::new("", ParseOptions::from(setup)),
+            machine,
+            setup,
+            options,
+        );
+        let mut run_diagnostics: Vec<Diagnostic> = Vec::new();
+        let mut warnings: Vec<(u32, Diagnostic)> = Vec::new();
+        for mut batch in filled.iter() {
+            for (block, &reported) in batch.blocks[..batch.len].iter_mut().zip(&batch.reported) {
+                std::mem::swap(&mut r.block, block);
+                let (index, first_move) = (r.index, r.move_count);
+                match r.execute() {
+                    Some(Step::Ran(flow)) => {
+                        let Runner {
+                            block,
+                            out,
+                            machine,
+                            ..
+                        } = &mut r;
+                        let ran = Ran {
+                            block,
+                            out,
+                            machine,
+                            index,
+                            first_move,
+                            flow,
+                        };
+                        account(
+                            &mut result,
+                            &mut totals,
+                            observer,
+                            &options,
+                            setup.machine,
+                            ran,
+                            |w| warnings.push((reported, w)),
+                        );
+                    }
+                    Some(Step::Stopped(d)) => {
+                        stop(&mut result, &mut run_diagnostics, r.block.span.line, d);
+                    }
+                    Some(Step::Passed) | None => {}
+                }
+                std::mem::swap(&mut r.block, block);
+            }
+            // Gone only once the parser is done.
+            let _ = give_back.send(batch);
+        }
+        let parser = match reader.join() {
+            Ok(parser) => parser,
+            Err(panic) => std::panic::resume_unwind(panic),
+        };
+        let kept = parser.diagnostics().len() + warnings.len();
+        if parser.dropped() > 0 || kept > MAX_DIAGNOSTICS {
+            return None;
+        }
+        // One thread reports a block's warnings right after what the
+        // parser reported up to the block's end.
+        let mut diagnostics = Vec::with_capacity(kept + run_diagnostics.len());
+        let mut warnings = warnings.into_iter().peekable();
+        for (i, d) in parser.into_diagnostics().into_iter().enumerate() {
+            while let Some((_, w)) = warnings.next_if(|(before, _)| *before as usize <= i) {
+                diagnostics.push(w);
+            }
+            diagnostics.push(d);
+        }
+        diagnostics.extend(warnings.map(|(_, w)| w));
+        diagnostics.append(&mut run_diagnostics);
+        counts(&mut result, &r);
+        close(&mut result, totals, diagnostics, text);
+        Some(result)
+    })
+}
