@@ -414,3 +414,53 @@ fn a_long_line_of_blocks_is_printed_in_linear_time() {
         start.elapsed()
     );
 }
+
+#[test]
+fn a_large_program_file_is_checked_as_the_same_text_from_standard_input() {
+    // Files of 1 MiB or more are mapped, not read; standard input is read.
+    let text = programs::mill_program(40_000).replace("M30", "G01 X1.2.3 (Fräsen)\nG01 X1. Q\nM30");
+    assert!(text.len() > 1 << 20, "{} bytes", text.len());
+    let path = temp("mapped.nc", text.as_bytes());
+    let setup = temp("mapped.json", programs::SETUP_JSON.as_bytes());
+    let (path, setup) = (path.to_str().unwrap(), setup.to_str().unwrap());
+    let from_file = offsetlab(&["check", "--setup", setup, path], b"");
+    let from_stdin = offsetlab(&["check", "--setup", setup, "-"], text.as_bytes());
+    assert_eq!(code(&from_file), 1);
+    assert_eq!(
+        stdout(&from_file).replace(path, "<stdin>"),
+        stdout(&from_stdin)
+    );
+    assert!(stdout(&from_file).contains("error[malformed-number]"));
+    assert!(stdout(&from_file).contains("error[missing-number]"));
+
+    // Invalid UTF-8 in a large file: the same refusal as a small one.
+    let mut bytes = text.into_bytes();
+    assert!(bytes[1 << 20].is_ascii());
+    bytes[1 << 20] = 0xff;
+    let bad = temp("mapped-latin1.nc", &bytes);
+    let out = offsetlab(&["check", bad.to_str().unwrap()], b"");
+    assert_eq!(code(&out), 2);
+    assert!(
+        stderr(&out).contains(&format!(
+            "is not UTF-8 text: invalid byte at offset {}",
+            1 << 20
+        )),
+        "{}",
+        stderr(&out)
+    );
+
+    // Larger than the interpreter reads (a sparse file: no disk used).
+    let huge = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli_robustness/huge.nc");
+    std::fs::File::create(&huge)
+        .unwrap()
+        .set_len(300 << 20)
+        .unwrap();
+    let out = offsetlab(&["check", huge.to_str().unwrap()], b"");
+    assert_eq!(code(&out), 2);
+    assert!(
+        stderr(&out).contains("is larger than 256 MiB"),
+        "{}",
+        stderr(&out)
+    );
+    let _ = std::fs::remove_file(huge);
+}
