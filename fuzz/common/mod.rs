@@ -305,6 +305,36 @@ pub fn check_run_with(setup: &Setup, program: &str, max_moves: usize) {
     assert_eq!(fast.block_count, full.block_count);
     assert_eq!(fast.move_count, full.move_count);
     assert_eq!(fast.bounds, full.bounds);
+
+    // The CLI's run on two threads is the one-thread run, field for field
+    // (near the diagnostics cap it is not made: None).
+    for (one, options) in [
+        (
+            &full,
+            RunOptions {
+                max_moves,
+                ..RunOptions::default()
+            },
+        ),
+        (
+            &fast,
+            RunOptions {
+                keep_blocks: false,
+                keep_moves: false,
+                max_moves,
+                ..RunOptions::default()
+            },
+        ),
+    ] {
+        if let Some(two) = offsetlab::run_on_two_threads(program, setup, options) {
+            assert_eq!(&two, one, "the run on two threads");
+        } else {
+            assert!(
+                one.diagnostics.len() >= offsetlab::syntax::MAX_DIAGNOSTICS
+                    || one.end == offsetlab::End::Error { line: 0 }
+            );
+        }
+    }
 }
 
 fn finite(p: &Xyz) -> bool {
