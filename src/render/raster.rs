@@ -430,10 +430,28 @@ impl Raster {
         if x1 < 0.0 || y1 < 0.0 || x0 > w || y0 > h {
             return true; // off the surface
         }
-        let cell = |v: f64, max: f64| pixel(v.clamp(0.0, max)) >> BLOCK_BITS;
-        let (bx0, bx1) = (cell(x0, w), cell(x1, w));
-        let (by0, by1) = (cell(y0, h), cell(y1, h));
-        all_full(&self.blocks, self.blocks_w, (bx0, bx1), (by0, by1), FULL)
+        let (px0, px1) = (pixel(x0.clamp(0.0, w)), pixel(x1.clamp(0.0, w)));
+        let (py0, py1) = (pixel(y0.clamp(0.0, h)), pixel(y1.clamp(0.0, h)));
+        let blocks = (
+            (px0 >> BLOCK_BITS, px1 >> BLOCK_BITS),
+            (py0 >> BLOCK_BITS, py1 >> BLOCK_BITS),
+        );
+        if all_full(&self.blocks, self.blocks_w, blocks.0, blocks.1, FULL) {
+            return true;
+        }
+        // A short segment in a block not yet finished: its own tiles. Of
+        // the 1.66 M segments of a 1M-block frame that reached the sweep,
+        // 1.62 M covered no pixel, and 1.34 M of those lay in finished
+        // tiles (a block is finished only when all its 64 tiles are): the
+        // frame 4 % faster in wasm (`examples/render_time` for
+        // wasm32-wasip1 under Node, 537–540 → 513–518 ms), 6 % fewer
+        // instructions natively.
+        let tiles = (
+            (px0 >> TILE_BITS, px1 >> TILE_BITS),
+            (py0 >> TILE_BITS, py1 >> TILE_BITS),
+        );
+        let (tx, ty) = (tiles.0.1 - tiles.0.0, tiles.1.1 - tiles.1.0);
+        tx < 4 && ty < 4 && all_full(&self.tiles, self.tiles_w, tiles.0, tiles.1, FULL_TILE)
     }
 
     /// The segment's dashes, `at` being where its start is in the pattern
