@@ -90,7 +90,10 @@ fn on_two_threads(
             };
             give_back.send(batch).ok()?;
         }
-        let reader = scope.spawn(move || {
+        // The main thread's stack (8 MiB), not a spawned thread's 2 MiB:
+        // the parser must read on this thread whatever it reads on one.
+        let reader = std::thread::Builder::new().stack_size(8 << 20);
+        let reader = reader.spawn_scoped(scope, move || {
             let mut parser = Blocks::new(text, ParseOptions::from(setup));
             // Ends at the program's end, or when the machine's thread has
             // gone (it panicked).
@@ -114,6 +117,10 @@ fn on_two_threads(
             }
             parser
         });
+        // No thread to be had: one thread runs it.
+        let Ok(reader) = reader else {
+            return None;
+        };
 
         let mut result = fresh(setup);
         let mut totals = Totals::default();
