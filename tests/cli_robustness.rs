@@ -430,6 +430,14 @@ fn a_large_program_file_is_checked_as_the_same_text_from_standard_input() {
         stdout(&from_file).replace(path, "<stdin>"),
         stdout(&from_stdin)
     );
+    // One thread (OFFSETLAB_THREADS=1) prints the same.
+    let one = bin()
+        .args(["check", "--setup", setup, path])
+        .env("OFFSETLAB_THREADS", "1")
+        .output()
+        .unwrap();
+    no_panic(&one);
+    assert_eq!(stdout(&one), stdout(&from_file));
     assert!(stdout(&from_file).contains("error[malformed-number]"));
     assert!(stdout(&from_file).contains("error[missing-number]"));
 

@@ -11,7 +11,7 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 use offsetlab::document::{ViewPlane, ViewState};
 use offsetlab::share::{self, DEFAULT_BASE, LONG_LINK};
 use offsetlab::view::{RunView, summary};
-use offsetlab::{Document, MachineKind, RunOptions, run_pipelined};
+use offsetlab::{Document, MachineKind, RunOptions, run_pipelined, run_with};
 
 #[derive(Parser)]
 #[command(
@@ -146,8 +146,7 @@ fn execute(cli: Cli, out: &mut impl Write) -> Result<ExitCode, Fatal> {
                 keep_blocks: true,
                 ..RunOptions::default()
             };
-            // A large program's parser runs on a thread of its own.
-            let run = run_pipelined(&doc.program, &doc.setup, options);
+            let run = run_program(&doc.program, &doc.setup, options);
             written(match format {
                 Format::Json => serde_json::to_writer(
                     &mut *out,
@@ -182,7 +181,7 @@ fn execute(cli: Cli, out: &mut impl Write) -> Result<ExitCode, Fatal> {
                 keep_moves: false,
                 ..RunOptions::default()
             };
-            let run = run_pipelined(program, &doc.setup, options);
+            let run = run_program(program, &doc.setup, options);
             written(check(out, &name, &run))?;
             Ok(exit(run.has_errors()))
         }
@@ -286,6 +285,17 @@ fn load_setup(common: &Common) -> Result<(String, Document), Fatal> {
         }
     };
     Ok((name, doc))
+}
+
+/// The run of `run` and `check`: a large program's parser on a thread of
+/// its own, unless the environment says `OFFSETLAB_THREADS=1` (a machine
+/// whose second core is busy, or a measure of the one-thread run).
+fn run_program(text: &str, setup: &offsetlab::Setup, options: RunOptions) -> offsetlab::Run {
+    if std::env::var_os("OFFSETLAB_THREADS").is_some_and(|v| v == "1") {
+        run_with(text, setup, options)
+    } else {
+        run_pipelined(text, setup, options)
+    }
 }
 
 /// A program file of at least this many bytes is mapped, not read.

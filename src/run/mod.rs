@@ -218,6 +218,39 @@ impl<'t> Runner<'t> {
         }
     }
 
+    /// [`account`]s for the block just run (`index`, its first move and
+    /// what it did); its warnings go to `report`, with the parser.
+    #[inline(always)]
+    fn account(
+        &mut self,
+        result: &mut Run,
+        totals: &mut Totals,
+        observer: &mut impl Observer,
+        kind: MachineKind,
+        (index, first_move, flow): (u32, usize, Flow),
+        mut report: impl FnMut(&mut Blocks<'t>, Diagnostic),
+    ) {
+        let Runner {
+            block,
+            out,
+            machine,
+            parser,
+            options,
+            ..
+        } = self;
+        let ran = (index, first_move, flow);
+        account(
+            result,
+            totals,
+            observer,
+            options,
+            kind,
+            (block, out, machine),
+            ran,
+            |w| report(parser, w),
+        );
+    }
+
     fn checkpoint(&self) -> Checkpoint {
         Checkpoint {
             index: self.index,
@@ -424,31 +457,16 @@ pub fn rerun_observed(
             }
             Step::Ran(flow) => flow,
         };
-        let Runner {
-            block,
-            out,
-            machine,
-            parser,
-            ..
-        } = &mut r;
-        let ran = Ran {
-            block,
-            out,
-            machine,
-            index,
-            first_move,
-            flow,
-        };
         // Warnings share the diagnostics cap with the parser's (a warning
         // per block could otherwise fill memory and the page's list).
-        account(
+        let ran = (index, first_move, flow);
+        r.account(
             &mut result,
             &mut totals,
             observer,
-            &options,
             setup.machine,
             ran,
-            |w| parser.report(w),
+            |parser, w| parser.report(w),
         );
     }
     if reuse.tail.is_none() {
@@ -498,16 +516,6 @@ fn close(result: &mut Run, mut totals: Totals, mut diagnostics: Vec<Diagnostic>,
     result.diagnostics = diagnostics;
 }
 
-/// A block that ran, and what it did.
-struct Ran<'a> {
-    block: &'a Block,
-    out: &'a mut Out,
-    machine: &'a Machine,
-    index: u32,
-    first_move: usize,
-    flow: Flow,
-}
-
 /// The run stops at a block on line `line` (an error or a limit).
 fn stop(result: &mut Run, run_diagnostics: &mut Vec<Diagnostic>, line: u32, d: Option<Diagnostic>) {
     result.end = End::Error {
@@ -520,23 +528,17 @@ fn stop(result: &mut Run, run_diagnostics: &mut Vec<Diagnostic>, line: u32, d: O
 /// observer of its moves; its warnings go to `report`. (One place for the
 /// run on one thread and the run on two, [`pipeline`].)
 #[inline(always)]
+#[allow(clippy::too_many_arguments)]
 fn account(
     result: &mut Run,
     totals: &mut Totals,
     observer: &mut impl Observer,
     options: &RunOptions,
     kind: MachineKind,
-    ran: Ran<'_>,
+    (block, out, machine): (&Block, &mut Out, &Machine),
+    (index, first_move, flow): (u32, usize, Flow),
     mut report: impl FnMut(Diagnostic),
 ) {
-    let Ran {
-        block,
-        out,
-        machine,
-        index,
-        first_move,
-        flow,
-    } = ran;
     let segment = &mut totals.segment;
     if segment.first_units.is_none() && !out.moves.is_empty() {
         segment.first_units = Some(machine.state().modal.units);

@@ -10,7 +10,7 @@
 use std::sync::Arc;
 use std::sync::mpsc::{channel, sync_channel};
 
-use super::{Observer, Ran, RunOptions, Runner, Step, Totals, account, close, counts, fresh, stop};
+use super::{Observer, RunOptions, Runner, Step, Totals, close, counts, fresh, stop};
 use crate::diag::Diagnostic;
 use crate::machine::Machine;
 use crate::report::Run;
@@ -139,28 +139,14 @@ fn on_two_threads(
                 let (index, first_move) = (r.index, r.move_count);
                 match r.execute() {
                     Some(Step::Ran(flow)) => {
-                        let Runner {
-                            block,
-                            out,
-                            machine,
-                            ..
-                        } = &mut r;
-                        let ran = Ran {
-                            block,
-                            out,
-                            machine,
-                            index,
-                            first_move,
-                            flow,
-                        };
-                        account(
+                        let ran = (index, first_move, flow);
+                        r.account(
                             &mut result,
                             &mut totals,
                             observer,
-                            &options,
                             setup.machine,
                             ran,
-                            |w| warnings.push((reported, w)),
+                            |_, w| warnings.push((reported, w)),
                         );
                     }
                     Some(Step::Stopped(d)) => {
