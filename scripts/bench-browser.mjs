@@ -9,7 +9,7 @@
 //   3  the 1M-block program opened with Open… (the page's file input, as a
 //      user opens a .nc file) until its drawing is on the canvas; the
 //      longest main-thread task meanwhile (is the page responsive?); the
-//      peak memory of the page's renderer process (page + worker + wasm).
+//      peak JS heaps + wasm memory (and the renderer process's peak RSS).
 //   4  with the 10k-block program open, a one-character edit typed in the
 //      editor (a 7 typed after the first digit of an N number in the middle
 //      of the program, then Backspace, alternately) until the re-run is
@@ -75,7 +75,9 @@
 //   - "longest main-thread task": PerformanceObserver('longtask') (tasks over
 //     50 ms). The page counts as responsive when no main-thread task takes
 //     100 ms or more (RAIL's input budget).
-//   - memory: the peak resident set of the renderer process that hosts the
+//   - memory: issue 6's "peak JS heap + wasm memory": the highest sampled
+//     JS heaps of the page and of the worker plus the worker's wasm memory;
+//     beside it, the peak resident set of the renderer process that hosts the
 //     page and its worker (JS heaps, wasm memory, the editor's DOM, canvas
 //     buffers together): the highest of its VmRSS and VmHWM (/proc) sampled
 //     every 200 ms — VmHWM alone will not do: it went down during runs
@@ -980,6 +982,11 @@ function headline(results) {
     longest: stats(t3.map((x) => x.main.longest)),
     gap: stats(t3.map((x) => x.main.maxFrameGap)),
     peak: stats(t3.map((x) => x.memory.rendererPeak)),
+    // Issue 6's measure: the JS heaps (page and worker) and the wasm memory.
+    heapsWasm: stats(t3.map((x) => {
+      const { pageHeapPeak: page, workerHeapPeak: worker, wasm } = x.memory;
+      return [page, worker, wasm].every((v) => typeof v === 'number') ? page + worker + wasm : null;
+    }).filter((v) => v !== null)),
     keyToFrame: stats(edits.map((e) => e.keyToFrame)),
     keyToDrawnMessage: stats(edits.map((e) => e.keyToDrawnMessage)),
     debounce: stats(edits.map((e) => e.debounce)),
@@ -991,7 +998,7 @@ function headline(results) {
   h.status = {
     time: h.totalTimedOut && !h.total ? 'not met (timed out)' : verdict(h.total, (v) => v < 1000),
     responsive: verdict(h.longest, (v) => v < 100),
-    memory: verdict(h.peak, (v) => v < 400e6),
+    memory: verdict(h.heapsWasm, (v) => v < 400e6),
     edit: verdict(h.keyToFrame, (v) => v < 16),
     editNoDebounce: verdict(h.requestToFrame, (v) => v < 16),
     editX: verdict(h.keyToFrameX, (v) => v < 16),
@@ -1020,7 +1027,8 @@ function report(results) {
     ['3', '  until the editor holds the whole text (it takes a long one in steps)', range(stats(t3.map((x) => x.editorReady)), fmtMs), '—', ''],
     ['3', 'responsive: longest main-thread task meanwhile (until drawn and the editor done)', range(h.longest, fmtMs), '< 100 ms', h.status.responsive],
     ['3', '  longest gap between main-thread animation frames', range(h.gap, fmtMs), '—', ''],
-    ['3', 'peak memory: renderer process (page + worker + wasm)', range(h.peak, fmtMB), '< 400 MB', h.status.memory],
+    ['3', 'peak memory: JS heaps (page + worker) + wasm memory', range(h.heapsWasm, fmtMB), '< 400 MB', h.status.memory],
+    ['3', '  the renderer process\'s peak RSS (page, worker, wasm, DOM, canvases)', range(h.peak, fmtMB), '—', ''],
     ['4', `${smallName}: one-character edit, keystroke until drawn`, range(h.keyToFrame, fmtMs), '< 16 ms', h.status.edit],
     ['4', '  of which keystroke to run request (editor, the page\'s debounce if any)', range(h.debounce, fmtMs), '—', ''],
     ['4', '  run request until drawn', range(h.requestToFrame, fmtMs), '< 16 ms', h.status.editNoDebounce],
