@@ -53,6 +53,23 @@ impl ToolArc {
             .max(self.programmed.segments(tolerance))
     }
 
+    /// The circle of one path, the plane's axes (first, second, normal)
+    /// and per axis what a plane coordinate is of the axis's (X / 2 on a
+    /// lathe, whose X is a diameter).
+    fn circle(&self, programmed: bool) -> (&Circle, (usize, usize, usize), impl Fn(usize) -> f64) {
+        let c = if programmed {
+            &self.programmed
+        } else {
+            &self.actual
+        };
+        let x = if self.diameter_x { 0.5 } else { 1.0 };
+        (
+            c,
+            self.plane.axes(),
+            move |axis| if axis == 0 { x } else { 1.0 },
+        )
+    }
+
     /// Point `i` of `count` along the arc from `from` to `to` (`i` = 0 is
     /// `from`, `count` is `to`); the axis normal to the plane moves linearly
     /// (a helix).
@@ -63,19 +80,7 @@ impl ToolArc {
         if i >= count {
             return to;
         }
-        let c = if programmed {
-            &self.programmed
-        } else {
-            &self.actual
-        };
-        let (ia, ib, n) = self.plane.axes();
-        let s = |axis: usize| {
-            if self.diameter_x && axis == 0 {
-                0.5
-            } else {
-                1.0
-            }
-        };
+        let (c, (ia, ib, n), s) = self.circle(programmed);
         let t = i as f64 / count as f64;
         let q = c.point(t);
         let mut p = from;
@@ -95,19 +100,7 @@ impl ToolArc {
         count: usize,
         mut f: impl FnMut(usize, Xyz),
     ) {
-        let c = if programmed {
-            &self.programmed
-        } else {
-            &self.actual
-        };
-        let (ia, ib, n) = self.plane.axes();
-        let s = |axis: usize| {
-            if self.diameter_x && axis == 0 {
-                0.5
-            } else {
-                1.0
-            }
-        };
+        let (c, (ia, ib, n), s) = self.circle(programmed);
         let (step_sin, step_cos) = (c.sweep / count as f64).sin_cos();
         let (mut sin, mut cos) = c.start_angle.sin_cos();
         f(0, from);
@@ -205,16 +198,8 @@ impl<'a> PathBuilder<'a> {
         }
         self.foreseen = true;
         let scale = total as f64 / read as f64 * 1.05;
-        let more = |len: usize| ((len as f64 * scale) as usize).saturating_sub(len);
-        let p = &mut self.path;
-        p.actual.reserve(more(p.actual.len()));
-        p.programmed.reserve(more(p.programmed.len()));
-        p.starts.reserve(more(p.starts.len()));
-        p.kinds.reserve(more(p.kinds.len()));
-        p.blocks.reserve(more(p.blocks.len()));
-        p.lines.reserve(more(p.lines.len()));
-        p.arcs.reserve(more(p.arcs.len()));
-        p.arc_moves.reserve(more(p.arc_moves.len()));
+        let lengths = self.path.lengths().map(|len| (len as f64 * scale) as usize);
+        self.path.reserve_to(lengths);
     }
 
     /// The toolpath of `run`, which `reuse` says what it took from the
@@ -250,16 +235,8 @@ impl crate::run::Observer for PathBuilder<'_> {
             // An edit's path is about as long as the earlier one: room for
             // it at once, instead of growing (copying) the arrays.
             self.foreseen = true;
-            let p = &mut self.path;
-            p.actual.reserve(earlier.actual.len());
-            p.programmed.reserve(earlier.programmed.len());
-            p.starts.reserve(earlier.starts.len());
-            p.kinds.reserve(earlier.kinds.len());
-            p.blocks.reserve(earlier.blocks.len());
-            p.lines.reserve(earlier.lines.len());
-            p.arcs.reserve(earlier.arcs.len());
-            p.arc_moves.reserve(earlier.arc_moves.len());
-            p.append_moves(earlier, 0..prefix_moves, 0, 0);
+            self.path.reserve_to(earlier.lengths());
+            self.path.append_moves(earlier, 0..prefix_moves, 0, 0);
         }
     }
 }
@@ -332,6 +309,36 @@ impl Toolpath {
                 programmed: circle(a.programmed_circle()),
             });
         }
+    }
+
+    /// The lengths of the arrays: actual, programmed, starts, kinds,
+    /// blocks, lines, arcs, arc moves.
+    fn lengths(&self) -> [usize; 8] {
+        [
+            self.actual.len(),
+            self.programmed.len(),
+            self.starts.len(),
+            self.kinds.len(),
+            self.blocks.len(),
+            self.lines.len(),
+            self.arcs.len(),
+            self.arc_moves.len(),
+        ]
+    }
+
+    /// Room in each array for as many items as `lengths` says (in the
+    /// order of [`Toolpath::lengths`]), at once.
+    fn reserve_to(&mut self, lengths: [usize; 8]) {
+        let [a, p, s, k, b, l, c, m] = lengths;
+        let room = |want: usize, len: usize| want.saturating_sub(len);
+        self.actual.reserve(room(a, self.actual.len()));
+        self.programmed.reserve(room(p, self.programmed.len()));
+        self.starts.reserve(room(s, self.starts.len()));
+        self.kinds.reserve(room(k, self.kinds.len()));
+        self.blocks.reserve(room(b, self.blocks.len()));
+        self.lines.reserve(room(l, self.lines.len()));
+        self.arcs.reserve(room(c, self.arcs.len()));
+        self.arc_moves.reserve(room(m, self.arc_moves.len()));
     }
 
     /// Appends the moves `moves` of `from` (a toolpath in the same units),

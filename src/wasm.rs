@@ -100,9 +100,6 @@ pub struct Session {
     frame: Option<Frame>,
     /// Blocks of the previous run (None before the first).
     last_count: Option<u32>,
-    /// What the last run took from the run before it (an edit is run again
-    /// from there, and drawn again only where it changed the path).
-    last_reuse: crate::Reuse,
 }
 
 /// What `view()` returns and `set_view()` reads: the document's `view`
@@ -141,7 +138,6 @@ impl Default for Session {
             size: (300.0, 150.0),
             frame: None,
             last_count: None,
-            last_reuse: crate::Reuse::default(),
         }
     }
 }
@@ -402,8 +398,8 @@ impl Session {
 struct SessionObserver<'a> {
     path: PathBuilder<'a>,
     progress: Option<&'a js_sys::Function>,
-    len: f64,
-    text_len: usize,
+    /// The program's length in bytes.
+    len: usize,
 }
 
 impl crate::run::Observer for SessionObserver<'_> {
@@ -416,10 +412,13 @@ impl crate::run::Observer for SessionObserver<'_> {
     }
 
     fn on_progress(&mut self, read: usize) {
-        self.path.foresee(read, self.text_len);
+        self.path.foresee(read, self.len);
         if let Some(f) = self.progress {
             // A throwing callback must not stop the run.
-            let _ = f.call1(&JsValue::NULL, &JsValue::from_f64(read as f64 / self.len));
+            let _ = f.call1(
+                &JsValue::NULL,
+                &JsValue::from_f64(read as f64 / self.len.max(1) as f64),
+            );
         }
     }
 }
@@ -465,8 +464,7 @@ impl Session {
                         earlier.map(|_| &self.toolpath),
                     ),
                     progress,
-                    len: self.text.len().max(1) as f64,
-                    text_len: self.text.len(),
+                    len: self.text.len(),
                 };
                 let (run, reuse) =
                     crate::rerun_observed(&self.text, &setup, SESSION_RUN, earlier, &mut observer);
@@ -475,7 +473,6 @@ impl Session {
                 if toolpath != self.toolpath {
                     self.drawing += 1;
                 }
-                self.last_reuse = reuse;
                 self.run = run;
                 self.toolpath = toolpath;
                 self.setup = setup;
@@ -490,7 +487,6 @@ impl Session {
                 self.toolpath = Toolpath::new(self.setup.machine, self.setup.units);
                 self.drawing += 1;
                 self.setup_refused = true;
-                self.last_reuse = crate::Reuse::default();
             }
         }
         drop(earlier_text);

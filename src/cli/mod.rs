@@ -167,13 +167,9 @@ fn execute(cli: Cli, out: &mut impl Write) -> Result<ExitCode, Fatal> {
                 Some(path) => map_program(path)?,
                 None => None,
             };
-            let name = match (&common.program, &mapped) {
-                (Some(path), None) => {
-                    let (name, text) = read_program(path)?;
-                    doc.program = text;
-                    name
-                }
-                _ => name,
+            let name = match mapped {
+                Some(_) => name,
+                None => program_into(&common, name, &mut doc)?,
             };
             let program = mapped.as_ref().map_or(doc.program.as_str(), Mapped::text);
             let options = RunOptions {
@@ -236,12 +232,19 @@ fn execute(cli: Cli, out: &mut impl Write) -> Result<ExitCode, Fatal> {
 /// PROGRAM or, without it, from the document.
 fn load(common: &Common) -> Result<(String, Document), Fatal> {
     let (name, mut doc) = load_setup(common)?;
-    if let Some(path) = &common.program {
-        let (name, text) = read_program(path)?;
-        doc.program = text;
-        return Ok((name, doc));
-    }
+    let name = program_into(common, name, &mut doc)?;
     Ok((name, doc))
+}
+
+/// Reads PROGRAM, when there is one, into the document of
+/// [`load_setup`]; returns the name of the program read (else `name`).
+fn program_into(common: &Common, name: String, doc: &mut Document) -> Result<String, Fatal> {
+    let Some(path) = &common.program else {
+        return Ok(name);
+    };
+    let (name, text) = read_program(path)?;
+    doc.program = text;
+    Ok(name)
 }
 
 /// [`load`] but for reading PROGRAM, when there is one: the caller reads
@@ -334,10 +337,7 @@ fn map_program(path: &str) -> Result<Option<Mapped>, Fatal> {
     }
     let limit = offsetlab::syntax::MAX_PROGRAM_BYTES;
     if meta.len() > limit as u64 {
-        return Err(Fatal(format!(
-            "{path} is larger than {} MiB, the most offsetlab reads",
-            limit / (1024 * 1024)
-        )));
+        return Err(too_large(path, limit));
     }
     // SAFETY: the map is read only; see `Mapped::text` for a file changed
     // meanwhile.
@@ -347,10 +347,7 @@ fn map_program(path: &str) -> Result<Option<Mapped>, Fatal> {
         return Ok(None); // not mappable (a special file system): read it
     };
     if let Err(e) = std::str::from_utf8(&map) {
-        return Err(Fatal(format!(
-            "{path} is not UTF-8 text: invalid byte at offset {}",
-            e.valid_up_to()
-        )));
+        return Err(not_utf8(path, e));
     }
     Ok(Some(Mapped(map)))
 }
@@ -377,17 +374,25 @@ fn read_text(name: &str, reader: impl Read, limit: usize) -> Result<String, Fata
         .read_to_end(&mut bytes)
         .map_err(|e| Fatal(format!("cannot read {name}: {e}")))?;
     if bytes.len() > limit {
-        return Err(Fatal(format!(
-            "{name} is larger than {} MiB, the most offsetlab reads",
-            limit / (1024 * 1024)
-        )));
+        return Err(too_large(name, limit));
     }
-    String::from_utf8(bytes).map_err(|e| {
-        Fatal(format!(
-            "{name} is not UTF-8 text: invalid byte at offset {}",
-            e.utf8_error().valid_up_to()
-        ))
-    })
+    String::from_utf8(bytes).map_err(|e| not_utf8(name, e.utf8_error()))
+}
+
+/// The refusal of an input over `limit` bytes.
+fn too_large(name: &str, limit: usize) -> Fatal {
+    Fatal(format!(
+        "{name} is larger than {} MiB, the most offsetlab reads",
+        limit / (1024 * 1024)
+    ))
+}
+
+/// The refusal of an input that is not UTF-8, with its first bad byte.
+fn not_utf8(name: &str, e: std::str::Utf8Error) -> Fatal {
+    Fatal(format!(
+        "{name} is not UTF-8 text: invalid byte at offset {}",
+        e.valid_up_to()
+    ))
 }
 
 /// `check`: diagnostics as FILE:LINE:COL and one summary line.

@@ -10,7 +10,7 @@
 use std::sync::Arc;
 use std::sync::mpsc::{channel, sync_channel};
 
-use super::{Observer, RunOptions, Runner, Step, Totals, close, counts, fresh, stop};
+use super::{RunOptions, Runner, Step, Totals, close, counts, fresh, stop};
 use crate::diag::Diagnostic;
 use crate::machine::Machine;
 use crate::report::Run;
@@ -47,9 +47,8 @@ struct Batch {
 pub fn run_pipelined(text: &str, setup: &Setup, options: RunOptions) -> Run {
     let two = std::thread::available_parallelism().is_ok_and(|n| n.get() >= 2);
     if two
-        && options.checkpoint_every == 0
         && text.len() >= PIPELINE_FROM_BYTES
-        && let Some(run) = on_two_threads(text, setup, options, &mut ())
+        && let Some(run) = on_two_threads(text, setup, options)
     {
         return run;
     }
@@ -61,22 +60,15 @@ pub fn run_pipelined(text: &str, setup: &Setup, options: RunOptions) -> Run {
 /// with the one-thread run on programs of every size.
 #[doc(hidden)]
 pub fn run_on_two_threads(text: &str, setup: &Setup, options: RunOptions) -> Option<Run> {
-    if options.checkpoint_every != 0 {
-        return None;
-    }
-    on_two_threads(text, setup, options, &mut ())
+    on_two_threads(text, setup, options)
 }
 
 /// The run on two threads, or None when it cannot be told apart from the
 /// one-thread run only by running that (a refused setup or program is left
-/// to it too).
-fn on_two_threads(
-    text: &str,
-    setup: &Setup,
-    options: RunOptions,
-    observer: &mut impl Observer,
-) -> Option<Run> {
-    if !setup.validate().is_empty() || check_size(text).is_some() {
+/// to it too, and a run keeping checkpoints: the parser's place at each is
+/// on the other thread).
+fn on_two_threads(text: &str, setup: &Setup, options: RunOptions) -> Option<Run> {
+    if options.checkpoint_every != 0 || !setup.validate().is_empty() || check_size(text).is_some() {
         return None;
     }
     std::thread::scope(|scope| {
@@ -143,7 +135,7 @@ fn on_two_threads(
                         r.account(
                             &mut result,
                             &mut totals,
-                            observer,
+                            &mut (),
                             setup.machine,
                             ran,
                             |_, w| warnings.push((reported, w)),
