@@ -1,5 +1,8 @@
 //! Times drawing a program's toolpath on a pixel layer, as the page does for
-//! large paths: `cargo run --release --example render_time -- FILE [W H DPR]`.
+//! large paths: `cargo run --release --example render_time -- FILE [W H DPR
+//! FRAMES [RGBA_OUT]]`, every frame a whole one; with `EDITED=FILE2`, each
+//! frame after the first draws FILE2 and FILE alternately on the last
+//! frame's pixels, as the page does after an edit (`Raster::kept`).
 use std::time::Instant;
 
 use offsetlab::render::{self, Font, Pen, Raster, Rect, Scene, Stroke, Surface};
@@ -64,13 +67,31 @@ fn main() {
         scale: dpr,
         bytes: Vec::new(),
     };
-    for _ in 0..num(5, 3.0) as usize {
+    let edited = std::env::var_os("EDITED").map(|f| {
+        let text = std::fs::read_to_string(f).expect("edited program");
+        Toolpath::from_run(&offsetlab::run(&text, &setup))
+    });
+    for frame in 0..num(5, 3.0) as usize {
+        let drawn = match &edited {
+            Some(other) if frame % 2 == 1 => other,
+            Some(_) => &tp,
+            None => {
+                layer.raster.forget();
+                &tp
+            }
+        };
         let t = Instant::now();
-        render::draw_scene(&mut layer, &tp, &Scene::default(), w, h);
+        render::draw_scene(&mut layer, drawn, &Scene::default(), w, h);
+        let kept = layer.raster.kept();
         println!(
-            "{} moves: {:.1} ms; {} vector segments, {:.0} CSS px long",
-            tp.len(),
+            "{} moves: {:.1} ms{}; {} vector segments, {:.0} CSS px long",
+            drawn.len(),
             t.elapsed().as_secs_f64() * 1e3,
+            if kept {
+                " (on the last frame's pixels)"
+            } else {
+                ""
+            },
             layer.segments,
             layer.length
         );

@@ -15,7 +15,12 @@
 //      of the program, then Backspace, alternately) until the re-run is
 //      drawn, with the time to the run request (the page's debounce, if
 //      any) shown apart; then the same typed into the X word of that line
-//      (4b: the edit moves the path, which is drawn again).
+//      (4b: the edit moves the path, which is drawn again: X101.318 becomes
+//      X1701.318, the next arc's end is no longer on its circle and the run
+//      stops there, the bounds grow, the view follows: every frame is a
+//      whole frame); then the same typed after the X word's decimal point
+//      (4c: X101.318 becomes X101.7318, the path moves by 0.4 mm and keeps
+//      its bounds: the frame is drawn again only around the moves changed).
 //   5  the 1M-block path panned (mouse drag on #view) and zoomed (wheel)
 //      for a few seconds: frames the worker finished per second.
 //
@@ -901,23 +906,34 @@ async function runEdits(server, small, run) {
       scroller.scrollTop = (scroller.scrollHeight - scroller.clientHeight) / 2;
     });
     await sleep(300);
-    const target = await page.evaluate(() => {
+    // The G01 line nearest the middle of the editor; for 4c the nearest one
+    // followed by another G01 (an edit of a line before an arc moves the
+    // arc's end off its circle: an error, and the run stops there).
+    const targets = await page.evaluate(() => {
       const box = document.querySelector('.cm-scroller').getBoundingClientRect();
       const mid = box.top + box.height / 2;
-      let best = null;
+      const best = [null, null];
       for (const line of document.querySelectorAll('.cm-line')) {
         const r = line.getBoundingClientRect();
         if (r.top < box.top || r.bottom > box.bottom || !/^N\d+ G01 X/.test(line.textContent)) continue;
-        if (!best || Math.abs(r.top - mid) < Math.abs(best.y - mid)) best = { x: r.left + 4, y: r.top + r.height / 2, text: line.textContent };
+        const here = { x: r.left + 4, y: r.top + r.height / 2, text: line.textContent };
+        const plain = /^N\d+ G01 X/.test(line.nextElementSibling?.textContent ?? '');
+        for (const k of plain ? [0, 1] : [0]) {
+          if (!best[k] || Math.abs(here.y - mid) < Math.abs(best[k].y - mid)) best[k] = here;
+        }
       }
       return best;
     });
-    if (!target) throw new Error('no G01 line visible in the middle of the editor');
+    const [target, plain] = targets;
+    if (!target || !plain) throw new Error('no G01 line visible in the middle of the editor');
     out.line = target.text;
-    // The N number's first digit, then the X word's (after the sign).
-    const xAt = 1 + /X-?/.exec(target.text).index + /X-?/.exec(target.text)[0].length - 1;
-    for (const [kind, column] of [['n', 2], ['x', xAt + 1]]) {
-      await page.mouse.click(target.x, target.y);
+    out.plainLine = plain.text;
+    // The N number's first digit, then the X word's (after the sign), then
+    // the X word's first decimal.
+    const xAt = (text) => 1 + /X-?/.exec(text).index + /X-?/.exec(text)[0].length - 1;
+    const dotAt = plain.text.indexOf('.', xAt(plain.text));
+    for (const [kind, column, line] of [['n', 2, target], ['x', xAt(target.text) + 1, target], ['f', dotAt + 1, plain]]) {
+      await page.mouse.click(line.x, line.y);
       await page.keyboard.press('Home');
       for (let c = 0; c < column; c += 1) await page.keyboard.press('ArrowRight');
       await sleep(1000);
@@ -971,11 +987,13 @@ function headline(results) {
   const drawn = t3.filter((x) => !x.timedOut);
   const t5 = t3runs.map((r) => r.t5).filter(Boolean);
   const t5small = t4runs.map((r) => r.t5).filter(Boolean);
-  const edits = t4runs.flatMap((r) => r.edits.filter((e) => !e.timedOut && e.kind !== 'x'));
-  const editsX = t4runs.flatMap((r) => r.edits.filter((e) => !e.timedOut && e.kind === 'x'));
+  const editsOf = (kind) => t4runs.flatMap((r) => r.edits.filter((e) => !e.timedOut && (e.kind ?? 'n') === kind));
+  const [edits, editsX, editsF] = ['n', 'x', 'f'].map(editsOf);
   const h = {
     keyToFrameX: stats(editsX.map((e) => e.keyToFrame)),
     requestToFrameX: stats(editsX.map((e) => e.requestToFrame)),
+    keyToFrameF: stats(editsF.map((e) => e.keyToFrame)),
+    requestToFrameF: stats(editsF.map((e) => e.requestToFrame)),
     total: stats(drawn.map((x) => x.total)),
     totalTimedOut: t3.length - drawn.length,
     pageDrawn: stats(t3.map((x) => x.pageDrawn)),
@@ -1002,6 +1020,7 @@ function headline(results) {
     edit: verdict(h.keyToFrame, (v) => v < 16),
     editNoDebounce: verdict(h.requestToFrame, (v) => v < 16),
     editX: verdict(h.keyToFrameX, (v) => v < 16),
+    editF: verdict(h.keyToFrameF, (v) => v < 16),
     fps: verdict(h.fps, (v) => v >= 30),
   };
   return h;
@@ -1033,8 +1052,10 @@ function report(results) {
     ['4', '  of which keystroke to run request (editor, the page\'s debounce if any)', range(h.debounce, fmtMs), '—', ''],
     ['4', '  run request until drawn', range(h.requestToFrame, fmtMs), '< 16 ms', h.status.editNoDebounce],
     ['4', '  keystroke until the page\'s `drawn` message', range(h.keyToDrawnMessage, fmtMs), '—', ''],
-    ['4b', `${smallName}: the same typed into the X word (the path moves), keystroke until drawn`, range(h.keyToFrameX, fmtMs), '< 16 ms', h.status.editX],
+    ['4b', `${smallName}: the same typed into the X word (the path and its bounds change), keystroke until drawn`, range(h.keyToFrameX, fmtMs), '< 16 ms', h.status.editX],
     ['4b', '  run request until drawn', range(h.requestToFrameX, fmtMs), '—', ''],
+    ['4c', `${smallName}: the same typed after the X word's point (the path moves, its bounds stay), keystroke until drawn`, range(h.keyToFrameF, fmtMs), '< 16 ms', h.status.editF],
+    ['4c', '  run request until drawn', range(h.requestToFrameF, fmtMs), '—', ''],
     ['5', `${bigName}: pan + zoom, frames drawn per second`,
       h.fps ? `${range(h.fps, fps)}${t5none.length ? ` (${t5none.length} of ${t5none.length + t5.length} runs: ${t5none[0].noFrame})` : ''}` : '—',
       '≥ 30', h.status.fps],
@@ -1095,7 +1116,7 @@ function report(results) {
       + `localStorage writes (run 1): ${st.length ? st.map((e) => `${(e.chars / 1e6).toFixed(1)} M characters in ${fmtMs(e.ms)}`).join(', ') : 'none'}.`);
     out.push(`Summary line of the page: ${t3.find((x) => x.summary)?.summary ?? '—'}`);
   }
-  for (const [kind, label] of [['n', 'N number'], ['x', 'X word']]) {
+  for (const [kind, label] of [['n', 'N number'], ['x', 'X word'], ['f', 'X word\'s decimals']]) {
     const these = edits.filter((x) => (x.kind ?? 'n') === kind);
     if (!these.length) continue;
     const e = (k) => stats(these.map((x) => x[k]));
@@ -1119,6 +1140,7 @@ function report(results) {
     const timed = t4runs.flatMap((r) => r.edits).filter((x) => x.timedOut).length;
     out.push('');
     out.push(`Edited line: ${t4runs.find((r) => r.line)?.line ?? '—'} (a 7 typed after the first digit of its N number, then Backspace, and the same in its X word); `
+      + `for 4c ${t4runs.find((r) => r.plainLine)?.plainLine ?? '—'} (the same after its X word's point); `
       + `${edits.length} edits${timed ? `, ${timed} not drawn within ${LIMIT.edit / 1000} s` : ''}. `
       + `Summary line of the page: ${t4runs.find((r) => r.summary)?.summary ?? '—'}`);
   }

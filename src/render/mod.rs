@@ -39,6 +39,15 @@ pub trait Pen {
     fn line_to(&mut self, x: f64, y: f64);
     /// Strokes the path begun by [`Pen::begin_path`].
     fn stroke(&mut self);
+    /// The next move of the path starts at (x, y), the point drawn last,
+    /// continuing the line; with `restart`, a dashed line's pattern starts
+    /// afresh there (a new sub-path: [`RESTART_EVERY`] says where), else
+    /// the line goes on as it was.
+    fn next_move(&mut self, x: f64, y: f64, restart: bool) {
+        if restart {
+            self.move_to(x, y);
+        }
+    }
     /// Starts a named group of drawing (an SVG `<g class>`; a canvas ignores it).
     fn begin_group(&mut self, _name: &str) {}
     /// Ends the group started last.
@@ -92,6 +101,14 @@ const MIN_SCALE_PX: f64 = 70.0;
 /// Vertices closer than this to the last one drawn are skipped (level of
 /// detail: a million tiny segments cost a million calls for nothing).
 const MIN_SEGMENT_PX: f64 = 0.5;
+/// Where a dashed path's pattern starts afresh: at a move after one at
+/// least a period of the pattern long on screen, and at every move whose
+/// number is a multiple of this. So how a move is dashed depends on a few
+/// moves before it at most, not on the length of all of them, and an edit
+/// changes the drawing only around the moves it changes ([`Raster`] keeps
+/// the pixels of the others); short moves (a surface milled in steps of a
+/// pixel or two) still show dashes run across several of them.
+pub const RESTART_EVERY: usize = 16;
 /// Toolpaths of this many moves or more are drawn on the surface's pixel
 /// layer when it has one ([`Surface::raster`]); smaller ones as vector
 /// strokes, which have round joins and the browser's own anti-aliasing.
@@ -397,17 +414,32 @@ fn draw_path<'a>(
     let arcs = (DRAW_TOLERANCE_PX / f.transform.scale, s.arc_points());
     for rapid in [true, false] {
         let stroke = stroke_for(rapid);
+        let period: f64 = stroke.dash.iter().sum();
+        let dashed = period > 0.0;
+        // How far the last move went on screen (at least), from its first
+        // point drawn, for where a dashed pattern starts afresh.
+        let mut went = 0.0_f64;
+        let mut from: Option<(f64, f64)> = None;
         // `pen` is the last point drawn, `pending` the last vertex passed
         // over for being too close to it; ends of runs are always drawn.
         let mut pen: Option<(f64, f64)> = None;
         let mut pending: Option<(f64, f64)> = None;
         let mut begun = false;
         let keep = |m: usize| tp.kinds.get(m).is_some_and(|&k| is_rapid(k) == rapid);
-        tp.for_each_point(range.clone(), programmed, arcs, keep, |_, i, p| {
+        tp.for_each_point(range.clone(), programmed, arcs, keep, |m, i, p| {
             let (u, v) = f.plane.project(&p);
             let (x, y) = f.transform.to_screen(u, v);
             if !(x.is_finite() && y.is_finite()) {
                 return;
+            }
+            let before = went;
+            if i == 0 {
+                went = 0.0;
+            } else if let Some((fx, fy)) = from {
+                went = went.max((x - fx).abs()).max((y - fy).abs());
+            }
+            if i == 0 {
+                from = Some((x, y));
             }
             if !begun {
                 s.begin_path(stroke);
@@ -418,6 +450,14 @@ fn draw_path<'a>(
                 // the line; any other starts a new sub-path.
                 let last = pending.or(pen);
                 if last.is_some_and(|(lx, ly)| distance_near(x - lx, y - ly, 0.01) <= 0.01) {
+                    // Where the last move's end was skipped (level of
+                    // detail), the line runs on across the two moves.
+                    if pending.is_none()
+                        && let Some((px, py)) = pen
+                    {
+                        let restart = dashed && (before >= period || m % RESTART_EVERY == 0);
+                        s.next_move(px, py, restart);
+                    }
                     return;
                 }
                 if let Some((px, py)) = pending.take() {
@@ -535,6 +575,68 @@ mod tests {
                 "{step}"
             );
         }
+    }
+
+    #[test]
+    fn a_dashed_path_starts_its_pattern_afresh_after_long_moves_and_every_sixteen() {
+        // Where each programmed feed sub-path starts (move_to), and the
+        // moves that continue it without a new pattern (next_move, false).
+        #[derive(Default)]
+        struct Starts {
+            dashed: bool,
+            starts: Vec<usize>,
+            ongoing: Vec<usize>,
+            moves: usize,
+        }
+        impl Pen for Starts {
+            fn begin_path(&mut self, stroke: &Stroke) {
+                self.dashed = stroke.dash == style::PROGRAMMED_FEED.dash;
+            }
+            fn move_to(&mut self, _: f64, _: f64) {
+                if self.dashed {
+                    self.starts.push(self.moves);
+                }
+            }
+            fn line_to(&mut self, _: f64, _: f64) {
+                if self.dashed {
+                    self.moves += 1;
+                }
+            }
+            fn next_move(&mut self, x: f64, y: f64, restart: bool) {
+                if restart {
+                    self.move_to(x, y);
+                } else if self.dashed {
+                    self.ongoing.push(self.moves);
+                }
+            }
+            fn stroke(&mut self) {}
+        }
+        // 40 moves across the view (100 mm in some 500 px), then 40 of half
+        // a millimetre (a fraction of the pattern's 10 px) each.
+        let mut program = String::from("G90 G01 F100.\n");
+        for k in 1..=40 {
+            let x = if k % 2 == 1 { 100 } else { 0 };
+            program.push_str(&format!("X{x}. Y{k}.\n"));
+        }
+        program.push_str("G91\n");
+        for _ in 0..40 {
+            program.push_str("X0.5\n");
+        }
+        let tp = toolpath(&program);
+        let f = Frame::fit(&tp, Plane::Xy, 640.0, 480.0);
+        let mut pen = Starts::default();
+        draw_path(&mut pen, &f, &tp, true, 0..tp.len(), |_| {
+            &style::PROGRAMMED_FEED
+        });
+        assert_eq!(pen.moves, 80);
+        // Every move after a long one starts afresh (the first short one
+        // too); the short ones run the pattern on, afresh at moves 48 and
+        // 64 (multiples of RESTART_EVERY).
+        let mut afresh: Vec<usize> = (0..=40).collect();
+        afresh.extend([48, 64]);
+        assert_eq!(pen.starts, afresh);
+        let ongoing: Vec<usize> = (41..80).filter(|m| m % RESTART_EVERY != 0).collect();
+        assert_eq!(pen.ongoing, ongoing);
     }
 
     #[test]

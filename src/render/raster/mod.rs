@@ -26,6 +26,7 @@
 //! larger coverage instead of being painted twice, so translucent strokes
 //! (the current block's highlight) keep their colour at joints.
 
+mod keep;
 mod sweep;
 #[cfg(test)]
 mod tests;
@@ -99,6 +100,18 @@ pub struct Raster {
     /// their memory).
     dashes: Vec<(f64, f64)>,
     lengths: Vec<f64>,
+    /// What the last drawing recorded, whose pixels `px` holds: the next
+    /// one is compared with it, and only where they differ drawn again
+    /// ([`keep`]).
+    last: keep::Last,
+    /// Whether this drawing was made on the last one's pixels, and then
+    /// the box of those it may have changed (x, y, width, height).
+    kept: bool,
+    changed: Option<(usize, usize, usize, usize)>,
+    /// The box (x0, y0, x1, y1; exclusive ends) outside which every pixel
+    /// is finished: the surface, or where a drawing made on the last one's
+    /// pixels may change them. Segments are drawn only within it.
+    open: (usize, usize, usize, usize),
 }
 
 /// A pixel of the drawing: its colour and which path covered it last,
@@ -116,7 +129,7 @@ struct Pixel {
 }
 
 /// How a path is stroked, in device pixels.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug, Default, PartialEq)]
 struct Ink {
     rgb: [u32; 3],
     alpha: f32,
@@ -153,26 +166,16 @@ impl Raster {
 
     /// Starts a drawing of `width` × `height` device pixels, `scale` device
     /// pixels per CSS pixel, all transparent; false (and nothing to draw)
-    /// when the surface is empty or larger than [`MAX_PIXELS`].
+    /// when the surface is empty or larger than [`MAX_PIXELS`]. The last
+    /// drawing's pixels stay until [`Raster::finish`] knows which of them
+    /// the new one keeps ([`keep`]).
     pub fn begin(&mut self, width: usize, height: usize, scale: (f64, f64)) -> bool {
         let pixels = width.saturating_mul(height);
         let scale_ok = [scale.0, scale.1].iter().all(|s| s.is_finite() && *s > 0.0);
         if pixels == 0 || pixels > MAX_PIXELS || !scale_ok {
             return false;
         }
-        if (width, height) == self.full {
-            // Only what the last drawing touched needs clearing (in its own
-            // grid, which may have been the coarse one), as whole tiles: a
-            // row of them is one stretch of memory, and the pixels outside
-            // the box are clear already.
-            if let Some((x0, y0, x1, y1)) = self.dirty.take() {
-                for ty in y0 >> TILE_BITS..=(y1 - 1) >> TILE_BITS {
-                    let start = self.index(x0 & !TILE_MASK, ty << TILE_BITS);
-                    let end = self.index((x1 - 1) | TILE_MASK, ty << TILE_BITS | TILE_MASK);
-                    self.px[start..=end].fill(Pixel::default());
-                }
-            }
-        } else {
+        if (width, height) != self.full {
             self.full = (width, height);
             self.px.clear();
             let side = 1 << TILE_BITS;
@@ -180,6 +183,7 @@ impl Raster {
             self.px.resize(tiled, Pixel::default());
             self.base = 1;
             self.dirty = None;
+            self.last.forget();
         }
         (self.width, self.height) = self.full;
         self.coarse = None;
@@ -196,6 +200,20 @@ impl Raster {
         self.pen = Recorder::default();
         self.ink_area = 0.0;
         true
+    }
+
+    /// Clears what the last drawing touched (in its own grid, which may have
+    /// been the coarse one), as whole tiles: a row of them is one stretch
+    /// of memory, and the pixels outside the box are clear already.
+    fn clear_last(&mut self) {
+        if let Some((x0, y0, x1, y1)) = self.dirty.take() {
+            for ty in y0 >> TILE_BITS..=(y1 - 1) >> TILE_BITS {
+                let start = self.index(x0 & !TILE_MASK, ty << TILE_BITS);
+                let end = self.index((x1 - 1) | TILE_MASK, ty << TILE_BITS | TILE_MASK);
+                self.px[start..=end].fill(Pixel::default());
+            }
+        }
+        self.last.forget();
     }
 
     fn reset_tiles(&mut self) {
@@ -261,7 +279,6 @@ impl Raster {
                 ink.period /= 2.0;
             }
         }
-        self.reset_tiles();
     }
 
     /// Device pixels per pixel of the drawing: 2 when it was made on the
@@ -272,26 +289,53 @@ impl Raster {
     }
 
     /// Draws what was recorded (once; later calls draw what was recorded
-    /// since).
+    /// since, below it — and, on a drawing made on the last one's pixels,
+    /// only where it changed: the page records a drawing in one go).
     pub fn finish(&mut self) {
-        if self.coarse.is_none() {
+        let first = self.coarse.is_none();
+        if first {
             self.choose_grid();
+            // The last drawing's pixels where this one is the same, or none.
+            self.changed = None;
+            self.kept = self.keep_last();
+            if !self.kept {
+                self.clear_last();
+                self.reset_tiles();
+            }
+            self.open = match self.changed {
+                Some((x, y, w, h)) => (x, y, x + w, y + h),
+                None => (0, 0, self.width, self.height),
+            };
+        } else if !self.subs.is_empty() {
+            // Drawn in several goes: not compared with the next.
+            self.last.forget();
         }
         let subs = std::mem::take(&mut self.subs);
         let points = std::mem::take(&mut self.points);
+        // (Lent, not cloned per sub-path: most moves are one.)
+        let styles = std::mem::take(&mut self.styles);
         for (k, sub) in subs.iter().enumerate().rev() {
             let end = subs.get(k + 1).map_or(points.len(), |n| n.first as usize);
             let pts = &points[sub.first as usize..end];
             let style = usize::from(sub.style);
-            let Some(ink) = self.styles.get(style).cloned() else {
+            let Some(ink) = styles.get(style) else {
                 continue;
             };
             let stamp = (self.base + style as u32) & 0xffff;
             if ink.dash.is_empty() {
                 for w in pts.windows(2).rev() {
                     if !self.hidden(w[0], w[1], ink.half_width) {
-                        self.solid(&ink, stamp, w[0], w[1]);
+                        self.solid(ink, stamp, w[0], w[1]);
                     }
+                }
+                continue;
+            }
+            if let [from, to] = *pts {
+                // Most sub-paths are one segment (a line move).
+                if !self.hidden(from, to, ink.half_width) {
+                    let length = length(f64::from(to[0] - from[0]), f64::from(to[1] - from[1]));
+                    let end_at = f64::from(sub.phase) + length;
+                    self.dashed(ink, stamp, (from, to), length, end_at - length);
                 }
                 continue;
             }
@@ -308,17 +352,61 @@ impl Raster {
             for (w, &length) in pts.windows(2).zip(&lengths).rev() {
                 let start_at = end_at - length;
                 if !self.hidden(w[0], w[1], ink.half_width) {
-                    self.dashed(&ink, stamp, (w[0], w[1]), length, start_at);
+                    self.dashed(ink, stamp, (w[0], w[1]), length, start_at);
                 }
                 end_at = start_at;
             }
             self.lengths = lengths;
         }
-        // Keep the allocations for the next drawing.
-        self.subs = subs;
-        self.points = points;
+        self.styles = styles;
+        if first && points.len() > keep::MOST_KEPT {
+            self.last.forget();
+            self.subs = subs;
+            self.points = points;
+        } else if first {
+            // What the next drawing is compared with; the allocations of
+            // the one before are kept for it.
+            let surface = (self.full, self.coarse, self.scale);
+            let (subs, points) = self.last.keep((subs, points), &self.styles, surface);
+            self.subs = subs;
+            self.points = points;
+        } else {
+            self.subs = subs;
+            self.points = points;
+        }
         self.subs.clear();
         self.points.clear();
+    }
+
+    /// Makes the next drawing from nothing, not on this one's pixels.
+    pub fn forget(&mut self) {
+        self.last.forget();
+    }
+
+    /// Whether this drawing was made on the last one's pixels, drawing
+    /// again only the tiles where the two differ ([`keep`]).
+    pub fn kept(&mut self) -> bool {
+        self.finish();
+        self.kept
+    }
+
+    /// When this drawing was made on the last one's pixels, the box (x, y,
+    /// width, height, as [`Raster::dirty`]) outside which they are the same;
+    /// None when it was made from nothing.
+    pub fn changed(&mut self) -> Option<(usize, usize, usize, usize)> {
+        self.finish();
+        let (x, y, w, h) = self.changed?;
+        // Within the drawn box (the margins of what changed may reach past it).
+        let Some((dx0, dy0, dx1, dy1)) = self.dirty else {
+            return Some((0, 0, 0, 0));
+        };
+        let (x0, y0) = (x.max(dx0), y.max(dy0));
+        let (x1, y1) = ((x + w).min(dx1), (y + h).min(dy1));
+        Some(if x0 < x1 && y0 < y1 {
+            (x0, y0, x1 - x0, y1 - y0)
+        } else {
+            (0, 0, 0, 0)
+        })
     }
 
     /// The box of the pixels drawn (x, y, width, height in pixels of the
@@ -343,7 +431,19 @@ impl Raster {
     /// takes), written into `out`; returns the box, or None when nothing
     /// was drawn.
     pub fn image(&mut self, out: &mut Vec<u8>) -> Option<(usize, usize, usize, usize)> {
-        let (x, y, w, h) = self.dirty()?;
+        let drawn = self.dirty()?;
+        self.image_of(drawn, out);
+        Some(drawn)
+    }
+
+    /// The pixels of the box (x, y, width, height) as straight RGBA rows,
+    /// written into `out`.
+    pub fn image_of(&mut self, (x, y, w, h): (usize, usize, usize, usize), out: &mut Vec<u8>) {
+        self.finish();
+        let (w, h) = (
+            w.min(self.width.saturating_sub(x)),
+            h.min(self.height.saturating_sub(y)),
+        );
         out.clear();
         out.reserve(4 * w * h);
         for row in y..y + h {
@@ -351,7 +451,6 @@ impl Raster {
                 out.extend_from_slice(&straight(&self.px[self.index(col, row)].rgba));
             }
         }
-        Some((x, y, w, h))
     }
 
     fn touch(&mut self, x0: usize, y0: usize, x1: usize, y1: usize) {
@@ -379,12 +478,19 @@ impl Raster {
             f64::from(smaller(from[1], to[1])) - hw,
             f64::from(larger(from[1], to[1])) + hw,
         ];
-        let (w, h) = (coord(self.width) - 1.0, coord(self.height) - 1.0);
-        if x1 < 0.0 || y1 < 0.0 || x0 > w || y0 > h {
-            return true; // off the surface
+        // Off the surface, or (drawn on the last drawing's pixels) off the
+        // box where they may change.
+        let (ox0, oy0, ox1, oy1) = self.open;
+        if ox1 <= ox0 || oy1 <= oy0 {
+            return true;
         }
-        let (px0, px1) = (pixel(x0.clamp(0.0, w)), pixel(x1.clamp(0.0, w)));
-        let (py0, py1) = (pixel(y0.clamp(0.0, h)), pixel(y1.clamp(0.0, h)));
+        let (left, top) = (coord(ox0), coord(oy0));
+        let (w, h) = (coord(ox1) - 1.0, coord(oy1) - 1.0);
+        if x1 < left || y1 < top || x0 > w || y0 > h {
+            return true;
+        }
+        let (px0, px1) = (pixel(x0.clamp(left, w)), pixel(x1.clamp(left, w)));
+        let (py0, py1) = (pixel(y0.clamp(top, h)), pixel(y1.clamp(top, h)));
         let blocks = (
             (px0 >> BLOCK_BITS, px1 >> BLOCK_BITS),
             (py0 >> BLOCK_BITS, py1 >> BLOCK_BITS),
@@ -517,6 +623,18 @@ impl Pen for Raster {
         };
     }
 
+    /// Every move is a sub-path of its own here, dashed or not (its
+    /// pattern goes on unless `restart`; a solid line's pixels are the same
+    /// either way): the unit in which a drawing is compared with the last
+    /// one ([`keep`]).
+    fn next_move(&mut self, x: f64, y: f64, restart: bool) {
+        if restart {
+            self.move_to(x, y);
+        } else {
+            self.pen.broken = true;
+        }
+    }
+
     fn move_to(&mut self, x: f64, y: f64) {
         // Every sub-path starts its dash pattern afresh.
         self.pen.at = Some(self.to_device(x, y));
@@ -552,8 +670,13 @@ impl Pen for Raster {
         };
         if self.pen.broken || t0 > 0.0 {
             let period = self.styles[usize::from(style)].period;
-            let phase = if period > 0.0 {
-                (self.pen.along + t0).rem_euclid(period)
+            let along = self.pen.along + t0;
+            // (`rem_euclid` is a call to fmod; a move's sub-path mostly
+            // starts at 0.)
+            let phase = if period > 0.0 && !(0.0..period).contains(&along) {
+                along.rem_euclid(period)
+            } else if period > 0.0 {
+                along
             } else {
                 0.0
             };

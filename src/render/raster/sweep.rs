@@ -173,6 +173,35 @@ impl Raster {
             return;
         }
         let (first, last) = (pixel(first), pixel(last));
+        // Every pixel outside the open box is finished: the columns where
+        // the line is within it, a column more each side.
+        let (ox0, oy0, ox1, oy1) = self.open;
+        let ((oa0, oa1), (ob0, ob1)) = if transposed {
+            ((oy0, oy1), (ox0, ox1))
+        } else {
+            ((ox0, ox1), (oy0, oy1))
+        };
+        let (mut first, mut last) = (first.max(oa0), last.min(oa1.saturating_sub(1)));
+        if slope != 0.0 {
+            // Where the centre is within the box's rows, widened by the
+            // line's extent across it and a pixel.
+            let reach = across + 2.0;
+            let at = |b: f64| a0 - 0.5 + (b - b0) / slope;
+            let (p, q) = (at(coord(ob0) - reach), at(coord(ob1) + reach));
+            let (lo, hi) = (smaller(p, q).floor() - 1.0, larger(p, q).ceil() + 1.0);
+            if hi < coord(first) || lo > coord(last) {
+                return;
+            }
+            if lo > coord(first) {
+                first = pixel(lo);
+            }
+            if hi < coord(last) {
+                last = pixel(hi);
+            }
+        }
+        if first > last {
+            return;
+        }
         let centre = |a: usize| b0 + (coord(a) + 0.5 - a0) * slope;
         let minor_last = coord(minor_len) - 1.0;
         // The pixels across the line between two positions along it.
@@ -357,7 +386,7 @@ impl Raster {
 /// `to` (within one tile) across a line at `col` along it; across is x
 /// when `transposed`, else y.
 #[inline]
-fn tile_span(transposed: bool, col: usize, from: usize, to: usize) -> u64 {
+pub(super) fn tile_span(transposed: bool, col: usize, from: usize, to: usize) -> u64 {
     let side = 1 << TILE_BITS;
     let (from, to) = (from & TILE_MASK, to & TILE_MASK);
     if transposed {

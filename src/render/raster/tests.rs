@@ -165,3 +165,167 @@ fn device_pixels_scale_positions_and_widths() {
     }
     assert_eq!(r.pixel(40, 16)[3], 0);
 }
+
+/// Draws `paths` (a stroke and its points) on `r` from `begin`: each path's
+/// moves are its consecutive points, every move continuing from the last
+/// (`next_move`), as `draw_path` draws a chain of moves.
+fn draw_chains(
+    r: &mut Raster,
+    (w, h, scale): (usize, usize, f64),
+    paths: &[(&Stroke, &[(f64, f64)])],
+) {
+    assert!(r.begin(w, h, (scale, scale)));
+    for (stroke, points) in paths {
+        r.begin_path(stroke);
+        let Some(&(x, y)) = points.first() else {
+            continue;
+        };
+        r.move_to(x, y);
+        for (i, &(x, y)) in points.iter().enumerate().skip(1) {
+            if i > 1 {
+                let (px, py) = points[i - 1];
+                // As draw_path does: afresh after a long move, and every
+                // RESTART_EVERY moves.
+                let (qx, qy) = points[i - 2];
+                let period: f64 = stroke.dash.iter().sum();
+                let long = (px - qx).abs().max((py - qy).abs()) >= period;
+                let every = i % crate::render::RESTART_EVERY == 0;
+                r.next_move(px, py, period > 0.0 && (long || every));
+            }
+            r.line_to(x, y);
+        }
+        r.stroke();
+    }
+}
+
+/// Every pixel of both drawings, as straight RGBA.
+fn pixels(r: &mut Raster) -> Vec<[u8; 4]> {
+    let (w, h) = r.size();
+    (0..h)
+        .flat_map(|y| (0..w).map(move |x| (x, y)))
+        .map(|(x, y)| r.pixel(x, y))
+        .collect()
+}
+
+const TRANSLUCENT: Stroke = Stroke {
+    color: "rgba(250, 180, 20, 0.55)",
+    width: 7.0,
+    dash: &[],
+};
+
+/// A drawing made on the last one's pixels is, pixel for pixel, the one
+/// made from nothing (issue 6, target 4: an edit draws again only where
+/// the path changed).
+fn assert_drawn_again_as_from_nothing(
+    surface: (usize, usize, f64),
+    before: &[(f64, f64)],
+    after: &[(f64, f64)],
+) -> bool {
+    fn paths(points: &[(f64, f64)]) -> [(&'static Stroke, &[(f64, f64)]); 3] {
+        [
+            (&TRANSLUCENT, &points[..points.len() / 3]),
+            (&ACTUAL_FEED, points),
+            (&PROGRAMMED_FEED, points),
+        ]
+    }
+    let mut again = Raster::new();
+    draw_chains(&mut again, surface, &paths(before));
+    let _ = again.size();
+    draw_chains(&mut again, surface, &paths(after));
+    let kept = again.kept();
+    let mut fresh = Raster::new();
+    draw_chains(&mut fresh, surface, &paths(after));
+    assert!(!fresh.kept());
+    assert_eq!(again.factor(), fresh.factor());
+    let (a, b) = (pixels(&mut again), pixels(&mut fresh));
+    let w = again.size().0;
+    if let Some(i) = (0..a.len()).find(|&i| a[i] != b[i]) {
+        panic!(
+            "pixel ({}, {}) drawn again {:?}, from nothing {:?} (kept: {kept})",
+            i % w,
+            i / w,
+            a[i],
+            b[i]
+        );
+    }
+    kept
+}
+
+#[test]
+fn an_edit_of_one_point_draws_again_only_around_its_two_moves() {
+    // 300 moves zig-zagging over 400 x 300 px; one point moved.
+    let before: Vec<(f64, f64)> = (0..301)
+        .map(|i| {
+            let i = f64::from(i);
+            (20.0 + (i * 37.0) % 360.0, 20.0 + (i * 53.0) % 260.0)
+        })
+        .collect();
+    let mut after = before.clone();
+    after[150] = (after[150].0 + 9.5, after[150].1 - 4.25);
+    assert!(assert_drawn_again_as_from_nothing(
+        (400, 300, 1.0),
+        &before,
+        &after
+    ));
+    // On the coarse grid too (the lines cover it many times over).
+    let dense: Vec<(f64, f64)> = (0..3001)
+        .map(|i| {
+            let i = f64::from(i);
+            ((i * 37.0) % 200.0, (i * 53.0) % 150.0)
+        })
+        .collect();
+    let mut edited = dense.clone();
+    edited[1500].0 += 3.0;
+    edited.insert(1502, (17.0, 33.0));
+    assert!(assert_drawn_again_as_from_nothing(
+        (200, 150, 1.0),
+        &dense,
+        &edited
+    ));
+}
+
+#[test]
+fn a_drawing_mostly_changed_or_on_another_surface_is_made_from_nothing() {
+    let before: Vec<(f64, f64)> = (0..50).map(|i| (f64::from(i) * 3.0, 40.0)).collect();
+    let moved: Vec<(f64, f64)> = before.iter().map(|&(x, y)| (x, y + 1.0)).collect();
+    assert!(!assert_drawn_again_as_from_nothing(
+        (200, 100, 1.0),
+        &before,
+        &moved
+    ));
+    // The same drawing at another scale: nothing kept.
+    let mut r = Raster::new();
+    draw_chains(&mut r, (200, 100, 1.0), &[(&ACTUAL_FEED, &before)]);
+    assert!(!r.kept());
+    draw_chains(&mut r, (200, 100, 2.0), &[(&ACTUAL_FEED, &before)]);
+    assert!(!r.kept());
+    draw_chains(&mut r, (200, 100, 2.0), &[(&ACTUAL_FEED, &before)]);
+    assert!(r.kept());
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig { cases: 96, ..Default::default() })]
+
+    #[test]
+    fn any_edit_draws_again_as_a_drawing_from_nothing(
+        w in 8usize..160,
+        h in 8usize..120,
+        scale in proptest::sample::select(vec![1.0, 1.5, 2.0]),
+        points in proptest::collection::vec((-20.0..180.0f64, -20.0..140.0f64), 2..400),
+        edits in proptest::collection::vec((0usize..400, 0u8..3, -30.0..30.0f64, -30.0..30.0f64), 1..4),
+    ) {
+        let mut after = points.clone();
+        for (at, kind, dx, dy) in edits {
+            let i = at % after.len();
+            match kind {
+                0 => after[i] = (after[i].0 + dx, after[i].1 + dy),
+                1 => after.insert(i, (after[i].0 + dx, after[i].1 + dy)),
+                _ if after.len() > 2 => {
+                    after.remove(i);
+                }
+                _ => {}
+            }
+        }
+        assert_drawn_again_as_from_nothing((w, h, scale), &points, &after);
+    }
+}
