@@ -101,9 +101,9 @@ const MIN_SCALE_PX: f64 = 70.0;
 /// Vertices closer than this to the last one drawn are skipped (level of
 /// detail: a million tiny segments cost a million calls for nothing).
 const MIN_SEGMENT_PX: f64 = 0.5;
-/// Where a dashed path's pattern starts afresh: at a move after one at
-/// least a period of the pattern long on screen, and at every move whose
-/// number is a multiple of this. So how a move is dashed depends on a few
+/// Where a dashed path's pattern starts afresh: at a move after one whose
+/// ends are at least a period of the pattern apart on screen (along x or
+/// y), and at every move whose number is a multiple of this. So how a move is dashed depends on a few
 /// moves before it at most, not on the length of all of them, and an edit
 /// changes the drawing only around the moves it changes ([`Raster`] keeps
 /// the pixels of the others); short moves (a surface milled in steps of a
@@ -416,9 +416,8 @@ fn draw_path<'a>(
         let stroke = stroke_for(rapid);
         let period: f64 = stroke.dash.iter().sum();
         let dashed = period > 0.0;
-        // How far the last move went on screen (at least), from its first
-        // point drawn, for where a dashed pattern starts afresh.
-        let mut went = 0.0_f64;
+        // The first point of the last move, for where a dashed pattern
+        // starts afresh (after a move whose ends are a period apart).
         let mut from: Option<(f64, f64)> = None;
         // `pen` is the last point drawn, `pending` the last vertex passed
         // over for being too close to it; ends of runs are always drawn.
@@ -432,15 +431,7 @@ fn draw_path<'a>(
             if !(x.is_finite() && y.is_finite()) {
                 return;
             }
-            let before = went;
-            if i == 0 {
-                went = 0.0;
-            } else if let Some((fx, fy)) = from {
-                went = went.max((x - fx).abs()).max((y - fy).abs());
-            }
-            if i == 0 {
-                from = Some((x, y));
-            }
+            let last_from = if i == 0 { from.replace((x, y)) } else { None };
             if !begun {
                 s.begin_path(stroke);
                 begun = true;
@@ -455,7 +446,10 @@ fn draw_path<'a>(
                     if pending.is_none()
                         && let Some((px, py)) = pen
                     {
-                        let restart = dashed && (before >= period || m % RESTART_EVERY == 0);
+                        let long = last_from.is_some_and(|(fx, fy)| {
+                            (px - fx).abs() >= period || (py - fy).abs() >= period
+                        });
+                        let restart = dashed && (long || m % RESTART_EVERY == 0);
                         s.next_move(px, py, restart);
                     }
                     return;

@@ -182,7 +182,7 @@ impl Raster {
             ((ox0, ox1), (oy0, oy1))
         };
         let (mut first, mut last) = (first.max(oa0), last.min(oa1.saturating_sub(1)));
-        if slope != 0.0 {
+        if slope != 0.0 && self.open != (0, 0, self.width, self.height) {
             // Where the centre is within the box's rows, widened by the
             // line's extent across it and a pixel.
             let reach = across + 2.0;
