@@ -27,13 +27,13 @@
 //! (the current block's highlight) keep their colour at joints.
 
 mod keep;
+mod record;
 mod sweep;
 #[cfg(test)]
 mod tests;
 
-use super::Pen;
-use super::style::Stroke;
-use crate::toolpath::ArcPoints;
+use record::Recorder;
+pub use record::parse_color;
 
 /// Surfaces larger than this (device pixels) are drawn as vectors: the
 /// buffers take 8 bytes a pixel.
@@ -146,16 +146,6 @@ struct Sub {
     /// Where its first point is in the dash pattern.
     phase: f32,
     style: u16,
-}
-
-/// The pen while recording: where it is, how far along its sub-path, and
-/// whether the next segment drawn starts a new recorded sub-path.
-#[derive(Default)]
-struct Recorder {
-    style: Option<u16>,
-    at: Option<(f64, f64)>,
-    along: f64,
-    broken: bool,
 }
 
 impl Raster {
@@ -521,181 +511,6 @@ impl Raster {
         let tile = (y >> TILE_BITS) * self.tiles_w + (x >> TILE_BITS);
         tile << (2 * TILE_BITS) | (y & TILE_MASK) << TILE_BITS | x & TILE_MASK
     }
-
-    fn to_device(&self, x: f64, y: f64) -> (f64, f64) {
-        (x * self.scale.0, y * self.scale.1)
-    }
-
-    /// Where a segment (device pixels) of `length` is within the surface
-    /// and the line's width around it: the parameters (as lengths along it)
-    /// where it enters and leaves, or None when it never does.
-    fn clip(
-        &self,
-        from: (f64, f64),
-        to: (f64, f64),
-        length: f64,
-        margin: f64,
-    ) -> Option<(f64, f64)> {
-        if !(length > 0.0 && length.is_finite()) {
-            return None;
-        }
-        // Most segments lie well inside. With both ends a pixel inside the
-        // edges, each edge is more than a pixel beyond the segment's ends
-        // along it, far more than the rounding of the divisions below: they
-        // would give (0, length) too (and were a twentieth of recording a
-        // 1M-block frame).
-        let (w, h) = (self.full.0 as f64, self.full.1 as f64);
-        let inside = |(x, y): (f64, f64)| {
-            (1.0 - margin..=w + margin - 1.0).contains(&x)
-                && (1.0 - margin..=h + margin - 1.0).contains(&y)
-        };
-        if inside(from) && inside(to) {
-            return Some((0.0, length));
-        }
-        // Liang–Barsky, in units of length.
-        let (mut t0, mut t1) = (0.0_f64, length);
-        let (dx, dy) = ((to.0 - from.0) / length, (to.1 - from.1) / length);
-        let edges = [
-            (-dx, from.0 + margin),
-            (dx, w + margin - from.0),
-            (-dy, from.1 + margin),
-            (dy, h + margin - from.1),
-        ];
-        for (p, q) in edges {
-            if p == 0.0 {
-                if q < 0.0 {
-                    return None;
-                }
-            } else {
-                let r = q / p;
-                if p < 0.0 {
-                    t0 = t0.max(r);
-                } else {
-                    t1 = t1.min(r);
-                }
-            }
-        }
-        (t0 < t1).then_some((t0, t1))
-    }
-}
-
-impl Ink {
-    fn of(stroke: &Stroke, scale: f64) -> Ink {
-        let [r, g, b, alpha] = parse_color(stroke.color);
-        let mut dash: Vec<f64> = stroke.dash.iter().map(|d| d.max(0.0) * scale).collect();
-        // A pattern with nothing to draw (all zero) is drawn solid, as the
-        // canvas ignores it; an odd-length one is repeated to make it even,
-        // as the canvas does.
-        if !dash.iter().any(|d| *d > 0.0) || dash.iter().any(|d| !d.is_finite()) {
-            dash.clear();
-        }
-        if dash.len() % 2 == 1 {
-            dash.extend_from_within(..);
-        }
-        Ink {
-            rgb: [r as u32, g as u32, b as u32],
-            alpha,
-            half_width: stroke.width.max(0.0) * scale / 2.0,
-            period: dash.iter().sum(),
-            dash,
-        }
-    }
-}
-
-impl Pen for Raster {
-    fn arc_points(&self) -> ArcPoints {
-        ArcPoints::Rotated
-    }
-
-    fn begin_path(&mut self, stroke: &Stroke) {
-        let scale = (self.scale.0 + self.scale.1) / 2.0;
-        // A drawing has a few paths (six layers at most); past 2^15, further
-        // ones are not drawn rather than share a stamp.
-        let style = u16::try_from(self.styles.len())
-            .ok()
-            .filter(|s| *s < u16::MAX / 2);
-        if style.is_some() {
-            self.styles.push(Ink::of(stroke, scale));
-        }
-        self.pen = Recorder {
-            style,
-            ..Recorder::default()
-        };
-    }
-
-    /// Every move is a sub-path of its own here, dashed or not (its
-    /// pattern goes on unless `restart`; a solid line's pixels are the same
-    /// either way): the unit in which a drawing is compared with the last
-    /// one ([`keep`]).
-    fn next_move(&mut self, x: f64, y: f64, restart: bool) {
-        if restart {
-            self.move_to(x, y);
-        } else {
-            self.pen.broken = true;
-        }
-    }
-
-    fn move_to(&mut self, x: f64, y: f64) {
-        // Every sub-path starts its dash pattern afresh.
-        self.pen.at = Some(self.to_device(x, y));
-        self.pen.along = 0.0;
-        self.pen.broken = true;
-    }
-
-    fn line_to(&mut self, x: f64, y: f64) {
-        let to = self.to_device(x, y);
-        let (Some(style), Some(from)) = (self.pen.style, self.pen.at.replace(to)) else {
-            return;
-        };
-        let finite =
-            to.0.is_finite() && to.1.is_finite() && from.0.is_finite() && from.1.is_finite();
-        let length = length(to.0 - from.0, to.1 - from.1);
-        if !finite || length.is_nan() || length <= 0.0 {
-            // A canvas skips such a segment; the pen moves on.
-            self.pen.broken = true;
-            return;
-        }
-        let margin = self.styles[usize::from(style)].half_width + 2.0;
-        let Some((t0, t1)) = self.clip(from, to, length, margin) else {
-            self.pen.along += length;
-            self.pen.broken = true;
-            return;
-        };
-        let at = |t: f64| {
-            let k = t / length;
-            [
-                (from.0 + (to.0 - from.0) * k) as f32,
-                (from.1 + (to.1 - from.1) * k) as f32,
-            ]
-        };
-        if self.pen.broken || t0 > 0.0 {
-            let period = self.styles[usize::from(style)].period;
-            let along = self.pen.along + t0;
-            // (`rem_euclid` is a call to fmod; a move's sub-path mostly
-            // starts at 0.)
-            let phase = if period > 0.0 && !(0.0..period).contains(&along) {
-                along.rem_euclid(period)
-            } else if period > 0.0 {
-                along
-            } else {
-                0.0
-            };
-            self.subs.push(Sub {
-                first: self.points.len() as u32,
-                phase: phase as f32,
-                style,
-            });
-            self.points.push(at(t0));
-        }
-        self.points.push(at(t1));
-        self.ink_area += (t1 - t0) * 2.0 * self.styles[usize::from(style)].half_width;
-        self.pen.along += length;
-        self.pen.broken = t1 < length;
-    }
-
-    fn stroke(&mut self) {
-        self.pen.at = None;
-    }
 }
 
 /// Whether the cells `xs` by `ys` (inclusive ranges) of a grid `w` cells
@@ -770,35 +585,4 @@ fn straight(px: &[u8]) -> [u8; 4] {
     }
     let un = |c: u8| ((u32::from(c) * 255 + u32::from(a) / 2) / u32::from(a)).min(255) as u8;
     [un(px[0]), un(px[1]), un(px[2]), a]
-}
-
-/// `#rrggbb` or `rgba(r, g, b, a)` (the styles' forms) as RGB 0–255 and
-/// alpha 0–1; anything else is opaque black.
-pub fn parse_color(css: &str) -> [f32; 4] {
-    if let Some(hex) = css.strip_prefix('#')
-        && hex.len() == 6
-        && let Ok(v) = u32::from_str_radix(hex, 16)
-    {
-        return [
-            (v >> 16) as f32,
-            (v >> 8 & 0xff) as f32,
-            (v & 0xff) as f32,
-            1.0,
-        ];
-    }
-    if let Some(inner) = css.strip_prefix("rgba(").and_then(|s| s.strip_suffix(')')) {
-        let parts: Vec<f32> = inner
-            .split(',')
-            .filter_map(|p| p.trim().parse::<f32>().ok())
-            .collect();
-        if let [r, g, b, a] = parts[..] {
-            return [
-                r.clamp(0.0, 255.0),
-                g.clamp(0.0, 255.0),
-                b.clamp(0.0, 255.0),
-                a.clamp(0.0, 1.0),
-            ];
-        }
-    }
-    [0.0, 0.0, 0.0, 1.0]
 }

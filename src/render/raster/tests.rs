@@ -1,4 +1,6 @@
 use super::*;
+use crate::render::Pen;
+use crate::render::style::Stroke;
 use crate::render::style::{ACTUAL_FEED, PROGRAMMED_FEED};
 
 fn raster(w: usize, h: usize) -> Raster {
