@@ -431,12 +431,12 @@ fn draw_path<'a>(
             if !(x.is_finite() && y.is_finite()) {
                 return;
             }
-            let last_from = if i == 0 { from.replace((x, y)) } else { None };
             if !begun {
                 s.begin_path(stroke);
                 begun = true;
             }
             if i == 0 {
+                let last_from = from.replace((x, y));
                 // A move that starts where the last one ended continues
                 // the line; any other starts a new sub-path.
                 let last = pending.or(pen);

@@ -110,8 +110,13 @@ pub struct Raster {
     changed: Option<(usize, usize, usize, usize)>,
     /// The box (x0, y0, x1, y1; exclusive ends) outside which every pixel
     /// is finished: the surface, or where a drawing made on the last one's
-    /// pixels may change them. Segments are drawn only within it.
+    /// pixels may change them. Segments are drawn only within it. Also as
+    /// the pixel coordinates of its first and last pixels (None: empty),
+    /// and whether it is the whole surface (worked out once: these are
+    /// asked of every segment).
     open: (usize, usize, usize, usize),
+    open_pixels: Option<[f64; 4]>,
+    open_all: bool,
 }
 
 /// A pixel of the drawing: its colour and which path covered it last,
@@ -296,6 +301,10 @@ impl Raster {
                 Some((x, y, w, h)) => (x, y, x + w, y + h),
                 None => (0, 0, self.width, self.height),
             };
+            let (x0, y0, x1, y1) = self.open;
+            self.open_all = self.open == (0, 0, self.width, self.height);
+            self.open_pixels = (x0 < x1 && y0 < y1)
+                .then(|| [coord(x0), coord(y0), coord(x1) - 1.0, coord(y1) - 1.0]);
         } else if !self.subs.is_empty() {
             // Drawn in several goes: not compared with the next.
             self.last.forget();
@@ -470,12 +479,9 @@ impl Raster {
         ];
         // Off the surface, or (drawn on the last drawing's pixels) off the
         // box where they may change.
-        let (ox0, oy0, ox1, oy1) = self.open;
-        if ox1 <= ox0 || oy1 <= oy0 {
+        let Some([left, top, w, h]) = self.open_pixels else {
             return true;
-        }
-        let (left, top) = (coord(ox0), coord(oy0));
-        let (w, h) = (coord(ox1) - 1.0, coord(oy1) - 1.0);
+        };
         if x1 < left || y1 < top || x0 > w || y0 > h {
             return true;
         }

@@ -172,35 +172,37 @@ impl Raster {
         if first > last || first.is_nan() || last.is_nan() {
             return;
         }
-        let (first, last) = (pixel(first), pixel(last));
-        // Every pixel outside the open box is finished: the columns where
-        // the line is within it, a column more each side.
-        let (ox0, oy0, ox1, oy1) = self.open;
-        let ((oa0, oa1), (ob0, ob1)) = if transposed {
-            ((oy0, oy1), (ox0, ox1))
-        } else {
-            ((ox0, ox1), (oy0, oy1))
-        };
-        let (mut first, mut last) = (first.max(oa0), last.min(oa1.saturating_sub(1)));
-        if slope != 0.0 && self.open != (0, 0, self.width, self.height) {
-            // Where the centre is within the box's rows, widened by the
-            // line's extent across it and a pixel.
-            let reach = across + 2.0;
-            let at = |b: f64| a0 - 0.5 + (b - b0) / slope;
-            let (p, q) = (at(coord(ob0) - reach), at(coord(ob1) + reach));
-            let (lo, hi) = (smaller(p, q).floor() - 1.0, larger(p, q).ceil() + 1.0);
-            if hi < coord(first) || lo > coord(last) {
+        let (mut first, mut last) = (pixel(first), pixel(last));
+        if !self.open_all {
+            // Every pixel outside the open box is finished: the columns
+            // where the line is within it, a column more each side.
+            let (ox0, oy0, ox1, oy1) = self.open;
+            let ((oa0, oa1), (ob0, ob1)) = if transposed {
+                ((oy0, oy1), (ox0, ox1))
+            } else {
+                ((ox0, ox1), (oy0, oy1))
+            };
+            (first, last) = (first.max(oa0), last.min(oa1.saturating_sub(1)));
+            if slope != 0.0 {
+                // Where the centre is within the box's rows, widened by the
+                // line's extent across it and a pixel.
+                let reach = across + 2.0;
+                let at = |b: f64| a0 - 0.5 + (b - b0) / slope;
+                let (p, q) = (at(coord(ob0) - reach), at(coord(ob1) + reach));
+                let (lo, hi) = (smaller(p, q).floor() - 1.0, larger(p, q).ceil() + 1.0);
+                if hi < coord(first) || lo > coord(last) {
+                    return;
+                }
+                if lo > coord(first) {
+                    first = pixel(lo);
+                }
+                if hi < coord(last) {
+                    last = pixel(hi);
+                }
+            }
+            if first > last {
                 return;
             }
-            if lo > coord(first) {
-                first = pixel(lo);
-            }
-            if hi < coord(last) {
-                last = pixel(hi);
-            }
-        }
-        if first > last {
-            return;
         }
         let centre = |a: usize| b0 + (coord(a) + 0.5 - a0) * slope;
         let minor_last = coord(minor_len) - 1.0;
