@@ -103,8 +103,9 @@ const MIN_SCALE_PX: f64 = 70.0;
 const MIN_SEGMENT_PX: f64 = 0.5;
 /// Where a dashed path's pattern starts afresh: at a move after one whose
 /// ends are at least a period of the pattern apart on screen (along x or
-/// y), and at every move whose number is a multiple of this. So how a move is dashed depends on a few
-/// moves before it at most, not on the length of all of them, and an edit
+/// y), and at every move whose number is a multiple of this. So how a move
+/// is dashed depends on a few moves before it at most, not on the length
+/// of all of them, and an edit
 /// changes the drawing only around the moves it changes ([`Raster`] keeps
 /// the pixels of the others); short moves (a surface milled in steps of a
 /// pixel or two) still show dashes run across several of them.

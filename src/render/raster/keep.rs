@@ -195,8 +195,7 @@ impl Raster {
                 self.blocks[(ty / side) * self.blocks_w + tx / side] += 1;
             }
         }
-        self.changed =
-            Some(changed.map_or((0, 0, 0, 0), |(x0, y0, x1, y1)| (x0, y0, x1 - x0, y1 - y0)));
+        self.open = changed.unwrap_or((0, 0, 0, 0));
         self.last.marks = marks;
         true
     }

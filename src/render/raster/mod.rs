@@ -104,13 +104,12 @@ pub struct Raster {
     /// one is compared with it, and only where they differ drawn again
     /// ([`keep`]).
     last: keep::Last,
-    /// Whether this drawing was made on the last one's pixels, and then
-    /// the box of those it may have changed (x, y, width, height).
+    /// Whether this drawing was made on the last one's pixels.
     kept: bool,
-    changed: Option<(usize, usize, usize, usize)>,
     /// The box (x0, y0, x1, y1; exclusive ends) outside which every pixel
     /// is finished: the surface, or where a drawing made on the last one's
-    /// pixels may change them. Segments are drawn only within it. Also as
+    /// pixels may change them ([`Raster::changed`]). Segments are drawn
+    /// only within it. Also as
     /// the pixel coordinates of its first and last pixels (None: empty),
     /// and whether it is the whole surface (worked out once: these are
     /// asked of every segment).
@@ -291,16 +290,13 @@ impl Raster {
         if first {
             self.choose_grid();
             // The last drawing's pixels where this one is the same, or none.
-            self.changed = None;
+            // (keep_last sets the open box of a drawing it keeps.)
             self.kept = self.keep_last();
             if !self.kept {
                 self.clear_last();
                 self.reset_tiles();
+                self.open = (0, 0, self.width, self.height);
             }
-            self.open = match self.changed {
-                Some((x, y, w, h)) => (x, y, x + w, y + h),
-                None => (0, 0, self.width, self.height),
-            };
             let (x0, y0, x1, y1) = self.open;
             self.open_all = self.open == (0, 0, self.width, self.height);
             self.open_pixels = (x0 < x1 && y0 < y1)
@@ -394,13 +390,16 @@ impl Raster {
     /// None when it was made from nothing.
     pub fn changed(&mut self) -> Option<(usize, usize, usize, usize)> {
         self.finish();
-        let (x, y, w, h) = self.changed?;
+        if !self.kept {
+            return None;
+        }
+        let (x0, y0, x1, y1) = self.open;
         // Within the drawn box (the margins of what changed may reach past it).
         let Some((dx0, dy0, dx1, dy1)) = self.dirty else {
             return Some((0, 0, 0, 0));
         };
-        let (x0, y0) = (x.max(dx0), y.max(dy0));
-        let (x1, y1) = ((x + w).min(dx1), (y + h).min(dy1));
+        let (x0, y0) = (x0.max(dx0), y0.max(dy0));
+        let (x1, y1) = (x1.min(dx1), y1.min(dy1));
         Some(if x0 < x1 && y0 < y1 {
             (x0, y0, x1 - x0, y1 - y0)
         } else {
