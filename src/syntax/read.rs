@@ -1,0 +1,176 @@
+//! Reading a block's words: in one pass where nothing is wrong and no G
+//! code changes how the words before it are read, else in two (spec 1 as
+//! written: lex, then type and check each word). Both give the same blocks
+//! and diagnostics ([`super::Blocks::next_into`] chooses).
+
+use super::messages::unexpected_message;
+use super::*;
+
+impl Blocks<'_> {
+    /// Reads the words of a block from `i` (after any `/`) in one pass,
+    /// typing each word as it is lexed with the G20/G21 and canned-cycle
+    /// context so far. Returns the end of the block and the end of its last
+    /// word or comment, or None if the block must be read in two passes
+    /// ([`Blocks::read_two_pass`]) instead: when it has anything to report
+    /// (the two-pass reading reports the lexing errors first, then each
+    /// word's, and the cap of [`MAX_DIAGNOSTICS`] keeps the first ones), or
+    /// when a G code changes how a word already read is read. Nothing is
+    /// reported here, so there is nothing to undo but the words pushed and
+    /// the context, which the caller restores.
+    pub(super) fn read_one_pass(
+        &mut self,
+        mut i: usize,
+        line: u32,
+        counts: bool,
+        block: &mut Block,
+    ) -> Option<(usize, usize)> {
+        let bytes = self.text.as_bytes();
+        let n = bytes.len();
+        let mut last = i;
+        let mut checks = Checks::default();
+        // A G20/G21 after a dimension word, or a cycle code changing the
+        // cycle state after a K word, changes how that word is read.
+        let mut read_dimension = false;
+        let mut read_k = false;
+        loop {
+            i = lexer::skip_blanks(bytes, i);
+            let Some(&c) = bytes.get(i) else { break };
+            let Some(address) = Address::from_byte(c) else {
+                match c {
+                    b'\n' | b'\r' | b';' => break,
+                    b'(' => {
+                        let (after, closed) = lexer::comment(&bytes[i..])?;
+                        if !closed {
+                            return None;
+                        }
+                        i = n - after.len();
+                        last = i;
+                        continue;
+                    }
+                    // A letter offsetlab does not read, a character outside
+                    // a word: errors.
+                    _ => return None,
+                }
+            };
+            let (word_end, next, number) = lexer::number(bytes, i + 1);
+            let number = number.ok()?;
+            if address == Address::G && counts {
+                let before = (self.units, self.in_cycle);
+                self.note_context(number);
+                if (read_dimension && self.units != before.0)
+                    || (read_k && self.in_cycle != before.1)
+                {
+                    return None;
+                }
+            }
+            let span = Span::new(i, word_end, line);
+            let (word, kind) = self.read_word(address, number, span).ok()?;
+            if kind == WordKind::Dimension {
+                if self.integer_warning_due(number) {
+                    return None;
+                }
+                read_dimension = true;
+            }
+            read_k |= address == Address::K;
+            checks.admit(self.options.machine, block, word).ok()?;
+            last = word_end;
+            i = next;
+        }
+        Some((i, last))
+    }
+
+    /// Reads the words of a block from `i` (after any `/`) in two passes:
+    /// lexes the whole block (reporting comment and character errors, and
+    /// noting the G codes that change how numbers are read), then types
+    /// every word with the block's context and checks it against the words
+    /// before it, reporting what is wrong with each. This is the reading of
+    /// spec 1 as written; [`Blocks::read_one_pass`] gives the same blocks
+    /// and diagnostics faster for the blocks it reads. Returns what
+    /// [`Blocks::read_one_pass`] returns.
+    pub(super) fn read_two_pass(
+        &mut self,
+        mut i: usize,
+        line: u32,
+        counts: bool,
+        block: &mut Block,
+    ) -> (usize, usize) {
+        let bytes = self.text.as_bytes();
+        let n = bytes.len();
+        let mut last = i;
+        self.raw.clear();
+
+        // Lex: comments, words, and anything else as an error. Words are
+        // typed once the whole block is lexed, because a G code anywhere in
+        // it (G20/G21, a canned cycle) changes how its numbers are read;
+        // those G codes are noted as they are lexed.
+        loop {
+            i = lexer::skip_blanks(bytes, i);
+            if i >= n || is_end(bytes[i]) {
+                break;
+            }
+            let c = bytes[i];
+            if c.is_ascii_alphabetic() {
+                let (word_end, _, number) = lexer::number(bytes, i + 1);
+                let letter = c.to_ascii_uppercase();
+                if letter == b'G'
+                    && counts
+                    && let Ok(number) = number
+                {
+                    self.note_context(number);
+                }
+                self.raw.push(RawWord {
+                    letter,
+                    number,
+                    start: i,
+                    end: word_end,
+                });
+                i = word_end;
+            } else if c == b'(' {
+                let (after, closed) = lexer::comment(&bytes[i..]).unwrap_or((&[], false));
+                let comment_end = n - after.len();
+                if !closed {
+                    self.error_at(
+                        block,
+                        "unclosed-comment",
+                        i,
+                        comment_end,
+                        line,
+                        "this comment is not closed with `)` before the end of the line",
+                    );
+                }
+                i = comment_end;
+            } else {
+                // Skip to the next thing that can start a word or a comment.
+                let mut j = i + 1;
+                while j < n
+                    && !bytes[j].is_ascii_alphabetic()
+                    && bytes[j] != b'('
+                    && !is_end(bytes[j])
+                {
+                    j += 1;
+                }
+                let ch = self.text[i..].chars().next().unwrap_or('?');
+                let message = unexpected_message(ch);
+                self.error_at(block, "unexpected-character", i, j, line, &message);
+                i = j;
+            }
+            last = i;
+        }
+        let end = i;
+
+        let raw = std::mem::take(&mut self.raw);
+        // Type every word.
+        let mut checks = Checks::default();
+        for w in &raw {
+            let Some(word) = self.type_word(w, line, block) else {
+                continue;
+            };
+            if let Err(clash) = checks.admit(self.options.machine, block, word) {
+                let (code, msg) = self.clash_message(block, &word, clash);
+                self.error_word(block, code, &word, &msg);
+            }
+        }
+        self.raw = raw;
+        (end, last)
+    }
+}
