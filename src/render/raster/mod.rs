@@ -27,6 +27,7 @@
 //! (the current block's highlight) keep their colour at joints.
 
 mod keep;
+mod open;
 mod record;
 mod sweep;
 #[cfg(test)]
@@ -85,6 +86,14 @@ pub struct Raster {
     blocks: Vec<u8>,
     tiles_w: usize,
     blocks_w: usize,
+    /// The tiles and the blocks not finished, as bits by row and by
+    /// column ([`open`]): a line finds those it may reach 64 at a time.
+    open_tiles: open::Open,
+    open_blocks: open::Open,
+    /// The blocks and the tiles along the line being swept that it may
+    /// reach open (kept for their memory).
+    reach_blocks: Vec<u64>,
+    reach_tiles: Vec<u64>,
     /// The box of the pixels drawn (x0, y0, x1, y1; exclusive ends).
     dirty: Option<(usize, usize, usize, usize)>,
     /// What was recorded since [`Raster::begin`].
@@ -243,6 +252,16 @@ impl Raster {
         }
     }
 
+    /// Indexes the tiles and blocks not finished ([`open`]) from
+    /// [`Raster::tiles`] and [`Raster::blocks`]; [`Raster::finished_pixel`]
+    /// keeps them up to date.
+    fn index_open(&mut self) {
+        let tiles = &self.tiles;
+        (self.open_tiles).index(self.tiles_w, tiles.len(), |t| tiles[t] != FULL_TILE);
+        let blocks = &self.blocks;
+        (self.open_blocks).index(self.blocks_w, blocks.len(), |b| blocks[b] != FULL);
+    }
+
     /// Width and height in pixels of the drawing ([`Raster::factor`]
     /// device pixels each).
     pub fn size(&mut self) -> (usize, usize) {
@@ -297,6 +316,7 @@ impl Raster {
                 self.reset_tiles();
                 self.open = (0, 0, self.width, self.height);
             }
+            self.index_open();
             let (x0, y0, x1, y1) = self.open;
             self.open_all = self.open == (0, 0, self.width, self.height);
             self.open_pixels = (x0 < x1 && y0 < y1)
