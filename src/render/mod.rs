@@ -14,6 +14,7 @@
 mod annotate;
 #[cfg(target_arch = "wasm32")]
 pub mod canvas;
+mod paths;
 pub mod raster;
 pub mod scene;
 pub mod style;
@@ -24,6 +25,9 @@ use crate::setup::MachineKind;
 use crate::toolpath::{ArcPoints, Toolpath};
 pub use annotate::grid_step;
 use annotate::{draw_axes, draw_grid, draw_legend, draw_scale_bar, legend_row_count};
+#[cfg(test)]
+use paths::draw_path;
+use paths::draw_paths;
 pub use raster::Raster;
 pub use scene::Scene;
 pub use style::{Align, Font, Stroke, Theme};
@@ -58,6 +62,36 @@ pub trait Pen {
     fn arc_points(&self) -> ArcPoints {
         ArcPoints::Exact
     }
+    /// Whether this pen takes the arcs of a toolpath of `moves` moves whole
+    /// ([`Pen::arc`]) rather than as their points: a pixel layer does for
+    /// large drawings, and tessellates only the arcs it does not find
+    /// hidden (most, front to back in a dense drawing).
+    fn takes_arcs(&self, _moves: usize) -> bool {
+        false
+    }
+    /// Adds an arc to the current sub-path, which is at its start (see
+    /// [`Pen::takes_arcs`]); false when this one is to come as its points
+    /// instead.
+    fn arc(&mut self, _arc: &WholeArc) -> bool {
+        false
+    }
+}
+
+/// An arc on the screen (CSS pixels, y down), whole: from `from` about
+/// `centre` through `sweep` radians (positive from +x towards +y) to `to`,
+/// drawn as `count` equal segments.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WholeArc {
+    /// The circle's centre.
+    pub centre: (f64, f64),
+    /// Where the arc starts (the current point).
+    pub from: (f64, f64),
+    /// Where it ends.
+    pub to: (f64, f64),
+    /// Its turn about the centre.
+    pub sweep: f64,
+    /// Its segments.
+    pub count: usize,
 }
 
 /// A 2D drawing surface in CSS pixels, y down.
@@ -359,148 +393,9 @@ fn draw_scene_as(
     frame
 }
 
-/// The paths of a scene, bottom to top: the moves after the current block
-/// (faint), the current block's highlight, the actual path and the
-/// programmed path up to the current block.
-fn draw_paths(pen: &mut impl Pen, frame: &Frame, toolpath: &Toolpath, scene: &Scene, split: usize) {
-    let moves = toolpath.len();
-    if split < moves {
-        pen.begin_group("ghost");
-        let ghost = frame.theme.ghost();
-        draw_path(pen, frame, toolpath, false, split..moves, |_| &ghost);
-        pen.end_group();
-    }
-    if let Some(step) = scene.step {
-        let first = toolpath.blocks.partition_point(|&b| b < step).min(split);
-        if first < split {
-            pen.begin_group("current");
-            let hl = frame.theme.highlight();
-            draw_path(pen, frame, toolpath, false, first..split, |_| &hl);
-            pen.end_group();
-        }
-    }
-    let t = frame.theme;
-    let (af, ar, pf, pr) = (
-        t.actual_feed(),
-        t.actual_rapid(),
-        t.programmed_feed(),
-        t.programmed_rapid(),
-    );
-    pen.begin_group("actual");
-    draw_path(pen, frame, toolpath, false, 0..split, |rapid| {
-        if rapid { &ar } else { &af }
-    });
-    pen.end_group();
-    pen.begin_group("programmed");
-    draw_path(pen, frame, toolpath, true, 0..split, |rapid| {
-        if rapid { &pr } else { &pf }
-    });
-    pen.end_group();
-}
-
 /// True for moves drawn in the rapid colour: G00 and offset motion in G00.
 pub fn is_rapid(kind: u8) -> bool {
     kind == 0 || kind == 4
-}
-
-fn draw_path<'a>(
-    s: &mut impl Pen,
-    f: &Frame,
-    tp: &Toolpath,
-    programmed: bool,
-    range: std::ops::Range<usize>,
-    stroke_for: impl Fn(bool) -> &'a Stroke,
-) {
-    // Arcs are tessellated for the scale they are drawn at.
-    let arcs = (DRAW_TOLERANCE_PX / f.transform.scale, s.arc_points());
-    for rapid in [true, false] {
-        let stroke = stroke_for(rapid);
-        let period: f64 = stroke.dash.iter().sum();
-        let dashed = period > 0.0;
-        // The first point of the last move, for where a dashed pattern
-        // starts afresh (after a move whose ends are a period apart).
-        let mut from: Option<(f64, f64)> = None;
-        // `pen` is the last point drawn, `pending` the last vertex passed
-        // over for being too close to it; ends of runs are always drawn.
-        let mut pen: Option<(f64, f64)> = None;
-        let mut pending: Option<(f64, f64)> = None;
-        let mut begun = false;
-        let keep = |m: usize| tp.kinds.get(m).is_some_and(|&k| is_rapid(k) == rapid);
-        tp.for_each_point(range.clone(), programmed, arcs, keep, |m, i, p| {
-            let (u, v) = f.plane.project(&p);
-            let (x, y) = f.transform.to_screen(u, v);
-            if !(x.is_finite() && y.is_finite()) {
-                return;
-            }
-            if !begun {
-                s.begin_path(stroke);
-                begun = true;
-            }
-            if i == 0 {
-                let last_from = from.replace((x, y));
-                // A move that starts where the last one ended continues
-                // the line; any other starts a new sub-path.
-                let last = pending.or(pen);
-                if last.is_some_and(|(lx, ly)| distance_near(x - lx, y - ly, 0.01) <= 0.01) {
-                    // Where the last move's end was skipped (level of
-                    // detail), the line runs on across the two moves.
-                    if pending.is_none()
-                        && let Some((px, py)) = pen
-                    {
-                        let long = last_from.is_some_and(|(fx, fy)| {
-                            (px - fx).abs() >= period || (py - fy).abs() >= period
-                        });
-                        let restart = dashed && (long || m % RESTART_EVERY == 0);
-                        s.next_move(px, py, restart);
-                    }
-                    return;
-                }
-                if let Some((px, py)) = pending.take() {
-                    s.line_to(px, py);
-                }
-                s.move_to(x, y);
-                pen = Some((x, y));
-                return;
-            }
-            if pen.is_some_and(|(px, py)| {
-                distance_near(x - px, y - py, MIN_SEGMENT_PX) < MIN_SEGMENT_PX
-            }) {
-                pending = Some((x, y));
-                return;
-            }
-            s.line_to(x, y);
-            pen = Some((x, y));
-            pending = None;
-        });
-        if let Some((px, py)) = pending {
-            s.line_to(px, py);
-        }
-        if begun {
-            s.stroke();
-        }
-    }
-}
-
-/// `dx.hypot(dy)` where it is near `limit` or below; else a number that
-/// compares with `limit` as it does (`<`, `<=`, `>`, `>=`). The level of
-/// detail asks this of every point, and `hypot`, for this and for the
-/// lengths of segments, was 15 % of a 1M-block frame natively (perf):
-/// most points are far apart along an axis, and
-/// `hypot` (rounded faithfully) is never less than the longer side, nor
-/// more than the sum of the sides rounded up.
-#[inline(always)]
-fn distance_near(dx: f64, dy: f64, limit: f64) -> f64 {
-    let (ax, ay) = (dx.abs(), dy.abs());
-    // Not `f64::max`, which answers for NaN too (a call to libm in wasm):
-    // the points are finite.
-    let longer = if ay > ax { ay } else { ax };
-    if longer > limit {
-        longer
-    } else if ax + ay < limit * (1.0 - 1e-9) {
-        ax + ay
-    } else {
-        dx.hypot(dy)
-    }
 }
 
 #[cfg(test)]

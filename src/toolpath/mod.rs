@@ -76,6 +76,29 @@ impl ToolArc {
         )
     }
 
+    /// The plane's axes as vectors of the toolpath's space: a plane
+    /// coordinate of 1 along its first and its second axis (on the lathe
+    /// X / 2 is the plane coordinate), and 1 along its normal.
+    pub fn frame(&self) -> [Xyz; 3] {
+        let (_, (ia, ib, n), s) = self.circle(false);
+        let mut axes = [[0.0; 3]; 3];
+        axes[0][ia] = 1.0 / s(ia);
+        axes[1][ib] = 1.0 / s(ib);
+        axes[2][n] = 1.0;
+        axes
+    }
+
+    /// The centre of one path's circle as a point (its normal coordinate
+    /// `at`'s), and the circle's signed sweep (radians, positive from the
+    /// plane's first axis towards its second).
+    pub fn centre_and_sweep(&self, programmed: bool, at: Xyz) -> (Xyz, f64) {
+        let (c, (ia, ib, _), s) = self.circle(programmed);
+        let mut centre = at;
+        centre[ia] = c.center[0] / s(ia);
+        centre[ib] = c.center[1] / s(ib);
+        (centre, c.sweep)
+    }
+
     /// Point `i` of `count` along the arc from `from` to `to` (`i` = 0 is
     /// `from`, `count` is `to`); the axis normal to the plane moves linearly
     /// (a helix).
@@ -124,6 +147,28 @@ impl ToolArc {
         }
         f(count.max(1), to);
     }
+}
+
+/// What [`Toolpath::visit`] shows of a move.
+#[derive(Clone, Copy, Debug)]
+pub enum Visit<'a> {
+    /// Point `i` of the move (0: its start).
+    Point(usize, Xyz),
+    /// The whole of an arc move, after its start: its circles, which path,
+    /// its ends, and the segments [`Toolpath::for_each_point`] would make
+    /// of it.
+    Arc {
+        /// Its circles.
+        arc: &'a ToolArc,
+        /// Which of them: the programmed path's or the actual one's.
+        programmed: bool,
+        /// Its start.
+        from: Xyz,
+        /// Its end.
+        to: Xyz,
+        /// How many segments make it.
+        count: usize,
+    },
 }
 
 /// How [`Toolpath::for_each_point`] places the points of an arc.
@@ -419,9 +464,30 @@ impl Toolpath {
         &self,
         range: Range<usize>,
         programmed: bool,
-        (tolerance, arc_points): (f64, ArcPoints),
+        arcs: (f64, ArcPoints),
         keep: impl Fn(usize) -> bool,
         mut f: impl FnMut(usize, usize, Xyz),
+    ) {
+        self.visit(range, programmed, arcs, keep, |m, visit| {
+            if let Visit::Point(i, p) = visit {
+                f(m, i, p);
+            }
+            false
+        });
+    }
+
+    /// As [`Toolpath::for_each_point`], with `f(move, visit)`; after an
+    /// arc's start, [`Visit::Arc`] offers the whole arc, and the points
+    /// after its start follow only when `f` answers false to it (a pixel
+    /// layer takes the arcs of a large drawing whole, and tessellates only
+    /// those it does not find hidden).
+    pub fn visit(
+        &self,
+        range: Range<usize>,
+        programmed: bool,
+        (tolerance, arc_points): (f64, ArcPoints),
+        keep: impl Fn(usize) -> bool,
+        mut f: impl FnMut(usize, Visit) -> bool,
     ) {
         let vertices = if programmed {
             &self.programmed
@@ -442,20 +508,35 @@ impl Toolpath {
             match arc {
                 Some(c) => {
                     let count = c.segments(tolerance);
+                    f(m, Visit::Point(0, from));
+                    let whole = Visit::Arc {
+                        arc: c,
+                        programmed,
+                        from,
+                        to,
+                        count,
+                    };
+                    if f(m, whole) {
+                        continue;
+                    }
                     match arc_points {
                         ArcPoints::Exact => {
-                            for i in 0..=count {
-                                f(m, i, c.point(programmed, from, to, i, count));
+                            for i in 1..=count {
+                                f(m, Visit::Point(i, c.point(programmed, from, to, i, count)));
                             }
                         }
                         ArcPoints::Rotated => {
-                            c.rotated_points(programmed, (from, to), count, |i, p| f(m, i, p));
+                            c.rotated_points(programmed, (from, to), count, |i, p| {
+                                if i > 0 {
+                                    f(m, Visit::Point(i, p));
+                                }
+                            });
                         }
                     }
                 }
                 None => {
-                    f(m, 0, from);
-                    f(m, 1, to);
+                    f(m, Visit::Point(0, from));
+                    f(m, Visit::Point(1, to));
                 }
             }
         }

@@ -108,7 +108,8 @@ impl Raster {
             && last.full == self.full
             && last.coarse == self.coarse
             && last.scale == self.scale;
-        if !same_surface || last.styles != self.styles {
+        // (A drawing with whole arcs is large: never kept, nor compared.)
+        if !same_surface || last.styles != self.styles || !self.arcs.is_empty() {
             return false;
         }
         // Path by path (a path's sub-paths are together, in the order of

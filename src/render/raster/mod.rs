@@ -100,6 +100,17 @@ pub struct Raster {
     styles: Vec<Ink>,
     subs: Vec<Sub>,
     points: Vec<[f32; 2]>,
+    /// The arcs recorded whole ([`crate::render::Pen::arc`]), each a sub-path of its own
+    /// (its `arc`), tessellated when drawn unless hidden; and the points
+    /// of the one being drawn (kept for their memory).
+    arcs: Vec<RecordedArc>,
+    arc_points: Vec<[f32; 2]>,
+    /// How many whole arcs this drawing tessellated (the others it found
+    /// hidden).
+    tessellated: usize,
+    /// Toolpaths of this many moves or more have their arcs taken whole
+    /// ([`crate::render::Pen::takes_arcs`]).
+    arcs_from: usize,
     pen: Recorder,
     /// The area the recorded lines cover, overlaps counted (device
     /// pixels²).
@@ -152,19 +163,75 @@ struct Ink {
     period: f64,
 }
 
-/// A recorded sub-path: its points run from `first` to the next one's.
+/// A recorded sub-path: its points run from `first` to the next one's;
+/// or, when `arc` is not [`NO_ARC`], it is that whole arc.
 #[derive(Clone, Copy, Debug)]
 struct Sub {
     first: u32,
     /// Where its first point is in the dash pattern.
     phase: f32,
     style: u16,
+    arc: u32,
 }
+
+const NO_ARC: u32 = u32::MAX;
+
+impl RecordedArc {
+    /// Its points into `out`: the start vector turned a segment's angle
+    /// at a time ([`crate::toolpath::ArcPoints::Rotated`]), its ends as
+    /// recorded.
+    fn tessellate(&self, out: &mut Vec<[f32; 2]>) {
+        out.clear();
+        out.push(self.from);
+        let [cx, cy] = self.centre.map(f64::from);
+        let (mut vx, mut vy) = (f64::from(self.from[0]) - cx, f64::from(self.from[1]) - cy);
+        let (sin, cos) = (f64::from(self.sweep) / f64::from(self.count)).sin_cos();
+        for _ in 1..self.count {
+            (vx, vy) = (vx * cos - vy * sin, vy * cos + vx * sin);
+            out.push([(cx + vx) as f32, (cy + vy) as f32]);
+        }
+        out.push(self.to);
+    }
+}
+
+/// An arc recorded whole, in pixels of the drawing: from `from` about
+/// `centre` through `sweep` to `to`, in `count` equal segments.
+#[derive(Clone, Copy, Debug)]
+struct RecordedArc {
+    centre: [f32; 2],
+    from: [f32; 2],
+    to: [f32; 2],
+    sweep: f32,
+    count: u32,
+}
+
+/// Toolpaths of this many moves or more have their arcs recorded whole on
+/// a raster: about where a drawing's points pass [`keep::MOST_KEPT`] (5
+/// points a move in the benchmark programs), so such drawings are not
+/// kept anyway. In the 1M-block frame, most arcs lie wholly in finished
+/// blocks, and their tessellation and its recording went for nothing.
+pub const ARCS_WHOLE_FROM_MOVES: usize = 200_000;
 
 impl Raster {
     /// A raster with no pixels yet.
     pub fn new() -> Raster {
-        Raster::default()
+        Raster {
+            arcs_from: ARCS_WHOLE_FROM_MOVES,
+            ..Raster::default()
+        }
+    }
+
+    /// How many of the arcs recorded whole were tessellated and drawn:
+    /// those not found hidden under what was drawn before them.
+    pub fn arcs_tessellated(&mut self) -> usize {
+        self.finish();
+        self.tessellated
+    }
+
+    /// Takes the arcs of toolpaths of `moves` moves or more whole (for
+    /// tests: [`ARCS_WHOLE_FROM_MOVES`] otherwise).
+    pub fn take_arcs_from(&mut self, moves: usize) {
+        self.arcs_from = moves;
     }
 
     /// Starts a drawing of `width` × `height` device pixels, `scale` device
@@ -200,6 +267,8 @@ impl Raster {
         self.styles.clear();
         self.subs.clear();
         self.points.clear();
+        self.arcs.clear();
+        self.tessellated = 0;
         self.pen = Recorder::default();
         self.ink_area = 0.0;
         true
@@ -286,6 +355,11 @@ impl Raster {
             for sub in &mut self.subs {
                 sub.phase /= 2.0;
             }
+            for arc in &mut self.arcs {
+                for p in [&mut arc.centre, &mut arc.from, &mut arc.to] {
+                    *p = p.map(|v| v / 2.0);
+                }
+            }
             for ink in &mut self.styles {
                 ink.half_width /= 2.0;
                 ink.dash.iter_mut().for_each(|d| *d /= 2.0);
@@ -327,14 +401,29 @@ impl Raster {
         }
         let subs = std::mem::take(&mut self.subs);
         let points = std::mem::take(&mut self.points);
+        let arcs = std::mem::take(&mut self.arcs);
+        let mut arc_points = std::mem::take(&mut self.arc_points);
         // (Lent, not cloned per sub-path: most moves are one.)
         let styles = std::mem::take(&mut self.styles);
         for (k, sub) in subs.iter().enumerate().rev() {
-            let end = subs.get(k + 1).map_or(points.len(), |n| n.first as usize);
-            let pts = &points[sub.first as usize..end];
             let style = usize::from(sub.style);
             let Some(ink) = styles.get(style) else {
                 continue;
+            };
+            let pts = if let Some(arc) = arcs.get(sub.arc as usize) {
+                // Its circle's box first: most arcs of a dense drawing are
+                // hidden whole.
+                let [cx, cy] = arc.centre;
+                let r = length(f64::from(arc.from[0] - cx), f64::from(arc.from[1] - cy)) as f32;
+                if self.hidden([cx - r, cy - r], [cx + r, cy + r], ink.half_width) {
+                    continue;
+                }
+                arc.tessellate(&mut arc_points);
+                self.tessellated += 1;
+                &arc_points[..]
+            } else {
+                let end = subs.get(k + 1).map_or(points.len(), |n| n.first as usize);
+                &points[sub.first as usize..end]
             };
             let stamp = (self.base + style as u32) & 0xffff;
             if ink.dash.is_empty() {
@@ -374,7 +463,11 @@ impl Raster {
             self.lengths = lengths;
         }
         self.styles = styles;
-        if first && points.len() > keep::MOST_KEPT {
+        self.arc_points = arc_points;
+        let whole_arcs = !arcs.is_empty();
+        self.arcs = arcs;
+        self.arcs.clear();
+        if first && (points.len() > keep::MOST_KEPT || whole_arcs) {
             self.last.forget();
             self.subs = subs;
             self.points = points;
@@ -513,19 +606,19 @@ impl Raster {
         if all_full(&self.blocks, self.blocks_w, blocks.0, blocks.1, FULL) {
             return true;
         }
-        // A short segment in a block not yet finished: its own tiles. Of
-        // the 1.66 M segments of a 1M-block frame that reached the sweep,
-        // 1.62 M covered no pixel, and 1.34 M of those lay in finished
-        // tiles (a block is finished only when all its 64 tiles are): the
-        // frame 4 % faster in wasm (`examples/render_time` for
-        // wasm32-wasip1 under Node, 537–540 → 513–518 ms), 6 % fewer
-        // instructions natively.
+        // In a block not yet finished: its own tiles, 64 at a time along a
+        // row ([`open`]). Of the 1.66 M segments of a 1M-block frame that
+        // reached the sweep, 1.62 M covered no pixel, and 1.34 M of those
+        // lay in finished tiles (a block is finished only when all its 64
+        // tiles are): the frame 4 % faster in wasm (`examples/render_time`
+        // for wasm32-wasip1 under Node, 537–540 → 513–518 ms), 6 % fewer
+        // instructions natively. (Once tested a tile at a time, for boxes
+        // of 4 × 4 tiles at most; the box of a whole arc is larger.)
         let tiles = (
             (px0 >> TILE_BITS, px1 >> TILE_BITS),
             (py0 >> TILE_BITS, py1 >> TILE_BITS),
         );
-        let (tx, ty) = (tiles.0.1 - tiles.0.0, tiles.1.1 - tiles.1.0);
-        tx < 4 && ty < 4 && all_full(&self.tiles, self.tiles_w, tiles.0, tiles.1, FULL_TILE)
+        !self.open_tiles.any_in(tiles.0, tiles.1)
     }
 
     /// Where the pixel at (x, y) is in [`Raster::px`]: its tile's number

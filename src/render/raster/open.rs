@@ -66,6 +66,20 @@ impl Open {
         self.cols[x * self.col_words + (y >> 6)] &= !(1 << (y & 63));
     }
 
+    /// Whether any cell of columns `xs` by rows `ys` (inclusive) is open:
+    /// a word of 64 cells at a time, row by row.
+    pub fn any_in(&self, (x0, x1): (usize, usize), (y0, y1): (usize, usize)) -> bool {
+        let (w0, w1) = (x0 >> 6, x1 >> 6);
+        let (head, tail) = (u64::MAX << (x0 & 63), u64::MAX >> (63 - (x1 & 63)));
+        (y0..=y1).any(|y| {
+            let row = &self.rows[y * self.row_words..][..self.row_words];
+            if w0 == w1 {
+                return row[w0] & head & tail != 0;
+            }
+            row[w0] & head != 0 || row[w0 + 1..w1].iter().any(|&w| w != 0) || row[w1] & tail != 0
+        })
+    }
+
     /// Sets in `reach` the cells along the line's major axis, from the one
     /// of pixel column `first` to that of `last`, in which the line's
     /// pixels may meet an open cell of this grid (cells of `1 << bits`

@@ -3,9 +3,9 @@
 //! style and the dash phase it starts at ([`Raster::finish`] draws them).
 
 use super::keep::MOST_KEPT;
-use super::{Ink, Raster, Sub, length};
-use crate::render::Pen;
+use super::{Ink, NO_ARC, Raster, RecordedArc, Sub, length};
 use crate::render::style::Stroke;
+use crate::render::{Pen, WholeArc};
 use crate::toolpath::ArcPoints;
 
 /// The pen while recording: where it is, how far along its sub-path, and
@@ -186,6 +186,7 @@ impl Pen for Raster {
                 first: self.points.len() as u32,
                 phase: phase as f32,
                 style,
+                arc: NO_ARC,
             });
             self.points.push(at(t0));
         }
@@ -197,6 +198,68 @@ impl Pen for Raster {
 
     fn stroke(&mut self) {
         self.pen.at = None;
+    }
+
+    fn takes_arcs(&self, moves: usize) -> bool {
+        moves >= self.arcs_from
+    }
+
+    /// Records the arc whole when it lies within the surface (no clipping
+    /// then) and the scale is the same along x and y (a circle stays one).
+    fn arc(&mut self, arc: &WholeArc) -> bool {
+        let (Some(style), Some(_)) = (self.pen.style, self.pen.at) else {
+            return false;
+        };
+        let count = u32::try_from(arc.count).unwrap_or(0);
+        if self.scale.0 != self.scale.1 || count == 0 || !arc.sweep.is_finite() {
+            return false;
+        }
+        let [centre, from, to] = [arc.centre, arc.from, arc.to].map(|(x, y)| self.to_device(x, y));
+        let r = length(from.0 - centre.0, from.1 - centre.1);
+        let ink = &self.styles[usize::from(style)];
+        let margin = ink.half_width + 2.0;
+        let (w, h) = (self.full.0 as f64, self.full.1 as f64);
+        let within = |c: f64, size: f64| c - r >= 1.0 - margin && c + r <= size + margin - 1.0;
+        if !(r > 0.0 && within(centre.0, w) && within(centre.1, h)) {
+            return false;
+        }
+        let f = |(x, y): (f64, f64)| [x as f32, y as f32];
+        let recorded = RecordedArc {
+            centre: f(centre),
+            from: f(from),
+            to: f(to),
+            sweep: arc.sweep as f32,
+            count,
+        };
+        // The length of its segments together, from the unrounded ends
+        // (as the segments of its points are measured: then the dashes
+        // after it fall where they would).
+        let n = f64::from(count);
+        let length = n * 2.0 * r * (arc.sweep.abs() / (2.0 * n)).sin();
+        let (period, half_width) = (ink.period, ink.half_width);
+        let along = self.pen.along;
+        // (`rem_euclid` is a call to fmod, 3 % of a 1M-block frame here:
+        // the pen's distance is kept within a period of the arc's end.)
+        let phase = if period > 0.0 && !(0.0..period).contains(&along) {
+            along.rem_euclid(period)
+        } else if period > 0.0 {
+            along
+        } else {
+            0.0
+        };
+        self.subs.push(Sub {
+            first: self.points.len() as u32,
+            phase: phase as f32,
+            style,
+            arc: self.arcs.len() as u32,
+        });
+        self.arcs.push(recorded);
+        self.ink_area += length * 2.0 * half_width;
+        self.pen.along = phase + length;
+        self.pen.at = Some(to);
+        // The next segment starts a sub-path of its own.
+        self.pen.broken = true;
+        true
     }
 }
 

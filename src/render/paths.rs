@@ -1,0 +1,452 @@
+//! The paths of a scene as strokes: each move's points projected onto the
+//! view and joined into lines, sub-pixel vertices passed over (level of
+//! detail), a dashed pattern started afresh where [`RESTART_EVERY`] says;
+//! a pen that takes arcs whole ([`Pen::arc`]) gets those whose projection is
+//! a circle as one call instead of their points.
+
+use super::{
+    DRAW_TOLERANCE_PX, Frame, MIN_SEGMENT_PX, Pen, RESTART_EVERY, Scene, Stroke, WholeArc, is_rapid,
+};
+use crate::report::Xyz;
+use crate::toolpath::{ToolArc, Toolpath, Visit};
+
+/// The paths of a scene, bottom to top: the moves after the current block
+/// (faint), the current block's highlight, the actual path and the
+/// programmed path up to the current block.
+pub(super) fn draw_paths(
+    pen: &mut impl Pen,
+    frame: &Frame,
+    toolpath: &Toolpath,
+    scene: &Scene,
+    split: usize,
+) {
+    let moves = toolpath.len();
+    if split < moves {
+        pen.begin_group("ghost");
+        let ghost = frame.theme.ghost();
+        draw_path(pen, frame, toolpath, false, split..moves, |_| &ghost);
+        pen.end_group();
+    }
+    if let Some(step) = scene.step {
+        let first = toolpath.blocks.partition_point(|&b| b < step).min(split);
+        if first < split {
+            pen.begin_group("current");
+            let hl = frame.theme.highlight();
+            draw_path(pen, frame, toolpath, false, first..split, |_| &hl);
+            pen.end_group();
+        }
+    }
+    let t = frame.theme;
+    let (af, ar, pf, pr) = (
+        t.actual_feed(),
+        t.actual_rapid(),
+        t.programmed_feed(),
+        t.programmed_rapid(),
+    );
+    pen.begin_group("actual");
+    draw_path(pen, frame, toolpath, false, 0..split, |rapid| {
+        if rapid { &ar } else { &af }
+    });
+    pen.end_group();
+    pen.begin_group("programmed");
+    draw_path(pen, frame, toolpath, true, 0..split, |rapid| {
+        if rapid { &pr } else { &pf }
+    });
+    pen.end_group();
+}
+
+/// One path (one stroke) drawn on `s`: the moves of `range` on the
+/// programmed or the actual path, rapid ones with one stroke, the others
+/// with another.
+pub(super) fn draw_path<'a>(
+    s: &mut impl Pen,
+    f: &Frame,
+    tp: &Toolpath,
+    programmed: bool,
+    range: std::ops::Range<usize>,
+    stroke_for: impl Fn(bool) -> &'a Stroke,
+) {
+    // Arcs are tessellated for the scale they are drawn at.
+    let arcs = (DRAW_TOLERANCE_PX / f.transform.scale, s.arc_points());
+    let moves = tp.len();
+    for rapid in [true, false] {
+        let stroke = stroke_for(rapid);
+        let period: f64 = stroke.dash.iter().sum();
+        let mut t = Tracer {
+            stroke,
+            period,
+            from: None,
+            pen: None,
+            pending: None,
+            begun: false,
+        };
+        let keep = |m: usize| tp.kinds.get(m).is_some_and(|&k| is_rapid(k) == rapid);
+        tp.visit(
+            range.clone(),
+            programmed,
+            arcs,
+            keep,
+            |m, visit| match visit {
+                Visit::Point(i, p) => {
+                    let (u, v) = f.plane.project(&p);
+                    let (x, y) = f.transform.to_screen(u, v);
+                    t.point(s, m, i, (x, y));
+                    false
+                }
+                Visit::Arc {
+                    arc,
+                    programmed,
+                    from,
+                    to,
+                    count,
+                } => t.arc(s, whole_arc(f, arc, programmed, (from, to), count), moves),
+            },
+        );
+        if let Some((px, py)) = t.pending {
+            s.line_to(px, py);
+        }
+        if t.begun {
+            s.stroke();
+        }
+    }
+}
+
+/// Where a path being drawn is.
+struct Tracer<'a> {
+    stroke: &'a Stroke,
+    /// The dash pattern's length (0: solid).
+    period: f64,
+    /// The first point of the last move, for where a dashed pattern
+    /// starts afresh (after a move whose ends are a period apart).
+    from: Option<(f64, f64)>,
+    /// `pen` is the last point drawn, `pending` the last vertex passed
+    /// over for being too close to it; ends of runs are always drawn.
+    pen: Option<(f64, f64)>,
+    pending: Option<(f64, f64)>,
+    begun: bool,
+}
+
+impl Tracer<'_> {
+    /// Point `i` of move `m` (0: its start), on the screen.
+    fn point(&mut self, s: &mut impl Pen, m: usize, i: usize, (x, y): (f64, f64)) {
+        if !(x.is_finite() && y.is_finite()) {
+            return;
+        }
+        if !self.begun {
+            s.begin_path(self.stroke);
+            self.begun = true;
+        }
+        if i == 0 {
+            let last_from = self.from.replace((x, y));
+            // A move that starts where the last one ended continues
+            // the line; any other starts a new sub-path.
+            let last = self.pending.or(self.pen);
+            if last.is_some_and(|(lx, ly)| distance_near(x - lx, y - ly, 0.01) <= 0.01) {
+                // Where the last move's end was skipped (level of
+                // detail), the line runs on across the two moves.
+                if self.pending.is_none()
+                    && let Some((px, py)) = self.pen
+                {
+                    let period = self.period;
+                    let long = last_from.is_some_and(|(fx, fy)| {
+                        (px - fx).abs() >= period || (py - fy).abs() >= period
+                    });
+                    let restart = period > 0.0 && (long || m.is_multiple_of(RESTART_EVERY));
+                    s.next_move(px, py, restart);
+                }
+                return;
+            }
+            if let Some((px, py)) = self.pending.take() {
+                s.line_to(px, py);
+            }
+            s.move_to(x, y);
+            self.pen = Some((x, y));
+            return;
+        }
+        if self
+            .pen
+            .is_some_and(|(px, py)| distance_near(x - px, y - py, MIN_SEGMENT_PX) < MIN_SEGMENT_PX)
+        {
+            self.pending = Some((x, y));
+            return;
+        }
+        s.line_to(x, y);
+        self.pen = Some((x, y));
+        self.pending = None;
+    }
+
+    /// An arc whose start was just drawn ([`Tracer::point`]), offered to
+    /// the pen whole; false when its points are to follow instead (the
+    /// pen does not take it, or its projection is not a circle).
+    fn arc(&mut self, s: &mut impl Pen, whole: Option<WholeArc>, moves: usize) -> bool {
+        let Some(whole) = whole else {
+            return false;
+        };
+        // Its start was passed over, or was not on the screen's plane.
+        if !self.begun || self.pen.is_none() {
+            return false;
+        }
+        if !s.takes_arcs(moves) {
+            return false;
+        }
+        // The arc starts at the vertex passed over, if any.
+        if let Some((px, py)) = self.pending.take() {
+            s.line_to(px, py);
+            self.pen = Some((px, py));
+        }
+        if !s.arc(&whole) {
+            return false;
+        }
+        self.pen = Some(whole.to);
+        true
+    }
+}
+
+/// An arc move on the screen, when the view shows its circle as a circle
+/// (the view's plane is the arc's; a helix's rise is not seen): the circle
+/// of one path, its ends, and its sweep as the screen turns (y down).
+fn whole_arc(
+    f: &Frame,
+    arc: &ToolArc,
+    programmed: bool,
+    (from, to): (Xyz, Xyz),
+    count: usize,
+) -> Option<WholeArc> {
+    // The plane's axes as the view shows them (a projection is linear).
+    let [ea, eb, en] = arc.frame();
+    let (a, b, n) = (
+        f.plane.project(&ea),
+        f.plane.project(&eb),
+        f.plane.project(&en),
+    );
+    let (la, lb) = (a.0 * a.0 + a.1 * a.1, b.0 * b.0 + b.1 * b.1);
+    let dot = a.0 * b.0 + a.1 * b.1;
+    let circle =
+        n == (0.0, 0.0) && la > 0.0 && (la - lb).abs() <= 1e-9 * la && dot.abs() <= 1e-9 * la;
+    if !circle {
+        return None;
+    }
+    let (centre, sweep) = arc.centre_and_sweep(programmed, from);
+    let screen = |p: Xyz| {
+        let (u, v) = f.plane.project(&p);
+        f.transform.to_screen(u, v)
+    };
+    // Screen y runs down: the plane's turn from its first axis to its
+    // second is the screen's negative turn when the two keep their order.
+    let turn = a.1 * b.0 - a.0 * b.1;
+    let whole = WholeArc {
+        centre: screen(centre),
+        from: screen(from),
+        to: screen(to),
+        sweep: if turn > 0.0 { sweep } else { -sweep },
+        count,
+    };
+    let finite = [whole.centre, whole.from, whole.to]
+        .iter()
+        .all(|p| p.0.is_finite() && p.1.is_finite());
+    (finite && whole.sweep.is_finite() && count > 0).then_some(whole)
+}
+
+/// `dx.hypot(dy)` where it is near `limit` or below; else a number that
+/// compares with `limit` as it does (`<`, `<=`, `>`, `>=`). The level of
+/// detail asks this of every point, and `hypot`, for this and for the
+/// lengths of segments, was 15 % of a 1M-block frame natively (perf):
+/// most points are far apart along an axis, and
+/// `hypot` (rounded faithfully) is never less than the longer side, nor
+/// more than the sum of the sides rounded up.
+#[inline(always)]
+fn distance_near(dx: f64, dy: f64, limit: f64) -> f64 {
+    let (ax, ay) = (dx.abs(), dy.abs());
+    // Not `f64::max`, which answers for NaN too (a call to libm in wasm):
+    // the points are finite.
+    let longer = if ay > ax { ay } else { ax };
+    if longer > limit {
+        longer
+    } else if ax + ay < limit * (1.0 - 1e-9) {
+        ax + ay
+    } else {
+        dx.hypot(dy)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::style::{ACTUAL_FEED, PROGRAMMED_FEED};
+    use crate::render::{Plane, Raster};
+    use crate::{MachineKind, Setup, run};
+
+    fn toolpath(program: &str, machine: MachineKind) -> Toolpath {
+        let setup = Setup {
+            machine,
+            ..Setup::default()
+        };
+        let r = run(program, &setup);
+        assert!(!r.has_errors(), "{:?}", r.diagnostics);
+        Toolpath::from_run(&r)
+    }
+
+    /// The toolpath drawn on a raster of `w` × `h` (scale 2) with `stroke`,
+    /// its arcs taken whole or as their points; how many were taken whole.
+    fn drawn(tp: &Toolpath, plane: Plane, stroke: &Stroke, whole: bool) -> (Raster, usize) {
+        struct Counting(Raster, usize);
+        impl Pen for Counting {
+            fn begin_path(&mut self, s: &Stroke) {
+                self.0.begin_path(s)
+            }
+            fn move_to(&mut self, x: f64, y: f64) {
+                self.0.move_to(x, y)
+            }
+            fn line_to(&mut self, x: f64, y: f64) {
+                self.0.line_to(x, y)
+            }
+            fn stroke(&mut self) {
+                self.0.stroke()
+            }
+            fn next_move(&mut self, x: f64, y: f64, restart: bool) {
+                self.0.next_move(x, y, restart)
+            }
+            fn arc_points(&self) -> crate::toolpath::ArcPoints {
+                self.0.arc_points()
+            }
+            fn takes_arcs(&self, moves: usize) -> bool {
+                self.0.takes_arcs(moves)
+            }
+            fn arc(&mut self, arc: &WholeArc) -> bool {
+                let taken = self.0.arc(arc);
+                self.1 += usize::from(taken);
+                taken
+            }
+        }
+        let (w, h) = (300.0, 240.0);
+        let f = Frame::fit(tp, plane, w, h);
+        let mut raster = Raster::new();
+        raster.take_arcs_from(if whole { 0 } else { usize::MAX });
+        assert!(raster.begin(600, 480, (2.0, 2.0)));
+        let mut pen = Counting(raster, 0);
+        draw_path(&mut pen, &f, tp, false, 0..tp.len(), |_| stroke);
+        (pen.0, pen.1)
+    }
+
+    /// Asserts that two drawings show the same lines: the segments of
+    /// whole arcs are those of their points to a float's rounding, and
+    /// where a segment's or a dash's square end falls on a pixel's edge the
+    /// rounding may take a column of pixels in or out (along a diagonal,
+    /// pixels two apart). So: few pixels differ by more than a rounding,
+    /// and each of those has ink of both drawings within two pixels of it
+    /// (nothing drawn elsewhere, nothing missing).
+    fn assert_same_lines(a: &mut Raster, b: &mut Raster) {
+        assert_eq!(a.size(), b.size());
+        let (w, h) = a.size();
+        let inked = |r: &mut Raster, x: usize, y: usize| {
+            let (x0, y0) = (x.saturating_sub(2), y.saturating_sub(2));
+            (y0..(y + 3).min(h)).any(|y| (x0..(x + 3).min(w)).any(|x| r.pixel(x, y)[3] > 0))
+        };
+        let (mut ink, mut differ) = (0, 0);
+        for y in 0..h {
+            for x in 0..w {
+                let (p, q) = (a.pixel(x, y), b.pixel(x, y));
+                ink += usize::from(p[3] > 0 || q[3] > 0);
+                let d = p.iter().zip(q).map(|(u, v)| u.abs_diff(v)).max().unwrap();
+                if d > 2 {
+                    differ += 1;
+                    assert!(
+                        inked(a, x, y) && inked(b, x, y),
+                        "({x}, {y}): {p:?} against {q:?}"
+                    );
+                }
+            }
+        }
+        assert!(ink > 0);
+        assert!(differ * 100 < ink, "{differ} of {ink} pixels differ");
+    }
+
+    // Arcs of every kind on the mill: clockwise and counter-clockwise,
+    // by R and by I J, a full circle, a helix, an arc in G18 (seen edge
+    // on from above: its points), and one that runs off the view's edge
+    // when zoomed (its points, clipped).
+    const MILL: &str = "G90 G17 G00 X0. Y0.\nG01 X20. F100.\nG03 X40. Y20. R20.\nG02 X60. Y40. I20. J0.\n\
+        G03 X60. Y40. I-15. J0.\nG01 X30. Y60.\nG03 X10. Y60. Z-5. I-10. J0.\nG18 G02 X0. Z-5. I-5. K0.\n\
+        G17 G01 X-10. Y30.\nG02 X-10. Y30. I0. J-12.5\nG03 X5. Y45. R15.\n";
+
+    #[test]
+    fn whole_arcs_draw_the_pixels_their_points_draw() {
+        let tp = toolpath(MILL, MachineKind::Mill);
+        for stroke in [&ACTUAL_FEED, &PROGRAMMED_FEED] {
+            let (mut points, by_points) = drawn(&tp, Plane::Xy, stroke, false);
+            let (mut whole, taken) = drawn(&tp, Plane::Xy, stroke, true);
+            assert_eq!(by_points, 0);
+            // All six but the G18 arc (a line from above).
+            assert_eq!(taken, 6);
+            assert_same_lines(&mut points, &mut whole);
+        }
+        // From the side, the G18 arc is the circle.
+        let (mut points, _) = drawn(&tp, Plane::Xz, &ACTUAL_FEED, false);
+        let (mut whole, taken) = drawn(&tp, Plane::Xz, &ACTUAL_FEED, true);
+        assert_eq!(taken, 1);
+        assert_same_lines(&mut points, &mut whole);
+    }
+
+    #[test]
+    fn lathe_arcs_are_whole_in_the_zx_view() {
+        let tp = toolpath(
+            "G50 X120. Z60.\nG00 X40. Z2.\nG01 Z-10. F0.2\nG02 X60. Z-20. R10.\nG03 X80. Z-30. R10.\nG01 Z-40.\n",
+            MachineKind::Lathe,
+        );
+        let (mut points, _) = drawn(&tp, Plane::LatheZx, &ACTUAL_FEED, false);
+        let (mut whole, taken) = drawn(&tp, Plane::LatheZx, &ACTUAL_FEED, true);
+        assert_eq!(taken, 2);
+        assert_same_lines(&mut points, &mut whole);
+    }
+
+    #[test]
+    fn whole_arcs_under_what_was_drawn_after_them_are_not_tessellated() {
+        // Fifty small circles, then a square filled by lines closer than
+        // the stroke is wide over half of them: front to back, those are
+        // hidden, and only the others are tessellated.
+        let mut program = String::from("G90 G00 X0. Y0.\nG01 F100.\n");
+        for k in 0..50 {
+            let (x, y) = (2 + (k % 10) * 4, 2 + (k / 10) * 4);
+            program.push_str(&format!(
+                "G00 X{}. Y{y}.\nG03 X{}. Y{y}. I-1. J0.\n",
+                x + 1,
+                x + 1
+            ));
+        }
+        program.push_str("G00 X0. Y-1.\n");
+        for k in 0..120 {
+            let y = -1.0 + f64::from(k) * 0.1;
+            let x = if k % 2 == 0 { 41.0 } else { 0.0 };
+            program.push_str(&format!("G01 X{x}. Y{y:.1}\nY{:.1}\n", y + 0.1));
+        }
+        let tp = toolpath(&program, MachineKind::Mill);
+        let (mut points, _) = drawn(&tp, Plane::Xy, &ACTUAL_FEED, false);
+        let (mut whole, taken) = drawn(&tp, Plane::Xy, &ACTUAL_FEED, true);
+        assert_eq!(taken, 50);
+        let tessellated = whole.arcs_tessellated();
+        assert!(
+            (20..=30).contains(&tessellated),
+            "{tessellated} tessellated"
+        );
+        assert_same_lines(&mut points, &mut whole);
+    }
+
+    #[test]
+    fn hidden_whole_arcs_are_not_drawn_and_the_rest_are() {
+        // A thousand circles on one spot under a last one drawn over them
+        // with a wide stroke: front to back, the first ones are hidden.
+        let mut program = String::from("G90 G00 X0. Y0.\nG01 X10. F100.\n");
+        for _ in 0..1000 {
+            program.push_str("G03 X10. Y0. I-10. J0.\n");
+        }
+        let tp = toolpath(&program, MachineKind::Mill);
+        let wide = Stroke {
+            width: 6.0,
+            ..ACTUAL_FEED
+        };
+        let (mut points, _) = drawn(&tp, Plane::Xy, &wide, false);
+        let (mut whole, taken) = drawn(&tp, Plane::Xy, &wide, true);
+        assert_eq!(taken, 1000);
+        assert_same_lines(&mut points, &mut whole);
+    }
+}
