@@ -71,6 +71,11 @@ fn main() {
         let text = std::fs::read_to_string(f).expect("edited program");
         Toolpath::from_run(&offsetlab::run(&text, &setup))
     });
+    #[cfg(target_arch = "wasm32")]
+    println!(
+        "wasm memory before drawing {} MiB",
+        core::arch::wasm32::memory_size(0) * 65536 / (1 << 20)
+    );
     for frame in 0..num(5, 3.0) as usize {
         let drawn = match &edited {
             Some(other) if frame % 2 == 1 => other,
@@ -97,6 +102,12 @@ fn main() {
         );
         layer.segments = 0;
         layer.length = 0.0;
+        // Built for wasm (as the page's module): the memory it has grown to.
+        #[cfg(target_arch = "wasm32")]
+        println!(
+            "  wasm memory {} MiB",
+            core::arch::wasm32::memory_size(0) * 65536 / (1 << 20)
+        );
     }
     if let Some(out) = args.get(6) {
         let (w, h) = layer.raster.size();

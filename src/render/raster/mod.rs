@@ -603,7 +603,7 @@ impl Raster {
             (px0 >> BLOCK_BITS, px1 >> BLOCK_BITS),
             (py0 >> BLOCK_BITS, py1 >> BLOCK_BITS),
         );
-        if all_full(&self.blocks, self.blocks_w, blocks.0, blocks.1, FULL) {
+        if !self.open_blocks.any_in(blocks.0, blocks.1) {
             return true;
         }
         // In a block not yet finished: its own tiles, 64 at a time along a
@@ -629,19 +629,6 @@ impl Raster {
         let tile = (y >> TILE_BITS) * self.tiles_w + (x >> TILE_BITS);
         tile << (2 * TILE_BITS) | (y & TILE_MASK) << TILE_BITS | x & TILE_MASK
     }
-}
-
-/// Whether the cells `xs` by `ys` (inclusive ranges) of a grid `w` cells
-/// wide are all `full`.
-#[inline]
-fn all_full<T: PartialEq>(
-    cells: &[T],
-    w: usize,
-    (x0, x1): (usize, usize),
-    (y0, y1): (usize, usize),
-    full: T,
-) -> bool {
-    (y0..=y1).all(|y| cells[y * w + x0..=y * w + x1].iter().all(|c| *c == full))
 }
 
 /// The smaller of two numbers, neither of them NaN (points, centres and

@@ -67,17 +67,15 @@ impl Open {
     }
 
     /// Whether any cell of columns `xs` by rows `ys` (inclusive) is open:
-    /// a word of 64 cells at a time, row by row.
-    pub fn any_in(&self, (x0, x1): (usize, usize), (y0, y1): (usize, usize)) -> bool {
-        let (w0, w1) = (x0 >> 6, x1 >> 6);
-        let (head, tail) = (u64::MAX << (x0 & 63), u64::MAX >> (63 - (x1 & 63)));
-        (y0..=y1).any(|y| {
-            let row = &self.rows[y * self.row_words..][..self.row_words];
-            if w0 == w1 {
-                return row[w0] & head & tail != 0;
-            }
-            row[w0] & head != 0 || row[w0 + 1..w1].iter().any(|&w| w != 0) || row[w1] & tail != 0
-        })
+    /// a word of 64 cells at a time, row by row, or column by column when
+    /// there are fewer columns than rows.
+    #[inline]
+    pub fn any_in(&self, xs: (usize, usize), ys: (usize, usize)) -> bool {
+        if xs.1 - xs.0 < ys.1 - ys.0 {
+            any_in(&self.cols, self.col_words, ys, xs)
+        } else {
+            any_in(&self.rows, self.row_words, xs, ys)
+        }
     }
 
     /// Sets in `reach` the cells along the line's major axis, from the one
@@ -153,6 +151,30 @@ impl Open {
             reach[wt - base] |= open[wt] & tail;
         }
     }
+}
+
+/// Whether any bit `xs` (inclusive) of lines `ys` of `bits` (`words` words
+/// a line) is set.
+#[inline]
+fn any_in(bits: &[u64], words: usize, (x0, x1): (usize, usize), (y0, y1): (usize, usize)) -> bool {
+    let (w0, w1) = (x0 >> 6, x1 >> 6);
+    let (head, tail) = (u64::MAX << (x0 & 63), u64::MAX >> (63 - (x1 & 63)));
+    if w0 == w1 {
+        // (Most grids are one word wide: a word a line.)
+        let mask = head & tail;
+        let mut at = y0 * words + w0;
+        for _ in y0..=y1 {
+            if bits[at] & mask != 0 {
+                return true;
+            }
+            at += words;
+        }
+        return false;
+    }
+    (y0..=y1).any(|y| {
+        let line = &bits[y * words..][..words];
+        line[w0] & head != 0 || line[w0 + 1..w1].iter().any(|&w| w != 0) || line[w1] & tail != 0
+    })
 }
 
 /// Calls `f` with each set bit of `reach` (bit `j` of word `k` being
@@ -233,6 +255,25 @@ mod tests {
             for cell in reached(open, (w, h, bits), transposed, (first, last), &line) {
                 proptest::prop_assert!(found.contains(&cell), "cell {} not found: {:?}", cell, found);
             }
+        }
+    }
+
+    proptest::proptest! {
+        #[test]
+        fn a_box_has_an_open_cell_when_one_of_its_cells_is(
+            (w, h) in (1usize..150, 1usize..150),
+            seed in proptest::collection::vec(proptest::bool::weighted(0.02), 150 * 150),
+            corners in (0.0..1.0f64, 0.0..1.0f64, 0.0..1.0f64, 0.0..1.0f64),
+        ) {
+            let open = &seed[..w * h];
+            let mut grid = Open::default();
+            grid.index(w, w * h, |i| open[i]);
+            let at = |f: f64, n: usize| ((f * n as f64) as usize).min(n - 1);
+            let (a, b) = (at(corners.0, w), at(corners.1, w));
+            let (c, d) = (at(corners.2, h), at(corners.3, h));
+            let (xs, ys) = ((a.min(b), a.max(b)), (c.min(d), c.max(d)));
+            let any = (ys.0..=ys.1).any(|y| (xs.0..=xs.1).any(|x| open[y * w + x]));
+            proptest::prop_assert_eq!(grid.any_in(xs, ys), any);
         }
     }
 
