@@ -258,17 +258,28 @@ impl Toolpath {
         let k = self.k;
         let scaled = |p: Xyz| p.map(|v| v * k);
         let (from, pfrom) = (scaled(m.from), scaled(m.programmed_from));
+        let (to, pto) = (scaled(m.to), scaled(m.programmed_to));
+        // The bounds hold every vertex (a move that starts where the last
+        // one ended adds its end only: the ends of a million moves were
+        // counted twice, and the bounds were 8 % of a run) and the arcs'
+        // extremes.
+        let mut bounds = self.bounds;
         if !self.ends_at(from, pfrom) {
             self.push_vertex(from, pfrom);
+            include(&mut bounds, from);
+            include(&mut bounds, pfrom);
         }
         self.starts.push(self.vertex_count() as u32 - 1);
-        self.push_vertex(scaled(m.to), scaled(m.programmed_to));
+        self.push_vertex(to, pto);
+        include(&mut bounds, to);
+        include(&mut bounds, pto);
+        if let Some(a) = &m.arc {
+            a.each_extreme(m, |p| include(&mut bounds, scaled(p)));
+        }
+        self.bounds = bounds;
         self.kinds.push(m.kind.code(m.at_feed));
         self.blocks.push(m.block);
         self.lines.push(m.line);
-        let mut bounds = self.bounds;
-        crate::report::each_point_of(m, |p| include(&mut bounds, scaled(p)));
-        self.bounds = bounds;
         if let Some(a) = &m.arc {
             let circle = |c: Circle| Circle {
                 center: c.center.map(|v| v * k),
@@ -599,13 +610,19 @@ impl ArcCursor {
     }
 }
 
+/// Grows the box to hold `p`, passing over a NaN coordinate as `f64::min`
+/// does (written as comparisons, which compile to one instruction each).
 fn include(b: &mut Option<(Xyz, Xyz)>, p: Xyz) {
     match b {
         None => *b = Some((p, p)),
         Some((min, max)) => {
             for i in 0..3 {
-                min[i] = min[i].min(p[i]);
-                max[i] = max[i].max(p[i]);
+                if p[i] < min[i] {
+                    min[i] = p[i];
+                }
+                if p[i] > max[i] {
+                    max[i] = p[i];
+                }
             }
         }
     }
