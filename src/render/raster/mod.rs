@@ -164,17 +164,20 @@ struct Ink {
 }
 
 /// A recorded sub-path: its points run from `first` to the next one's;
-/// or, when `arc` is not [`NO_ARC`], it is that whole arc.
+/// or, when its style has [`WHOLE_ARC`], it is the next of the arcs
+/// recorded whole (in order: a sub-path has no room for their number, and
+/// twelve bytes a sub-path instead of sixteen are 8 MB of a 1M-block frame).
 #[derive(Clone, Copy, Debug)]
 struct Sub {
     first: u32,
     /// Where its first point is in the dash pattern.
     phase: f32,
     style: u16,
-    arc: u32,
 }
 
-const NO_ARC: u32 = u32::MAX;
+/// The bit of [`Sub::style`] that marks a whole arc (styles are fewer than
+/// 2^15).
+const WHOLE_ARC: u16 = 1 << 15;
 
 impl RecordedArc {
     /// Its points into `out`: the start vector turned a segment's angle
@@ -405,12 +408,15 @@ impl Raster {
         let mut arc_points = std::mem::take(&mut self.arc_points);
         // (Lent, not cloned per sub-path: most moves are one.)
         let styles = std::mem::take(&mut self.styles);
+        // The whole arcs, last first as the sub-paths.
+        let mut whole = arcs.iter().rev();
         for (k, sub) in subs.iter().enumerate().rev() {
-            let style = usize::from(sub.style);
+            let arc = (sub.style & WHOLE_ARC != 0).then(|| whole.next()).flatten();
+            let style = usize::from(sub.style & !WHOLE_ARC);
             let Some(ink) = styles.get(style) else {
                 continue;
             };
-            let pts = if let Some(arc) = arcs.get(sub.arc as usize) {
+            let pts = if let Some(arc) = arc {
                 // Its circle's box first: most arcs of a dense drawing are
                 // hidden whole.
                 let [cx, cy] = arc.centre;

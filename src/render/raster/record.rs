@@ -3,7 +3,7 @@
 //! style and the dash phase it starts at ([`Raster::finish`] draws them).
 
 use super::keep::MOST_KEPT;
-use super::{Ink, NO_ARC, Raster, RecordedArc, Sub, length};
+use super::{Ink, Raster, RecordedArc, Sub, WHOLE_ARC, length};
 use crate::render::style::Stroke;
 use crate::render::{Pen, WholeArc};
 use crate::toolpath::ArcPoints;
@@ -186,7 +186,6 @@ impl Pen for Raster {
                 first: self.points.len() as u32,
                 phase: phase as f32,
                 style,
-                arc: NO_ARC,
             });
             self.points.push(at(t0));
         }
@@ -250,8 +249,7 @@ impl Pen for Raster {
         self.subs.push(Sub {
             first: self.points.len() as u32,
             phase: phase as f32,
-            style,
-            arc: self.arcs.len() as u32,
+            style: style | WHOLE_ARC,
         });
         self.arcs.push(recorded);
         self.ink_area += length * 2.0 * half_width;
