@@ -370,6 +370,16 @@ mod tests {
         G17 G01 X-10. Y30.\nG02 X-10. Y30. I0. J-12.5\nG03 X5. Y45. R15.\n";
 
     #[test]
+    fn a_raster_takes_arcs_whole_only_in_large_drawings() {
+        let r = Raster::new();
+        let from = crate::render::raster::ARCS_WHOLE_FROM_MOVES;
+        assert!(r.takes_arcs(from) && !r.takes_arcs(from - 1));
+        // Vector pens (SVG, the canvas's strokes) always take points.
+        let svg = crate::render::svg::SvgSurface::new();
+        assert!(!svg.takes_arcs(usize::MAX));
+    }
+
+    #[test]
     fn whole_arcs_draw_the_pixels_their_points_draw() {
         let tp = toolpath(MILL, MachineKind::Mill);
         for stroke in [&ACTUAL_FEED, &PROGRAMMED_FEED] {
