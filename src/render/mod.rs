@@ -62,11 +62,11 @@ pub trait Pen {
     fn arc_points(&self) -> ArcPoints {
         ArcPoints::Exact
     }
-    /// Whether this pen takes the arcs of a toolpath of `moves` moves whole
-    /// ([`Pen::arc`]) rather than as their points: a pixel layer does for
-    /// large drawings, and tessellates only the arcs it does not find
-    /// hidden (most, front to back in a dense drawing).
-    fn takes_arcs(&self, _moves: usize) -> bool {
+    /// Whether this pen takes the next arc whole ([`Pen::arc`]) rather
+    /// than as its points: a pixel layer does in large drawings, and
+    /// tessellates only the arcs it does not find hidden (most, front to
+    /// back in a dense drawing).
+    fn takes_arcs(&self) -> bool {
         false
     }
     /// Adds an arc to the current sub-path, which is at its start (see

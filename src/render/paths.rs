@@ -68,7 +68,6 @@ pub(super) fn draw_path<'a>(
 ) {
     // Arcs are tessellated for the scale they are drawn at.
     let arcs = (DRAW_TOLERANCE_PX / f.transform.scale, s.arc_points());
-    let moves = tp.len();
     for rapid in [true, false] {
         let stroke = stroke_for(rapid);
         let period: f64 = stroke.dash.iter().sum();
@@ -99,7 +98,7 @@ pub(super) fn draw_path<'a>(
                     from,
                     to,
                     count,
-                } => t.arc(s, whole_arc(f, arc, programmed, (from, to), count), moves),
+                } => t.arc(s, whole_arc(f, arc, programmed, (from, to), count)),
             },
         );
         if let Some((px, py)) = t.pending {
@@ -178,7 +177,7 @@ impl Tracer<'_> {
     /// An arc whose start was just drawn ([`Tracer::point`]), offered to
     /// the pen whole; false when its points are to follow instead (the
     /// pen does not take it, or its projection is not a circle).
-    fn arc(&mut self, s: &mut impl Pen, whole: Option<WholeArc>, moves: usize) -> bool {
+    fn arc(&mut self, s: &mut impl Pen, whole: Option<WholeArc>) -> bool {
         let Some(whole) = whole else {
             return false;
         };
@@ -186,7 +185,7 @@ impl Tracer<'_> {
         if !self.begun || self.pen.is_none() {
             return false;
         }
-        if !s.takes_arcs(moves) {
+        if !s.takes_arcs() {
             return false;
         }
         // The arc starts at the vertex passed over, if any.
@@ -309,8 +308,8 @@ mod tests {
             fn arc_points(&self) -> crate::toolpath::ArcPoints {
                 self.0.arc_points()
             }
-            fn takes_arcs(&self, moves: usize) -> bool {
-                self.0.takes_arcs(moves)
+            fn takes_arcs(&self) -> bool {
+                self.0.takes_arcs()
             }
             fn arc(&mut self, arc: &WholeArc) -> bool {
                 let taken = self.0.arc(arc);
@@ -321,7 +320,7 @@ mod tests {
         let (w, h) = (300.0, 240.0);
         let f = Frame::fit(tp, plane, w, h);
         let mut raster = Raster::new();
-        raster.take_arcs_from(if whole { 0 } else { usize::MAX });
+        raster.take_arcs_whole_past(if whole { 0 } else { usize::MAX });
         assert!(raster.begin(600, 480, (2.0, 2.0)));
         let mut pen = Counting(raster, 0);
         draw_path(&mut pen, &f, tp, false, 0..tp.len(), |_| stroke);
@@ -370,13 +369,24 @@ mod tests {
         G17 G01 X-10. Y30.\nG02 X-10. Y30. I0. J-12.5\nG03 X5. Y45. R15.\n";
 
     #[test]
-    fn a_raster_takes_arcs_whole_only_in_large_drawings() {
-        let r = Raster::new();
-        let from = crate::render::raster::ARCS_WHOLE_FROM_MOVES;
-        assert!(r.takes_arcs(from) && !r.takes_arcs(from - 1));
+    fn a_raster_takes_arcs_whole_only_past_what_is_kept() {
+        // Past 1 Mi recorded points a drawing is not kept for the next
+        // edit; before, it is recorded as it always was.
+        let mut r = Raster::new();
+        assert!(r.begin(1000, 1000, (1.0, 1.0)));
+        r.begin_path(&ACTUAL_FEED);
+        r.move_to(10.0, 10.0);
+        let mut points = 1;
+        while !r.takes_arcs() {
+            r.line_to(
+                10.0 + (points % 2) as f64 * 900.0,
+                10.0 + (points % 900) as f64,
+            );
+            points += 1;
+        }
+        assert_eq!(points, 1 << 20);
         // Vector pens (SVG, the canvas's strokes) always take points.
-        let svg = crate::render::svg::SvgSurface::new();
-        assert!(!svg.takes_arcs(usize::MAX));
+        assert!(!crate::render::svg::SvgSurface::new().takes_arcs());
     }
 
     #[test]

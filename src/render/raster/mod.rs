@@ -108,9 +108,9 @@ pub struct Raster {
     /// How many whole arcs this drawing tessellated (the others it found
     /// hidden).
     tessellated: usize,
-    /// Toolpaths of this many moves or more have their arcs taken whole
+    /// Past this many recorded points, arcs are taken whole
     /// ([`crate::render::Pen::takes_arcs`]).
-    arcs_from: usize,
+    whole_arcs_past: usize,
     pen: Recorder,
     /// The area the recorded lines cover, overlaps counted (device
     /// pixels²).
@@ -208,18 +208,11 @@ struct RecordedArc {
     count: u32,
 }
 
-/// Toolpaths of this many moves or more have their arcs recorded whole on
-/// a raster: about where a drawing's points pass [`keep::MOST_KEPT`] (5
-/// points a move in the benchmark programs), so such drawings are not
-/// kept anyway. In the 1M-block frame, most arcs lie wholly in finished
-/// blocks, and their tessellation and its recording went for nothing.
-pub const ARCS_WHOLE_FROM_MOVES: usize = 200_000;
-
 impl Raster {
     /// A raster with no pixels yet.
     pub fn new() -> Raster {
         Raster {
-            arcs_from: ARCS_WHOLE_FROM_MOVES,
+            whole_arcs_past: keep::MOST_KEPT,
             ..Raster::default()
         }
     }
@@ -231,10 +224,12 @@ impl Raster {
         self.tessellated
     }
 
-    /// Takes the arcs of toolpaths of `moves` moves or more whole (for
-    /// tests: [`ARCS_WHOLE_FROM_MOVES`] otherwise).
-    pub fn take_arcs_from(&mut self, moves: usize) {
-        self.arcs_from = moves;
+    /// Takes arcs whole once `points` points are recorded (for tests:
+    /// 1 Mi otherwise, where a drawing is no longer kept for the next edit;
+    /// in the 1M-block frame, 4.4 M of the 5.2 M points were arcs', and
+    /// most of those arcs lie under the moves drawn after them).
+    pub fn take_arcs_whole_past(&mut self, points: usize) {
+        self.whole_arcs_past = points;
     }
 
     /// Starts a drawing of `width` × `height` device pixels, `scale` device

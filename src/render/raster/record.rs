@@ -199,8 +199,11 @@ impl Pen for Raster {
         self.pen.at = None;
     }
 
-    fn takes_arcs(&self, moves: usize) -> bool {
-        moves >= self.arcs_from
+    /// Past [`Raster::take_arcs_whole_past`] recorded points (1 Mi: past
+    /// what is kept for the next edit, [`MOST_KEPT`], so drawings that are
+    /// kept are recorded as before).
+    fn takes_arcs(&self) -> bool {
+        self.points.len() >= self.whole_arcs_past
     }
 
     /// Records the arc whole when it lies within the surface (no clipping
