@@ -172,16 +172,7 @@ impl Pen for Raster {
         };
         if self.pen.broken || t0 > 0.0 {
             let period = self.styles[usize::from(style)].period;
-            let along = self.pen.along + t0;
-            // (`rem_euclid` is a call to fmod; a move's sub-path mostly
-            // starts at 0.)
-            let phase = if period > 0.0 && !(0.0..period).contains(&along) {
-                along.rem_euclid(period)
-            } else if period > 0.0 {
-                along
-            } else {
-                0.0
-            };
+            let phase = phase_of(self.pen.along + t0, period);
             self.subs.push(Sub {
                 first: self.points.len() as u32,
                 phase: phase as f32,
@@ -239,16 +230,9 @@ impl Pen for Raster {
         let n = f64::from(count);
         let length = n * 2.0 * r * (arc.sweep.abs() / (2.0 * n)).sin();
         let (period, half_width) = (ink.period, ink.half_width);
-        let along = self.pen.along;
-        // (`rem_euclid` is a call to fmod, 3 % of a 1M-block frame here:
-        // the pen's distance is kept within a period of the arc's end.)
-        let phase = if period > 0.0 && !(0.0..period).contains(&along) {
-            along.rem_euclid(period)
-        } else if period > 0.0 {
-            along
-        } else {
-            0.0
-        };
+        // (The pen's distance is kept within a period of the arc's end, so
+        // that the next phase needs no `rem_euclid`.)
+        let phase = phase_of(self.pen.along, period);
         self.subs.push(Sub {
             first: self.points.len() as u32,
             phase: phase as f32,
@@ -261,6 +245,20 @@ impl Pen for Raster {
         // The next segment starts a sub-path of its own.
         self.pen.broken = true;
         true
+    }
+}
+
+/// Where the distance `along` a sub-path falls in a dash pattern of
+/// `period` (0 for a solid line). `rem_euclid` is a call to fmod (3 % of a
+/// 1M-block frame), so it is made only when `along` is not within the
+/// first period already (a move's sub-path mostly starts at 0).
+fn phase_of(along: f64, period: f64) -> f64 {
+    if period > 0.0 && !(0.0..period).contains(&along) {
+        along.rem_euclid(period)
+    } else if period > 0.0 {
+        along
+    } else {
+        0.0
     }
 }
 
