@@ -26,6 +26,7 @@
 //! larger coverage instead of being painted twice, so translucent strokes
 //! (the current block's highlight) keep their colour at joints.
 
+mod filled;
 mod keep;
 mod open;
 mod record;
@@ -90,6 +91,10 @@ pub struct Raster {
     /// column ([`open`]): a line finds those it may reach 64 at a time.
     open_tiles: open::Open,
     open_blocks: open::Open,
+    /// How many tiles are finished, and the largest box of them found
+    /// ([`filled`]).
+    finished_tiles: usize,
+    filled: filled::Filled,
     /// The blocks and the tiles along the line being swept that it may
     /// reach open (kept for their memory).
     reach_blocks: Vec<u64>,
@@ -389,6 +394,8 @@ impl Raster {
                 self.open = (0, 0, self.width, self.height);
             }
             self.index_open();
+            self.finished_tiles = self.tiles.iter().filter(|&&t| t == FULL_TILE).count();
+            self.filled.reset();
             let (x0, y0, x1, y1) = self.open;
             self.open_all = self.open == (0, 0, self.width, self.height);
             self.open_pixels = (x0 < x1 && y0 < y1)
@@ -406,6 +413,7 @@ impl Raster {
         // The whole arcs, last first as the sub-paths.
         let mut whole = arcs.iter().rev();
         for (k, sub) in subs.iter().enumerate().rev() {
+            self.update_filled();
             let arc = (sub.style & WHOLE_ARC != 0).then(|| whole.next()).flatten();
             let style = usize::from(sub.style & !WHOLE_ARC);
             let Some(ink) = styles.get(style) else {
@@ -590,6 +598,9 @@ impl Raster {
             f64::from(smaller(from[1], to[1])) - hw,
             f64::from(larger(from[1], to[1])) + hw,
         ];
+        if self.in_filled(x0, y0, x1, y1) {
+            return true;
+        }
         // Off the surface, or (drawn on the last drawing's pixels) off the
         // box where they may change.
         let Some([left, top, w, h]) = self.open_pixels else {

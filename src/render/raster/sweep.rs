@@ -194,11 +194,7 @@ impl Raster {
         } else {
             ((a0, b0), (a1, b1))
         };
-        let (major_len, minor_len) = if transposed {
-            (self.height, self.width)
-        } else {
-            (self.width, self.height)
-        };
+        let major_len = if transposed { self.height } else { self.width };
         let da = a1 - a0;
         let slope = if da > 0.0 { (b1 - b0) / da } else { 0.0 };
         let hw = ink.half_width;
@@ -243,9 +239,6 @@ impl Raster {
                 return;
             }
         }
-        let centre = |a: usize| b0 + (coord(a) + 0.5 - a0) * slope;
-        let minor_last = coord(minor_len) - 1.0;
-        let opaque = ink.alpha >= 1.0;
         // Dashes: the distance along the line from its first point (`from`,
         // which is the far end when `reversed`) decides whether a column is
         // drawn; the dashes have square ends, as the line has.
@@ -287,7 +280,57 @@ impl Raster {
             inv,
             across,
         };
-        let base = self.open_along(transposed, (first, last), &line);
+        // The columns before and after those whose pixels all lie in the
+        // box of finished tiles ([`super::filled`]), in order (the dashes
+        // are found going one way).
+        let parts = match self.filled_columns(transposed, &line, (first, last)) {
+            Some((s0, s1)) => [
+                (s0 > first).then(|| (first, s0 - 1)),
+                (s1 < last).then(|| (s1 + 1, last)),
+            ],
+            None => [Some((first, last)), None],
+        };
+        for (first, last) in parts.into_iter().flatten() {
+            self.sweep_part(
+                ink,
+                stamp,
+                transposed,
+                (first, last),
+                &line,
+                &mut in_dash,
+                &mut touched,
+            );
+        }
+        if let Some([(p, r0, r1), (q, r2, r3)]) = touched {
+            let (r, s) = (r0.min(r2), r1.max(r3));
+            if transposed {
+                self.touch(r, p, s + 1, q + 1);
+            } else {
+                self.touch(p, r, q + 1, s + 1);
+            }
+        }
+    }
+
+    /// The columns `first` to `last` of the sweep of `line`
+    /// ([`Raster::sweep`]): those in which it may reach an open tile
+    /// ([`Raster::open_along`]), pixel by pixel across.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn sweep_part(
+        &mut self,
+        ink: &Ink,
+        stamp: u32,
+        transposed: bool,
+        (first, last): (usize, usize),
+        line: &Line,
+        in_dash: &mut impl FnMut(usize) -> bool,
+        touched: &mut Option<[(usize, usize, usize); 2]>,
+    ) {
+        let minor_len = if transposed { self.width } else { self.height };
+        let minor_last = coord(minor_len) - 1.0;
+        let opaque = ink.alpha >= 1.0;
+        let across = line.across;
+        let base = self.open_along(transposed, (first, last), line);
         let reach = std::mem::take(&mut self.reach_tiles);
         each_set(&reach, base, |tile| {
             let from = (tile << TILE_BITS).max(first);
@@ -296,7 +339,7 @@ impl Raster {
                 if !in_dash(col) {
                     continue;
                 }
-                let c = centre(col);
+                let c = line.centre(col);
                 let (top, bottom) = (c - across, c + across);
                 let r0 = larger(top.floor(), 0.0);
                 let r1 = smaller(bottom.floor(), minor_last);
@@ -336,18 +379,46 @@ impl Raster {
                     row = end + 1;
                 }
                 let seen = (col, r0, r1);
-                touched = Some(touched.map_or([seen; 2], |[first, _]| [first, seen]));
+                *touched = Some(touched.map_or([seen; 2], |[first, _]| [first, seen]));
             }
         });
         self.reach_tiles = reach;
-        if let Some([(p, r0, r1), (q, r2, r3)]) = touched {
-            let (r, s) = (r0.min(r2), r1.max(r3));
-            if transposed {
-                self.touch(r, p, s + 1, q + 1);
-            } else {
-                self.touch(p, r, q + 1, s + 1);
-            }
+    }
+
+    /// The columns (inclusive) within `first` to `last` at which every
+    /// pixel the line covers lies in the box of finished tiles
+    /// ([`super::filled`]), or None: where its centre is a reach (its
+    /// extent across and a pixel) inside the box's rows, less a column
+    /// each side for the rounding.
+    fn filled_columns(
+        &self,
+        transposed: bool,
+        line: &Line,
+        (first, last): (usize, usize),
+    ) -> Option<(usize, usize)> {
+        let [x0, y0, x1, y1] = self.filled.px?;
+        let ((a0, a1), (b0, b1)) = if transposed {
+            ((y0, y1), (x0, x1))
+        } else {
+            ((x0, x1), (y0, y1))
+        };
+        let reach = line.across + 1.0;
+        let (lo, hi) = (b0 + reach, b1 - reach);
+        if lo > hi {
+            return None;
         }
+        let (mut p, mut q) = (a0, a1);
+        if line.slope != 0.0 {
+            // Where the centre is `b` across: `a0 - 0.5 + (b - b0) / slope`.
+            let at = |b: f64| line.a0 - 0.5 + (b - line.b0) * line.inv;
+            let (u, v) = (at(lo), at(hi));
+            p = larger(p, smaller(u, v).ceil() + 1.0);
+            q = smaller(q, larger(u, v).floor() - 1.0);
+        } else if !(lo..=hi).contains(&line.b0) {
+            return None;
+        }
+        let (p, q) = (larger(p, coord(first)), smaller(q, coord(last)));
+        (p <= q).then(|| (pixel(p), pixel(q)))
     }
 
     /// Covers pixel `i`, at (x, y), by `coverage` (0–1) of the path
@@ -401,6 +472,7 @@ impl Raster {
         let tile = i >> (2 * TILE_BITS);
         self.tiles[tile] |= 1 << (i & TILE_PIXELS);
         if self.tiles[tile] == FULL_TILE {
+            self.finished_tiles += 1;
             let block = (y >> BLOCK_BITS) * self.blocks_w + (x >> BLOCK_BITS);
             self.blocks[block] += 1;
             self.open_tiles.close(x >> TILE_BITS, y >> TILE_BITS);

@@ -305,6 +305,64 @@ fn a_drawing_mostly_changed_or_on_another_surface_is_made_from_nothing() {
     assert!(r.kept());
 }
 
+/// A drawing made with the box of finished tiles ([`super::filled`]) is,
+/// pixel for pixel, the one made without it; returns
+/// whether a box was found.
+fn assert_same_without_the_filled_box(surface: (usize, usize, f64), points: &[(f64, f64)]) -> bool {
+    let paths = [
+        (&PROGRAMMED_FEED, points),
+        (&ACTUAL_FEED, points),
+        (&TRANSLUCENT, &points[..points.len() / 2]),
+    ];
+    let mut with = Raster::new();
+    draw_chains(&mut with, surface, &paths);
+    let mut without = Raster::new();
+    without.filled.off = true;
+    draw_chains(&mut without, surface, &paths);
+    let (a, b) = (pixels(&mut with), pixels(&mut without));
+    let w = with.size().0;
+    if let Some(i) = (0..a.len()).find(|&i| a[i] != b[i]) {
+        panic!(
+            "pixel ({}, {}) with the box {:?}, without {:?}",
+            i % w,
+            i / w,
+            a[i],
+            b[i]
+        );
+    }
+    with.filled.px.is_some()
+}
+
+#[test]
+fn the_box_of_finished_tiles_changes_no_pixel() {
+    // 4000 long moves over 240 x 180 px: the middle fills up, its edge
+    // stays ragged, and most of the moves lie below finished tiles.
+    let dense: Vec<(f64, f64)> = (0..4001)
+        .map(|i| {
+            let i = f64::from(i);
+            (20.0 + (i * 37.3) % 200.0, 15.0 + (i * 53.7) % 150.0)
+        })
+        .collect();
+    assert!(assert_same_without_the_filled_box((240, 180, 1.0), &dense));
+    assert!(assert_same_without_the_filled_box((240, 180, 2.0), &dense));
+}
+
+// (proptest is a native dev-dependency: `wasm-pack test` builds these too.)
+#[cfg(not(target_arch = "wasm32"))]
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig { cases: 48, ..Default::default() })]
+
+    #[test]
+    fn dense_drawings_are_the_same_with_and_without_the_box_of_finished_tiles(
+        w in 8usize..120,
+        h in 8usize..100,
+        scale in proptest::sample::select(vec![1.0, 1.5, 2.0]),
+        points in proptest::collection::vec((-20.0..140.0f64, -20.0..120.0f64), 2..1500),
+    ) {
+        assert_same_without_the_filled_box((w, h, scale), &points);
+    }
+}
+
 // (proptest is a native dev-dependency: `wasm-pack test` builds these too.)
 #[cfg(not(target_arch = "wasm32"))]
 proptest::proptest! {
