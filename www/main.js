@@ -33,7 +33,8 @@ import {
   initResults, setupRefused, showDrawn, showProgress, showResult, showViewState,
 } from './modules/results.js';
 import {
-  call, callAnswered, flushRun, initRunner, latestRun, post, runAnswered, scheduleRun, taskBegun,
+  call, callAnswered, flushRun, initRunner, latestRun, onFileRead, post, readingFile, runAnswered,
+  runDrawn, scheduleRun, taskBegun,
 } from './modules/runner.js';
 import { initSettings, renderSettings } from './modules/settings.js';
 import { cloneSetup } from './modules/setup.js';
@@ -126,7 +127,17 @@ function toggleHelp() {
 $('help-toggle').addEventListener('click', toggleHelp);
 
 // --- what the worker says
+// While the page reads the text of a file the worker runs (modules/opening.js),
+// what the worker says of runs waits for the editor to have that text.
+const heldBack = [];
+onFileRead(() => {
+  for (const m of heldBack.splice(0)) onWorkerMessage(m);
+});
 function onWorkerMessage(m) {
+  if (readingFile() && (m.type === 'result' || m.type === 'state' || m.type === 'drawn')) {
+    heldBack.push(m);
+    return;
+  }
   switch (m.type) {
     case 'busy':
       taskBegun(m);
@@ -146,6 +157,7 @@ function onWorkerMessage(m) {
       showViewState(m);
       break;
     case 'drawn':
+      runDrawn(m.gen);
       showDrawn(m);
       break;
     case 'reply':

@@ -6,7 +6,8 @@
 // report — and, when the page asks (call), a link, a document or an export.
 //
 // In:  init {canvas, width, height, dpr, theme, stepSeq, testHooks} · resize {width, height, dpr}
-//      run {gen, program, setup, view} · theme {name}
+//      run {gen, program | file, setup, view} (file: a File the page opened,
+//        read here straight into wasm memory) · theme {name}
 //      view {op: zoom {x, y, factor} | pan {dx, dy} | fit | plane {plane} | set {view}}
 //      step {index} · pick {x, y, tolerance} · line {line}
 //      call {id, op, ...}: op document {base, embed, forms} · decode {text, base}
@@ -135,6 +136,36 @@ function writeProgram(program) {
   throw new Error('the program does not fit in memory');
 }
 
+/**
+ * Reads `file` (a program the page opened) as UTF-8 into the session's
+ * program buffer, chunk by chunk as the browser hands it over, and returns
+ * its length in bytes: no text is made of it here, nor copied from the
+ * page (modules/opening.js). A leading byte order mark is dropped, as the
+ * page's `file.text()` drops it, so that both read the same text.
+ */
+async function readProgram(file) {
+  const room = file.size;
+  const at = session.program_buffer(room);
+  if (at === 0 && room > 0) throw new Error('the program does not fit in memory');
+  let length = 0;
+  const reader = file.stream().getReader();
+  while (length < room) {
+    const { done, value } = await reader.read();
+    if (done) break;
+    // (A file that grew since it was opened: what fits.)
+    const part = value.subarray(0, room - length);
+    new Uint8Array(memory.buffer, at + length, part.length).set(part);
+    length += part.length;
+  }
+  reader.cancel().catch(() => {});
+  const bytes = new Uint8Array(memory.buffer, at, length);
+  if (length >= 3 && bytes[0] === 0xef && bytes[1] === 0xbb && bytes[2] === 0xbf) {
+    bytes.copyWithin(0, 3);
+    length -= 3;
+  }
+  return length;
+}
+
 function postState() {
   const view = session.view();
   const step = session.step();
@@ -154,6 +185,33 @@ function postState() {
   stateCause = '';
 }
 
+/** Runs the program of run request `message`, `length` bytes in the program buffer. */
+function run(message, length) {
+  const started = performance.now();
+  // A long run tells the page how far it has got (at most every 100 ms;
+  // the page shows it past 200 ms). Posted during the run, these reach
+  // the page at once: only this worker is busy.
+  let told = started;
+  const progress = (fraction) => {
+    const now = performance.now();
+    if (now - told < 100) return;
+    told = now;
+    self.postMessage({ type: 'progress', gen: message.gen, fraction, ms: now - started });
+  };
+  const result = session.run_buffer(length, message.setup, progress);
+  setupFailed = result.diagnostics.some((d) => d.line === 0 && d.code.startsWith('setup-'));
+  shown = message.gen;
+  if (message.view) session.set_view(message.view);
+  self.postMessage({
+    type: 'result',
+    gen: message.gen,
+    summary: result.summary,
+    diagnostics: result.diagnostics,
+    ms: performance.now() - started,
+  });
+  invalidate('run');
+}
+
 function handle(message) {
   switch (message.type) {
     case 'init':
@@ -166,9 +224,6 @@ function handle(message) {
       testHooks = message.testHooks === true;
       invalidate('init');
       break;
-    case 'expect':
-      session.expect(message.bytes);
-      break;
     case 'resize':
       size = { width: message.width, height: message.height, dpr: message.dpr };
       invalidate('resize');
@@ -177,37 +232,20 @@ function handle(message) {
       session.set_theme(message.name);
       invalidate('theme');
       break;
-    case 'run': {
+    case 'run':
       // A newer request is already queued: skip straight to it.
-      if (message.gen < latest) return;
+      if (message.gen < latest) return undefined;
       // The page's supervisor times each task from here.
       self.postMessage({ type: 'busy', task: 'run', gen: message.gen });
-      if (testHooks && fault(message.program)) return;
-      const started = performance.now();
-      // A long run tells the page how far it has got (at most every 100 ms;
-      // the page shows it past 200 ms). Posted during the run, these reach
-      // the page at once: only this worker is busy.
-      let told = started;
-      const progress = (fraction) => {
-        const now = performance.now();
-        if (now - told < 100) return;
-        told = now;
-        self.postMessage({ type: 'progress', gen: message.gen, fraction, ms: now - started });
-      };
-      const result = session.run_buffer(writeProgram(message.program), message.setup, progress);
-      setupFailed = result.diagnostics.some((d) => d.line === 0 && d.code.startsWith('setup-'));
-      shown = message.gen;
-      if (message.view) session.set_view(message.view);
-      self.postMessage({
-        type: 'result',
-        gen: message.gen,
-        summary: result.summary,
-        diagnostics: result.diagnostics,
-        ms: performance.now() - started,
-      });
-      invalidate('run');
+      if (message.file) {
+        // (Read meanwhile: a newer request is run instead.)
+        return readProgram(message.file).then((length) => {
+          if (message.gen >= latest) run(message, length);
+        });
+      }
+      if (testHooks && fault(message.program)) return undefined;
+      run(message, writeProgram(message.program));
       break;
-    }
     case 'view':
       view(message);
       invalidate('view', message.op === 'zoom' || message.op === 'pan');

@@ -523,36 +523,6 @@ impl Session {
         to_js(&self.setup)
     }
 
-    /// A program of about `bytes` bytes is on its way (the page is reading
-    /// a file): the memory its run will keep is taken from the browser
-    /// now, while this worker has nothing else to do, and handed back to
-    /// the allocator for the run to use. Each page of wasm memory costs a
-    /// fault the first time it is written, and those were a quarter of the
-    /// first run of a 1M-block program (V8 profile, `docs/performance.md`).
-    pub fn expect(&mut self, bytes: f64) {
-        // What a run keeps per byte of program: the text itself, the
-        // toolpath and the lines (3.75 bytes a byte for the benchmark's
-        // milling program, 31 bytes a block); more than the interpreter
-        // reads is not asked for.
-        const PER_BYTE: f64 = 4.0;
-        const AT_MOST: f64 = (crate::syntax::MAX_PROGRAM_BYTES as f64) * PER_BYTE;
-        if !(bytes.is_finite() && bytes > 0.0) {
-            return;
-        }
-        let want = (bytes * PER_BYTE).min(AT_MOST) as usize;
-        if want < 16 << 20 {
-            return; // a small program's run is quick anyway
-        }
-        let mut memory: Vec<u8> = Vec::new();
-        if memory.try_reserve_exact(want).is_ok() {
-            // Written (not zeroed, which the allocator may leave to fresh
-            // pages), so that the pages are the browser's already.
-            memory.resize(want, 1);
-            // (Not a dead store the optimiser may drop before the free.)
-            std::hint::black_box(&memory);
-        }
-    }
-
     /// Number of executed blocks (each has a report).
     pub fn block_count(&self) -> u32 {
         self.run.block_count

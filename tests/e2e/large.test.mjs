@@ -99,6 +99,47 @@ describe('large programs', () => {
     });
   });
 
+  test('a program file of a MiB or more is read by the worker itself: one run, the text the editor shows (byte order mark dropped, not-UTF-8 bytes replaced)', { timeout: 120_000 }, async () => {
+    await withPage(async (page) => {
+      // 80,000 lines (1.3 MB) after a UTF-8 byte order mark; a malformed
+      // number on line 60,001 and a byte that is not UTF-8 in a comment on
+      // line 2 (one U+FFFD in the editor and for the interpreter alike).
+      const lines = ['G90 G21 G17 G00 X0 Y0', 'G01 F1000. (\u00ff)'];
+      for (let i = 0; lines.length < 79_999; i += 1) {
+        lines.push(lines.length === 60_000 ? 'G01 X1.2.3 Y4.' : `G01 X${(i % 200) * 0.5} Y${Math.floor(i / 200) % 100}.`);
+      }
+      lines.push('M30');
+      const text = `${lines.join('\n')}\n`;
+      const bytes = Buffer.concat([Buffer.from([0xef, 0xbb, 0xbf]), Buffer.from(text.replace('\u00ff', '\u0001'), 'latin1')]);
+      bytes[bytes.indexOf(1)] = 0xff;
+      assert.ok(bytes.length > 1024 * 1024);
+      const file = join(tmp, 'bom.nc');
+      writeFileSync(file, bytes);
+      await waitForRun(page);
+      const before = Number(await page.evaluate(() => document.body.dataset.requested));
+      await page.locator('#open-file').setInputFiles(file);
+      await page.waitForFunction(() => document.body.dataset.opened === 'bom.nc');
+      await waitForRun(page);
+      // The page did not send the program again: one run request.
+      assert.equal(Number(await page.evaluate(() => document.body.dataset.requested)), before + 1);
+      assert.equal(await page.evaluate(() => window.offsetlab.program()), text.replace('\u00ff', '\ufffd'));
+      assert.match(await page.locator('#summary').textContent(), /^60000 blocks · \d+ moves · 1 error/);
+      // The interpreter's diagnostic is at the editor's word: the same text.
+      await page.waitForFunction(() => !document.getElementById('editor').hasAttribute('aria-busy'), null, { timeout: 60_000 });
+      await page.locator('#diagnostics li.error').first().click();
+      assert.equal(await page.evaluate(() => window.offsetlab.selection()), 'X1.2.3');
+      // The drawing is this program's.
+      await page.waitForFunction(() => document.body.dataset.drawnGen === document.body.dataset.rendered, null, { timeout: 60_000 });
+      const { counts } = await shootCanvas(page, 'large-file', (c) => c.programmedFeed + c.actualFeed > 10_000, 20_000);
+      assert.ok(counts.programmedFeed + counts.actualFeed > 10_000, `the path is drawn (${JSON.stringify(counts)})`);
+      // An edit runs as usual.
+      await page.keyboard.press('End');
+      await page.keyboard.type(' Z1.');
+      await waitForRun(page);
+      assert.ok((await page.evaluate(() => window.offsetlab.program())).includes('\nG01 X1.2.3 Y4. Z1.\n'));
+    });
+  });
+
   test('a long program with CR LF line breaks is taken by the editor in steps: its lines, its marks, then typing as usual', { timeout: 120_000 }, async () => {
     await withPage(async (page) => {
       // 100,000 lines, 3.6 MB: past the 2 MiB the editor takes in one go;

@@ -8,7 +8,7 @@ import { EXAMPLES, exampleById } from './examples.js';
 import { renderOffsets } from './offsets.js';
 import { EMBED } from './page.js';
 import {
-  call, cancelScheduledRun, requestRun, setPendingView,
+  call, cancelScheduledRun, drawnOf, fileRead, requestRun, setPendingView,
 } from './runner.js';
 import { renderSettings } from './settings.js';
 import { cloneSetup, machineOf } from './setup.js';
@@ -37,7 +37,7 @@ export function viewOf(w) {
  * Shows `w` { program, setup, setupText?, view?: {plane, zoom, pan, step}, example?, link? }:
  * the editor, the panels, then one run with its view and current block.
  */
-export function loadDocument(w) {
+export function loadDocument(w, { ran = 0 } = {}) {
   pause();
   work.loading = true;
   try {
@@ -46,10 +46,16 @@ export function loadDocument(w) {
     work.setup = cloneSetup(w.setup);
     work.setupText = typeof w.setupText === 'string' ? w.setupText : null;
     setPendingView(viewOf(w));
-    // The editor takes a long text in steps (a few tenths of a second for
-    // 31 MB) while the worker runs it.
-    const { text } = editor.setText(w.program);
-    requestRun(text);
+    // The editor takes a long text in steps (a second or two for 31 MB)
+    // while the worker runs it; the text of a file the worker is running
+    // already (`ran`) once its drawing is made: on two cores, the editor's
+    // work at the same time slowed the run and the drawing by a third
+    // (issue 6, target 3).
+    const { text } = editor.setText(w.program, ran ? { after: drawnOf(ran) } : {});
+    // A file the worker is running already (`ran`, modules/opening.js) is
+    // not sent again.
+    if (fileRead(ran, text)) setPendingView(null);
+    else requestRun(text);
   } finally {
     work.loading = false;
   }
@@ -87,9 +93,9 @@ function restorePrevious() {
 }
 
 /** Opens a document's work after keeping the user's own, with a banner saying what happened. */
-export function openWork(w, message) {
+export function openWork(w, message, options = {}) {
   displaceCurrent();
-  loadDocument(w);
+  loadDocument(w, options);
   const kept = Boolean(loadPrevious());
   showBanner(kept ? `${message} Your previous program is kept.` : message, {
     kind: 'opened',

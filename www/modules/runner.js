@@ -30,6 +30,9 @@ let parked = null; // the document not run again until it is edited ({ program, 
 let lastSent = null; // { program, setup, view } of the last run request
 const sent = new Map(); // generation → { program, setup, view } of run requests not yet begun
 let runningDoc = null; // the run the worker said it began and has not answered
+let readingGen = 0; // the file run whose text the page is reading (0: none)
+let fileDone = () => {};
+const drawnWaits = []; // { gen, resolve } (drawnOf)
 let callId = 0;
 const calls = new Map(); // call id → { resolve, reject }
 
@@ -82,6 +85,74 @@ export function requestRun(text = program()) {
   sent.set(requested, lastSent);
   post({ type: 'run', gen: requested, ...doc, view: pendingView });
   pendingView = null;
+}
+
+/**
+ * Runs the program file `file` with the setup shown and `view`: the worker
+ * reads it itself, straight into wasm memory, while this thread reads its
+ * text for the editor (modules/opening.js). Until the page has the text
+ * (`fileRead`), the run's document has no program and what the worker says
+ * of runs is held back (`readingFile`). Returns the run's generation.
+ */
+export function requestFileRun(file, view) {
+  clearTimeout(timer);
+  delete document.body.dataset.pending;
+  parked = null;
+  requested += 1;
+  document.body.dataset.requested = String(requested);
+  lastSent = { program: null, setup: setupDocument(), view };
+  sent.set(requested, lastSent);
+  post({ type: 'run', gen: requested, file, setup: lastSent.setup, view });
+  readingGen = requested;
+  return requested;
+}
+
+/** Whether the page is reading the text of a file the worker runs. */
+export const readingFile = () => readingGen !== 0;
+
+/**
+ * The text of the file run `gen` (null: it could not be read). Returns true
+ * when that run is the latest one and now has its program; else (another
+ * run was asked for meanwhile, or the text is unknown) the caller runs the
+ * text anew. Then calls `onFileRead`'s callback (what was held back).
+ */
+export function fileRead(gen, text) {
+  const mine = gen !== 0 && gen === requested && lastSent?.program === null && text !== null;
+  if (mine) lastSent.program = text;
+  if (gen !== 0 && gen === readingGen) {
+    readingGen = 0;
+    fileDone();
+  }
+  return mine;
+}
+
+/** `f()` follows every `fileRead`. */
+export function onFileRead(f) {
+  fileDone = f;
+}
+
+/**
+ * A promise of the moment run `gen` (or a later one) is drawn, or the
+ * worker lost, or `ms` passed: the editor takes the text of a file run
+ * after its drawing (modules/documents.js).
+ */
+export function drawnOf(gen, ms = 5000) {
+  return new Promise((resolve) => {
+    const waiting = { gen, resolve };
+    drawnWaits.push(waiting);
+    setTimeout(() => settleDrawn(waiting), ms);
+  });
+}
+
+function settleDrawn(waiting) {
+  const i = drawnWaits.indexOf(waiting);
+  if (i >= 0) drawnWaits.splice(i, 1);
+  waiting.resolve();
+}
+
+/** The worker drew run `gen` (`drawn`). */
+export function runDrawn(gen) {
+  for (const waiting of drawnWaits.filter((w) => w.gen <= gen)) settleDrawn(waiting);
 }
 
 /** An edit: runs now if the last run was quick, else after a pause in the typing. */
@@ -164,9 +235,13 @@ export function callAnswered(m) {
  * one asked for, else the one shown.
  */
 export function workerLost(task) {
+  for (const waiting of [...drawnWaits]) settleDrawn(waiting);
   for (const pending of calls.values()) pending.reject(new Error('the interpreter was stopped'));
   calls.clear();
-  const doc = (task === 'run' ? runningDoc : null) ?? lastSent ?? currentDoc();
+  let doc = (task === 'run' ? runningDoc : null) ?? lastSent ?? currentDoc();
+  // A file run whose text the page has not read yet: the text shown (the
+  // file's, once read, is run anew: fileRead).
+  if (doc.program === null) doc = { ...currentDoc(), view: doc.view };
   runningDoc = null;
   sent.clear();
   return doc;

@@ -170,8 +170,9 @@ export function createEditor(parent, { doc = '', label = 'Program', readOnly = f
      * editor has it), the editor takes no edits, diagnostics, the current
      * line and jumps wait for it, and the editor is `aria-busy`.
      * `undoable: false`: not an edit to undo (the editor's first text).
+     * `after`: a promise; a long text is not taken before it settles.
      */
-    setText(value, { undoable = true } = {}) {
+    setText(value, { undoable = true, after = null } = {}) {
       serial += 1;
       const mine = serial;
       later = []; // what was asked for the text before this one
@@ -184,7 +185,7 @@ export function createEditor(parent, { doc = '', label = 'Program', readOnly = f
       }
       pending = { text: value };
       parent.setAttribute('aria-busy', 'true');
-      const shown = buildDocument(value, { stale: () => mine !== serial }).then((built) => {
+      const shown = buildDocument(value, { stale: () => mine !== serial, after }).then((built) => {
         if (mine !== serial || !built) return; // a newer text replaced it
         pending = null;
         parent.removeAttribute('aria-busy');

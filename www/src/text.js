@@ -55,9 +55,14 @@ function breakAfter(text, i, cr) {
  * text with LF line breaks: `{ doc, text }`; null if `stale()` turns true
  * meanwhile. Each chunk ends before a line break and the next one starts
  * with it, so the appended chunks have exactly the text's lines.
- * `chunk` and `pause` (what waits between steps) are for the tests.
+ * Not begun before the promise `after` settles. `chunk` and `pause`
+ * (what waits between steps) are for the tests.
  */
-export async function buildDocument(text, { stale = () => false, chunk = CHUNK_CHARS, pause = yieldToPage } = {}) {
+export async function buildDocument(text, {
+  stale = () => false, chunk = CHUNK_CHARS, pause = yieldToPage, after = null,
+} = {}) {
+  // Not before `after` (a promise) settles.
+  if (after) await after;
   const cr = text.includes('\r');
   const pieces = [];
   let doc = null;
