@@ -959,32 +959,3 @@ fn a_program_written_into_the_buffer_runs_as_its_text_does() {
     let r = s.run_buffer(100, JsValue::NULL, None).expect("run");
     assert_eq!(num(&get(&r, "summary"), "blocks"), 0.0);
 }
-
-#[wasm_bindgen_test]
-fn memory_made_ready_for_a_large_program_is_used_by_its_run() {
-    let mut s = Session::new();
-    // Not a size, or too small to matter: nothing happens.
-    for bytes in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY, -1.0, 0.0, 1e3] {
-        s.expect(bytes);
-    }
-    let memory: js_sys::WebAssembly::Memory = wasm_bindgen::memory().unchecked_into();
-    let size = || {
-        memory
-            .buffer()
-            .unchecked_into::<js_sys::ArrayBuffer>()
-            .byte_length()
-    };
-    s.expect(12e6); // 48 MB made ready
-    let ready = size();
-    let program = "G01 X1. Y2. F100.\nG02 X3. Y4. R5.\n".repeat(150_000); // 5 MB
-    let r = s.run(program.clone(), square_setup()).expect("run");
-    assert!(
-        size() <= ready + (1 << 20),
-        "the run took the memory made ready: {ready} -> {}",
-        size()
-    );
-    let mut fresh = Session::new();
-    let fr = fresh.run(program, square_setup()).expect("run");
-    assert_eq!(seen(&s, &r), seen(&fresh, &fr));
-    assert_eq!(num(&get(&r, "summary"), "blocks"), 300_000.0);
-}
