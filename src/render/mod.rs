@@ -148,6 +148,12 @@ pub const RESTART_EVERY: usize = 16;
 /// layer when it has one ([`Surface::raster`]); smaller ones as vector
 /// strokes, which have round joins and the browser's own anti-aliasing.
 pub const RASTER_FROM_MOVES: usize = 2_000;
+/// Toolpaths of this many moves or more are drawn on the pixel layer in
+/// parts, front to back, what lies hidden not even recorded
+/// ([`Raster::plan`]): from here a drawing records more points than
+/// [`Raster`] keeps for the next edit (1 Mi: four points a move, a
+/// sub-path of two for each path), so nothing is lost by drawing it so.
+pub const IN_PARTS_FROM_MOVES: usize = 1 << 18;
 /// Arcs are drawn as polylines no farther than this (CSS pixels) from the
 /// true circle at the scale drawn: smooth at any zoom, and a few segments
 /// for an arc that is a few pixels across.
@@ -377,7 +383,11 @@ fn draw_scene_as(
     if reused {
         // A moved layer's arrows come back with the next whole frame.
     } else if large && let Some(raster) = surface.raster() {
-        draw_paths(raster, &frame, toolpath, scene, split);
+        if moves >= IN_PARTS_FROM_MOVES {
+            paths::draw_paths_in_parts(raster, &frame, toolpath, scene, split);
+        } else {
+            draw_paths(raster, &frame, toolpath, scene, split);
+        }
         surface.composite(&frame.transform);
     } else {
         draw_paths(surface, &frame, toolpath, scene, split);

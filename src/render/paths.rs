@@ -5,7 +5,8 @@
 //! a circle as one call instead of their points.
 
 use super::{
-    DRAW_TOLERANCE_PX, Frame, MIN_SEGMENT_PX, Pen, RESTART_EVERY, Scene, Stroke, WholeArc, is_rapid,
+    DRAW_TOLERANCE_PX, Frame, MIN_SEGMENT_PX, Pen, RESTART_EVERY, Raster, Scene, Stroke, WholeArc,
+    is_rapid,
 };
 use crate::report::Xyz;
 use crate::toolpath::{ToolArc, Toolpath, Visit};
@@ -66,46 +67,161 @@ pub(super) fn draw_path<'a>(
     range: std::ops::Range<usize>,
     stroke_for: impl Fn(bool) -> &'a Stroke,
 ) {
+    for rapid in [true, false] {
+        if trace(
+            s,
+            f,
+            tp,
+            (programmed, rapid),
+            range.clone(),
+            stroke_for(rapid),
+            false,
+        ) {
+            s.stroke();
+        }
+    }
+}
+
+/// The moves of `range` on the programmed or the actual path that are
+/// rapid or not (`rapid`), traced on `s` with `stroke`: the path begun
+/// when the first point is drawn (`begun`: begun already). Returns
+/// whether it was begun.
+fn trace(
+    s: &mut impl Pen,
+    f: &Frame,
+    tp: &Toolpath,
+    (programmed, rapid): (bool, bool),
+    range: std::ops::Range<usize>,
+    stroke: &Stroke,
+    begun: bool,
+) -> bool {
     // Arcs are tessellated for the scale they are drawn at.
     let arcs = (DRAW_TOLERANCE_PX / f.transform.scale, s.arc_points());
-    for rapid in [true, false] {
-        let stroke = stroke_for(rapid);
-        let period: f64 = stroke.dash.iter().sum();
-        let mut t = Tracer {
-            stroke,
-            period,
-            from: None,
-            pen: None,
-            pending: None,
-            begun: false,
-        };
-        let keep = |m: usize| tp.kinds.get(m).is_some_and(|&k| is_rapid(k) == rapid);
-        tp.visit(
-            range.clone(),
-            programmed,
-            arcs,
-            keep,
-            |m, visit| match visit {
-                Visit::Point(i, p) => {
-                    let (u, v) = f.plane.project(&p);
-                    let (x, y) = f.transform.to_screen(u, v);
-                    t.point(s, m, i, (x, y));
-                    false
-                }
-                Visit::Arc {
-                    arc,
-                    programmed,
-                    from,
-                    to,
-                    count,
-                } => t.arc(s, whole_arc(f, arc, programmed, (from, to), count)),
-            },
-        );
-        if let Some((px, py)) = t.pending {
-            s.line_to(px, py);
+    let period: f64 = stroke.dash.iter().sum();
+    let mut t = Tracer {
+        stroke,
+        period,
+        from: None,
+        pen: None,
+        pending: None,
+        begun,
+    };
+    let keep = |m: usize| tp.kinds.get(m).is_some_and(|&k| is_rapid(k) == rapid);
+    tp.visit(range, programmed, arcs, keep, |m, visit| match visit {
+        Visit::Point(i, p) => {
+            let (u, v) = f.plane.project(&p);
+            let (x, y) = f.transform.to_screen(u, v);
+            t.point(s, m, i, (x, y));
+            false
         }
-        if t.begun {
-            s.stroke();
+        Visit::Arc {
+            arc,
+            programmed,
+            from,
+            to,
+            count,
+        } => t.arc(s, whole_arc(f, arc, programmed, (from, to), count)),
+    });
+    if let Some((px, py)) = t.pending {
+        s.line_to(px, py);
+    }
+    t.begun
+}
+
+/// The moves of a part of a planned drawing ([`draw_paths_in_parts`]):
+/// a multiple of [`RESTART_EVERY`], so that a part starts where a dashed
+/// path starts its pattern afresh anyway, and its first move is drawn as
+/// it would be in one go (but for the level of detail at its start).
+const PART_MOVES: usize = 256;
+
+/// Programs of more moves than this are measured on samples of their
+/// moves for [`draw_paths_in_parts`]: `SAMPLES` stretches of
+/// [`PART_MOVES`] spread over them.
+const MEASURED_WHOLE: usize = 64 * PART_MOVES;
+const SAMPLES: usize = 64;
+
+/// [`draw_paths`] on a raster in parts, front to back: the top path
+/// first, each path's last moves first, each part recorded and drawn
+/// below what is drawn before the part before it is recorded — so that
+/// what lies below finished pixels is found hidden when it is recorded
+/// and not recorded at all ([`Raster::plan`]). For drawings too large to
+/// be kept for the next edit: the parts' first moves start afresh, which
+/// a kept drawing's comparison does not expect.
+pub(super) fn draw_paths_in_parts(
+    r: &mut Raster,
+    f: &Frame,
+    tp: &Toolpath,
+    scene: &Scene,
+    split: usize,
+) {
+    let moves = tp.len();
+    let t = f.theme;
+    let ghost = t.ghost();
+    let hl = t.highlight();
+    let (af, ar, pf, pr) = (
+        t.actual_feed(),
+        t.actual_rapid(),
+        t.programmed_feed(),
+        t.programmed_rapid(),
+    );
+    // The strokes of draw_paths, top first: (programmed, rapid), moves, stroke.
+    let mut layers = vec![
+        ((true, false), 0..split, &pf),
+        ((true, true), 0..split, &pr),
+        ((false, false), 0..split, &af),
+        ((false, true), 0..split, &ar),
+    ];
+    if let Some(step) = scene.step {
+        let first = tp.blocks.partition_point(|&b| b < step).min(split);
+        for rapid in [false, true] {
+            layers.push(((false, rapid), first..split, &hl));
+        }
+    }
+    if split < moves {
+        for rapid in [false, true] {
+            layers.push(((false, rapid), split..moves, &ghost));
+        }
+    }
+    // The grid: from the ink the lines would cover, measured on samples.
+    let mut meter = r.ink_meter();
+    let mut ink = 0.0;
+    for &(kind, ref range, stroke) in &layers {
+        let n = range.len();
+        if n <= MEASURED_WHOLE {
+            meter.area = 0.0;
+            trace(&mut meter, f, tp, kind, range.clone(), stroke, false);
+            ink += meter.area;
+            continue;
+        }
+        let mut sampled = 0.0;
+        for k in 0..SAMPLES {
+            let start = range.start + k * (n - PART_MOVES) / (SAMPLES - 1);
+            meter.area = 0.0;
+            trace(
+                &mut meter,
+                f,
+                tp,
+                kind,
+                start..start + PART_MOVES,
+                stroke,
+                false,
+            );
+            sampled += meter.area;
+        }
+        ink += sampled * n as f64 / (SAMPLES * PART_MOVES) as f64;
+    }
+    r.plan(ink);
+    for (kind, range, stroke) in layers {
+        r.begin_path(stroke);
+        let mut end = range.end;
+        while end > range.start {
+            // Parts start at multiples of PART_MOVES.
+            let start = ((end - 1) / PART_MOVES * PART_MOVES).max(range.start);
+            r.resume_path();
+            trace(r, f, tp, kind, start..end, stroke, true);
+            r.stroke();
+            r.finish();
+            end = start;
         }
     }
 }
@@ -468,5 +584,85 @@ mod tests {
         let (mut whole, taken) = drawn(&tp, Plane::Xy, &wide, true);
         assert_eq!(taken, 1000);
         assert_same_lines(&mut points, &mut whole);
+    }
+
+    /// A program of `n` moves: long lines between scattered points, an
+    /// arc by R every fifth move, a full circle every seventh, rapid moves
+    /// now and then (no segment under a pixel: the level of detail, which
+    /// starts afresh with each part, passes over none).
+    fn scattered(n: usize) -> String {
+        let mut program = String::from("G90 G17 G00 X0. Y0.\nG01 F500.\n");
+        let mut at = (0.0, 0.0);
+        for k in 0..n {
+            let p = ((k * 37 % 101) as f64 - 50.0, (k * 53 % 89) as f64 - 44.0);
+            let line = match k % 7 {
+                _ if k % 5 == 4 => {
+                    let r = (p.0 - at.0).hypot(p.1 - at.1) * 0.75;
+                    format!("G02 X{:.3} Y{:.3} R{r:.3}", p.0, p.1)
+                }
+                3 => format!("G03 X{:.3} Y{:.3} I2. J0.", at.0, at.1),
+                6 => format!("G00 X{:.3} Y{:.3}", p.0, p.1),
+                _ => format!("G01 X{:.3} Y{:.3}", p.0, p.1),
+            };
+            if k % 7 != 3 {
+                at = p;
+            }
+            program.push_str(&line);
+            program.push('\n');
+        }
+        program
+    }
+
+    /// The scene drawn on a raster of `w` × `h` CSS pixels (scale 2) in one
+    /// go ([`draw_paths`], arcs whole as a planned drawing takes them) or in
+    /// parts ([`draw_paths_in_parts`]).
+    fn scene_drawn(tp: &Toolpath, scene: &Scene, (w, h): (f64, f64), parts: bool) -> Raster {
+        let f = scene.frame(tp, w, h);
+        let split = scene.drawn_moves(tp);
+        let mut r = Raster::new();
+        r.take_arcs_whole_past(0);
+        assert!(r.begin((2.0 * w) as usize, (2.0 * h) as usize, (2.0, 2.0)));
+        if parts {
+            draw_paths_in_parts(&mut r, &f, tp, scene, split);
+        } else {
+            super::draw_paths(&mut r, &f, tp, scene, split);
+        }
+        r
+    }
+
+    #[test]
+    fn a_drawing_in_parts_has_the_pixels_of_one_in_one_go() {
+        // Dense (the coarse grid), and sparse enough for the full one.
+        // (20,000 moves: past MEASURED_WHOLE, the ink measured on samples.)
+        for (n, size, coarse) in [
+            (3000, (200.0, 160.0), 2),
+            (300, (900.0, 700.0), 1),
+            (20_000, (120.0, 100.0), 2),
+        ] {
+            let tp = toolpath(&scattered(n), MachineKind::Mill);
+            // The whole path, and stepped to a block: the ghost of the
+            // moves after it and the block's highlight too.
+            for step in [None, Some(1234)] {
+                let scene = Scene {
+                    step,
+                    ..Scene::default()
+                };
+                let mut whole = scene_drawn(&tp, &scene, size, false);
+                let mut parts = scene_drawn(&tp, &scene, size, true);
+                assert_eq!(whole.factor(), coarse);
+                assert_eq!(parts.factor(), coarse);
+                let (w, h) = whole.size();
+                assert_eq!(parts.size(), (w, h));
+                for y in 0..h {
+                    for x in 0..w {
+                        assert_eq!(
+                            whole.pixel(x, y),
+                            parts.pixel(x, y),
+                            "({x}, {y}) at {size:?}, step {step:?}"
+                        );
+                    }
+                }
+            }
+        }
     }
 }

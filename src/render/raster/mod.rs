@@ -35,7 +35,7 @@ mod sweep;
 mod tests;
 
 use record::Recorder;
-pub use record::parse_color;
+pub use record::{InkMeter, parse_color};
 
 /// Surfaces larger than this (device pixels) are drawn as vectors: the
 /// buffers take 8 bytes a pixel.
@@ -68,6 +68,14 @@ pub struct Raster {
     coarse: Option<bool>,
     /// CSS to device pixels.
     scale: (f64, f64),
+    /// CSS pixels to the pixels recorded: device pixels, or those of the
+    /// grid of a drawing planned ([`Raster::plan`]).
+    rec: (f64, f64),
+    /// A drawing made in parts ([`Raster::plan`]): its grid chosen before
+    /// anything is recorded, each part drawn (below the ones before) when
+    /// [`Raster::finish`] is called, and a segment found hidden when it is
+    /// recorded not recorded at all.
+    planned: bool,
     /// The pixels, tile by tile (tiles row by row, each tile's pixels row
     /// by row: [`Raster::index`]). The pixels a line covers are read
     /// there, scattered over megabytes, and waiting for them was half of
@@ -267,6 +275,8 @@ impl Raster {
             self.base = 1;
         }
         self.scale = scale;
+        self.rec = scale;
+        self.planned = false;
         self.styles.clear();
         self.subs.clear();
         self.points.clear();
@@ -332,6 +342,25 @@ impl Raster {
         (self.open_tiles).index(self.tiles_w, tiles.len(), |t| tiles[t] != FULL_TILE);
         let blocks = &self.blocks;
         (self.open_blocks).index(self.blocks_w, blocks.len(), |b| blocks[b] != FULL);
+    }
+
+    /// Makes this drawing in parts, front to back as they come: the caller
+    /// records a part (the last moves of the top path first), calls
+    /// [`Raster::finish`] to draw it below what is drawn, records the part
+    /// before it, and so on; a segment already hidden when it is recorded is
+    /// not recorded (most of a dense drawing's are: the 1M-block frame's
+    /// recording was half of its time, and 5.2 M points of memory). The
+    /// grid is chosen now, from `ink_area` (device pixels² its lines would
+    /// cover, overlaps counted; see [`Raster::choose_grid`]). Such a drawing
+    /// is not kept for the next one (it records too little to compare).
+    pub fn plan(&mut self, ink_area: f64) {
+        self.last.forget();
+        self.ink_area = ink_area;
+        self.planned = true;
+        // Nothing recorded yet: the grid, the surface cleared, the tiles.
+        self.finish();
+        let f = self.factor() as f64;
+        self.rec = (self.scale.0 / f, self.scale.1 / f);
     }
 
     /// Width and height in pixels of the drawing ([`Raster::factor`]
@@ -476,7 +505,7 @@ impl Raster {
         let whole_arcs = !arcs.is_empty();
         self.arcs = arcs;
         self.arcs.clear();
-        if first && (points.len() > keep::MOST_KEPT || whole_arcs) {
+        if first && (self.planned || points.len() > keep::MOST_KEPT || whole_arcs) {
             self.last.forget();
             self.subs = subs;
             self.points = points;

@@ -20,7 +20,18 @@ pub(super) struct Recorder {
 
 impl Raster {
     fn to_device(&self, x: f64, y: f64) -> (f64, f64) {
-        (x * self.scale.0, y * self.scale.1)
+        (x * self.rec.0, y * self.rec.1)
+    }
+
+    /// The size of the surface recorded on: the device pixels, or those
+    /// of a planned drawing's grid ([`Raster::plan`]).
+    fn recorded_size(&self) -> (f64, f64) {
+        let (w, h) = if self.planned {
+            (self.width, self.height)
+        } else {
+            self.full
+        };
+        (w as f64, h as f64)
     }
 
     /// Where a segment (device pixels) of `length` is within the surface
@@ -33,46 +44,122 @@ impl Raster {
         length: f64,
         margin: f64,
     ) -> Option<(f64, f64)> {
-        if !(length > 0.0 && length.is_finite()) {
-            return None;
+        clip_within(self.recorded_size(), from, to, length, margin)
+    }
+
+    /// What measures the ink of a drawing on this surface before it is
+    /// recorded ([`InkMeter`]).
+    pub fn ink_meter(&self) -> InkMeter {
+        InkMeter {
+            size: (self.full.0 as f64, self.full.1 as f64),
+            scale: self.scale,
+            half_width: 0.0,
+            at: None,
+            area: 0.0,
         }
-        // Most segments lie well inside. With both ends a pixel inside the
-        // edges, each edge is more than a pixel beyond the segment's ends
-        // along it, far more than the rounding of the divisions below: they
-        // would give (0, length) too (and were a twentieth of recording a
-        // 1M-block frame).
-        let (w, h) = (self.full.0 as f64, self.full.1 as f64);
-        let inside = |(x, y): (f64, f64)| {
-            (1.0 - margin..=w + margin - 1.0).contains(&x)
-                && (1.0 - margin..=h + margin - 1.0).contains(&y)
-        };
-        if inside(from) && inside(to) {
-            return Some((0.0, length));
-        }
-        // Liang–Barsky, in units of length.
-        let (mut t0, mut t1) = (0.0_f64, length);
-        let (dx, dy) = ((to.0 - from.0) / length, (to.1 - from.1) / length);
-        let edges = [
-            (-dx, from.0 + margin),
-            (dx, w + margin - from.0),
-            (-dy, from.1 + margin),
-            (dy, h + margin - from.1),
-        ];
-        for (p, q) in edges {
-            if p == 0.0 {
-                if q < 0.0 {
-                    return None;
-                }
+    }
+}
+
+/// Where a segment (pixels) of `length` is within a surface of `(w, h)`
+/// pixels and `margin` around it: the parameters (as lengths along it)
+/// where it enters and leaves, or None when it never does.
+fn clip_within(
+    (w, h): (f64, f64),
+    from: (f64, f64),
+    to: (f64, f64),
+    length: f64,
+    margin: f64,
+) -> Option<(f64, f64)> {
+    if !(length > 0.0 && length.is_finite()) {
+        return None;
+    }
+    // Most segments lie well inside. With both ends a pixel inside the
+    // edges, each edge is more than a pixel beyond the segment's ends
+    // along it, far more than the rounding of the divisions below: they
+    // would give (0, length) too (and were a twentieth of recording a
+    // 1M-block frame).
+    let inside = |(x, y): (f64, f64)| {
+        (1.0 - margin..=w + margin - 1.0).contains(&x)
+            && (1.0 - margin..=h + margin - 1.0).contains(&y)
+    };
+    if inside(from) && inside(to) {
+        return Some((0.0, length));
+    }
+    // Liang–Barsky, in units of length.
+    let (mut t0, mut t1) = (0.0_f64, length);
+    let (dx, dy) = ((to.0 - from.0) / length, (to.1 - from.1) / length);
+    let edges = [
+        (-dx, from.0 + margin),
+        (dx, w + margin - from.0),
+        (-dy, from.1 + margin),
+        (dy, h + margin - from.1),
+    ];
+    for (p, q) in edges {
+        if p == 0.0 {
+            if q < 0.0 {
+                return None;
+            }
+        } else {
+            let r = q / p;
+            if p < 0.0 {
+                t0 = t0.max(r);
             } else {
-                let r = q / p;
-                if p < 0.0 {
-                    t0 = t0.max(r);
-                } else {
-                    t1 = t1.min(r);
-                }
+                t1 = t1.min(r);
             }
         }
-        (t0 < t1).then_some((t0, t1))
+    }
+    (t0 < t1).then_some((t0, t1))
+}
+
+/// The area (device pixels², overlaps counted) that the lines drawn with
+/// it would cover on a raster's surface, as [`Raster`] records them:
+/// what a planned drawing chooses its grid by ([`Raster::plan`]).
+pub struct InkMeter {
+    size: (f64, f64),
+    scale: (f64, f64),
+    half_width: f64,
+    at: Option<(f64, f64)>,
+    /// The area measured.
+    pub area: f64,
+}
+
+impl Pen for InkMeter {
+    fn begin_path(&mut self, stroke: &Stroke) {
+        let scale = (self.scale.0 + self.scale.1) / 2.0;
+        self.half_width = stroke.width.max(0.0) * scale / 2.0;
+        self.at = None;
+    }
+
+    fn move_to(&mut self, x: f64, y: f64) {
+        self.at = Some((x * self.scale.0, y * self.scale.1));
+    }
+
+    fn line_to(&mut self, x: f64, y: f64) {
+        let to = (x * self.scale.0, y * self.scale.1);
+        let Some(from) = self.at.replace(to) else {
+            return;
+        };
+        let length = length(to.0 - from.0, to.1 - from.1);
+        let margin = self.half_width + 2.0;
+        if let Some((t0, t1)) = clip_within(self.size, from, to, length, margin) {
+            self.area += (t1 - t0) * 2.0 * self.half_width;
+        }
+    }
+
+    fn stroke(&mut self) {
+        self.at = None;
+    }
+}
+
+impl Raster {
+    /// The next sub-paths recorded belong to the path begun last
+    /// ([`Pen::begin_path`]), from a new place: the next part of a planned
+    /// drawing ([`Raster::plan`]).
+    pub fn resume_path(&mut self) {
+        self.pen = Recorder {
+            style: self.pen.style,
+            ..Recorder::default()
+        };
     }
 }
 
@@ -105,7 +192,7 @@ impl Pen for Raster {
     }
 
     fn begin_path(&mut self, stroke: &Stroke) {
-        let scale = (self.scale.0 + self.scale.1) / 2.0;
+        let scale = (self.rec.0 + self.rec.1) / 2.0;
         // A drawing has a few paths (six layers at most); past 2^15, further
         // ones are not drawn rather than share a stamp.
         let style = u16::try_from(self.styles.len())
@@ -157,7 +244,8 @@ impl Pen for Raster {
             self.pen.broken = true;
             return;
         }
-        let margin = self.styles[usize::from(style)].half_width + 2.0;
+        let half_width = self.styles[usize::from(style)].half_width;
+        let margin = half_width + 2.0;
         let Some((t0, t1)) = self.clip(from, to, length, margin) else {
             self.pen.along += length;
             self.pen.broken = true;
@@ -170,6 +258,13 @@ impl Pen for Raster {
                 (from.1 + (to.1 - from.1) * k) as f32,
             ]
         };
+        if self.planned && self.hidden(at(t0), at(t1), half_width) {
+            // Below what is drawn already: not recorded, and the next
+            // segment starts a sub-path where its dashes fall.
+            self.pen.along += length;
+            self.pen.broken = true;
+            return;
+        }
         if self.pen.broken || t0 > 0.0 {
             let period = self.styles[usize::from(style)].period;
             let phase = phase_of(self.pen.along + t0, period);
@@ -181,7 +276,7 @@ impl Pen for Raster {
             self.points.push(at(t0));
         }
         self.points.push(at(t1));
-        self.ink_area += (t1 - t0) * 2.0 * self.styles[usize::from(style)].half_width;
+        self.ink_area += (t1 - t0) * 2.0 * half_width;
         self.pen.along += length;
         self.pen.broken = t1 < length;
     }
@@ -194,7 +289,7 @@ impl Pen for Raster {
     /// what is kept for the next edit, [`MOST_KEPT`], so drawings that are
     /// kept are recorded as before).
     fn takes_arcs(&self) -> bool {
-        self.points.len() >= self.whole_arcs_past
+        self.planned || self.points.len() >= self.whole_arcs_past
     }
 
     /// Records the arc whole when it lies within the surface (no clipping
@@ -204,14 +299,14 @@ impl Pen for Raster {
             return false;
         };
         let count = u32::try_from(arc.count).unwrap_or(0);
-        if self.scale.0 != self.scale.1 || count == 0 || !arc.sweep.is_finite() {
+        if self.rec.0 != self.rec.1 || count == 0 || !arc.sweep.is_finite() {
             return false;
         }
         let [centre, from, to] = [arc.centre, arc.from, arc.to].map(|(x, y)| self.to_device(x, y));
         let r = length(from.0 - centre.0, from.1 - centre.1);
         let ink = &self.styles[usize::from(style)];
         let margin = ink.half_width + 2.0;
-        let (w, h) = (self.full.0 as f64, self.full.1 as f64);
+        let (w, h) = self.recorded_size();
         let within = |c: f64, size: f64| c - r >= 1.0 - margin && c + r <= size + margin - 1.0;
         if !(r > 0.0 && within(centre.0, w) && within(centre.1, h)) {
             return false;
@@ -233,6 +328,19 @@ impl Pen for Raster {
         // (The pen's distance is kept within a period of the arc's end, so
         // that the next phase needs no `rem_euclid`.)
         let phase = phase_of(self.pen.along, period);
+        let hidden = self.planned && {
+            let [cx, cy] = recorded.centre;
+            let r = r as f32;
+            self.hidden([cx - r, cy - r], [cx + r, cy + r], half_width)
+        };
+        self.pen.along = phase + length;
+        self.pen.at = Some(to);
+        // The next segment starts a sub-path of its own.
+        self.pen.broken = true;
+        if hidden {
+            // Below what is drawn already (a planned drawing): not recorded.
+            return true;
+        }
         self.subs.push(Sub {
             first: self.points.len() as u32,
             phase: phase as f32,
@@ -240,10 +348,6 @@ impl Pen for Raster {
         });
         self.arcs.push(recorded);
         self.ink_area += length * 2.0 * half_width;
-        self.pen.along = phase + length;
-        self.pen.at = Some(to);
-        // The next segment starts a sub-path of its own.
-        self.pen.broken = true;
         true
     }
 }
