@@ -34,7 +34,7 @@ import {
 } from './modules/results.js';
 import {
   call, callAnswered, flushRun, initRunner, latestRun, onFileRead, post, readingFile, runAnswered,
-  runDrawn, scheduleRun, taskBegun,
+  scheduleRun, taskBegun, workerDid,
 } from './modules/runner.js';
 import { initSettings, renderSettings } from './modules/settings.js';
 import { cloneSetup } from './modules/setup.js';
@@ -156,8 +156,11 @@ function onWorkerMessage(m) {
       if (m.gen === 0 && restarted()) return;
       showViewState(m);
       break;
+    case 'read':
+      workerDid('read', m.gen);
+      break;
     case 'drawn':
-      runDrawn(m.gen);
+      workerDid('drawn', m.gen);
       showDrawn(m);
       break;
     case 'reply':

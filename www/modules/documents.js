@@ -8,7 +8,7 @@ import { EXAMPLES, exampleById } from './examples.js';
 import { renderOffsets } from './offsets.js';
 import { EMBED } from './page.js';
 import {
-  call, cancelScheduledRun, drawnOf, fileRead, requestRun, setPendingView,
+  call, cancelScheduledRun, fileRead, requestRun, setPendingView, workerDone,
 } from './runner.js';
 import { renderSettings } from './settings.js';
 import { cloneSetup, machineOf } from './setup.js';
@@ -51,7 +51,7 @@ export function loadDocument(w, { ran = 0 } = {}) {
     // already (`ran`) once its drawing is made: on two cores, the editor's
     // work at the same time slowed the run and the drawing by a third
     // (issue 6, target 3).
-    const { text } = editor.setText(w.program, ran ? { after: drawnOf(ran) } : {});
+    const { text } = editor.setText(w.program, ran ? { after: workerDone('drawn', ran) } : {});
     // A file the worker is running already (`ran`, modules/opening.js) is
     // not sent again.
     if (fileRead(ran, text)) setPendingView(null);

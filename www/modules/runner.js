@@ -32,7 +32,7 @@ const sent = new Map(); // generation → { program, setup, view } of run reques
 let runningDoc = null; // the run the worker said it began and has not answered
 let readingGen = 0; // the file run whose text the page is reading (0: none)
 let fileDone = () => {};
-const drawnWaits = []; // { gen, resolve } (drawnOf)
+const waits = []; // { what, gen, resolve } (workerDone)
 let callId = 0;
 const calls = new Map(); // call id → { resolve, reject }
 
@@ -132,27 +132,31 @@ export function onFileRead(f) {
 }
 
 /**
- * A promise of the moment run `gen` (or a later one) is drawn, or the
- * worker lost, or `ms` passed: the editor takes the text of a file run
- * after its drawing (modules/documents.js).
+ * A promise of the moment the worker has read the file of run `gen`
+ * (`what`: 'read') or drawn run `gen` or a later one ('drawn'), or is
+ * lost, or `ms` have passed. The page reads an opened file's text once the
+ * worker has (the two reads at once made the page's thread stall for a
+ * tenth of a second), and the editor takes it once the run is drawn
+ * (modules/opening.js, modules/documents.js).
  */
-export function drawnOf(gen, ms = 5000) {
+export function workerDone(what, gen, ms = 5000) {
   return new Promise((resolve) => {
-    const waiting = { gen, resolve };
-    drawnWaits.push(waiting);
-    setTimeout(() => settleDrawn(waiting), ms);
+    const waiting = { what, gen, resolve };
+    waits.push(waiting);
+    setTimeout(() => settle(waiting), ms);
   });
 }
 
-function settleDrawn(waiting) {
-  const i = drawnWaits.indexOf(waiting);
-  if (i >= 0) drawnWaits.splice(i, 1);
+function settle(waiting) {
+  const i = waits.indexOf(waiting);
+  if (i >= 0) waits.splice(i, 1);
   waiting.resolve();
 }
 
-/** The worker drew run `gen` (`drawn`). */
-export function runDrawn(gen) {
-  for (const waiting of drawnWaits.filter((w) => w.gen <= gen)) settleDrawn(waiting);
+/** The worker read the file of run `gen` (`read`) or drew run `gen` (`drawn`). */
+export function workerDid(what, gen) {
+  const done = (w) => w.what === what && (what === 'drawn' ? w.gen <= gen : w.gen === gen);
+  for (const waiting of waits.filter(done)) settle(waiting);
 }
 
 /** An edit: runs now if the last run was quick, else after a pause in the typing. */
@@ -235,7 +239,7 @@ export function callAnswered(m) {
  * one asked for, else the one shown.
  */
 export function workerLost(task) {
-  for (const waiting of [...drawnWaits]) settleDrawn(waiting);
+  for (const waiting of [...waits]) settle(waiting);
   for (const pending of calls.values()) pending.reject(new Error('the interpreter was stopped'));
   calls.clear();
   let doc = (task === 'run' ? runningDoc : null) ?? lastSent ?? currentDoc();
