@@ -1078,10 +1078,10 @@ function report(results) {
     const ph = (k) => stats(t3.map((x) => x.phases?.[k]));
     const rowsP = [
       ['target 3: where the time goes (median over runs)', 'time', 'what'],
-      ['read the file (Blob.text)', range(ph('readFile'), fmtMs), 'File.text() of the .nc (main thread)'],
+      ['read the file (Blob.text)', range(ph('readFile'), fmtMs), 'the first Blob.text() (main thread): the .nc, or its first 4 KiB from 1 MiB on (the worker reads the file)'],
       ['page until the run request', range(ph('beforePost'), fmtMs), 'CodeMirror setText, the text copied out of the editor, panels'],
       ['postMessage of the run request', range(ph('postMessage'), fmtMs), 'structured clone of the program text'],
-      ['to the worker', range(ph('toWorker'), fmtMs), 'delivery, deserialisation, queue, until Session.run starts'],
+      ['to the worker', range(ph('toWorker'), fmtMs), 'delivery, deserialisation, queue (a file handed over: its read), until Session.run starts'],
       ['Session.run (wasm)', range(ph('run'), fmtMs), 'text into wasm memory, parse, run, toolpath; summary out'],
       ['result handled by the page', range(ph('resultToPage'), fmtMs), 'from the run\'s end: summary, diagnostics, editor marks'],
       ['worker: wait for its animation frame', range(ph('waitFrame'), fmtMs), 'from the run\'s end to render()'],
