@@ -16,9 +16,10 @@ const MAX_FILE = 300 * 1024 * 1024;
 
 /**
  * A program file at least this large is read by the worker itself, straight
- * into wasm memory, and run while this thread reads its text for the editor
- * (issue 6, target 3): reading the text here, copying it to the worker and
- * there into wasm memory came before the run, 0.2–0.3 s of a 31 MB program.
+ * into wasm memory, and run; this thread reads its text for the editor once
+ * the worker has read it (issue 6, target 3): reading the text here, copying
+ * it to the worker and there into wasm memory came before the run, 0.2–0.3 s
+ * of a 31 MB program.
  */
 const WORKER_READS_FROM = 1024 * 1024;
 
