@@ -11,9 +11,61 @@ use super::{
 use crate::report::Xyz;
 use crate::toolpath::{ToolArc, Toolpath, Visit};
 
-/// The paths of a scene, bottom to top: the moves after the current block
-/// (faint), the current block's highlight, the actual path and the
-/// programmed path up to the current block.
+/// One stroke of a scene: the moves of `moves` on the programmed or the
+/// actual path (`kind.0`) that are rapid or not (`kind.1`), and the group
+/// it belongs to.
+struct Layer {
+    group: &'static str,
+    kind: (bool, bool),
+    moves: std::ops::Range<usize>,
+    stroke: Stroke,
+}
+
+/// The strokes of a scene, bottom to top: the moves after the current
+/// block (faint), the current block's highlight, the actual path and the
+/// programmed path up to the current block; each path's rapid moves below
+/// its others.
+fn layers(f: &Frame, tp: &Toolpath, scene: &Scene, split: usize) -> Vec<Layer> {
+    let t = f.theme;
+    let mut out = Vec::with_capacity(8);
+    let mut path = |group, programmed, moves: std::ops::Range<usize>, strokes: [Stroke; 2]| {
+        for (rapid, stroke) in [true, false].into_iter().zip(strokes) {
+            let kind = (programmed, rapid);
+            let moves = moves.clone();
+            out.push(Layer {
+                group,
+                kind,
+                moves,
+                stroke,
+            });
+        }
+    };
+    if split < tp.len() {
+        path("ghost", false, split..tp.len(), [t.ghost(); 2]);
+    }
+    if let Some(step) = scene.step {
+        let first = tp.blocks.partition_point(|&b| b < step).min(split);
+        if first < split {
+            path("current", false, first..split, [t.highlight(); 2]);
+        }
+    }
+    path(
+        "actual",
+        false,
+        0..split,
+        [t.actual_rapid(), t.actual_feed()],
+    );
+    path(
+        "programmed",
+        true,
+        0..split,
+        [t.programmed_rapid(), t.programmed_feed()],
+    );
+    out
+}
+
+/// The paths of a scene ([`layers`]), bottom to top, each group of
+/// strokes in a group of the pen's.
 pub(super) fn draw_paths(
     pen: &mut impl Pen,
     frame: &Frame,
@@ -21,44 +73,29 @@ pub(super) fn draw_paths(
     scene: &Scene,
     split: usize,
 ) {
-    let moves = toolpath.len();
-    if split < moves {
-        pen.begin_group("ghost");
-        let ghost = frame.theme.ghost();
-        draw_path(pen, frame, toolpath, false, split..moves, |_| &ghost);
-        pen.end_group();
-    }
-    if let Some(step) = scene.step {
-        let first = toolpath.blocks.partition_point(|&b| b < step).min(split);
-        if first < split {
-            pen.begin_group("current");
-            let hl = frame.theme.highlight();
-            draw_path(pen, frame, toolpath, false, first..split, |_| &hl);
+    let layers = layers(frame, toolpath, scene, split);
+    for (k, layer) in layers.iter().enumerate() {
+        if k == 0 || layers[k - 1].group != layer.group {
+            pen.begin_group(layer.group);
+        }
+        let (moves, stroke) = (layer.moves.clone(), &layer.stroke);
+        if trace(pen, frame, toolpath, layer.kind, moves, stroke, false) {
+            pen.stroke();
+        }
+        if layers
+            .get(k + 1)
+            .is_none_or(|next| next.group != layer.group)
+        {
             pen.end_group();
         }
     }
-    let t = frame.theme;
-    let (af, ar, pf, pr) = (
-        t.actual_feed(),
-        t.actual_rapid(),
-        t.programmed_feed(),
-        t.programmed_rapid(),
-    );
-    pen.begin_group("actual");
-    draw_path(pen, frame, toolpath, false, 0..split, |rapid| {
-        if rapid { &ar } else { &af }
-    });
-    pen.end_group();
-    pen.begin_group("programmed");
-    draw_path(pen, frame, toolpath, true, 0..split, |rapid| {
-        if rapid { &pr } else { &pf }
-    });
-    pen.end_group();
 }
 
-/// One path (one stroke) drawn on `s`: the moves of `range` on the
+/// One path (one stroke) drawn on `s` (for the tests: [`draw_paths`]
+/// draws a scene's): the moves of `range` on the
 /// programmed or the actual path, rapid ones with one stroke, the others
 /// with another.
+#[cfg(test)]
 pub(super) fn draw_path<'a>(
     s: &mut impl Pen,
     f: &Frame,
@@ -154,39 +191,19 @@ pub(super) fn draw_paths_in_parts(
     scene: &Scene,
     split: usize,
 ) {
-    let moves = tp.len();
-    let t = f.theme;
-    let ghost = t.ghost();
-    let hl = t.highlight();
-    let (af, ar, pf, pr) = (
-        t.actual_feed(),
-        t.actual_rapid(),
-        t.programmed_feed(),
-        t.programmed_rapid(),
-    );
-    // The strokes of draw_paths, top first: (programmed, rapid), moves, stroke.
-    let mut layers = vec![
-        ((true, false), 0..split, &pf),
-        ((true, true), 0..split, &pr),
-        ((false, false), 0..split, &af),
-        ((false, true), 0..split, &ar),
-    ];
-    if let Some(step) = scene.step {
-        let first = tp.blocks.partition_point(|&b| b < step).min(split);
-        for rapid in [false, true] {
-            layers.push(((false, rapid), first..split, &hl));
-        }
-    }
-    if split < moves {
-        for rapid in [false, true] {
-            layers.push(((false, rapid), split..moves, &ghost));
-        }
-    }
+    // Top first.
+    let layers: Vec<Layer> = layers(f, tp, scene, split).into_iter().rev().collect();
     // The grid: from the ink the lines would cover, measured on samples.
     let mut meter = r.ink_meter();
     let mut ink = 0.0;
-    for &(kind, ref range, stroke) in &layers {
-        let n = range.len();
+    for Layer {
+        kind,
+        moves: range,
+        stroke,
+        ..
+    } in &layers
+    {
+        let (kind, n) = (*kind, range.len());
         if n <= MEASURED_WHOLE {
             meter.area = 0.0;
             trace(&mut meter, f, tp, kind, range.clone(), stroke, false);
@@ -211,7 +228,14 @@ pub(super) fn draw_paths_in_parts(
         ink += sampled * n as f64 / (SAMPLES * PART_MOVES) as f64;
     }
     r.plan(ink);
-    for (kind, range, stroke) in layers {
+    for Layer {
+        kind,
+        moves: range,
+        stroke,
+        ..
+    } in layers
+    {
+        let stroke = &stroke;
         r.begin_path(stroke);
         let mut end = range.end;
         while end > range.start {
