@@ -73,38 +73,39 @@ export function call(op, args = {}) {
 
 /** Runs `text` (the editor's program) with the setup shown, and the view asked for. */
 export function requestRun(text = program()) {
-  clearTimeout(timer);
-  delete document.body.dataset.pending;
   const doc = { program: text, setup: setupDocument() };
   // The program that stopped the interpreter runs again only once edited.
-  if (sameRun(doc, parked)) return;
-  parked = null;
-  requested += 1;
-  document.body.dataset.requested = String(requested);
-  lastSent = { ...doc, view: pendingView };
-  sent.set(requested, lastSent);
-  post({ type: 'run', gen: requested, ...doc, view: pendingView });
+  if (sameRun(doc, parked)) {
+    cancelScheduledRun();
+    return;
+  }
+  sendRun(doc, pendingView, { program: text });
   pendingView = null;
 }
 
 /**
  * Runs the program file `file` with the setup shown and `view`: the worker
- * reads it itself, straight into wasm memory, while this thread reads its
- * text for the editor (modules/opening.js). Until the page has the text
- * (`fileRead`), the run's document has no program and what the worker says
- * of runs is held back (`readingFile`). Returns the run's generation.
+ * reads it itself, straight into wasm memory, and this thread reads its
+ * text for the editor once it has (modules/opening.js). Until the page has
+ * the text (`fileRead`), the run's document has no program and what the
+ * worker says of runs is held back (`readingFile`). Returns the run's
+ * generation.
  */
 export function requestFileRun(file, view) {
-  clearTimeout(timer);
-  delete document.body.dataset.pending;
+  sendRun({ program: null, setup: setupDocument() }, view, { file });
+  readingGen = requested;
+  return requested;
+}
+
+/** Sends the run request of `doc` { program, setup } with `view`; `what`: its program or file. */
+function sendRun(doc, view, what) {
+  cancelScheduledRun();
   parked = null;
   requested += 1;
   document.body.dataset.requested = String(requested);
-  lastSent = { program: null, setup: setupDocument(), view };
+  lastSent = { ...doc, view };
   sent.set(requested, lastSent);
-  post({ type: 'run', gen: requested, file, setup: lastSent.setup, view });
-  readingGen = requested;
-  return requested;
+  post({ type: 'run', gen: requested, ...what, setup: doc.setup, view });
 }
 
 /** Whether the page is reading the text of a file the worker runs. */
