@@ -867,6 +867,89 @@ fn a_run_that_changes_nothing_drawn_leaves_the_canvas_as_it_is() {
     assert!(again < black && again > drawn / 2, "{again} of {black}");
 }
 
+/// The pixels of an OffscreenCanvas, RGBA.
+fn canvas_pixels(canvas: &OffscreenCanvas) -> Vec<u8> {
+    let ctx = canvas.get_context("2d").expect("ctx").expect("2d");
+    let get_image_data: Function = get(&ctx, "getImageData").dyn_into().expect("function");
+    let (w, h) = (canvas.width(), canvas.height());
+    let args = Array::of4(&0.into(), &0.into(), &w.into(), &h.into());
+    let image = get_image_data.apply(&ctx, &args).expect("image data");
+    get(&image, "data")
+        .unchecked_into::<js_sys::Uint8ClampedArray>()
+        .to_vec()
+}
+
+/// A frame of `program` with `step` at 400 × 300 CSS pixels and `dpr`,
+/// drawn by a new session on a new canvas; and both.
+fn whole_frame(program: &str, step: Option<i32>, dpr: f64) -> (Session, OffscreenCanvas) {
+    let mut s = Session::new();
+    s.run(program.into(), JsValue::NULL).expect("run");
+    let canvas = OffscreenCanvas::new(10, 10).expect("OffscreenCanvas");
+    s.attach_canvas(canvas.clone()).expect("attach");
+    if let Some(step) = step {
+        s.set_step(step);
+    }
+    s.render(400, 300, dpr).expect("render");
+    (s, canvas)
+}
+
+#[wasm_bindgen_test]
+fn an_edit_is_painted_where_it_changed_with_the_pixels_of_a_whole_frame() {
+    // Issue 6, target 4c: after an edit that moves a move and keeps the
+    // bounds, the canvas is painted only inside the box that changed
+    // (render::display); the pixels are those of a whole frame — with the
+    // current block's marker and highlight too, and when they move.
+    let program = numbered_program(3000);
+    let edited = program.replacen("N1500 G01 X17.", "N1500 G01 X17.5", 1);
+    assert_ne!(edited, program);
+    // (first step, the program then, its step, whether the top left corner
+    // is left as it was: only the box around the change is painted — for
+    // a step to the next block, whichever the drawing chooses).
+    let cases = [
+        (None, &edited, None, Some(true)),
+        (Some(1497), &edited, Some(1497), Some(true)),
+        (Some(1497), &program, Some(1498), None),
+    ];
+    for dpr in [1.0, 2.0] {
+        for (first, then, step, boxed) in cases {
+            let (mut s, canvas) = whole_frame(&program, first, dpr);
+            // A mark in the top left corner, far from the edit: a frame
+            // painted whole paints over it.
+            let ctx: OffscreenCanvasRenderingContext2d = canvas
+                .get_context("2d")
+                .expect("ctx")
+                .expect("2d")
+                .dyn_into()
+                .expect("2d context");
+            ctx.set_transform(1.0, 0.0, 0.0, 1.0, 0.0, 0.0)
+                .expect("transform");
+            ctx.set_fill_style_str("#ff00ff");
+            ctx.fill_rect(0.0, 0.0, 1.0, 1.0);
+            s.run(then.clone(), JsValue::NULL).expect("run");
+            if let Some(step) = step {
+                s.set_step(step);
+            }
+            s.render(400, 300, dpr).expect("render");
+            let painted = canvas_pixels(&canvas);
+            let case = format!("{first:?} → {step:?} at {dpr}");
+            if let Some(boxed) = boxed {
+                assert_eq!(painted[..4] == [255, 0, 255, 255], boxed, "{case}");
+            }
+            let whole = canvas_pixels(&whole_frame(then, step, dpr).1);
+            assert_eq!(painted.len(), whole.len());
+            let differ = painted[4..]
+                .chunks_exact(4)
+                .zip(whole[4..].chunks_exact(4))
+                .filter(|(a, b)| a != b)
+                .count();
+            assert_eq!(differ, 0, "{differ} pixels differ: {case}");
+            // And the drawing did change.
+            let before = canvas_pixels(&whole_frame(&program, first, dpr).1);
+            assert_ne!(before, whole, "{case}");
+        }
+    }
+}
+
 /// Writes `bytes` at the start of the session's program buffer of `room`
 /// bytes, as the page's worker does with `TextEncoder.encodeInto`; false
 /// when the session had no room.

@@ -6,17 +6,30 @@ use js_sys::Array;
 use wasm_bindgen::{Clamped, JsValue};
 use web_sys::{ImageData, OffscreenCanvas, OffscreenCanvasRenderingContext2d};
 
+use super::display::{self, Damage, LayerChange, Op};
 use super::style::{Align, FONT_FAMILY, Font, Stroke};
 use super::{Pen, Raster, Rect, Surface, Transform};
 
 /// A 2D context seen as a [`Surface`] in CSS pixels; the caller sets the
 /// device-pixel transform.
+///
+/// The calls of a frame are kept ([`Op`]) and made on the canvas by
+/// [`CanvasSurface::present`], only inside the box where they differ from
+/// the last frame's ([`display::damage`]).
 pub struct CanvasSurface<'a> {
     ctx: &'a OffscreenCanvasRenderingContext2d,
     font: String,
     layer: Option<Layer<'a>>,
     reused: bool,
     moved: bool,
+    ops: Vec<Op>,
+    /// How the layer's pixels differ from the last frame's.
+    layer_change: LayerChange,
+    /// Something of this frame could not be drawn (its layer's image).
+    failed: bool,
+    /// The calls of the frame the canvas shows: None when its pixels are
+    /// not known to be theirs (a new or resized canvas).
+    shown: &'a mut Option<Vec<Op>>,
 }
 
 /// The pixel layer of a canvas: the raster, the canvas's size in device
@@ -60,9 +73,12 @@ pub struct Shot {
 
 impl<'a> CanvasSurface<'a> {
     /// Wraps a context; with a `layer`, large paths are drawn as pixels.
+    /// `shown`: the calls of the frame on the canvas, kept by the caller
+    /// from one frame to the next (None for a new or resized canvas).
     pub fn new(
         ctx: &'a OffscreenCanvasRenderingContext2d,
         layer: Option<Layer<'a>>,
+        shown: &'a mut Option<Vec<Op>>,
     ) -> CanvasSurface<'a> {
         ctx.set_line_cap("round");
         ctx.set_line_join("round");
@@ -72,7 +88,183 @@ impl<'a> CanvasSurface<'a> {
             layer,
             reused: false,
             moved: false,
+            ops: Vec::new(),
+            layer_change: LayerChange::Whole,
+            failed: false,
+            shown,
         }
+    }
+
+    /// Makes the frame's calls on the canvas (`size` CSS pixels at `scale`
+    /// device pixels per CSS pixel, the context's transform): all of them,
+    /// clipped to the box where they differ from the last frame's when
+    /// there is one — the pixels outside it are already those.
+    pub fn present(self, size: (f64, f64), scale: (f64, f64)) -> Result<(), JsValue> {
+        let CanvasSurface {
+            ctx,
+            mut font,
+            layer,
+            ops,
+            layer_change,
+            failed,
+            shown,
+            ..
+        } = self;
+        let damage = display::damage(shown.as_deref(), &ops, layer_change, size);
+        // Until this frame is wholly on the canvas, what it shows is not known.
+        *shown = None;
+        let scratch = layer.as_ref().map(|l| l.scratch);
+        let mut draw_all = || {
+            ops.iter()
+                .try_for_each(|op| Self::draw(ctx, &mut font, scratch, op))
+        };
+        match damage {
+            Damage::None => {}
+            Damage::Whole => draw_all()?,
+            Damage::Box(r) => {
+                // In whole device pixels: inside the clip nothing blends
+                // with what was there.
+                let (sx, sy) = scale;
+                let (x0, y0) = ((r.x * sx).floor(), (r.y * sy).floor());
+                let (x1, y1) = ((r.right() * sx).ceil(), (r.bottom() * sy).ceil());
+                ctx.save();
+                let drawn = ctx
+                    .set_transform(1.0, 0.0, 0.0, 1.0, 0.0, 0.0)
+                    .and_then(|()| {
+                        ctx.begin_path();
+                        ctx.rect(x0, y0, x1 - x0, y1 - y0);
+                        ctx.clip();
+                        ctx.set_transform(sx, 0.0, 0.0, sy, 0.0, 0.0)
+                    })
+                    .and_then(|()| draw_all());
+                ctx.restore();
+                drawn?;
+            }
+        }
+        if !failed {
+            *shown = Some(ops);
+        }
+        Ok(())
+    }
+
+    /// Makes one call on the canvas.
+    fn draw(
+        ctx: &OffscreenCanvasRenderingContext2d,
+        font: &mut String,
+        scratch: Option<&OffscreenCanvas>,
+        op: &Op,
+    ) -> Result<(), JsValue> {
+        match op {
+            Op::Clear {
+                width,
+                height,
+                color,
+            } => {
+                ctx.set_fill_style_str(color);
+                ctx.fill_rect(0.0, 0.0, *width, *height);
+            }
+            Op::Rect { rect, fill, border } => {
+                ctx.set_fill_style_str(fill);
+                ctx.fill_rect(rect.x, rect.y, rect.w, rect.h);
+                if let Some(border) = border {
+                    ctx.set_stroke_style_str(border);
+                    ctx.set_line_width(1.0);
+                    ctx.set_line_dash(&Array::new())?;
+                    ctx.stroke_rect(rect.x + 0.5, rect.y + 0.5, rect.w - 1.0, rect.h - 1.0);
+                }
+            }
+            Op::Text {
+                text,
+                x,
+                y,
+                font: f,
+            } => {
+                let css = format!(
+                    "{}{}px {}",
+                    if f.bold { "bold " } else { "" },
+                    f.size,
+                    FONT_FAMILY
+                );
+                if css != *font {
+                    ctx.set_font(&css);
+                    *font = css;
+                }
+                ctx.set_text_align(match f.align {
+                    Align::Start => "start",
+                    Align::Middle => "center",
+                    Align::End => "end",
+                });
+                ctx.set_fill_style_str(f.color);
+                // fillText only throws for non-finite coordinates; a label is skipped then.
+                let _ = ctx.fill_text(text, *x, *y);
+            }
+            Op::Polygon { points, fill } => {
+                let Some(((x0, y0), rest)) = points.split_first() else {
+                    return Ok(());
+                };
+                ctx.begin_path();
+                ctx.move_to(*x0, *y0);
+                for (x, y) in rest {
+                    ctx.line_to(*x, *y);
+                }
+                ctx.close_path();
+                ctx.set_fill_style_str(fill);
+                ctx.fill();
+            }
+            Op::Circle {
+                x,
+                y,
+                r,
+                fill,
+                stroke,
+            } => {
+                ctx.begin_path();
+                // arc only throws for a negative radius.
+                if ctx
+                    .arc(*x, *y, r.max(0.0), 0.0, std::f64::consts::TAU)
+                    .is_err()
+                {
+                    return Ok(());
+                }
+                if let Some(fill) = fill {
+                    ctx.set_fill_style_str(fill);
+                    ctx.fill();
+                }
+                if let Some(stroke) = stroke {
+                    ctx.set_stroke_style_str(stroke.color);
+                    ctx.set_line_width(stroke.width);
+                    ctx.set_line_dash(&Array::new())?;
+                    ctx.stroke();
+                }
+            }
+            Op::Path { stroke, points } => {
+                ctx.set_stroke_style_str(stroke.color);
+                ctx.set_line_width(stroke.width);
+                let dash: Array = stroke.dash.iter().map(|d| JsValue::from_f64(*d)).collect();
+                // Only fails for negative or non-finite lengths, which the styles never use.
+                let _ = ctx.set_line_dash(&dash);
+                ctx.begin_path();
+                for &(x, y, starts) in points {
+                    if starts {
+                        ctx.move_to(x, y);
+                    } else {
+                        ctx.line_to(x, y);
+                    }
+                }
+                ctx.stroke();
+            }
+            Op::Layer {
+                source,
+                dest,
+                smooth,
+                ..
+            } => {
+                if let Some(scratch) = scratch {
+                    Self::draw_scratch(ctx, scratch, *source, *dest, !smooth)?;
+                }
+            }
+        }
+        Ok(())
     }
 
     /// Whether the paths of this drawing were a kept layer moved or scaled
@@ -86,12 +278,17 @@ impl<'a> CanvasSurface<'a> {
         self.reused
     }
 
+    /// Puts the layer's pixels on `scratch` — where they changed, when
+    /// the layer was drawn on the last one's pixels and `scratch` holds
+    /// those — and adds the call that draws `scratch` on the canvas.
     fn put_layer(&mut self, transform: &Transform) -> Result<(), JsValue> {
         let Some(layer) = &mut self.layer else {
             return Ok(());
         };
         let previous = layer.shot.take();
         let Some(drawn) = layer.raster.dirty() else {
+            // Nothing drawn: the frame has no layer (a change of its own).
+            self.layer_change = LayerChange::Whole;
             return Ok(());
         };
         // A drawing made on the last one's pixels ([`Raster::changed`]) is
@@ -133,10 +330,25 @@ impl<'a> CanvasSurface<'a> {
         }
         // A drawing on the coarse grid is scaled up to device pixels.
         let f = layer.raster.factor() as f64;
+        let (sx, sy) = layer.scale;
+        self.layer_change = match changed {
+            // Its box in CSS pixels.
+            Some(c) => LayerChange::Within(Rect::new(
+                c.0 as f64 * f / sx,
+                c.1 as f64 * f / sy,
+                c.2 as f64 * f / sx,
+                c.3 as f64 * f / sy,
+            )),
+            None => LayerChange::Whole,
+        };
         let (x, y, w, h) = (f64::from(x), f64::from(y), f64::from(w), f64::from(h));
         let rect = (x * f, y * f, w * f, h * f);
-        let composited = Self::draw_scratch(self.ctx, layer.scratch, (w, h), rect, true);
-        composited?;
+        self.ops.push(Op::Layer {
+            source: (w, h),
+            dest: rect,
+            smooth: false,
+            transform: *transform,
+        });
         *layer.shot = Some(Shot {
             drawn,
             key: layer.key,
@@ -175,25 +387,25 @@ impl<'a> CanvasSurface<'a> {
 
 impl Pen for CanvasSurface<'_> {
     fn begin_path(&mut self, stroke: &Stroke) {
-        self.ctx.set_stroke_style_str(stroke.color);
-        self.ctx.set_line_width(stroke.width);
-        let dash: Array = stroke.dash.iter().map(|d| JsValue::from_f64(*d)).collect();
-        // Only fails for negative or non-finite lengths, which the styles never use.
-        let _ = self.ctx.set_line_dash(&dash);
-        self.ctx.begin_path();
+        self.ops.push(Op::Path {
+            stroke: *stroke,
+            points: Vec::new(),
+        });
     }
 
     fn move_to(&mut self, x: f64, y: f64) {
-        self.ctx.move_to(x, y);
+        if let Some(Op::Path { points, .. }) = self.ops.last_mut() {
+            points.push((x, y, true));
+        }
     }
 
     fn line_to(&mut self, x: f64, y: f64) {
-        self.ctx.line_to(x, y);
+        if let Some(Op::Path { points, .. }) = self.ops.last_mut() {
+            points.push((x, y, false));
+        }
     }
 
-    fn stroke(&mut self) {
-        self.ctx.stroke();
-    }
+    fn stroke(&mut self) {}
 }
 
 impl Surface for CanvasSurface<'_> {
@@ -208,9 +420,12 @@ impl Surface for CanvasSurface<'_> {
 
     fn composite(&mut self, transform: &Transform) {
         // Only fails when the browser runs out of memory for the image; the
-        // paths are then missing from this frame, and the next one tries
-        // again.
-        let _ = self.put_layer(transform);
+        // paths are then missing from this frame, and the next one is drawn
+        // whole.
+        if self.put_layer(transform).is_err() {
+            self.failed = true;
+            self.layer_change = LayerChange::Whole;
+        }
     }
 
     fn reuse_layer(&mut self, transform: &Transform, exact: bool) -> bool {
@@ -241,84 +456,66 @@ impl Surface for CanvasSurface<'_> {
             && [dest.0, dest.1, dest.2, dest.3]
                 .iter()
                 .all(|v| v.is_finite() && v.abs() < 1e9);
+        if !sane {
+            return false;
+        }
         let same = shot.transform == *transform;
-        self.reused =
-            sane && Self::draw_scratch(self.ctx, layer.scratch, shot.source, dest, same).is_ok();
-        self.moved = self.reused && shot.transform != *transform;
-        self.reused
+        self.ops.push(Op::Layer {
+            source: shot.source,
+            dest,
+            smooth: !same,
+            transform: *transform,
+        });
+        // The same pixels at the same place, or moved: anywhere.
+        self.layer_change = if same {
+            LayerChange::Within(Rect::new(0.0, 0.0, 0.0, 0.0))
+        } else {
+            LayerChange::Whole
+        };
+        self.reused = true;
+        self.moved = !same;
+        true
     }
 
     fn clear(&mut self, width: f64, height: f64, color: &str) {
-        self.ctx.set_fill_style_str(color);
-        self.ctx.fill_rect(0.0, 0.0, width, height);
+        self.ops.push(Op::Clear {
+            width,
+            height,
+            color: color.to_owned(),
+        });
     }
 
     fn fill_rect(&mut self, rect: Rect, fill: &str, border: Option<&str>) {
-        self.ctx.set_fill_style_str(fill);
-        self.ctx.fill_rect(rect.x, rect.y, rect.w, rect.h);
-        if let Some(border) = border {
-            self.ctx.set_stroke_style_str(border);
-            self.ctx.set_line_width(1.0);
-            let _ = self.ctx.set_line_dash(&Array::new());
-            self.ctx
-                .stroke_rect(rect.x + 0.5, rect.y + 0.5, rect.w - 1.0, rect.h - 1.0);
-        }
+        self.ops.push(Op::Rect {
+            rect,
+            fill: fill.to_owned(),
+            border: border.map(str::to_owned),
+        });
     }
 
     fn fill_text(&mut self, text: &str, x: f64, y: f64, font: &Font) {
-        let css = format!(
-            "{}{}px {}",
-            if font.bold { "bold " } else { "" },
-            font.size,
-            FONT_FAMILY
-        );
-        if css != self.font {
-            self.ctx.set_font(&css);
-            self.font = css;
-        }
-        self.ctx.set_text_align(match font.align {
-            Align::Start => "start",
-            Align::Middle => "center",
-            Align::End => "end",
+        self.ops.push(Op::Text {
+            text: text.to_owned(),
+            x,
+            y,
+            font: *font,
         });
-        self.ctx.set_fill_style_str(font.color);
-        // fillText only throws for non-finite coordinates; a label is skipped then.
-        let _ = self.ctx.fill_text(text, x, y);
     }
 
     fn fill_polygon(&mut self, points: &[(f64, f64)], fill: &str) {
-        let Some(((x0, y0), rest)) = points.split_first() else {
-            return;
-        };
-        self.ctx.begin_path();
-        self.ctx.move_to(*x0, *y0);
-        for (x, y) in rest {
-            self.ctx.line_to(*x, *y);
-        }
-        self.ctx.close_path();
-        self.ctx.set_fill_style_str(fill);
-        self.ctx.fill();
+        self.ops.push(Op::Polygon {
+            points: points.to_vec(),
+            fill: fill.to_owned(),
+        });
     }
 
     fn circle(&mut self, x: f64, y: f64, r: f64, fill: Option<&str>, stroke: Option<&Stroke>) {
-        self.ctx.begin_path();
-        // arc only throws for a negative radius.
-        if self
-            .ctx
-            .arc(x, y, r.max(0.0), 0.0, std::f64::consts::TAU)
-            .is_err()
-        {
-            return;
-        }
-        if let Some(fill) = fill {
-            self.ctx.set_fill_style_str(fill);
-            self.ctx.fill();
-        }
-        if let Some(stroke) = stroke {
-            self.ctx.set_stroke_style_str(stroke.color);
-            self.ctx.set_line_width(stroke.width);
-            let _ = self.ctx.set_line_dash(&Array::new());
-            self.ctx.stroke();
-        }
+        self.ops.push(Op::Circle {
+            x,
+            y,
+            r,
+            fill: fill.map(str::to_owned),
+            stroke: stroke.copied(),
+        });
     }
 }

@@ -14,6 +14,7 @@
 mod annotate;
 #[cfg(target_arch = "wasm32")]
 pub mod canvas;
+pub mod display;
 mod paths;
 pub mod raster;
 pub mod scene;

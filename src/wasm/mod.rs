@@ -19,6 +19,7 @@ use web_sys::{OffscreenCanvas, OffscreenCanvasRenderingContext2d};
 use crate::diag::Diagnostic;
 use crate::document::{Document, ViewPlane, ViewState};
 use crate::render::canvas::Shot;
+use crate::render::display::Op;
 use crate::render::scene::{self, Scene};
 use crate::render::{Frame, Raster};
 use crate::report::{BlockReport, End, Run};
@@ -74,6 +75,9 @@ pub struct Session {
     scratch: Option<OffscreenCanvas>,
     raster_bytes: Vec<u8>,
     shot: Option<Shot>,
+    /// The drawing calls of the frame the canvas shows (None: not known),
+    /// so that the next frame is painted only where it differs.
+    shown: Option<Vec<Op>>,
     /// Runs so far.
     runs: u64,
     /// Counts the runs whose toolpath differed from the one before: a kept
@@ -117,6 +121,7 @@ impl Default for Session {
             scratch: None,
             raster_bytes: Vec::new(),
             shot: None,
+            shown: None,
             runs: 0,
             drawing: 0,
             setup_refused: false,

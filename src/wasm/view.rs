@@ -34,6 +34,7 @@ impl Session {
             .dyn_into::<OffscreenCanvasRenderingContext2d>()?;
         self.canvas = Some((canvas, ctx));
         self.last_whole = None;
+        self.shown = None;
         Ok(())
     }
 
@@ -80,6 +81,7 @@ impl Session {
         if canvas.width() != device(w) || canvas.height() != device(h) {
             canvas.set_width(device(w));
             canvas.set_height(device(h));
+            self.shown = None;
         }
         let sx = f64::from(device(w)) / f64::from(w);
         let sy = f64::from(device(h)) / f64::from(h);
@@ -103,7 +105,7 @@ impl Session {
             shot: &mut self.shot,
             key,
         });
-        let mut surface = CanvasSurface::new(ctx, layer);
+        let mut surface = CanvasSurface::new(ctx, layer, &mut self.shown);
         let draw = if moving {
             render::draw_scene_moving
         } else {
@@ -117,6 +119,7 @@ impl Session {
             f64::from(h),
         );
         let moved = moving && surface.reused();
+        surface.present((f64::from(w), f64::from(h)), (sx, sy))?;
         if moved {
             self.moving_frames += 1;
         }

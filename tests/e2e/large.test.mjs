@@ -12,7 +12,7 @@ import { mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { describe, test } from 'node:test';
-import { savedWork, shootCanvas, stateText, useBrowser, viewOf, waitForRun, waitForView } from './harness.mjs';
+import { countDifferences, savedWork, shootCanvas, stateText, useBrowser, viewOf, waitForRun, waitForView } from './harness.mjs';
 
 const { withPage } = useBrowser();
 const tmp = mkdtempSync(join(tmpdir(), 'offsetlab-large-'));
@@ -96,6 +96,44 @@ describe('large programs', () => {
       await page.locator('#step-previous').click();
       await waitForView(page, (v) => v.step === 599_998);
       assert.match(await stateText(page, 'block'), /^line 599999: G0[12] X/);
+    });
+  });
+
+  test('an edit of a large path that keeps its bounds is painted where it changed, with the pixels of a whole frame', { timeout: 60_000 }, async () => {
+    await withPage(async (page) => {
+      // 5,000 blocks: drawn on the pixel layer. A 5 typed after the point
+      // of line 10's X moves that move by half a millimetre, inside the
+      // bounds; the frame after it is painted only around the change
+      // (src/render/display.rs) — and must look as a whole frame does.
+      const file = join(tmp, 'edit.nc');
+      writeFileSync(file, zigzag(5000));
+      await page.locator('#open-file').setInputFiles(file);
+      await page.waitForFunction(() => document.body.dataset.opened === 'edit.nc');
+      await waitForRun(page);
+      const drawn = () => page.waitForFunction(() => document.body.dataset.drawnGen === document.body.dataset.rendered
+        && document.body.dataset.drawnGen === document.body.dataset.requested, null, { timeout: 20_000 });
+      await drawn();
+      const line = page.locator('.cm-line', { hasText: /^G01 X4\.000 Y0\.000$/ });
+      await line.click();
+      await page.keyboard.press('Home');
+      for (let i = 0; i < 'G01 X4.'.length; i += 1) await page.keyboard.press('ArrowRight');
+      const before = await shootCanvas(page, 'large-before-edit', (c) => c.programmedFeed + c.actualFeed > 10_000);
+      await page.keyboard.type('5');
+      await waitForRun(page);
+      assert.ok((await page.evaluate(() => window.offsetlab.program())).includes('\nG01 X4.5000 Y0.000\n'));
+      await drawn();
+      // The frame reaches the screen a moment after the worker drew it.
+      const edited = await shootCanvas(page, 'large-edited', (c, png) => countDifferences(before.png, png) > 0);
+      assert.ok(countDifferences(before.png, edited.png) > 0, 'the edit changed the drawing');
+      // Another plane and back: a whole frame of the same drawing.
+      await page.locator('#plane').selectOption('XZ');
+      await waitForView(page, (v) => v.plane === 'XZ');
+      const xz = await shootCanvas(page, 'large-edited-xz', (c, png) => countDifferences(edited.png, png) > 10_000);
+      assert.ok(countDifferences(edited.png, xz.png) > 10_000, 'the XZ plane drawn');
+      await page.locator('#plane').selectOption('XY');
+      await waitForView(page, (v) => v.plane === 'XY');
+      const whole = await shootCanvas(page, 'large-edited-whole', (c, png) => countDifferences(edited.png, png) === 0);
+      assert.equal(countDifferences(edited.png, whole.png), 0, 'the frame painted around the edit is the whole frame');
     });
   });
 
