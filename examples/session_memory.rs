@@ -4,6 +4,24 @@
 //! the bytes per block. Usage: `session_memory PROGRAM SETUP.json`.
 
 use std::time::Instant;
+
+/// The session's observer: the toolpath built as the moves are made, room
+/// for the rest foreseen after the first MiB (`src/wasm/mod.rs`).
+struct Session<'a> {
+    path: offsetlab::toolpath::PathBuilder<'a>,
+    len: usize,
+}
+
+impl offsetlab::Observer for Session<'_> {
+    fn on_move(&mut self, m: &offsetlab::report::Move) {
+        self.path.on_move(m);
+    }
+
+    fn on_progress(&mut self, read: usize) {
+        self.path.foresee(read, self.len);
+    }
+}
+
 fn main() {
     let a: Vec<String> = std::env::args().collect();
     if a.len() != 3 {
@@ -20,10 +38,12 @@ fn main() {
         checkpoint_every: 512,
         ..Default::default()
     };
-    let mut tp = offsetlab::toolpath::Toolpath::new(setup.machine, setup.units);
-    let run = offsetlab::run_observed(&text, &setup, opts, &mut |m: &offsetlab::report::Move| {
-        tp.push(m)
-    });
+    let mut session = Session {
+        path: offsetlab::toolpath::PathBuilder::new(setup.machine, setup.units, None),
+        len: text.len(),
+    };
+    let run = offsetlab::run_observed(&text, &setup, opts, &mut session);
+    let mut tp = session.path.finish(&run, &offsetlab::Reuse::default());
     tp.shrink_to_fit();
     let t1 = t.elapsed();
     let ck = run.checkpoints.len() * std::mem::size_of::<offsetlab::Checkpoint>()

@@ -54,13 +54,15 @@ impl<'a> PathBuilder<'a> {
                 tail.lines,
             );
         }
-        if self.earlier.is_some() && (reuse.prefix_moves > 0 || reuse.tail.is_some()) {
-            self.path.set_bounds(run.bounds);
-        }
         if self.path.is_empty() {
             // No move to take the units from: the run's (G20/G21 may still
             // have been read).
             self.path = Toolpath::new(run.machine, run.units);
+        } else {
+            // The moves were added without growing the bounds: the run grew
+            // its own with the same points (and those of the moves taken
+            // from the earlier run).
+            self.path.set_bounds(run.bounds);
         }
         self.path
     }
@@ -68,7 +70,7 @@ impl<'a> PathBuilder<'a> {
 
 impl crate::run::Observer for PathBuilder<'_> {
     fn on_move(&mut self, m: &Move) {
-        self.path.push(m);
+        self.path.push_move(m, false);
     }
 
     fn on_resume(&mut self, prefix_moves: usize) {
@@ -86,6 +88,45 @@ impl crate::run::Observer for PathBuilder<'_> {
 mod tests {
     use super::*;
     use crate::{Setup, run};
+
+    #[test]
+    fn a_path_built_as_it_runs_takes_the_run_s_bounds_which_are_those_of_its_moves() {
+        // The builder adds moves without growing the bounds and takes the
+        // run's (in mm) at the end, in the path's units: the box that
+        // growing them move by move gives — arcs' extremes, inches, the
+        // lathe's diameters, offsets moving the actual path.
+        let lathe = Setup {
+            machine: MachineKind::Lathe,
+            ..Setup::default()
+        };
+        let mut offsets = Setup::default();
+        offsets.set_register("01=6.0").unwrap();
+        let cases = [
+            (
+                "G20 G90 G00 X1. Y1.\nG01 X2.5 F10.\nG02 X2.5 Y1. I-.75\nG03 X1. Y2. R1.2\n",
+                Setup::default(),
+            ),
+            (
+                "G90 G00 X0 Y0\nG91 G46 X30. Y20. D01\nG01 G47 X80. F200.\nG02 X10. Y10. R10.\n",
+                offsets,
+            ),
+            (
+                "G18 G00 X40. Z5.\nG01 Z-10. F0.2\nG02 X60. Z-20. R10.\n",
+                lathe,
+            ),
+        ];
+        for (program, setup) in cases {
+            let r = run(program, &setup);
+            assert!(!r.has_errors(), "{:?}", r.diagnostics);
+            let mut b = PathBuilder::new(r.machine, r.units, None);
+            for m in &r.moves {
+                crate::run::Observer::on_move(&mut b, m);
+            }
+            let built = b.finish(&r, &crate::Reuse::default());
+            assert!(built.bounds.is_some(), "{program}");
+            assert_eq!(built, Toolpath::from_run(&r), "{program}");
+        }
+    }
 
     #[test]
     fn room_foreseen_after_part_of_a_run_holds_the_rest_and_changes_nothing() {

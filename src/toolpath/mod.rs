@@ -251,6 +251,17 @@ impl Toolpath {
     /// Adds a move. The first move sets the units (a run is drawn in the
     /// units of its first move).
     pub fn push(&mut self, m: &Move) {
+        self.push_move(m, true);
+    }
+
+    /// Adds a move, and grows the bounds with it when `bounds` is true: a
+    /// run's toolpath built as it runs takes the run's own bounds at the
+    /// end instead ([`PathBuilder::finish`]), which the run grows with the
+    /// same points — growing both was a tenth of the page's run in wasm
+    /// (each arc's extremes worked out twice; V8 profile of a 1M-block run,
+    /// `docs/performance.md`).
+    #[inline(always)]
+    fn push_move(&mut self, m: &Move, bounds: bool) {
         if self.kinds.is_empty() {
             self.units = m.units;
             self.k = 1.0 / m.units.mm();
@@ -263,20 +274,25 @@ impl Toolpath {
         // one ended adds its end only: the ends of a million moves were
         // counted twice, and the bounds were 8 % of a run) and the arcs'
         // extremes.
+        let grow = bounds;
         let mut bounds = self.bounds;
         if !self.ends_at(from, pfrom) {
             self.push_vertex(from, pfrom);
-            include(&mut bounds, from);
-            include(&mut bounds, pfrom);
+            if grow {
+                include(&mut bounds, from);
+                include(&mut bounds, pfrom);
+            }
         }
         self.starts.push(self.vertex_count() as u32 - 1);
         self.push_vertex(to, pto);
-        include(&mut bounds, to);
-        include(&mut bounds, pto);
-        if let Some(a) = &m.arc {
-            a.each_extreme(m, |p| include(&mut bounds, scaled(p)));
+        if grow {
+            include(&mut bounds, to);
+            include(&mut bounds, pto);
+            if let Some(a) = &m.arc {
+                a.each_extreme(m, |p| include(&mut bounds, scaled(p)));
+            }
+            self.bounds = bounds;
         }
-        self.bounds = bounds;
         self.kinds.push(m.kind.code(m.at_feed));
         self.blocks.push(m.block);
         self.lines.push(m.line);
