@@ -948,6 +948,22 @@ fn an_edit_is_painted_where_it_changed_with_the_pixels_of_a_whole_frame() {
             assert_ne!(before, whole, "{case}");
         }
     }
+    // A canvas attached again (the worker does so when its context is
+    // restored, blank) is painted whole, the same frame included.
+    let (mut s, canvas) = whole_frame(&program, None, 1.0);
+    let ctx: OffscreenCanvasRenderingContext2d = canvas
+        .get_context("2d")
+        .expect("ctx")
+        .expect("2d")
+        .dyn_into()
+        .expect("2d context");
+    ctx.clear_rect(0.0, 0.0, 400.0, 300.0);
+    s.attach_canvas(canvas.clone()).expect("attach");
+    s.render(400, 300, 1.0).expect("render");
+    assert_eq!(
+        canvas_pixels(&canvas),
+        canvas_pixels(&whole_frame(&program, None, 1.0).1)
+    );
 }
 
 /// Writes `bytes` at the start of the session's program buffer of `room`

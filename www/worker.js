@@ -207,6 +207,13 @@ function handle(message) {
     case 'init':
       canvas = message.canvas;
       session.attach_canvas(message.canvas);
+      // A lost and restored 2D context (the browser freed its memory) is a
+      // blank canvas: attached again, the session paints the next frame
+      // whole rather than only where it changed (src/render/display.rs).
+      canvas.addEventListener('contextrestored', () => {
+        session.attach_canvas(canvas);
+        invalidate();
+      });
       session.set_theme(message.theme || 'light');
       size = { width: message.width, height: message.height, dpr: message.dpr };
       // A restarted worker continues the page's count of step requests.
