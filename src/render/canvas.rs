@@ -10,6 +10,10 @@ use super::display::{self, Damage, LayerChange, Op};
 use super::style::{Align, FONT_FAMILY, Font, Stroke};
 use super::{Pen, Raster, Rect, Surface, Transform};
 
+/// Frames whose calls hold more points than this are not kept for the
+/// next frame (which is then painted whole).
+const KEPT_POINTS: usize = 1 << 16;
+
 /// A 2D context seen as a [`Surface`] in CSS pixels; the caller sets the
 /// device-pixel transform.
 ///
@@ -141,7 +145,10 @@ impl<'a> CanvasSurface<'a> {
                 drawn?;
             }
         }
-        if !failed {
+        // The calls of a vector drawing (a small program) may hold many
+        // points (arcs zoomed into); compared with the next frame's they
+        // would save little — its frames are quick — and hold memory.
+        if !failed && display::points(&ops) <= KEPT_POINTS {
             *shown = Some(ops);
         }
         Ok(())

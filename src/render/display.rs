@@ -214,6 +214,17 @@ fn straight(op: &Op) -> bool {
     }
 }
 
+/// How many points the calls hold (paths and polygons).
+pub fn points(ops: &[Op]) -> usize {
+    ops.iter()
+        .map(|op| match op {
+            Op::Path { points, .. } => points.len(),
+            Op::Polygon { points, .. } => points.len(),
+            _ => 0,
+        })
+        .sum()
+}
+
 fn union(a: &Rect, b: &Rect) -> Rect {
     let (x0, y0) = (a.x.min(b.x), a.y.min(b.y));
     let (x1, y1) = (a.right().max(b.right()), a.bottom().max(b.bottom()));
@@ -438,6 +449,21 @@ mod tests {
         // Seven characters of at most an em each, ending at x = 200.
         assert!(b.x <= 130.0 && b.right() >= 200.0, "{b:?}");
         assert!(b.y <= 88.0 && b.bottom() >= 105.0, "{b:?}");
+    }
+
+    #[test]
+    fn the_points_of_a_frame_are_its_paths_and_polygons() {
+        let mut f = frame(400.0);
+        assert_eq!(points(&f), 0);
+        f.push(Op::Path {
+            stroke: SOLID,
+            points: vec![(0.0, 0.0, true), (1.0, 1.0, false), (2.0, 0.0, false)],
+        });
+        f.push(Op::Polygon {
+            points: vec![(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)],
+            fill: "#000000".into(),
+        });
+        assert_eq!(points(&f), 6);
     }
 
     #[test]
