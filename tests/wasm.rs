@@ -326,8 +326,8 @@ fn render_draws_on_an_offscreen_canvas_at_device_pixels() {
     assert!(svg.contains("<g class=\"actual\">") && svg.contains("<g class=\"programmed\">"));
 }
 
-/// The painted (not background) pixels of an OffscreenCanvas.
-fn painted_pixels(canvas: &OffscreenCanvas) -> usize {
+/// The pixels of an OffscreenCanvas, RGBA.
+fn canvas_pixels(canvas: &OffscreenCanvas) -> Vec<u8> {
     let ctx = canvas.get_context("2d").expect("ctx").expect("2d");
     let get_image_data: Function = get(&ctx, "getImageData").dyn_into().expect("function");
     let (w, h) = (canvas.width(), canvas.height());
@@ -336,6 +336,21 @@ fn painted_pixels(canvas: &OffscreenCanvas) -> usize {
     get(&image, "data")
         .unchecked_into::<js_sys::Uint8ClampedArray>()
         .to_vec()
+}
+
+/// The 2D context of an OffscreenCanvas (the one the session draws with).
+fn context_2d(canvas: &OffscreenCanvas) -> OffscreenCanvasRenderingContext2d {
+    canvas
+        .get_context("2d")
+        .expect("ctx")
+        .expect("2d")
+        .dyn_into()
+        .expect("2d context")
+}
+
+/// The painted (not background) pixels of an OffscreenCanvas.
+fn painted_pixels(canvas: &OffscreenCanvas) -> usize {
+    canvas_pixels(canvas)
         .chunks_exact(4)
         .filter(|p| p[0] < 200 || p[1] < 200 || p[2] < 200)
         .count()
@@ -841,12 +856,7 @@ fn a_run_that_changes_nothing_drawn_leaves_the_canvas_as_it_is() {
     s.render(400, 300, 1.0).expect("render");
     let drawn = painted_pixels(&canvas);
     // Mark the canvas: a frame drawn again would paint over the mark.
-    let ctx: OffscreenCanvasRenderingContext2d = canvas
-        .get_context("2d")
-        .expect("ctx")
-        .expect("2d")
-        .dyn_into()
-        .expect("2d context");
+    let ctx = context_2d(&canvas);
     ctx.set_fill_style_str("#000");
     ctx.fill_rect(0.0, 0.0, 400.0, 300.0);
     let black = painted_pixels(&canvas);
@@ -865,18 +875,6 @@ fn a_run_that_changes_nothing_drawn_leaves_the_canvas_as_it_is() {
     s.render(400, 300, 1.0).expect("render");
     let again = painted_pixels(&canvas);
     assert!(again < black && again > drawn / 2, "{again} of {black}");
-}
-
-/// The pixels of an OffscreenCanvas, RGBA.
-fn canvas_pixels(canvas: &OffscreenCanvas) -> Vec<u8> {
-    let ctx = canvas.get_context("2d").expect("ctx").expect("2d");
-    let get_image_data: Function = get(&ctx, "getImageData").dyn_into().expect("function");
-    let (w, h) = (canvas.width(), canvas.height());
-    let args = Array::of4(&0.into(), &0.into(), &w.into(), &h.into());
-    let image = get_image_data.apply(&ctx, &args).expect("image data");
-    get(&image, "data")
-        .unchecked_into::<js_sys::Uint8ClampedArray>()
-        .to_vec()
 }
 
 /// A frame of `program` with `step` at 400 × 300 CSS pixels and `dpr`,
@@ -915,12 +913,7 @@ fn an_edit_is_painted_where_it_changed_with_the_pixels_of_a_whole_frame() {
             let (mut s, canvas) = whole_frame(&program, first, dpr);
             // A mark in the top left corner, far from the edit: a frame
             // painted whole paints over it.
-            let ctx: OffscreenCanvasRenderingContext2d = canvas
-                .get_context("2d")
-                .expect("ctx")
-                .expect("2d")
-                .dyn_into()
-                .expect("2d context");
+            let ctx = context_2d(&canvas);
             ctx.set_transform(1.0, 0.0, 0.0, 1.0, 0.0, 0.0)
                 .expect("transform");
             ctx.set_fill_style_str("#ff00ff");
@@ -951,12 +944,7 @@ fn an_edit_is_painted_where_it_changed_with_the_pixels_of_a_whole_frame() {
     // A canvas attached again (the worker does so when its context is
     // restored, blank) is painted whole, the same frame included.
     let (mut s, canvas) = whole_frame(&program, None, 1.0);
-    let ctx: OffscreenCanvasRenderingContext2d = canvas
-        .get_context("2d")
-        .expect("ctx")
-        .expect("2d")
-        .dyn_into()
-        .expect("2d context");
+    let ctx = context_2d(&canvas);
     ctx.clear_rect(0.0, 0.0, 400.0, 300.0);
     s.attach_canvas(canvas.clone()).expect("attach");
     s.render(400, 300, 1.0).expect("render");
