@@ -254,14 +254,13 @@ impl Toolpath {
         self.push_move(m, true);
     }
 
-    /// Adds a move, and grows the bounds with it when `bounds` is true: a
+    /// Adds a move, and grows the bounds with it when `grow_bounds`: a
     /// run's toolpath built as it runs takes the run's own bounds at the
     /// end instead ([`PathBuilder::finish`]), which the run grows with the
-    /// same points — growing both was a tenth of the page's run in wasm
-    /// (each arc's extremes worked out twice; V8 profile of a 1M-block run,
-    /// `docs/performance.md`).
+    /// same points — growing both, each arc's extremes worked out twice,
+    /// was 6.5 % of the session's run (instructions, `docs/performance.md`).
     #[inline(always)]
-    fn push_move(&mut self, m: &Move, bounds: bool) {
+    fn push_move(&mut self, m: &Move, grow_bounds: bool) {
         if self.kinds.is_empty() {
             self.units = m.units;
             self.k = 1.0 / m.units.mm();
@@ -274,18 +273,17 @@ impl Toolpath {
         // one ended adds its end only: the ends of a million moves were
         // counted twice, and the bounds were 8 % of a run) and the arcs'
         // extremes.
-        let grow = bounds;
         let mut bounds = self.bounds;
         if !self.ends_at(from, pfrom) {
             self.push_vertex(from, pfrom);
-            if grow {
+            if grow_bounds {
                 include(&mut bounds, from);
                 include(&mut bounds, pfrom);
             }
         }
         self.starts.push(self.vertex_count() as u32 - 1);
         self.push_vertex(to, pto);
-        if grow {
+        if grow_bounds {
             include(&mut bounds, to);
             include(&mut bounds, pto);
             if let Some(a) = &m.arc {
