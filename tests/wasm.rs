@@ -954,6 +954,37 @@ fn an_edit_is_painted_where_it_changed_with_the_pixels_of_a_whole_frame() {
     );
 }
 
+#[wasm_bindgen_test]
+fn typing_back_and_forth_across_views_paints_the_pixels_of_a_whole_frame() {
+    // Issue 6, target 4b: a digit that moves the path's bounds refits the
+    // view (every pixel moves); the next key brings it back, and that frame
+    // is made on the pixels of the one before the last (raster::keep::Older)
+    // and put on the canvas whole. Each frame is pixel for pixel a new
+    // session's whole frame.
+    let program = numbered_program(3000);
+    let wide = program.replacen("N1500 G01 X17.", "N1500 G01 X1700.", 1);
+    let edited = program.replacen("N1500 G01 X17.", "N1500 G01 X17.5", 1);
+    let wider = program.replacen("N1500 G01 X17.", "N1500 G01 X1750.", 1);
+    for dpr in [1.0, 2.0] {
+        let (mut s, canvas) = whole_frame(&program, None, dpr);
+        for (k, then) in [&wide, &program, &wide, &edited, &wider, &edited]
+            .into_iter()
+            .enumerate()
+        {
+            s.run(then.clone(), JsValue::NULL).expect("run");
+            s.render(400, 300, dpr).expect("render");
+            let whole = canvas_pixels(&whole_frame(then, None, dpr).1);
+            let painted = canvas_pixels(&canvas);
+            let differ = painted
+                .chunks_exact(4)
+                .zip(whole.chunks_exact(4))
+                .filter(|(a, b)| a != b)
+                .count();
+            assert_eq!(differ, 0, "{differ} pixels differ, frame {k} at {dpr}");
+        }
+    }
+}
+
 /// Writes `bytes` at the start of the session's program buffer of `room`
 /// bytes, as the page's worker does with `TextEncoder.encodeInto`; false
 /// when the session had no room.

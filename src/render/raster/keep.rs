@@ -20,6 +20,11 @@
 use super::sweep::tile_span;
 use super::{Ink, Pixel, Raster, Sub, TILE_BITS, TILE_MASK};
 
+/// Surfaces of more pixels than this do not keep the drawing before the
+/// last one ([`Older`]): its pixels take 8 bytes each (32 MiB here; the
+/// page's 10k-block benchmark frame, on the coarse grid, takes 2.2 MB).
+const OLDER_MOST_PIXELS: usize = 1 << 22;
+
 /// Past this share of changed points (of both recordings together) or of
 /// pixels to draw again, the drawing is made from nothing: the comparison
 /// would not pay.
@@ -83,6 +88,29 @@ impl Last {
     }
 }
 
+/// The drawing before the last one: its pixels, the box drawn on them and
+/// its recording, set aside when a drawing is made from nothing instead of
+/// cleared. Typing goes back and forth: a digit that makes a block wrong
+/// stops the run there, the path's bounds change, and with them the fitted
+/// view, so that every point of the next frame moves; the next digit (or
+/// Backspace, or an undo) makes the block right again and brings the
+/// view back — and that frame is the one before, or a small edit of it,
+/// made on its pixels like any edit of the last one (issue 6, target 4b:
+/// a whole 10k-block frame is 50–90 ms in the page).
+#[derive(Default)]
+pub(super) struct Older {
+    px: Vec<Pixel>,
+    dirty: Option<(usize, usize, usize, usize)>,
+    dirty_tiles_w: usize,
+    last: Last,
+}
+
+impl Older {
+    pub(super) fn forget(&mut self) {
+        self.last.forget();
+    }
+}
+
 /// The number of points of the sub-paths `r`.
 fn span(subs: &[Sub], points: usize, r: &std::ops::Range<usize>) -> usize {
     if r.is_empty() {
@@ -98,6 +126,53 @@ fn points_of<'a>(subs: &[Sub], points: &'a [[f32; 2]], k: usize) -> &'a [[f32; 2
 }
 
 impl Raster {
+    /// Trades the last drawing (pixels, their drawn box, recording) for the
+    /// one before it.
+    fn swap_older(&mut self) {
+        std::mem::swap(&mut self.px, &mut self.older.px);
+        std::mem::swap(&mut self.dirty, &mut self.older.dirty);
+        std::mem::swap(&mut self.dirty_tiles_w, &mut self.older.dirty_tiles_w);
+        std::mem::swap(&mut self.last, &mut self.older.last);
+    }
+
+    /// Prepares a drawing on the pixels of the drawing before the last one
+    /// ([`Older`]) when [`Raster::keep_last`] would keep them; the last
+    /// drawing becomes the one before. False, and nothing changed,
+    /// otherwise.
+    pub(super) fn keep_older(&mut self) -> bool {
+        let older = &self.older.last;
+        let same_surface = older.valid
+            && older.full == self.full
+            && older.coarse == self.coarse
+            && older.scale == self.scale;
+        if !same_surface {
+            return false;
+        }
+        self.swap_older();
+        if self.keep_last() {
+            return true;
+        }
+        self.swap_older();
+        false
+    }
+
+    /// Before a drawing made from nothing: the last one, when it can be
+    /// compared with the next ones, is set aside as the one before
+    /// ([`Older`]), and this one is made on the pixels of the one set aside
+    /// before (cleared as the last drawing's always are), or on new ones.
+    pub(super) fn set_last_aside(&mut self) {
+        if !self.last.valid || self.px.len() > OLDER_MOST_PIXELS {
+            return;
+        }
+        self.swap_older();
+        let len = self.older.px.len();
+        if self.px.len() != len {
+            self.px.clear();
+            self.px.resize(len, Pixel::default());
+            self.dirty = None;
+        }
+    }
+
     /// Prepares a drawing on the last one's pixels (see the module's
     /// comment); false, and nothing changed, when it cannot be or would not
     /// pay: another surface, grid, scale or set of styles, or most of it

@@ -107,8 +107,11 @@ pub struct Raster {
     /// reach open (kept for their memory).
     reach_blocks: Vec<u64>,
     reach_tiles: Vec<u64>,
-    /// The box of the pixels drawn (x0, y0, x1, y1; exclusive ends).
+    /// The box of the pixels drawn (x0, y0, x1, y1; exclusive ends), and
+    /// the width in tiles of the grid they were drawn on (the pixels may be
+    /// those of the drawing before the last: [`keep::Older`]).
     dirty: Option<(usize, usize, usize, usize)>,
+    dirty_tiles_w: usize,
     /// What was recorded since [`Raster::begin`].
     styles: Vec<Ink>,
     subs: Vec<Sub>,
@@ -137,8 +140,13 @@ pub struct Raster {
     /// one is compared with it, and only where they differ drawn again
     /// ([`keep`]).
     last: keep::Last,
-    /// Whether this drawing was made on the last one's pixels.
+    /// The drawing before the last one, set aside with its pixels when a
+    /// drawing was made from nothing ([`keep::Older`]).
+    older: keep::Older,
+    /// Whether this drawing was made on the last one's pixels — or, when
+    /// `on_older`, on those of the drawing before it.
     kept: bool,
+    on_older: bool,
     /// The box (x0, y0, x1, y1; exclusive ends) outside which every pixel
     /// is finished: the surface, or where a drawing made on the last one's
     /// pixels may change them ([`Raster::changed`]). Segments are drawn
@@ -265,6 +273,7 @@ impl Raster {
             self.base = 1;
             self.dirty = None;
             self.last.forget();
+            self.older = keep::Older::default();
         }
         (self.width, self.height) = self.full;
         self.coarse = None;
@@ -292,9 +301,10 @@ impl Raster {
     /// of memory, and the pixels outside the box are clear already.
     fn clear_last(&mut self) {
         if let Some((x0, y0, x1, y1)) = self.dirty.take() {
+            let tiles_w = self.dirty_tiles_w;
             for ty in y0 >> TILE_BITS..=(y1 - 1) >> TILE_BITS {
-                let start = self.index(x0 & !TILE_MASK, ty << TILE_BITS);
-                let end = self.index((x1 - 1) | TILE_MASK, ty << TILE_BITS | TILE_MASK);
+                let start = index(tiles_w, x0 & !TILE_MASK, ty << TILE_BITS);
+                let end = index(tiles_w, (x1 - 1) | TILE_MASK, ty << TILE_BITS | TILE_MASK);
                 self.px[start..=end].fill(Pixel::default());
             }
         }
@@ -417,12 +427,16 @@ impl Raster {
             // The last drawing's pixels where this one is the same, or none.
             // (keep_last sets the open box of a drawing it keeps.)
             self.kept = self.keep_last();
+            self.on_older = !self.kept && self.keep_older();
+            self.kept |= self.on_older;
             if !self.kept {
+                self.set_last_aside();
                 self.clear_last();
                 self.reset_tiles();
                 self.open = (0, 0, self.width, self.height);
             }
             self.index_open();
+            self.dirty_tiles_w = self.tiles_w;
             self.finished_tiles = self.tiles.iter().filter(|&&t| t == FULL_TILE).count();
             self.filled.reset();
             let (x0, y0, x1, y1) = self.open;
@@ -527,10 +541,12 @@ impl Raster {
     /// Makes the next drawing from nothing, not on this one's pixels.
     pub fn forget(&mut self) {
         self.last.forget();
+        self.older.forget();
     }
 
-    /// Whether this drawing was made on the last one's pixels, drawing
-    /// again only the tiles where the two differ ([`keep`]).
+    /// Whether this drawing was made on the last one's pixels (or on those
+    /// of the drawing before it), drawing again only the tiles where the two
+    /// differ ([`keep`]).
     pub fn kept(&mut self) -> bool {
         self.finish();
         self.kept
@@ -538,10 +554,11 @@ impl Raster {
 
     /// When this drawing was made on the last one's pixels, the box (x, y,
     /// width, height, as [`Raster::dirty`]) outside which they are the same;
-    /// None when it was made from nothing.
+    /// None when it was made from nothing, or on the pixels of the drawing
+    /// before the last one (they differ from the last one's anywhere).
     pub fn changed(&mut self) -> Option<(usize, usize, usize, usize)> {
         self.finish();
-        if !self.kept {
+        if !self.kept || self.on_older {
             return None;
         }
         let (x0, y0, x1, y1) = self.open;
@@ -667,9 +684,14 @@ impl Raster {
     /// in that word.
     #[inline]
     fn index(&self, x: usize, y: usize) -> usize {
-        let tile = (y >> TILE_BITS) * self.tiles_w + (x >> TILE_BITS);
-        tile << (2 * TILE_BITS) | (y & TILE_MASK) << TILE_BITS | x & TILE_MASK
+        index(self.tiles_w, x, y)
     }
+}
+
+/// The index of pixel (x, y) in a grid `tiles_w` tiles wide.
+fn index(tiles_w: usize, x: usize, y: usize) -> usize {
+    let tile = (y >> TILE_BITS) * tiles_w + (x >> TILE_BITS);
+    tile << (2 * TILE_BITS) | (y & TILE_MASK) << TILE_BITS | x & TILE_MASK
 }
 
 /// The smaller of two numbers, neither of them NaN (points, centres and

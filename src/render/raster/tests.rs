@@ -305,6 +305,93 @@ fn a_drawing_mostly_changed_or_on_another_surface_is_made_from_nothing() {
     assert!(r.kept());
 }
 
+#[test]
+fn a_drawing_close_to_the_one_before_the_last_is_made_on_its_pixels() {
+    // Typing back and forth (keep::Older): a digit makes a block wrong, the
+    // path and the fitted view change (every point moves), the next key
+    // makes it right again — the frame before, or an edit of it.
+    let path: Vec<(f64, f64)> = (0..301)
+        .map(|i| {
+            let i = f64::from(i);
+            (20.0 + (i * 37.0) % 360.0, 20.0 + (i * 53.0) % 260.0)
+        })
+        .collect();
+    let refitted: Vec<(f64, f64)> = path[..150]
+        .iter()
+        .map(|&(x, y)| (x / 3.0, y / 3.0))
+        .collect();
+    let mut edited = path.clone();
+    edited[100] = (edited[100].0 + 6.5, edited[100].1 - 3.25);
+    let surface = (400, 300, 1.0);
+    let mut r = Raster::new();
+    for (points, kept, on_older) in [
+        (&path, false, false),
+        (&refitted, false, false),
+        (&path, true, true),
+        (&refitted, true, true),
+        (&edited, true, true),
+        (&edited, true, false),
+    ] {
+        draw_chains(
+            &mut r,
+            surface,
+            &[(&ACTUAL_FEED, points), (&PROGRAMMED_FEED, points)],
+        );
+        assert_eq!(r.kept(), kept);
+        // On the older pixels nothing is known of how they differ from the
+        // last drawing's (the canvas's copy): all of them are put.
+        assert_eq!(r.changed().is_none(), !kept || on_older);
+        let mut fresh = Raster::new();
+        draw_chains(
+            &mut fresh,
+            surface,
+            &[(&ACTUAL_FEED, points), (&PROGRAMMED_FEED, points)],
+        );
+        assert!(
+            pixels(&mut r) == pixels(&mut fresh),
+            "{} points",
+            points.len()
+        );
+        assert_eq!(r.dirty(), fresh.dirty());
+    }
+    // The drawing before the last on the coarse grid, the next ones on the
+    // full one: its pixels are cleared in its own grid when they are taken
+    // for a drawing made from nothing.
+    let dense: Vec<(f64, f64)> = (0..3001)
+        .map(|i| {
+            let i = f64::from(i);
+            (10.0 + (i * 37.0) % 380.0, 10.0 + (i * 53.0) % 280.0)
+        })
+        .collect();
+    let shifted: Vec<(f64, f64)> = path.iter().map(|&(x, y)| (x + 0.5, y)).collect();
+    for (points, coarse) in [
+        (&path, false),
+        (&dense, true),
+        (&path, false),
+        (&shifted, false),
+        (&dense, true),
+    ] {
+        draw_chains(&mut r, surface, &[(&ACTUAL_FEED, points)]);
+        assert_eq!(r.factor() == 2, coarse);
+        let mut fresh = Raster::new();
+        draw_chains(&mut fresh, surface, &[(&ACTUAL_FEED, points)]);
+        assert!(
+            pixels(&mut r) == pixels(&mut fresh),
+            "{} points",
+            points.len()
+        );
+    }
+    // Another surface size: nothing of either drawing is kept.
+    draw_chains(&mut r, (400, 301, 1.0), &[(&ACTUAL_FEED, &refitted)]);
+    assert!(!r.kept());
+    draw_chains(
+        &mut r,
+        surface,
+        &[(&ACTUAL_FEED, &edited), (&PROGRAMMED_FEED, &edited)],
+    );
+    assert!(!r.kept());
+}
+
 /// A drawing made with the box of finished tiles ([`super::filled`]) is,
 /// pixel for pixel, the one made without it; returns
 /// whether a box was found.
@@ -389,5 +476,47 @@ proptest::proptest! {
             }
         }
         assert_drawn_again_as_from_nothing((w, h, scale), &points, &after);
+    }
+}
+
+// (proptest is a native dev-dependency: `wasm-pack test` builds these too.)
+#[cfg(not(target_arch = "wasm32"))]
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig { cases: 64, ..Default::default() })]
+
+    #[test]
+    fn any_sequence_of_drawings_is_drawn_as_from_nothing(
+        w in 8usize..160,
+        h in 8usize..120,
+        scale in proptest::sample::select(vec![1.0, 2.0]),
+        points in proptest::collection::vec((-20.0..180.0f64, -20.0..140.0f64), 2..600),
+        steps in proptest::collection::vec((0u8..3, 0usize..600, 0.2..3.0f64), 1..7),
+    ) {
+        // Each drawing an edit of the last, the first one seen in another
+        // view (every point moved), or the one before the last again: the
+        // last drawing's pixels, the one before's, or none are kept.
+        let mut drawings = vec![points.clone()];
+        for (kind, at, f) in steps {
+            let last = drawings[drawings.len() - 1].clone();
+            let next = match kind {
+                0 => {
+                    let mut next = last;
+                    let i = at % next.len();
+                    next[i] = (next[i].0 + f * 7.0, next[i].1 - f * 5.0);
+                    next
+                }
+                1 => points.iter().map(|&(x, y)| (x * f, y * f)).collect(),
+                _ => drawings[drawings.len().saturating_sub(2)].clone(),
+            };
+            drawings.push(next);
+        }
+        let mut r = Raster::new();
+        for (k, points) in drawings.iter().enumerate() {
+            let paths = [(&PROGRAMMED_FEED, &points[..]), (&ACTUAL_FEED, &points[..])];
+            draw_chains(&mut r, (w, h, scale), &paths);
+            let mut fresh = Raster::new();
+            draw_chains(&mut fresh, (w, h, scale), &paths);
+            proptest::prop_assert!(pixels(&mut r) == pixels(&mut fresh), "drawing {}", k);
+        }
     }
 }
