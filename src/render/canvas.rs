@@ -44,16 +44,19 @@ pub struct CanvasSurface<'a> {
 pub struct Layer<'a> {
     /// The pixels.
     pub raster: &'a mut Raster,
-    /// A canvas as large as the drawn part of the raster (grown as needed).
-    pub scratch: &'a OffscreenCanvas,
+    /// A canvas per pixel buffer of the raster ([`Raster::buffer`]), as
+    /// large as its drawn part (grown as needed).
+    pub scratch: [&'a OffscreenCanvas; 2],
+    /// The box of its buffer's pixels each of them holds, if any.
+    pub held: &'a mut [Option<(usize, usize, usize, usize)>; 2],
     /// Straight RGBA handed to `ImageData` (kept to reuse its memory).
     pub bytes: &'a mut Vec<u8>,
     /// Device pixels of the canvas.
     pub size: (u32, u32),
     /// Device pixels per CSS pixel.
     pub scale: (f64, f64),
-    /// What the last layer put on the canvas was (`scratch` still holds
-    /// it), for [`Surface::reuse_layer`].
+    /// What the last layer put on the canvas was (its `scratch` still
+    /// holds it), for [`Surface::reuse_layer`].
     pub shot: &'a mut Option<Shot>,
     /// What this drawing shows besides the view's zoom and pan (the run,
     /// plane, current block, colours, size): a kept layer is reused only
@@ -65,8 +68,8 @@ pub struct Layer<'a> {
 /// pixels) and the transform it was drawn with.
 #[derive(Clone, Copy, Debug)]
 pub struct Shot {
-    /// The box of the raster it is (x, y, width, height).
-    drawn: (usize, usize, usize, usize),
+    /// Which scratch canvas holds it.
+    scratch: usize,
     key: u64,
     /// Its size on `scratch`.
     source: (f64, f64),
@@ -118,6 +121,7 @@ impl<'a> CanvasSurface<'a> {
         // Until this frame is wholly on the canvas, what it shows is not known.
         *shown = None;
         let scratch = layer.as_ref().map(|l| l.scratch);
+
         let mut draw_all = || {
             ops.iter()
                 .try_for_each(|op| Self::draw(ctx, &mut font, scratch, op))
@@ -158,7 +162,7 @@ impl<'a> CanvasSurface<'a> {
     fn draw(
         ctx: &OffscreenCanvasRenderingContext2d,
         font: &mut String,
-        scratch: Option<&OffscreenCanvas>,
+        scratch: Option<[&OffscreenCanvas; 2]>,
         op: &Op,
     ) -> Result<(), JsValue> {
         match op {
@@ -264,10 +268,11 @@ impl<'a> CanvasSurface<'a> {
                 source,
                 dest,
                 smooth,
+                scratch: k,
                 ..
             } => {
                 if let Some(scratch) = scratch {
-                    Self::draw_scratch(ctx, scratch, *source, *dest, !smooth)?;
+                    Self::draw_scratch(ctx, scratch[*k], *source, *dest, !smooth)?;
                 }
             }
         }
@@ -285,28 +290,41 @@ impl<'a> CanvasSurface<'a> {
         self.reused
     }
 
-    /// Puts the layer's pixels on `scratch` — where they changed, when
-    /// the layer was drawn on the last one's pixels and `scratch` holds
-    /// those — and adds the call that draws `scratch` on the canvas.
+    /// Puts the layer's pixels on the scratch canvas of their buffer —
+    /// where they changed, when the layer was drawn on the pixels of the
+    /// last drawing in that buffer and the canvas holds those — and adds
+    /// the call that draws it on the canvas.
     fn put_layer(&mut self, transform: &Transform) -> Result<(), JsValue> {
         let Some(layer) = &mut self.layer else {
             return Ok(());
         };
-        let previous = layer.shot.take();
+        let shown = layer.shot.take().map(|s| s.scratch);
+        let k = layer.raster.buffer();
+        let previous = layer.held[k].take();
         let Some(drawn) = layer.raster.dirty() else {
             // Nothing drawn: the frame has no layer (a change of its own).
             self.layer_change = LayerChange::Whole;
             return Ok(());
         };
-        // A drawing made on the last one's pixels ([`Raster::changed`]) is
-        // put where it changed on `scratch`, which holds the last one's
-        // (the same box): a few tiles instead of the whole drawing.
+        // A drawing made on the pixels of the last one in its buffer
+        // ([`Raster::changed`]) is put where it changed on that buffer's
+        // canvas, which holds the last one's (the same box): a few tiles
+        // instead of the whole drawing. Typing back and forth across a
+        // refitted view alternates the buffers (`raster::keep::Older`).
         let changed = match (previous, layer.raster.changed()) {
-            (Some(p), Some(c)) if p.drawn == drawn => Some(c),
+            (Some(p), Some(c)) if p == drawn => Some(c),
             _ => None,
         };
+        let scratch_canvas = layer.scratch[k];
         let (put, at) = match changed {
-            Some(c) => (c, ((c.0 - drawn.0) as f64, (c.1 - drawn.1) as f64)),
+            // (An empty box, nothing changed, may lie anywhere: nothing is put.)
+            Some(c) => (
+                c,
+                (
+                    c.0.saturating_sub(drawn.0) as f64,
+                    c.1.saturating_sub(drawn.1) as f64,
+                ),
+            ),
             None => (drawn, (0.0, 0.0)),
         };
         let (x, y, w, h) = (
@@ -315,14 +333,13 @@ impl<'a> CanvasSurface<'a> {
             drawn.2 as u32,
             drawn.3 as u32,
         );
-        if layer.scratch.width() < w {
-            layer.scratch.set_width(w);
+        if scratch_canvas.width() < w {
+            scratch_canvas.set_width(w);
         }
-        if layer.scratch.height() < h {
-            layer.scratch.set_height(h);
+        if scratch_canvas.height() < h {
+            scratch_canvas.set_height(h);
         }
-        let scratch = layer
-            .scratch
+        let scratch = scratch_canvas
             .get_context("2d")?
             .and_then(|c| {
                 wasm_bindgen::JsCast::dyn_into::<OffscreenCanvasRenderingContext2d>(c).ok()
@@ -338,15 +355,16 @@ impl<'a> CanvasSurface<'a> {
         // A drawing on the coarse grid is scaled up to device pixels.
         let f = layer.raster.factor() as f64;
         let (sx, sy) = layer.scale;
+        layer.held[k] = Some(drawn);
         self.layer_change = match changed {
-            // Its box in CSS pixels.
-            Some(c) => LayerChange::Within(Rect::new(
+            // Its box in CSS pixels (the canvas shows the same buffer's).
+            Some(c) if shown == Some(k) => LayerChange::Within(Rect::new(
                 c.0 as f64 * f / sx,
                 c.1 as f64 * f / sy,
                 c.2 as f64 * f / sx,
                 c.3 as f64 * f / sy,
             )),
-            None => LayerChange::Whole,
+            _ => LayerChange::Whole,
         };
         let (x, y, w, h) = (f64::from(x), f64::from(y), f64::from(w), f64::from(h));
         let rect = (x * f, y * f, w * f, h * f);
@@ -354,10 +372,11 @@ impl<'a> CanvasSurface<'a> {
             source: (w, h),
             dest: rect,
             smooth: false,
+            scratch: k,
             transform: *transform,
         });
         *layer.shot = Some(Shot {
-            drawn,
+            scratch: k,
             key: layer.key,
             source: (w, h),
             rect,
@@ -471,6 +490,7 @@ impl Surface for CanvasSurface<'_> {
             source: shot.source,
             dest,
             smooth: !same,
+            scratch: shot.scratch,
             transform: *transform,
         });
         // The same pixels at the same place, or moved: anywhere.

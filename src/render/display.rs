@@ -84,6 +84,9 @@ pub enum Op {
         dest: (f64, f64, f64, f64),
         /// Smoothed when scaled (a moved layer) or not.
         smooth: bool,
+        /// Which of the two canvases holding the raster's pixels it is put
+        /// from (one per pixel buffer: [`crate::render::Raster::buffer`]).
+        scratch: usize,
         /// The transform it was drawn with (a layer kept for the next frame
         /// is compared by it).
         transform: Transform,
@@ -324,6 +327,7 @@ mod tests {
                 source: (1600.0, 1200.0),
                 dest: (0.0, 0.0, 1600.0, 1200.0),
                 smooth: false,
+                scratch: 0,
                 transform: Transform {
                     scale: 1.0,
                     origin_x: 0.0,

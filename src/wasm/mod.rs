@@ -72,7 +72,9 @@ pub struct Session {
     /// The pixel layer large paths are drawn on, and what carries it to the
     /// canvas (`render::canvas::Layer`); kept between frames for their memory.
     raster: Raster,
-    scratch: Option<OffscreenCanvas>,
+    /// A canvas per pixel buffer of the raster, and what each holds.
+    scratch: Option<[OffscreenCanvas; 2]>,
+    held: [Option<(usize, usize, usize, usize)>; 2],
     raster_bytes: Vec<u8>,
     shot: Option<Shot>,
     /// The drawing calls of the frame the canvas shows (None: not known),
@@ -119,6 +121,7 @@ impl Default for Session {
             canvas: None,
             raster: Raster::new(),
             scratch: None,
+            held: [None; 2],
             raster_bytes: Vec::new(),
             shot: None,
             shown: None,

@@ -87,7 +87,7 @@ impl Session {
         let sy = f64::from(device(h)) / f64::from(h);
         ctx.set_transform(sx, 0.0, 0.0, sy, 0.0, 0.0)?;
         if self.scratch.is_none() {
-            self.scratch = Some(OffscreenCanvas::new(1, 1)?);
+            self.scratch = Some([OffscreenCanvas::new(1, 1)?, OffscreenCanvas::new(1, 1)?]);
         }
         // Everything a kept layer depends on but the zoom and pan.
         let key = {
@@ -96,9 +96,10 @@ impl Session {
             (self.scene.theme.name, w, h, dpr.to_bits()).hash(&mut hash);
             hash.finish()
         };
-        let layer = self.scratch.as_ref().map(|scratch| Layer {
+        let layer = self.scratch.as_ref().map(|[a, b]| Layer {
             raster: &mut self.raster,
-            scratch,
+            scratch: [a, b],
+            held: &mut self.held,
             bytes: &mut self.raster_bytes,
             size: (device(w), device(h)),
             scale: (sx, sy),

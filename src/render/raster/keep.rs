@@ -133,6 +133,7 @@ impl Raster {
         std::mem::swap(&mut self.dirty, &mut self.older.dirty);
         std::mem::swap(&mut self.dirty_tiles_w, &mut self.older.dirty_tiles_w);
         std::mem::swap(&mut self.last, &mut self.older.last);
+        self.buffer ^= 1;
     }
 
     /// Prepares a drawing on the pixels of the drawing before the last one

@@ -143,10 +143,12 @@ pub struct Raster {
     /// The drawing before the last one, set aside with its pixels when a
     /// drawing was made from nothing ([`keep::Older`]).
     older: keep::Older,
-    /// Whether this drawing was made on the last one's pixels — or, when
-    /// `on_older`, on those of the drawing before it.
+    /// Whether this drawing was made on the last one's pixels, or on those
+    /// of the drawing before it.
     kept: bool,
-    on_older: bool,
+    /// Which of the two pixel buffers `px` is (the other is the drawing's
+    /// before the last: [`keep::Older`]).
+    buffer: usize,
     /// The box (x0, y0, x1, y1; exclusive ends) outside which every pixel
     /// is finished: the surface, or where a drawing made on the last one's
     /// pixels may change them ([`Raster::changed`]). Segments are drawn
@@ -426,9 +428,7 @@ impl Raster {
             self.choose_grid();
             // The last drawing's pixels where this one is the same, or none.
             // (keep_last sets the open box of a drawing it keeps.)
-            self.kept = self.keep_last();
-            self.on_older = !self.kept && self.keep_older();
-            self.kept |= self.on_older;
+            self.kept = self.keep_last() || self.keep_older();
             if !self.kept {
                 self.set_last_aside();
                 self.clear_last();
@@ -552,13 +552,13 @@ impl Raster {
         self.kept
     }
 
-    /// When this drawing was made on the last one's pixels, the box (x, y,
-    /// width, height, as [`Raster::dirty`]) outside which they are the same;
-    /// None when it was made from nothing, or on the pixels of the drawing
-    /// before the last one (they differ from the last one's anywhere).
+    /// When this drawing was made on the pixels of the last one drawn in
+    /// the same buffer ([`Raster::buffer`]), the box (x, y, width, height,
+    /// as [`Raster::dirty`]) outside which they are the same; None when it
+    /// was made from nothing.
     pub fn changed(&mut self) -> Option<(usize, usize, usize, usize)> {
         self.finish();
-        if !self.kept || self.on_older {
+        if !self.kept {
             return None;
         }
         let (x0, y0, x1, y1) = self.open;
@@ -573,6 +573,17 @@ impl Raster {
         } else {
             (0, 0, 0, 0)
         })
+    }
+
+    /// Which of the raster's two pixel buffers this drawing is in (0 or 1):
+    /// a drawing is made on the last one's pixels, on those of the one
+    /// before it in the other buffer ([`keep::Older`]), or from nothing in
+    /// either. A copy of the pixels kept per buffer (the page's scratch
+    /// canvases) takes only [`Raster::changed`]'s box from the next drawing
+    /// made in its buffer.
+    pub fn buffer(&mut self) -> usize {
+        self.finish();
+        self.buffer
     }
 
     /// The box of the pixels drawn (x, y, width, height in pixels of the

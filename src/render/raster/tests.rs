@@ -324,6 +324,7 @@ fn a_drawing_close_to_the_one_before_the_last_is_made_on_its_pixels() {
     edited[100] = (edited[100].0 + 6.5, edited[100].1 - 3.25);
     let surface = (400, 300, 1.0);
     let mut r = Raster::new();
+    let mut previous = 1;
     for (points, kept, on_older) in [
         (&path, false, false),
         (&refitted, false, false),
@@ -337,10 +338,13 @@ fn a_drawing_close_to_the_one_before_the_last_is_made_on_its_pixels() {
             surface,
             &[(&ACTUAL_FEED, points), (&PROGRAMMED_FEED, points)],
         );
+        let buffer = r.buffer();
         assert_eq!(r.kept(), kept);
-        // On the older pixels nothing is known of how they differ from the
-        // last drawing's (the canvas's copy): all of them are put.
-        assert_eq!(r.changed().is_none(), !kept || on_older);
+        assert_eq!(r.changed().is_none(), !kept);
+        // The pixels of the drawing before the last are in the other buffer;
+        // a drawing from nothing takes it too.
+        assert_eq!(buffer != previous, on_older || !kept);
+        previous = buffer;
         let mut fresh = Raster::new();
         draw_chains(
             &mut fresh,
