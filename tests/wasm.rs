@@ -469,6 +469,21 @@ fn step_is_clamped_and_follows_the_end() {
     assert_eq!(s.step(), 2);
     s.run("G00 X1.".into(), JsValue::NULL).expect("run");
     assert_eq!(s.step(), 0);
+    // A block set by the user stays set when a run stops at an error just
+    // after it (it is then the last block) and the next run mends it: the
+    // current block does not jump to the program's end.
+    s.run(SQUARE.into(), square_setup()).expect("run");
+    s.set_step(3);
+    let broken = SQUARE.replacen("G47 X-80.", "G47 X-80. Q", 1);
+    s.run(broken.clone(), square_setup()).expect("run");
+    assert_eq!(s.step(), 3);
+    s.run(SQUARE.into(), square_setup()).expect("run");
+    assert_eq!(s.step(), 3);
+    // At the end it follows the end, across a run stopped at an error too.
+    s.set_step(7);
+    s.run(broken, square_setup()).expect("run");
+    s.run(longer, square_setup()).expect("run");
+    assert_eq!(s.step(), 8);
 }
 
 #[wasm_bindgen_test]

@@ -104,8 +104,11 @@ pub struct Session {
     size: (f64, f64),
     /// The layout last drawn, which picking measures against.
     frame: Option<Frame>,
-    /// Blocks of the previous run (None before the first).
-    last_count: Option<u32>,
+    /// Whether the current block was set at the last block: the next runs
+    /// keep it at their last block (editing at the end shows the whole
+    /// program). A block set elsewhere stays where it was set, also across
+    /// a run that stopped short of it at an error and clamped it there.
+    follows_end: bool,
 }
 
 impl Default for Session {
@@ -134,7 +137,7 @@ impl Default for Session {
             scene: Scene::default(),
             size: (300.0, 150.0),
             frame: None,
-            last_count: None,
+            follows_end: false,
         }
     }
 }
@@ -615,21 +618,23 @@ impl Session {
 
     /// Keeps the view state sensible for a new run: the lathe is drawn in
     /// ZX, the mill in one of its planes; a current block past the end moves
-    /// to the last block, and a session that was at the last block stays at
-    /// the last block (so editing at the end shows the whole program).
+    /// to the last block, and a session set at the last block stays at the
+    /// last block (so editing at the end shows the whole program). Only the
+    /// user sets it there ([`Session::set_step`]): a digit that stops the
+    /// run at an error just after the block being edited makes that block
+    /// the last one, and the key that mends the error must not send the
+    /// current block to the program's end.
     fn after_run(&mut self) {
         self.runs += 1;
         self.scene.adapt_to(self.run.machine);
         let count = self.run.block_count;
         if let Some(step) = self.scene.step {
-            let was_last = self.last_count.is_some_and(|n| step + 1 >= n);
             self.scene.step = match count {
                 0 => None,
-                n if was_last || step >= n => Some(n - 1),
+                n if self.follows_end || step >= n => Some(n - 1),
                 _ => Some(step),
             };
         }
-        self.last_count = Some(count);
         self.update_marker();
         // The layout drawn (which picking measures against) holds while the
         // drawing is the one drawn last.

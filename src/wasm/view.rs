@@ -224,6 +224,7 @@ impl Session {
             Ok(i) => u32::try_from(i.min(count - 1)).ok(),
             Err(_) => None,
         };
+        self.follows_end = count > 0 && self.scene.step == u32::try_from(count - 1).ok();
         self.update_marker();
         self.step()
     }
