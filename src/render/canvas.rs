@@ -121,7 +121,6 @@ impl<'a> CanvasSurface<'a> {
         // Until this frame is wholly on the canvas, what it shows is not known.
         *shown = None;
         let scratch = layer.as_ref().map(|l| l.scratch);
-
         let mut draw_all = || {
             ops.iter()
                 .try_for_each(|op| Self::draw(ctx, &mut font, scratch, op))

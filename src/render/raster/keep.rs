@@ -137,18 +137,10 @@ impl Raster {
     }
 
     /// Prepares a drawing on the pixels of the drawing before the last one
-    /// ([`Older`]) when [`Raster::keep_last`] would keep them; the last
-    /// drawing becomes the one before. False, and nothing changed,
-    /// otherwise.
+    /// ([`Older`]) when [`Raster::keep_last`] keeps them (it checks their
+    /// surface first); the last drawing becomes the one before. False, and
+    /// nothing changed, otherwise.
     pub(super) fn keep_older(&mut self) -> bool {
-        let older = &self.older.last;
-        let same_surface = older.valid
-            && older.full == self.full
-            && older.coarse == self.coarse
-            && older.scale == self.scale;
-        if !same_surface {
-            return false;
-        }
         self.swap_older();
         if self.keep_last() {
             return true;

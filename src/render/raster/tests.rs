@@ -305,6 +305,19 @@ fn a_drawing_mostly_changed_or_on_another_surface_is_made_from_nothing() {
     assert!(r.kept());
 }
 
+/// `r` draws `paths` after whatever it drew before; so does a new raster,
+/// from nothing: returned when every pixel of the two is the same.
+fn same_as_from_nothing(
+    r: &mut Raster,
+    surface: (usize, usize, f64),
+    paths: &[(&Stroke, &[(f64, f64)])],
+) -> Option<Raster> {
+    draw_chains(r, surface, paths);
+    let mut fresh = Raster::new();
+    draw_chains(&mut fresh, surface, paths);
+    (pixels(r) == pixels(&mut fresh)).then_some(fresh)
+}
+
 #[test]
 fn a_drawing_close_to_the_one_before_the_last_is_made_on_its_pixels() {
     // Typing back and forth (keep::Older): a digit makes a block wrong, the
@@ -333,11 +346,10 @@ fn a_drawing_close_to_the_one_before_the_last_is_made_on_its_pixels() {
         (&edited, true, true),
         (&edited, true, false),
     ] {
-        draw_chains(
-            &mut r,
-            surface,
-            &[(&ACTUAL_FEED, points), (&PROGRAMMED_FEED, points)],
-        );
+        let paths = [(&ACTUAL_FEED, &points[..]), (&PROGRAMMED_FEED, &points[..])];
+        let mut fresh = same_as_from_nothing(&mut r, surface, &paths)
+            .unwrap_or_else(|| panic!("{} points", points.len()));
+        assert_eq!(r.dirty(), fresh.dirty());
         let buffer = r.buffer();
         assert_eq!(r.kept(), kept);
         assert_eq!(r.changed().is_none(), !kept);
@@ -345,18 +357,6 @@ fn a_drawing_close_to_the_one_before_the_last_is_made_on_its_pixels() {
         // a drawing from nothing takes it too.
         assert_eq!(buffer != previous, on_older || !kept);
         previous = buffer;
-        let mut fresh = Raster::new();
-        draw_chains(
-            &mut fresh,
-            surface,
-            &[(&ACTUAL_FEED, points), (&PROGRAMMED_FEED, points)],
-        );
-        assert!(
-            pixels(&mut r) == pixels(&mut fresh),
-            "{} points",
-            points.len()
-        );
-        assert_eq!(r.dirty(), fresh.dirty());
     }
     // The drawing before the last on the coarse grid, the next ones on the
     // full one: its pixels are cleared in its own grid when they are taken
@@ -375,15 +375,13 @@ fn a_drawing_close_to_the_one_before_the_last_is_made_on_its_pixels() {
         (&shifted, false),
         (&dense, true),
     ] {
-        draw_chains(&mut r, surface, &[(&ACTUAL_FEED, points)]);
-        assert_eq!(r.factor() == 2, coarse);
-        let mut fresh = Raster::new();
-        draw_chains(&mut fresh, surface, &[(&ACTUAL_FEED, points)]);
+        let paths = [(&ACTUAL_FEED, &points[..])];
         assert!(
-            pixels(&mut r) == pixels(&mut fresh),
+            same_as_from_nothing(&mut r, surface, &paths).is_some(),
             "{} points",
             points.len()
         );
+        assert_eq!(r.factor() == 2, coarse);
     }
     // Another surface size: nothing of either drawing is kept.
     draw_chains(&mut r, (400, 301, 1.0), &[(&ACTUAL_FEED, &refitted)]);
@@ -517,10 +515,7 @@ proptest::proptest! {
         let mut r = Raster::new();
         for (k, points) in drawings.iter().enumerate() {
             let paths = [(&PROGRAMMED_FEED, &points[..]), (&ACTUAL_FEED, &points[..])];
-            draw_chains(&mut r, (w, h, scale), &paths);
-            let mut fresh = Raster::new();
-            draw_chains(&mut fresh, (w, h, scale), &paths);
-            proptest::prop_assert!(pixels(&mut r) == pixels(&mut fresh), "drawing {}", k);
+            proptest::prop_assert!(same_as_from_nothing(&mut r, (w, h, scale), &paths).is_some(), "drawing {}", k);
         }
     }
 }
