@@ -64,6 +64,31 @@ describe('editor', () => {
     });
   });
 
+  test('typed characters replace the selection, land where the cursor is, and undo as one step', async () => {
+    await withPage(async (page) => {
+      // The editor puts typed characters in itself (not the browser's
+      // contenteditable editing): what a user sees must be the same.
+      await typeProgram(page, 'G00 X10. Y10.\nG01 X20. F100.\n');
+      const program = () => page.evaluate(() => window.offsetlab.program());
+      // "20." on line 2 selected with the keys.
+      await page.locator('.cm-line').nth(1).click();
+      await page.keyboard.press('Home');
+      for (let i = 0; i < 5; i += 1) await page.keyboard.press('ArrowRight');
+      for (let i = 0; i < 3; i += 1) await page.keyboard.press('Shift+ArrowRight');
+      await page.keyboard.type('35.5');
+      assert.equal(await program(), 'G00 X10. Y10.\nG01 X35.5 F100.\n');
+      await waitForRun(page);
+      assert.match(await page.locator('#summary').textContent(), /2 blocks · 2 moves · 0 errors/);
+      // The cursor follows the typed text.
+      await page.keyboard.type('7');
+      assert.equal(await program(), 'G00 X10. Y10.\nG01 X35.57 F100.\n');
+      // One undo takes the whole run of typing back, selection and all.
+      await page.keyboard.press('ControlOrMeta+Z');
+      assert.equal(await program(), 'G00 X10. Y10.\nG01 X20. F100.\n');
+      assert.equal(await page.evaluate(() => getSelection().toString()), '20.');
+    });
+  });
+
   test('a syntax error is marked inline with its message and listed with line:column; click and Enter jump to it', async () => {
     await withPage(async (page) => {
       await typeProgram(page, 'G00 X10. Y10.\nG01 X1.2.3 F100.\nG01 X20.\n');

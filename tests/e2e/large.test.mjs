@@ -244,11 +244,14 @@ describe('large programs', () => {
       const before = Number(await page.evaluate(() => document.body.dataset.requested));
       // The run request leaves in the keystroke's own task (before the
       // editor draws the edit): once the editor has taken a typed
-      // character (the microtask after its input event) no edit waits for
-      // its run — counted while the last run was quick, as the page decides.
+      // character (the microtask after its beforeinput event, which the
+      // editor handles on its content, below the document) no edit waits
+      // for its run — counted while the last run was quick, as the page
+      // decides.
       await page.evaluate(() => {
         window.__keys = { quick: 0, waiting: 0 };
-        document.addEventListener('input', () => {
+        document.addEventListener('beforeinput', (event) => {
+          if (event.inputType !== 'insertText') return;
           if (!(Number(document.body.dataset.runMs) < 30)) return;
           queueMicrotask(() => {
             window.__keys.quick += 1;
