@@ -17,6 +17,7 @@ pub mod canvas;
 pub mod display;
 mod paths;
 pub mod raster;
+mod resume;
 pub mod scene;
 pub mod style;
 pub mod svg;
@@ -387,7 +388,7 @@ fn draw_scene_as(
         if moves >= IN_PARTS_FROM_MOVES {
             paths::draw_paths_in_parts(raster, &frame, toolpath, scene, split);
         } else {
-            draw_paths(raster, &frame, toolpath, scene, split);
+            resume::record_paths(raster, &frame, toolpath, scene, split);
         }
         surface.composite(&frame.transform);
     } else {

@@ -14,18 +14,18 @@ use crate::toolpath::{ToolArc, Toolpath, Visit};
 /// One stroke of a scene: the moves of `moves` on the programmed or the
 /// actual path (`kind.0`) that are rapid or not (`kind.1`), and the group
 /// it belongs to.
-struct Layer {
-    group: &'static str,
-    kind: (bool, bool),
-    moves: std::ops::Range<usize>,
-    stroke: Stroke,
+pub(super) struct Layer {
+    pub(super) group: &'static str,
+    pub(super) kind: (bool, bool),
+    pub(super) moves: std::ops::Range<usize>,
+    pub(super) stroke: Stroke,
 }
 
 /// The strokes of a scene, bottom to top: the moves after the current
 /// block (faint), the current block's highlight, the actual path and the
 /// programmed path up to the current block; each path's rapid moves below
 /// its others.
-fn layers(f: &Frame, tp: &Toolpath, scene: &Scene, split: usize) -> Vec<Layer> {
+pub(super) fn layers(f: &Frame, tp: &Toolpath, scene: &Scene, split: usize) -> Vec<Layer> {
     let t = f.theme;
     let mut out = Vec::with_capacity(8);
     let mut path = |group, programmed, moves: std::ops::Range<usize>, strokes: [Stroke; 2]| {
@@ -127,42 +127,20 @@ fn trace(
     s: &mut impl Pen,
     f: &Frame,
     tp: &Toolpath,
-    (programmed, rapid): (bool, bool),
+    kind: (bool, bool),
     range: std::ops::Range<usize>,
     stroke: &Stroke,
     begun: bool,
 ) -> bool {
-    // Arcs are tessellated for the scale they are drawn at.
-    let arcs = (DRAW_TOLERANCE_PX / f.transform.scale, s.arc_points());
-    let period: f64 = stroke.dash.iter().sum();
-    let mut t = Tracer {
+    let mut t = Tracer::new(
         stroke,
-        period,
-        from: None,
-        pen: None,
-        pending: None,
-        begun,
-    };
-    let keep = |m: usize| tp.kinds.get(m).is_some_and(|&k| is_rapid(k) == rapid);
-    tp.visit(range, programmed, arcs, keep, |m, visit| match visit {
-        Visit::Point(i, p) => {
-            let (u, v) = f.plane.project(&p);
-            let (x, y) = f.transform.to_screen(u, v);
-            t.point(s, m, i, (x, y));
-            false
-        }
-        Visit::Arc {
-            arc,
-            programmed,
-            from,
-            to,
-            count,
-        } => t.arc(s, whole_arc(f, arc, programmed, (from, to), count)),
-    });
-    if let Some((px, py)) = t.pending {
-        s.line_to(px, py);
-    }
-    t.begun
+        TracerState {
+            begun,
+            ..TracerState::default()
+        },
+    );
+    t.visit(s, f, tp, kind, range);
+    t.finish(s)
 }
 
 /// The moves of a part of a planned drawing ([`draw_paths_in_parts`]):
@@ -251,10 +229,18 @@ pub(super) fn draw_paths_in_parts(
 }
 
 /// Where a path being drawn is.
-struct Tracer<'a> {
+pub(super) struct Tracer<'a> {
     stroke: &'a Stroke,
     /// The dash pattern's length (0: solid).
     period: f64,
+    state: TracerState,
+}
+
+/// What tracing a path has come to: all that the rest of it depends on
+/// besides the moves still to trace (so a tracing resumed from here
+/// records what going on would: [`super::resume`]).
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct TracerState {
     /// The first point of the last move, for where a dashed pattern
     /// starts afresh (after a move whose ends are a period apart).
     from: Option<(f64, f64)>,
@@ -262,29 +248,102 @@ struct Tracer<'a> {
     /// over for being too close to it; ends of runs are always drawn.
     pen: Option<(f64, f64)>,
     pending: Option<(f64, f64)>,
-    begun: bool,
+    /// Whether the path was begun (its first point drawn).
+    pub(super) begun: bool,
 }
 
-impl Tracer<'_> {
+impl TracerState {
+    /// The same, bit for bit.
+    pub(super) fn same(&self, other: &TracerState) -> bool {
+        let bits = |p: Option<(f64, f64)>| p.map(|(x, y)| (x.to_bits(), y.to_bits()));
+        self.begun == other.begun
+            && bits(self.from) == bits(other.from)
+            && bits(self.pen) == bits(other.pen)
+            && bits(self.pending) == bits(other.pending)
+    }
+}
+
+impl<'a> Tracer<'a> {
+    /// A tracer of a path stroked with `stroke`, where `state` says.
+    pub(super) fn new(stroke: &'a Stroke, state: TracerState) -> Tracer<'a> {
+        Tracer {
+            stroke,
+            period: stroke.dash.iter().sum(),
+            state,
+        }
+    }
+
+    /// Where it has come to.
+    pub(super) fn state(&self) -> TracerState {
+        self.state
+    }
+
+    /// Whether its pattern is dashed.
+    pub(super) fn dashed(&self) -> bool {
+        self.period > 0.0
+    }
+
+    /// Traces the moves of `range` on the programmed or the actual path
+    /// that are rapid or not (`kind`).
+    pub(super) fn visit(
+        &mut self,
+        s: &mut impl Pen,
+        f: &Frame,
+        tp: &Toolpath,
+        (programmed, rapid): (bool, bool),
+        range: std::ops::Range<usize>,
+    ) {
+        // Arcs are tessellated for the scale they are drawn at.
+        let arcs = (DRAW_TOLERANCE_PX / f.transform.scale, s.arc_points());
+        let keep = |m: usize| tp.kinds.get(m).is_some_and(|&k| is_rapid(k) == rapid);
+        tp.visit(range, programmed, arcs, keep, |m, visit| match visit {
+            Visit::Point(i, p) => {
+                let (u, v) = f.plane.project(&p);
+                let (x, y) = f.transform.to_screen(u, v);
+                self.point(s, m, i, (x, y));
+                false
+            }
+            Visit::Arc {
+                arc,
+                programmed,
+                from,
+                to,
+                count,
+            } => {
+                // (Worked out only for a pen that may take it.)
+                s.takes_arcs() && self.arc(s, whole_arc(f, arc, programmed, (from, to), count))
+            }
+        });
+    }
+
+    /// Ends the tracing: draws the vertex passed over last, if any.
+    /// Returns whether the path was begun.
+    pub(super) fn finish(&mut self, s: &mut impl Pen) -> bool {
+        if let Some((px, py)) = self.state.pending {
+            s.line_to(px, py);
+        }
+        self.state.begun
+    }
+
     /// Point `i` of move `m` (0: its start), on the screen.
     fn point(&mut self, s: &mut impl Pen, m: usize, i: usize, (x, y): (f64, f64)) {
         if !(x.is_finite() && y.is_finite()) {
             return;
         }
-        if !self.begun {
+        if !self.state.begun {
             s.begin_path(self.stroke);
-            self.begun = true;
+            self.state.begun = true;
         }
         if i == 0 {
-            let last_from = self.from.replace((x, y));
+            let last_from = self.state.from.replace((x, y));
             // A move that starts where the last one ended continues
             // the line; any other starts a new sub-path.
-            let last = self.pending.or(self.pen);
+            let last = self.state.pending.or(self.state.pen);
             if last.is_some_and(|(lx, ly)| distance_near(x - lx, y - ly, 0.01) <= 0.01) {
                 // Where the last move's end was skipped (level of
                 // detail), the line runs on across the two moves.
-                if self.pending.is_none()
-                    && let Some((px, py)) = self.pen
+                if self.state.pending.is_none()
+                    && let Some((px, py)) = self.state.pen
                 {
                     let period = self.period;
                     let long = last_from.is_some_and(|(fx, fy)| {
@@ -295,23 +354,24 @@ impl Tracer<'_> {
                 }
                 return;
             }
-            if let Some((px, py)) = self.pending.take() {
+            if let Some((px, py)) = self.state.pending.take() {
                 s.line_to(px, py);
             }
             s.move_to(x, y);
-            self.pen = Some((x, y));
+            self.state.pen = Some((x, y));
             return;
         }
         if self
+            .state
             .pen
             .is_some_and(|(px, py)| distance_near(x - px, y - py, MIN_SEGMENT_PX) < MIN_SEGMENT_PX)
         {
-            self.pending = Some((x, y));
+            self.state.pending = Some((x, y));
             return;
         }
         s.line_to(x, y);
-        self.pen = Some((x, y));
-        self.pending = None;
+        self.state.pen = Some((x, y));
+        self.state.pending = None;
     }
 
     /// An arc whose start was just drawn ([`Tracer::point`]), offered to
@@ -322,21 +382,21 @@ impl Tracer<'_> {
             return false;
         };
         // Its start was passed over, or was not on the screen's plane.
-        if !self.begun || self.pen.is_none() {
+        if !self.state.begun || self.state.pen.is_none() {
             return false;
         }
         if !s.takes_arcs() {
             return false;
         }
         // The arc starts at the vertex passed over, if any.
-        if let Some((px, py)) = self.pending.take() {
+        if let Some((px, py)) = self.state.pending.take() {
             s.line_to(px, py);
-            self.pen = Some((px, py));
+            self.state.pen = Some((px, py));
         }
         if !s.arc(&whole) {
             return false;
         }
-        self.pen = Some(whole.to);
+        self.state.pen = Some(whole.to);
         true
     }
 }

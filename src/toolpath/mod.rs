@@ -471,6 +471,50 @@ impl Toolpath {
         ])
     }
 
+    /// How many moves this toolpath shares with `other` at its start, and
+    /// how many of the rest at its end (the two never overlap): moves alike
+    /// in kind, in their ends on both paths (bit for bit) and in their
+    /// circles, which any drawing of the same view draws alike — after an
+    /// edit, a kept drawing records again only the moves between
+    /// ([`crate::render::Raster`]).
+    pub fn shared_moves(&self, other: &Toolpath) -> (usize, usize) {
+        let same_ends = |m: usize, o: usize| {
+            let bits =
+                |e: Option<[[Xyz; 2]; 2]>| e.map(|e| e.map(|p| p.map(|q| q.map(f64::to_bits))));
+            bits(self.ends(m)) == bits(other.ends(o))
+        };
+        let n = self.len().min(other.len());
+        let (mut mine, mut theirs) = (self.arcs_from(0), other.arcs_from(0));
+        let mut first = 0;
+        while first < n
+            && self.kinds[first] == other.kinds[first]
+            && same_ends(first, first)
+            && mine.of(self, first) == theirs.of(other, first)
+        {
+            first += 1;
+        }
+        // From the end, each arc found by stepping back through the arcs.
+        let arc_back = |t: &'_ Toolpath, next: &mut usize, m: usize| -> Option<ToolArc> {
+            (*next > 0 && t.arc_moves[*next - 1] as usize == m).then(|| {
+                *next -= 1;
+                t.arcs[*next]
+            })
+        };
+        let (mut mine, mut theirs) = (self.arc_moves.len(), other.arc_moves.len());
+        let mut last = 0;
+        while last < n - first {
+            let (m, o) = (self.len() - 1 - last, other.len() - 1 - last);
+            if self.kinds[m] != other.kinds[o]
+                || !same_ends(m, o)
+                || arc_back(self, &mut mine, m) != arc_back(other, &mut theirs, o)
+            {
+                break;
+            }
+            last += 1;
+        }
+        (first, last)
+    }
+
     /// Index of the first arc of move `m` or later.
     /// A cursor over the arcs for a walk over the moves from `m` on.
     fn arcs_from(&self, m: usize) -> ArcCursor {

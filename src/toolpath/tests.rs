@@ -170,3 +170,31 @@ fn a_million_block_toolpath_costs_well_under_200_bytes_a_move() {
     let per_move = t.heap_bytes() as f64 / t.len() as f64;
     assert!(per_move < 110.0, "{per_move} bytes a move");
 }
+
+#[test]
+fn shared_moves_are_the_same_at_the_start_and_at_the_end() {
+    let path = |p: &str| {
+        let r = run(p, &Setup::default());
+        assert!(!r.has_errors(), "{:?}", r.diagnostics);
+        Toolpath::from_run(&r)
+    };
+    // Moves: X10, the arc, Y10, the rapid to X0, Y0, X5, X8.
+    let base = "G90 G01 X10. F100.\nG02 X20. R5.\nG01 Y10.\nG00 X0\nG01 Y0\nG01 X5.\nG01 X8.\n";
+    let t = path(base);
+    assert_eq!(t.len(), 7);
+    assert_eq!(t.shared_moves(&t), (7, 0), "all at the start, none left");
+    // A coordinate moved: the moves up to where Y is set again change.
+    let moved = path(&base.replace("Y10.", "Y10.5"));
+    assert_eq!(moved.shared_moves(&t), (2, 2));
+    // Blocks inserted: the moves after them are the same, further on.
+    let inserted = path(&base.replace("G01 Y10.\n", "G01 Y10.\nG01 X15.\nG01 X20.\n"));
+    assert_eq!(inserted.shared_moves(&t), (3, 4));
+    assert_eq!(t.shared_moves(&inserted), (3, 4));
+    // Only the arc's circle differs (the other way round): its ends stay.
+    let turned = path(&base.replace("G02", "G03"));
+    assert_eq!(turned.shared_moves(&t), (1, 5));
+    // A rapid instead of a feed: the kind differs.
+    let rapid = path(&base.replace("G01 Y0", "G00 Y0"));
+    assert_eq!(rapid.shared_moves(&t), (4, 2));
+    assert_eq!(Toolpath::default().shared_moves(&t), (0, 0));
+}

@@ -19,6 +19,7 @@
 
 use super::sweep::tile_span;
 use super::{Ink, Pixel, Raster, Sub, TILE_BITS, TILE_MASK};
+use crate::render::resume::Traced;
 
 /// Surfaces of more pixels than this do not keep the drawing before the
 /// last one ([`Older`]): its pixels take 8 bytes each (32 MiB here; the
@@ -43,18 +44,23 @@ pub(super) const MOST_KEPT: usize = 1 << 20;
 /// it was drawn on.
 #[derive(Default)]
 pub(super) struct Last {
-    subs: Vec<Sub>,
-    points: Vec<[f32; 2]>,
+    pub(super) subs: Vec<Sub>,
+    pub(super) points: Vec<[f32; 2]>,
     pub(super) styles: Vec<Ink>,
     /// Whether the pixels are this recording's, drawn in one go; and the
     /// surface, grid and scale they were drawn with.
-    valid: bool,
-    full: (usize, usize),
-    coarse: Option<bool>,
-    scale: (f64, f64),
+    pub(super) valid: bool,
+    pub(super) full: (usize, usize),
+    pub(super) coarse: Option<bool>,
+    pub(super) scale: (f64, f64),
     /// The pixels to draw again, per tile as [`Raster::tiles`] (kept for
     /// its memory).
     marks: Vec<u64>,
+    /// What was traced to make the recording, move by move, when the
+    /// drawing was made so (the page's paths: [`crate::render::resume`]):
+    /// a drawing of the same view takes the pieces of the recording that
+    /// an edit left alone instead of tracing them again.
+    pub(super) traced: Option<Box<Traced>>,
 }
 
 impl Last {
@@ -70,7 +76,9 @@ impl Last {
         (subs, points): (Vec<Sub>, Vec<[f32; 2]>),
         styles: &[Ink],
         (full, coarse, scale): ((usize, usize), Option<bool>, (f64, f64)),
+        traced: Option<Box<Traced>>,
     ) -> (Vec<Sub>, Vec<[f32; 2]>) {
+        self.traced = traced;
         let old = (
             std::mem::replace(&mut self.subs, subs),
             std::mem::replace(&mut self.points, points),
@@ -102,7 +110,7 @@ pub(super) struct Older {
     px: Vec<Pixel>,
     dirty: Option<(usize, usize, usize, usize)>,
     dirty_tiles_w: usize,
-    last: Last,
+    pub(super) last: Last,
 }
 
 impl Older {

@@ -30,12 +30,14 @@ mod filled;
 mod keep;
 mod open;
 mod record;
+mod resume;
 mod sweep;
 #[cfg(test)]
 mod tests;
 
 use record::Recorder;
 pub use record::{InkMeter, parse_color};
+pub(crate) use resume::Recorded;
 
 /// Surfaces larger than this (device pixels) are drawn as vectors: the
 /// buffers take 8 bytes a pixel.
@@ -159,6 +161,9 @@ pub struct Raster {
     open: (usize, usize, usize, usize),
     open_pixels: Option<[f64; 4]>,
     open_all: bool,
+    /// What was traced to make this drawing's recording, kept with it
+    /// when the drawing is kept for the next one ([`keep::Last`]).
+    traced: Option<Box<crate::render::resume::Traced>>,
 }
 
 /// A pixel of the drawing: its colour and which path covered it last,
@@ -288,6 +293,12 @@ impl Raster {
         self.scale = scale;
         self.rec = scale;
         self.planned = false;
+        self.restart();
+        true
+    }
+
+    /// Forgets what was recorded since [`Raster::begin`].
+    pub(crate) fn restart(&mut self) {
         self.styles.clear();
         self.subs.clear();
         self.points.clear();
@@ -295,7 +306,7 @@ impl Raster {
         self.tessellated = 0;
         self.pen = Recorder::default();
         self.ink_area = 0.0;
-        true
+        self.traced = None;
     }
 
     /// Clears what the last drawing touched (in its own grid, which may have
@@ -521,13 +532,17 @@ impl Raster {
         self.arcs.clear();
         if first && (self.planned || points.len() > keep::MOST_KEPT || whole_arcs) {
             self.last.forget();
+            self.traced = None;
             self.subs = subs;
             self.points = points;
         } else if first {
             // What the next drawing is compared with; the allocations of
             // the one before are kept for it.
             let surface = (self.full, self.coarse, self.scale);
-            let (subs, points) = self.last.keep((subs, points), &self.styles, surface);
+            let traced = self.traced.take();
+            let (subs, points) = self
+                .last
+                .keep((subs, points), &self.styles, surface, traced);
             self.subs = subs;
             self.points = points;
         } else {

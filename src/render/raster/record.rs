@@ -10,12 +10,20 @@ use crate::toolpath::ArcPoints;
 
 /// The pen while recording: where it is, how far along its sub-path, and
 /// whether the next segment drawn starts a new recorded sub-path.
-#[derive(Default)]
+#[derive(Clone, Copy, Default)]
 pub(super) struct Recorder {
-    style: Option<u16>,
-    at: Option<(f64, f64)>,
-    along: f64,
-    broken: bool,
+    pub(super) style: Option<u16>,
+    pub(super) at: Option<(f64, f64)>,
+    pub(super) along: f64,
+    pub(super) broken: bool,
+}
+
+/// The area a segment's line covers, in whole 64ths of a device pixel²:
+/// such areas add up exactly in any order (far below 2^53 of them), so a
+/// recording made partly of the last one's pieces ([`super::resume`])
+/// sums to what recording it in one go does, and chooses the same grid.
+pub(super) fn covered(area: f64) -> f64 {
+    (area * 64.0).round() / 64.0
 }
 
 impl Raster {
@@ -276,7 +284,7 @@ impl Pen for Raster {
             self.points.push(at(t0));
         }
         self.points.push(at(t1));
-        self.ink_area += (t1 - t0) * 2.0 * half_width;
+        self.ink_area += covered((t1 - t0) * 2.0 * half_width);
         self.pen.along += length;
         self.pen.broken = t1 < length;
     }
@@ -347,7 +355,7 @@ impl Pen for Raster {
             style: style | WHOLE_ARC,
         });
         self.arcs.push(recorded);
-        self.ink_area += length * 2.0 * half_width;
+        self.ink_area += covered(length * 2.0 * half_width);
         true
     }
 }

@@ -1,0 +1,191 @@
+//! What a recording resumed from the last one's pieces needs of the
+//! raster ([`crate::render::resume`]): where the recording and its pen
+//! stand, to note at a checkpoint and to go on from; the recordings of the
+//! last drawing and of the one before it, to copy pieces of.
+
+use std::ops::Range;
+
+use super::keep::MOST_KEPT;
+use super::record::covered;
+use super::{Raster, Sub};
+use crate::render::resume::Traced;
+
+/// Where a recording stands: its pen (where it is, how far along its
+/// sub-path, whether the next segment starts a sub-path) and how much is
+/// recorded (points, sub-paths, ink: [`covered`]).
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Recorded {
+    at: Option<(f64, f64)>,
+    along: f64,
+    broken: bool,
+    pub(crate) points: usize,
+    pub(crate) subs: usize,
+    pub(crate) ink: f64,
+}
+
+impl Recorded {
+    /// The same pen, bit for bit; how far along its sub-path it is only
+    /// when the line is `dashed` (a solid line's sub-paths start at phase
+    /// 0 wherever they are, and its distance runs on over a whole run of
+    /// moves).
+    pub(crate) fn same_pen(&self, other: &Recorded, dashed: bool) -> bool {
+        let bits = |p: Option<(f64, f64)>| p.map(|(x, y)| (x.to_bits(), y.to_bits()));
+        bits(self.at) == bits(other.at)
+            && (!dashed || self.along.to_bits() == other.along.to_bits())
+            && self.broken == other.broken
+    }
+
+    /// `self` moved on by what was recorded from `from` to `to`.
+    pub(crate) fn plus(&self, from: &Recorded, to: &Recorded) -> Recorded {
+        Recorded {
+            points: self.points + to.points - from.points,
+            subs: self.subs + to.subs - from.subs,
+            ink: self.ink + (to.ink - from.ink),
+            ..*to
+        }
+    }
+}
+
+impl Raster {
+    /// Where the recording stands.
+    pub(crate) fn recorded(&self) -> Recorded {
+        Recorded {
+            at: self.pen.at,
+            along: self.pen.along,
+            broken: self.pen.broken,
+            points: self.points.len(),
+            subs: self.subs.len(),
+            ink: self.ink_area,
+        }
+    }
+
+    /// Puts the pen where `r` says (its path begun already).
+    pub(crate) fn resume_pen(&mut self, r: &Recorded) {
+        (self.pen.at, self.pen.along, self.pen.broken) = (r.at, r.along, r.broken);
+    }
+
+    /// The style of the path being recorded ([`crate::render::Pen::begin_path`]).
+    pub(crate) fn path_style(&self) -> Option<u16> {
+        self.pen.style
+    }
+
+    /// Whether the path being recorded is dashed (its distance along a
+    /// sub-path places its dashes).
+    pub(crate) fn path_dashed(&self) -> bool {
+        let ink = self.pen.style.and_then(|s| self.styles.get(usize::from(s)));
+        ink.is_some_and(|ink| ink.period > 0.0)
+    }
+
+    /// Past this many points, a recording resumed from pieces may differ
+    /// from one made in one go (arcs taken whole, moves no longer a
+    /// sub-path each: [`MOST_KEPT`]); it is made in one go then.
+    pub(crate) fn most_resumed(&self) -> usize {
+        MOST_KEPT.min(self.whole_arcs_past)
+    }
+
+    /// Takes what was traced for the last drawing (`which` 0) or the one
+    /// before it (1), when this drawing may take pieces of its recording:
+    /// its pixels are its recording's (it is kept), recorded on this
+    /// surface at this scale, and this drawing is not made in parts.
+    /// [`Raster::give_back`] returns it.
+    pub(crate) fn take_traced(&mut self, which: usize) -> Option<Box<Traced>> {
+        let (full, scale, planned) = (self.full, self.scale, self.planned);
+        let last = if which == 0 {
+            &mut self.last
+        } else {
+            &mut self.older.last
+        };
+        let usable = last.valid && last.full == full && last.scale == scale && !planned;
+        if usable { last.traced.take() } else { None }
+    }
+
+    /// Returns what [`Raster::take_traced`] took.
+    pub(crate) fn give_back(&mut self, which: usize, traced: Option<Box<Traced>>) {
+        let last = if which == 0 {
+            &mut self.last
+        } else {
+            &mut self.older.last
+        };
+        if traced.is_some() {
+            last.traced = traced;
+        }
+    }
+
+    /// Keeps what was traced to make this drawing, for the next one.
+    pub(crate) fn set_traced(&mut self, traced: Box<Traced>) {
+        self.traced = Some(traced);
+    }
+
+    /// Adds ink recorded elsewhere (a sum of [`covered`] areas).
+    pub(crate) fn add_ink(&mut self, ink: f64) {
+        self.ink_area += covered(ink);
+    }
+
+    /// Appends the sub-paths `subs` and the points `points` of the last
+    /// drawing's recording (`which` 0) or the one before's (1), the
+    /// sub-paths in style `style`: a piece of the path being recorded that
+    /// an edit left alone. A recording made on the coarse grid was halved
+    /// ([`Raster::choose_grid`]) and is doubled back, exactly but for
+    /// numbers below the normal ones: false then (and for a piece out of
+    /// range), with whatever was appended.
+    pub(crate) fn copy_recorded(
+        &mut self,
+        which: usize,
+        subs: Range<usize>,
+        points: Range<usize>,
+        style: u16,
+    ) -> bool {
+        let last = if which == 0 {
+            &self.last
+        } else {
+            &self.older.last
+        };
+        let (Some(from_subs), Some(from_points)) =
+            (last.subs.get(subs), last.points.get(points.clone()))
+        else {
+            return false;
+        };
+        let k = if last.coarse == Some(true) { 2.0 } else { 1.0 };
+        let exact = |v: f32| k == 1.0 || v == 0.0 || v.abs() >= f32::MIN_POSITIVE;
+        let shift = self.points.len() as i64 - points.start as i64;
+        for sub in from_subs {
+            if !exact(sub.phase) {
+                return false;
+            }
+            let first = u32::try_from(i64::from(sub.first) + shift).unwrap_or(u32::MAX);
+            self.subs.push(Sub {
+                first,
+                phase: sub.phase * k,
+                style,
+            });
+        }
+        if k == 1.0 {
+            self.points.extend_from_slice(from_points);
+            return true;
+        }
+        for p in from_points {
+            if !(exact(p[0]) && exact(p[1])) {
+                return false;
+            }
+            self.points.push(p.map(|v| v * k));
+        }
+        true
+    }
+}
+
+#[cfg(test)]
+impl Raster {
+    /// The recording kept of the last drawing, bit for bit: its sub-paths
+    /// (first point, phase, style), points, styles, ink and grid.
+    pub(crate) fn kept_recording(&mut self) -> impl PartialEq + std::fmt::Debug + use<> {
+        self.finish();
+        let last = &self.last;
+        assert!(last.valid, "the drawing was kept for the next one");
+        let subs: Vec<(u32, u32, u16)> = (last.subs.iter())
+            .map(|s| (s.first, s.phase.to_bits(), s.style))
+            .collect();
+        let points: Vec<[u32; 2]> = last.points.iter().map(|p| p.map(f32::to_bits)).collect();
+        let styles = format!("{:?}", last.styles);
+        (subs, points, styles, self.ink_area.to_bits(), last.coarse)
+    }
+}
