@@ -478,10 +478,19 @@ impl Toolpath {
     /// edit, a kept drawing records again only the moves between
     /// ([`crate::render::Raster`]).
     pub fn shared_moves(&self, other: &Toolpath) -> (usize, usize) {
+        // A move's ends are the six coordinates from its start vertex on.
         let same_ends = |m: usize, o: usize| {
-            let bits =
-                |e: Option<[[Xyz; 2]; 2]>| e.map(|e| e.map(|p| p.map(|q| q.map(f64::to_bits))));
-            bits(self.ends(m)) == bits(other.ends(o))
+            fn ends(t: &Toolpath, m: usize) -> Option<(&[f64], &[f64])> {
+                let a = t.starts[m] as usize * 3;
+                Some((t.actual.get(a..a + 6)?, t.programmed.get(a..a + 6)?))
+            }
+            let same =
+                |a: &[f64], b: &[f64]| a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits());
+            match (ends(self, m), ends(other, o)) {
+                (Some((a, p)), Some((b, q))) => same(a, b) && same(p, q),
+                (None, None) => true,
+                _ => false,
+            }
         };
         let n = self.len().min(other.len());
         let (mut mine, mut theirs) = (self.arcs_from(0), other.arcs_from(0));

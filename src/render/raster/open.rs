@@ -179,7 +179,7 @@ fn any_in(bits: &[u64], words: usize, (x0, x1): (usize, usize), (y0, y1): (usize
 
 /// Calls `f` with each set bit of `reach` (bit `j` of word `k` being
 /// `64 (base + k) + j`), in ascending order.
-#[inline]
+#[inline(always)]
 pub(super) fn each_set(reach: &[u64], base: usize, mut f: impl FnMut(usize)) {
     for (k, &word) in reach.iter().enumerate() {
         let mut word = word;
@@ -188,6 +188,17 @@ pub(super) fn each_set(reach: &[u64], base: usize, mut f: impl FnMut(usize)) {
             word &= word - 1;
         }
     }
+}
+
+/// The first and the last cell set in `reach` (as [`each_set`] numbers
+/// them), or None when none is.
+pub(super) fn set_bounds(reach: &[u64], base: usize) -> Option<(usize, usize)> {
+    let first = reach.iter().position(|&w| w != 0)?;
+    let last = reach.iter().rposition(|&w| w != 0)?;
+    Some((
+        (base + first) << 6 | reach[first].trailing_zeros() as usize,
+        (base + last) << 6 | (63 - reach[last].leading_zeros() as usize),
+    ))
 }
 
 // (proptest is a native dev-dependency: `wasm-pack test` builds these too.)

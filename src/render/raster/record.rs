@@ -262,8 +262,8 @@ impl Pen for Raster {
         let at = |t: f64| {
             let k = t / length;
             [
-                (from.0 + (to.0 - from.0) * k) as f32,
-                (from.1 + (to.1 - from.1) * k) as f32,
+                recorded(from.0 + (to.0 - from.0) * k),
+                recorded(from.1 + (to.1 - from.1) * k),
             ]
         };
         if self.planned && self.hidden(at(t0), at(t1), half_width) {
@@ -278,7 +278,7 @@ impl Pen for Raster {
             let phase = phase_of(self.pen.along + t0, period);
             self.subs.push(Sub {
                 first: self.points.len() as u32,
-                phase: phase as f32,
+                phase: recorded(phase),
                 style,
             });
             self.points.push(at(t0));
@@ -359,6 +359,18 @@ impl Pen for Raster {
         true
     }
 }
+
+/// A coordinate or a phase as recorded: as `f32`, with the tiniest numbers
+/// (below 2^-100 pixels) made 0, so that halving a recording for the
+/// coarse grid ([`Raster::choose_grid`]) and doubling it back (a recording
+/// resumed from the last one's pieces: `super::resume`) is exact — it is
+/// for every normal `f32` at least 2^-125.
+pub(super) fn recorded(v: f64) -> f32 {
+    let v = v as f32;
+    if v.abs() < TINY { 0.0 } else { v }
+}
+
+const TINY: f32 = 1.0 / (1u128 << 100) as f32;
 
 /// Where the distance `along` a sub-path falls in a dash pattern of
 /// `period` (0 for a solid line). `rem_euclid` is a call to fmod (3 % of a

@@ -125,9 +125,8 @@ impl Raster {
     /// drawing's recording (`which` 0) or the one before's (1), the
     /// sub-paths in style `style`: a piece of the path being recorded that
     /// an edit left alone. A recording made on the coarse grid was halved
-    /// ([`Raster::choose_grid`]) and is doubled back, exactly but for
-    /// numbers below the normal ones: false then (and for a piece out of
-    /// range), with whatever was appended.
+    /// ([`Raster::choose_grid`]) and is doubled back. False, and nothing
+    /// appended, for a piece out of range.
     pub(crate) fn copy_recorded(
         &mut self,
         which: usize,
@@ -145,30 +144,17 @@ impl Raster {
         else {
             return false;
         };
+        // (Exact: the recorder makes 0 of numbers that halving would round,
+        // `record::recorded`.)
         let k = if last.coarse == Some(true) { 2.0 } else { 1.0 };
-        let exact = |v: f32| k == 1.0 || v == 0.0 || v.abs() >= f32::MIN_POSITIVE;
         let shift = self.points.len() as i64 - points.start as i64;
-        for sub in from_subs {
-            if !exact(sub.phase) {
-                return false;
-            }
-            let first = u32::try_from(i64::from(sub.first) + shift).unwrap_or(u32::MAX);
-            self.subs.push(Sub {
-                first,
-                phase: sub.phase * k,
-                style,
-            });
-        }
-        if k == 1.0 {
-            self.points.extend_from_slice(from_points);
-            return true;
-        }
-        for p in from_points {
-            if !(exact(p[0]) && exact(p[1])) {
-                return false;
-            }
-            self.points.push(p.map(|v| v * k));
-        }
+        self.subs.extend(from_subs.iter().map(|sub| Sub {
+            first: (i64::from(sub.first) + shift) as u32,
+            phase: sub.phase * k,
+            style,
+        }));
+        self.points
+            .extend(from_points.iter().map(|p| [p[0] * k, p[1] * k]));
         true
     }
 }

@@ -1,58 +1,119 @@
 //! The sweep: a segment drawn column by column along its major axis,
 //! front to back, crossing finished blocks and tiles a step at a time.
 
-use super::open::{Line, each_set};
+use super::open::{Line, each_set, set_bounds};
 use super::{BLOCK_BITS, FULL, FULL_TILE, Ink, Raster, TILE_BITS, TILE_MASK, TILE_PIXELS};
 use super::{coord, larger, pixel, smaller};
 
 /// The stretches of a dashed segment that are drawn, worked out when the
-/// sweep first looks at a column: in a dense drawing most dashed segments
-/// cross only finished tiles, and working out their dashes beforehand was
-/// 7 % of a 1M-block frame (callgrind).
+/// sweep first looks at a column of a stretch of columns it may draw in:
+/// in a dense drawing most dashed segments cross only finished tiles, and
+/// working out their dashes beforehand was 7 % of a 1M-block frame; a
+/// drawing made on the last one's pixels looks at a few columns of a long
+/// segment, and working out all of its dashes for those was 7 % of such a
+/// frame (callgrind).
 struct Dashes {
     /// Where the segment's start is in the pattern, and its length.
     at: f64,
     length: f64,
-    /// The stretches (distances from the start), once `ready`; the memory
-    /// is the raster's, lent. `next`: the sweep's place among them.
+    /// The distances from the start within which the sweep looks next.
+    window: (f64, f64),
+    /// The stretches (distances from the start) that reach into the window,
+    /// once `ready`; the memory is the raster's, lent. `next`: the
+    /// sweep's place among them.
     on: Vec<(f64, f64)>,
     ready: bool,
     next: usize,
 }
 
 impl Dashes {
-    /// Works out the stretches; the sweep starts at the first one, or past
-    /// the last when `reversed` (it runs from the segment's end).
+    /// Works out the stretches within `reach` of the window; the sweep
+    /// starts at the first one, or past the last when `reversed` (it runs
+    /// from the segment's end). Each stretch is the pattern's, worked out
+    /// from the number of its period (not summed dash by dash), so that it
+    /// comes out alike whatever the window: a drawing made on the last
+    /// one's pixels looks only at the columns where it changed, and must
+    /// dash them as a drawing from nothing does.
     #[cold]
-    fn work_out(&mut self, ink: &Ink, reversed: bool) {
+    fn work_out(&mut self, ink: &Ink, reversed: bool, reach: f64) {
         self.ready = true;
-        // Find the dash or gap the segment starts in.
-        let mut phase = self.at.rem_euclid(ink.period);
-        let mut entry = 0;
-        while entry + 1 < ink.dash.len() && phase >= ink.dash[entry] {
-            phase -= ink.dash[entry];
-            entry += 1;
-        }
         self.on.clear();
-        let mut t = 0.0;
-        // Recorded segments lie in the view, so this is a few hundred steps
-        // at most; the bound only guards against patterns of tiny entries.
-        let mut steps = 0;
-        while t < self.length && steps < 100_000 {
-            steps += 1;
-            let piece = smaller(larger(ink.dash[entry] - phase, 0.0), self.length - t);
-            if entry.is_multiple_of(2) && piece > 0.0 {
-                self.on.push((t, t + piece));
+        let period = ink.period;
+        let phase = self.at.rem_euclid(period);
+        let lo = larger(self.window.0 - reach, 0.0);
+        let hi = smaller(self.window.1 + reach, self.length);
+        // Periods of the pattern (from the one the start falls in: number
+        // 0) that may reach [lo, hi]. The bound only guards against
+        // patterns of tiny entries.
+        let first = ((lo + phase) / period).floor() - 1.0;
+        let last = smaller(((hi + phase) / period).floor(), first + 100_000.0);
+        let mut j = first;
+        while j <= last {
+            let mut start = j * period - phase;
+            for (e, &dash) in ink.dash.iter().enumerate() {
+                if e % 2 == 0 {
+                    let (s, t) = (larger(start, 0.0), smaller(start + dash, self.length));
+                    if s < t && t >= lo && s <= hi {
+                        self.on.push((s, t));
+                    }
+                }
+                start += dash;
             }
-            t += piece;
-            phase = 0.0;
-            // Not `%`: a division per dash was 2 % of a 1M-block frame.
-            entry += 1;
-            if entry == ink.dash.len() {
-                entry = 0;
-            }
+            j += 1.0;
         }
         self.next = if reversed { self.on.len() } else { 0 };
+    }
+}
+
+/// A dashed segment's dashes as its sweep meets them, column by column.
+struct DashSweep<'d> {
+    dashes: &'d mut Dashes,
+    /// The sweep's first column is at `a0` along the major axis; `k`
+    /// converts columns to distance along the segment.
+    a0: f64,
+    k: f64,
+    length: f64,
+    reversed: bool,
+    hw: f64,
+}
+
+impl DashSweep<'_> {
+    /// The columns `first` to `last` are those looked at next.
+    fn window(&mut self, first: usize, last: usize) {
+        let along = |col: usize| (coord(col) + 0.5 - self.a0) * self.k;
+        let (p, q) = (along(first), along(last));
+        self.dashes.window = if self.reversed {
+            (self.length - q, self.length - p)
+        } else {
+            (p, q)
+        };
+        self.dashes.ready = false;
+    }
+
+    /// Whether column `col` is drawn: its distance along the segment lies
+    /// within the half width of a stretch drawn (the dashes have square
+    /// ends, as the line has). Columns are asked in order.
+    #[inline(always)]
+    fn covers(&mut self, ink: &Ink, col: usize) -> bool {
+        let (reversed, hw) = (self.reversed, self.hw);
+        let dashes = &mut *self.dashes;
+        if !dashes.ready {
+            dashes.work_out(ink, reversed, hw);
+        }
+        let (on, next) = (&dashes.on, &mut dashes.next);
+        let along = (coord(col) + 0.5 - self.a0) * self.k;
+        if reversed {
+            let t = self.length - along;
+            while *next > 0 && t < on[*next - 1].0 - hw {
+                *next -= 1;
+            }
+            *next > 0 && t <= on[*next - 1].1 + hw
+        } else {
+            while *next < on.len() && along > on[*next].1 + hw {
+                *next += 1;
+            }
+            *next < on.len() && along >= on[*next].0 - hw
+        }
     }
 }
 
@@ -74,6 +135,7 @@ impl Raster {
         let mut dashes = Dashes {
             at,
             length,
+            window: (0.0, length),
             on: std::mem::take(&mut self.dashes),
             ready: false,
             next: 0,
@@ -244,29 +306,14 @@ impl Raster {
         // drawn; the dashes have square ends, as the line has.
         let k = (1.0 + slope * slope).sqrt();
         let length = da * k;
-        let mut dash = dashes;
-        let mut in_dash = |col: usize| {
-            let Some(dashes) = &mut dash else {
-                return true;
-            };
-            if !dashes.ready {
-                dashes.work_out(ink, reversed);
-            }
-            let (on, next) = (&dashes.on, &mut dashes.next);
-            let along = (coord(col) + 0.5 - a0) * k;
-            if reversed {
-                let t = length - along;
-                while *next > 0 && t < on[*next - 1].0 - hw {
-                    *next -= 1;
-                }
-                *next > 0 && t <= on[*next - 1].1 + hw
-            } else {
-                while *next < on.len() && along > on[*next].1 + hw {
-                    *next += 1;
-                }
-                *next < on.len() && along >= on[*next].0 - hw
-            }
-        };
+        let mut dash = dashes.map(|dashes| DashSweep {
+            dashes,
+            a0,
+            k,
+            length,
+            reversed,
+            hw,
+        });
         // The first and the last column looked at, with their rows: the
         // rows move one way along the line (the centre is monotonic in the
         // column, and so are its rounding and clamping), so these bound the
@@ -291,15 +338,31 @@ impl Raster {
             None => [Some((first, last)), None],
         };
         for (first, last) in parts.into_iter().flatten() {
+            let base = self.open_along(transposed, (first, last), &line);
+            let reach = std::mem::take(&mut self.reach_tiles);
+            if let Some(dash) = &mut dash
+                && let Some((p, q)) = set_bounds(&reach, base)
+            {
+                // Dashes for the columns of the tiles it may reach.
+                let cols = (
+                    (p << TILE_BITS).max(first),
+                    (q << TILE_BITS | TILE_MASK).min(last),
+                );
+                dash.window(cols.0, cols.1);
+            }
+            let mut in_dash = |col: usize| dash.as_mut().is_none_or(|d| d.covers(ink, col));
+            let part = (first, last, base);
             self.sweep_part(
                 ink,
                 stamp,
                 transposed,
-                (first, last),
+                part,
+                &reach,
                 &line,
                 &mut in_dash,
                 &mut touched,
             );
+            self.reach_tiles = reach;
         }
         if let Some([(p, r0, r1), (q, r2, r3)]) = touched {
             let (r, s) = (r0.min(r2), r1.max(r3));
@@ -313,7 +376,8 @@ impl Raster {
 
     /// The columns `first` to `last` of the sweep of `line`
     /// ([`Raster::sweep`]): those in which it may reach an open tile
-    /// ([`Raster::open_along`]), pixel by pixel across.
+    /// (`reach`, from word `base` on: [`Raster::open_along`]), pixel by
+    /// pixel across.
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     fn sweep_part(
@@ -321,7 +385,8 @@ impl Raster {
         ink: &Ink,
         stamp: u32,
         transposed: bool,
-        (first, last): (usize, usize),
+        (first, last, base): (usize, usize, usize),
+        reach: &[u64],
         line: &Line,
         in_dash: &mut impl FnMut(usize) -> bool,
         touched: &mut Option<[(usize, usize, usize); 2]>,
@@ -330,9 +395,7 @@ impl Raster {
         let minor_last = coord(minor_len) - 1.0;
         let opaque = ink.alpha >= 1.0;
         let across = line.across;
-        let base = self.open_along(transposed, (first, last), line);
-        let reach = std::mem::take(&mut self.reach_tiles);
-        each_set(&reach, base, |tile| {
+        each_set(reach, base, |tile| {
             let from = (tile << TILE_BITS).max(first);
             let to = (tile << TILE_BITS | TILE_MASK).min(last);
             for col in from..=to {
@@ -382,7 +445,6 @@ impl Raster {
                 *touched = Some(touched.map_or([seen; 2], |[first, _]| [first, seen]));
             }
         });
-        self.reach_tiles = reach;
     }
 
     /// The columns (inclusive) within `first` to `last` at which every
