@@ -33,7 +33,7 @@ import {
   initResults, setupRefused, showDrawn, showProgress, showResult, showViewState,
 } from './modules/results.js';
 import {
-  call, callAnswered, flushRun, initRunner, latestRun, onFileRead, post, readingFile, runAnswered,
+  call, callAnswered, flushRun, initRunner, latestRun, onFileRead, post, readingFile, resendRun, runAnswered,
   scheduleRun, taskBegun, workerDid,
 } from './modules/runner.js';
 import { initSettings, renderSettings } from './modules/settings.js';
@@ -62,7 +62,14 @@ initWork(startWork, () => editor.getText());
 
 // The worker, supervised (created below, once the canvas is wired).
 let supervisor = null;
-initRunner({ post: (message) => supervisor?.post(message), text: () => editor.getText(), view: startWork.view ?? null });
+initRunner({
+  post: (message) => supervisor?.post(message),
+  text: () => editor.getText(),
+  takeEdit: () => editor.takeEdit(),
+  // (0 while no worker runs: the next run starts one, which holds no text.)
+  workerSerial: () => (supervisor?.running() ? supervisor.serial() : 0),
+  view: startWork.view ?? null,
+});
 
 const editor = createEditor($('editor'), {
   doc: startWork.program,
@@ -158,6 +165,9 @@ function onWorkerMessage(m) {
       break;
     case 'read':
       workerDid('read', m.gen);
+      break;
+    case 'resend':
+      resendRun(m.gen);
       break;
     case 'drawn':
       workerDid('drawn', m.gen);

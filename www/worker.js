@@ -6,8 +6,10 @@
 // report — and, when the page asks (call), a link, a document or an export.
 //
 // In:  init {canvas, width, height, dpr, theme, stepSeq, testHooks} · resize {width, height, dpr}
-//      run {gen, program | file, setup, view} (file: a File the page opened,
-//        read here straight into wasm memory) · theme {name}
+//      run {gen, program | edit | file, setup, view} (edit {base, from, to,
+//        insert, length}: the program of run `base` with from..to replaced;
+//        file: a File the page opened, read here straight into wasm memory)
+//      · theme {name}
 //      view {op: zoom {x, y, factor} | pan {dx, dy} | fit | plane {plane} | set {view}}
 //      step {index} · pick {x, y, tolerance} · line {line}
 //      call {id, op, ...}: op document {base, embed, forms} · decode {text, base}
@@ -17,6 +19,8 @@
 //      result {gen, summary, diagnostics}
 //      state {gen, view, step, blocks, block, cause} · drawn {width, height, dpr}
 //      failure {gen, message} · reply {id, value | error}
+//      resend {gen} (run gen's edit was not made on the text held here: the
+//        page sends its whole text)
 //
 // Calls are answered in order with the runs, so a call posted after a run
 // request sees that run.
@@ -119,6 +123,38 @@ function invalidate(cause, gesture = false) {
       self.postMessage({ type: 'failure', gen: shown, message: String(error?.message ?? error) });
     }
   });
+}
+
+// The program of the last run request, as a string (null: a file run's,
+// or not known), and the request's generation: what an edit is made on.
+let text = null;
+let textGen = -1;
+
+/**
+ * Takes the program of run request `message`: its text, or its edit of the
+ * last request's text (`{ base, from, to, insert, length }`), or none for a
+ * file. False when the edit cannot be made (not on the text held, or not
+ * giving the length the page has): the page then sends the whole text.
+ */
+function takeProgram(message) {
+  if (typeof message.program === 'string') {
+    [text, textGen] = [message.program, message.gen];
+    return true;
+  }
+  const edit = message.edit;
+  if (!edit) {
+    [text, textGen] = [null, -1];
+    return true;
+  }
+  const made = text !== null && textGen === edit.base
+    ? text.slice(0, edit.from) + edit.insert + text.slice(edit.to)
+    : null;
+  if (made === null || made.length !== edit.length) {
+    [text, textGen] = [null, -1];
+    return false;
+  }
+  [text, textGen] = [made, message.gen];
+  return true;
 }
 
 /**
@@ -230,6 +266,12 @@ function handle(message) {
       invalidate('theme');
       break;
     case 'run':
+      // The program: the whole text, an edit of the last one (kept even
+      // when this run is skipped: the next edit is made on it), or a file.
+      if (!takeProgram(message)) {
+        if (message.gen >= latest) self.postMessage({ type: 'resend', gen: message.gen });
+        return undefined;
+      }
       // A newer request is already queued: skip straight to it.
       if (message.gen < latest) return undefined;
       // The page's supervisor times each task from here.
@@ -242,8 +284,8 @@ function handle(message) {
           if (message.gen >= latest) run(message, length);
         });
       }
-      if (testHooks && fault(message.program)) return undefined;
-      run(message, writeProgram(message.program));
+      if (testHooks && fault(text)) return undefined;
+      run(message, writeProgram(text));
       break;
     case 'view':
       view(message);

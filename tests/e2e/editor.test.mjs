@@ -89,6 +89,43 @@ describe('editor', () => {
     });
   });
 
+  test('edits go to the worker as changes, and it runs the text the editor shows', async () => {
+    // The page sends an edit of the last text sent, not the whole text
+    // (a 100k-block program's 3 MB each keystroke): what runs must be
+    // what the editor shows, edit after edit.
+    const init = () => {
+      const W = window.Worker;
+      window.__runs = [];
+      window.Worker = class extends W {
+        postMessage(m, ...rest) {
+          if (m && m.type === 'run') window.__runs.push(m.edit ? 'edit' : typeof m.program === 'string' ? 'text' : 'file');
+          super.postMessage(m, ...rest);
+        }
+      };
+    };
+    await withPage(async (page) => {
+      await typeProgram(page, 'G00 X10. Y10.\nG01 X20. F100.\nG01 Y30.\n');
+      await page.locator('.cm-line').nth(1).click();
+      await page.keyboard.press('End');
+      await page.keyboard.type(' Z-1.');
+      await page.keyboard.press('ControlOrMeta+Home');
+      await page.keyboard.type('N1 ');
+      await page.keyboard.press('ControlOrMeta+End');
+      await page.keyboard.type('G00 Z5.\n');
+      for (let i = 0; i < 4; i += 1) await page.keyboard.press('Shift+ArrowLeft');
+      await page.keyboard.press('Backspace');
+      await page.keyboard.press('ControlOrMeta+Z');
+      await page.keyboard.press('ControlOrMeta+Shift+Z');
+      await waitForRun(page);
+      const shown = await page.evaluate(() => window.offsetlab.program());
+      assert.match(shown, /^N1 G00 X10\. Y10\.\nG01 X20\. F100\. Z-1\.\n/);
+      const ran = await page.evaluate(async () => (await window.offsetlab.document()).document.program);
+      assert.equal(ran, shown);
+      const runs = await page.evaluate(() => window.__runs);
+      assert.ok(runs.filter((k) => k === 'edit').length >= 10, runs.join(' '));
+    }, { init });
+  });
+
   test('a syntax error is marked inline with its message and listed with line:column; click and Enter jump to it', async () => {
     await withPage(async (page) => {
       await typeProgram(page, 'G00 X10. Y10.\nG01 X1.2.3 F100.\nG01 X20.\n');

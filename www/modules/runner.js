@@ -21,6 +21,12 @@ const NEEDS_RUN = new Set(['document', 'export']);
 
 let send = () => {};
 let program = () => '';
+let takeEdit = () => null;
+let workerSerial = () => 0;
+// The run request whose program the worker holds as its text ({ gen,
+// serial }: the worker it went to), which the next one may be sent as an
+// edit of; null: send the whole text.
+let base = null;
 let lastRunMs = Infinity;
 let lastStepSeq = 0; // the stepper's last request, continued by a restarted worker
 let requested = 0;
@@ -36,10 +42,17 @@ const waits = []; // { what, gen, resolve } (workerDone)
 let callId = 0;
 const calls = new Map(); // call id → { resolve, reject }
 
-/** `post(message)` reaches the worker; `text()` is the editor's program; `view` the view of the first run. */
-export function initRunner({ post, text, view = null }) {
+/**
+ * `post(message)` reaches the worker; `text()` is the editor's program,
+ * `edit()` what changed in it since the last call (the editor's
+ * `takeEdit`); `serial()` which worker `post` reaches; `view` the view of
+ * the first run.
+ */
+export function initRunner({ post, text, takeEdit: edit = () => null, workerSerial: serial = () => 0, view = null }) {
   send = post;
   program = text;
+  takeEdit = edit;
+  workerSerial = serial;
   pendingView = view;
 }
 
@@ -105,7 +118,30 @@ function sendRun(doc, view, what) {
   document.body.dataset.requested = String(requested);
   lastSent = { ...doc, view };
   sent.set(requested, lastSent);
-  post({ type: 'run', gen: requested, ...what, setup: doc.setup, view });
+  const message = { type: 'run', gen: requested, ...what, setup: doc.setup, view };
+  // The editor's text goes as an edit of the last one sent to the same
+  // worker: a keystroke in a 100k-block program copied its 3 MB to the
+  // worker (10 ms, and as much again in the worker). The worker checks
+  // the length it makes and asks for the whole text if they differ.
+  const edit = takeEdit();
+  const current = what.program !== undefined && edit !== null && what.program === program();
+  if (current && base && base.serial === workerSerial()) {
+    delete message.program;
+    message.edit = { base: base.gen, ...edit, length: what.program.length };
+  }
+  post(message);
+  base = current ? { gen: requested, serial: workerSerial() } : null;
+}
+
+/**
+ * The worker could not make the text of run `gen` from the edit sent (it
+ * had not the text the edit was made on): the whole text again, if that
+ * run is still the latest.
+ */
+export function resendRun(gen) {
+  base = null;
+  if (gen !== requested || !lastSent || typeof lastSent.program !== 'string') return;
+  post({ type: 'run', gen, program: lastSent.program, setup: lastSent.setup, view: lastSent.view });
 }
 
 /** Whether the page is reading the text of a file the worker runs. */

@@ -171,5 +171,7 @@ export function createSupervisor({ url, budgetMs, startupMs, makeInit, onMessage
     stop,
     post,
     running: () => worker !== null,
+    /** Which worker this is: a new one (restarted) has another number. */
+    serial: () => serial,
   };
 }
