@@ -126,6 +126,41 @@ describe('editor', () => {
     }, { init });
   });
 
+  test('an edit the worker cannot make is answered with the whole text', async () => {
+    // The first edit sent is spoilt on its way (its length is wrong): the
+    // worker asks for the whole text, and runs what the editor shows.
+    const init = () => {
+      const W = window.Worker;
+      window.__spoilt = 0;
+      window.__texts = 0;
+      window.Worker = class extends W {
+        postMessage(m, ...rest) {
+          if (m && m.type === 'run' && m.edit && window.__spoil && !window.__spoilt) {
+            window.__spoilt = m.gen;
+            super.postMessage({ ...m, edit: { ...m.edit, length: m.edit.length + 1 } }, ...rest);
+            return;
+          }
+          if (m && m.type === 'run' && typeof m.program === 'string') window.__texts += 1;
+          super.postMessage(m, ...rest);
+        }
+      };
+    };
+    await withPage(async (page) => {
+      await typeProgram(page, 'G00 X10. Y10.\nG01 X20. F100.\n');
+      await page.evaluate(() => { window.__spoil = true; });
+      const texts = await page.evaluate(() => window.__texts);
+      await page.keyboard.type('G01 Y5.\n');
+      await waitForRun(page);
+      assert.ok(await page.evaluate(() => window.__spoilt) > 0, 'an edit was spoilt');
+      assert.ok(await page.evaluate(() => window.__texts) > texts, 'the whole text was sent again');
+      const shown = await page.evaluate(() => window.offsetlab.program());
+      assert.equal(shown, 'G00 X10. Y10.\nG01 X20. F100.\nG01 Y5.\n');
+      const ran = await page.evaluate(async () => (await window.offsetlab.document()).document.program);
+      assert.equal(ran, shown);
+      assert.match(await page.locator('#summary').textContent(), /3 blocks · 3 moves · 0 errors/);
+    }, { init });
+  });
+
   test('a syntax error is marked inline with its message and listed with line:column; click and Enter jump to it', async () => {
     await withPage(async (page) => {
       await typeProgram(page, 'G00 X10. Y10.\nG01 X1.2.3 F100.\nG01 X20.\n');
