@@ -1092,3 +1092,48 @@ fn a_program_written_into_the_buffer_runs_as_its_text_does() {
     let r = s.run_buffer(100, JsValue::NULL, None).expect("run");
     assert_eq!(num(&get(&r, "summary"), "blocks"), 0.0);
 }
+
+/// Writes `bytes` at `at` in wasm memory (the address a session gave).
+fn write_at(at: *mut u8, bytes: &[u8]) {
+    let memory: js_sys::WebAssembly::Memory = wasm_bindgen::memory().unchecked_into();
+    let view = Uint8Array::new_with_byte_offset_and_length(
+        &memory.buffer(),
+        at as u32,
+        bytes.len() as u32,
+    );
+    view.copy_from(bytes);
+}
+
+#[wasm_bindgen_test]
+fn an_edit_made_in_the_buffer_runs_as_the_edited_text_does() {
+    let program = "G00 X0 Y0\nG01 X10. F100.\nG01 Y10.\n";
+    let mut s = Session::new();
+    assert!(write_program(&mut s, program.as_bytes(), program.len()));
+    s.run_buffer(program.len(), JsValue::NULL, None)
+        .expect("run");
+    // "X10." becomes "X12.5", as the page's worker makes a typed edit.
+    let (from, to) = (15, 18);
+    let at = s.program_splice(program.len(), from, to, 4);
+    assert!(!at.is_null());
+    write_at(at, b"12.5");
+    let edited = "G00 X0 Y0\nG01 X12.5 F100.\nG01 Y10.\n";
+    let r = s
+        .run_buffer(edited.len(), JsValue::NULL, None)
+        .expect("run");
+    let mut t = Session::new();
+    let tr = t.run(edited.to_string(), JsValue::NULL).expect("run");
+    assert_eq!(seen(&s, &r), seen(&t, &tr));
+    // And again, on the text just run (a line added at the end).
+    let at = s.program_splice(edited.len(), edited.len(), edited.len(), 9);
+    write_at(at, b"G00 Z5.\n\n");
+    let again = format!("{edited}G00 Z5.\n\n");
+    let r = s.run_buffer(again.len(), JsValue::NULL, None).expect("run");
+    let tr = t.run(again.clone(), JsValue::NULL).expect("run");
+    assert_eq!(seen(&s, &r), seen(&t, &tr));
+    // Not the length of the text held, or not within it: refused, and the
+    // buffer is empty (the worker then writes the whole text).
+    assert!(s.program_splice(again.len() + 1, 0, 0, 0).is_null());
+    assert!(s.program_splice(0, 0, 1, 0).is_null());
+    let r = s.run_buffer(again.len(), JsValue::NULL, None).expect("run");
+    assert_eq!(num(&get(&r, "summary"), "blocks"), 0.0);
+}

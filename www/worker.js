@@ -129,6 +129,11 @@ function invalidate(cause, gesture = false) {
 // or not known), and the request's generation: what an edit is made on.
 let text = null;
 let textGen = -1;
+// The run request whose program is in the session's buffer as it will be
+// run (written, or made there from the last one by an edit), when it is
+// ASCII (its UTF-16 units are its bytes); -1: none.
+let bufferGen = -1;
+const ASCII = /^[\x00-\x7f]*$/;
 
 /**
  * Takes the program of run request `message`: its text, or its edit of the
@@ -138,23 +143,48 @@ let textGen = -1;
  */
 function takeProgram(message) {
   if (typeof message.program === 'string') {
-    [text, textGen] = [message.program, message.gen];
+    [text, textGen, bufferGen] = [message.program, message.gen, -1];
     return true;
   }
   const edit = message.edit;
   if (!edit) {
-    [text, textGen] = [null, -1];
+    [text, textGen, bufferGen] = [null, -1, -1];
     return true;
   }
   const made = text !== null && textGen === edit.base
     ? text.slice(0, edit.from) + edit.insert + text.slice(edit.to)
     : null;
   if (made === null || made.length !== edit.length) {
-    [text, textGen] = [null, -1];
+    [text, textGen, bufferGen] = [null, -1, -1];
     return false;
   }
   [text, textGen] = [made, message.gen];
+  // The same edit of the buffer (its bytes are its units): the text made
+  // of the edit's pieces need not be written whole.
+  bufferGen = bufferGen === edit.base && ASCII.test(edit.insert) && spliceProgram(edit)
+    ? message.gen
+    : -1;
   return true;
+}
+
+/**
+ * Makes the edit in the session's buffer (ASCII: the base text was
+ * `length - insert.length + (to - from)` bytes); false if it could not.
+ */
+function spliceProgram({ from, to, insert, length }) {
+  const before = length - insert.length + (to - from);
+  const at = session.program_splice(before, from, to, insert.length);
+  if (at === 0) return false;
+  if (insert.length > 0) encoder.encodeInto(insert, new Uint8Array(memory.buffer, at, insert.length));
+  return true;
+}
+
+/** The program of run `message` in the session's buffer: its length in bytes. */
+function programInBuffer(message) {
+  if (bufferGen === message.gen) return text.length;
+  const length = writeProgram(text);
+  bufferGen = length === text.length ? message.gen : -1;
+  return length;
 }
 
 /**
@@ -285,7 +315,7 @@ function handle(message) {
         });
       }
       if (testHooks && fault(text)) return undefined;
-      run(message, writeProgram(text));
+      run(message, programInBuffer(message));
       break;
     case 'view':
       view(message);
