@@ -14,6 +14,7 @@ use crate::toolpath::{ToolArc, Toolpath, Visit};
 /// One stroke of a scene: the moves of `moves` on the programmed or the
 /// actual path (`kind.0`) that are rapid or not (`kind.1`), and the group
 /// it belongs to.
+#[derive(Clone)]
 pub(super) struct Layer {
     pub(super) group: &'static str,
     pub(super) kind: (bool, bool),

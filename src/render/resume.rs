@@ -25,7 +25,7 @@
 use std::ops::Range;
 
 use super::paths::{Layer, Tracer, TracerState, draw_paths, layers};
-use super::{Frame, Pen, RESTART_EVERY, Raster, Scene, Stroke};
+use super::{Frame, Pen, RESTART_EVERY, Raster, Scene};
 use crate::render::raster::Recorded;
 use crate::toolpath::Toolpath;
 
@@ -44,10 +44,7 @@ pub(crate) struct Traced {
 
 /// One path (one [`Layer`]) as it was traced.
 struct TracedPath {
-    group: &'static str,
-    kind: (bool, bool),
-    moves: Range<usize>,
-    stroke: Stroke,
+    layer: Layer,
     /// Its style in the recording, once begun.
     style: Option<u16>,
     /// Where the tracing stood at the start of some of its moves, in
@@ -159,10 +156,9 @@ fn choose<'a>(
     let alike = |t: &Traced| {
         t.frame == *f
             && t.paths.len() == layers.len()
-            && t.paths
-                .iter()
-                .zip(layers)
-                .all(|(p, l)| (p.group, p.kind, p.stroke) == (l.group, l.kind, l.stroke))
+            && t.paths.iter().zip(layers).all(|(p, l)| {
+                (p.layer.group, p.layer.kind, p.layer.stroke) == (l.group, l.kind, l.stroke)
+            })
     };
     taken
         .iter()
@@ -207,7 +203,7 @@ fn trace_path(
     };
     let start = here(&tracer, r, moves.start);
     // The last tracing of this path, when it started at the same move.
-    let last = last.filter(|(_, path)| path.moves.start == moves.start);
+    let last = last.filter(|(_, path)| path.layer.moves.start == moves.start);
     let mut at = moves.start;
     let mut took = false;
     if let Some((source, path)) = last {
@@ -286,10 +282,7 @@ fn trace_path(
 
 fn traced_path(layer: &Layer, style: Option<u16>, marks: Vec<Mark>, end: Mark) -> TracedPath {
     TracedPath {
-        group: layer.group,
-        kind: layer.kind,
-        moves: layer.moves.clone(),
-        stroke: layer.stroke,
+        layer: layer.clone(),
         style,
         marks,
         end,
@@ -314,9 +307,9 @@ fn same_from(
     let q = mark.m;
     let p = if q >= shared.end_from {
         let dashes_alike = !tracer.dashed() || shared.shift % RESTART_EVERY as isize == 0;
-        let ends_alike = path.moves.end.checked_add_signed(shared.shift) == Some(moves.end);
+        let ends_alike = path.layer.moves.end.checked_add_signed(shared.shift) == Some(moves.end);
         (dashes_alike && ends_alike).then(|| q.checked_add_signed(-shared.shift))??
-    } else if moves.end <= shared.shared && path.moves.end == moves.end {
+    } else if moves.end <= shared.shared && path.layer.moves.end == moves.end {
         q
     } else {
         return None;
