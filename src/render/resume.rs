@@ -337,6 +337,9 @@ mod tests {
     use crate::render::Plane;
     use crate::{Setup, run};
 
+    /// A block of [`program`]: (kind, x, y, r).
+    type Block = (u8, f64, f64, f64);
+
     fn toolpath(program: &str) -> Toolpath {
         Toolpath::from_run(&run(program, &Setup::default()))
     }
@@ -344,7 +347,7 @@ mod tests {
     /// A program of `blocks`: each (kind, x, y, r) a rapid (0), a feed
     /// (1), an arc (2 clockwise, 3 counter-clockwise, of radius `r` times
     /// half its chord) or a rapid in Z (4), to (x, y).
-    fn program(blocks: &[(u8, f64, f64, f64)]) -> String {
+    fn program(blocks: &[Block]) -> String {
         let mut out = String::from("G90 G17 G00 X0 Y0 Z5.\n");
         let mut at = (0.0_f64, 0.0_f64);
         for &(kind, x, y, r) in blocks {
@@ -391,7 +394,7 @@ mod tests {
         traced
     }
 
-    fn blocks(n: usize) -> Vec<(u8, f64, f64, f64)> {
+    fn blocks(n: usize) -> Vec<Block> {
         // A pseudo-random walk (a fixed sequence: the test is repeatable).
         let mut seed = 12345_u64;
         let mut next = || {
@@ -408,14 +411,22 @@ mod tests {
             .collect()
     }
 
+    /// `n` blocks ([`blocks`]) drawn on a new raster in the default scene,
+    /// in a view fitted to them: the blocks, their toolpath, the scene, the
+    /// frame, the raster and how many moves were traced.
+    fn first_drawing(n: usize) -> (Vec<Block>, Toolpath, Scene, Frame, Raster, usize) {
+        let v = blocks(n);
+        let tp = toolpath(&program(&v));
+        let scene = Scene::default();
+        let f = scene.frame(&tp, 120.0, 90.0);
+        let mut r = Raster::new();
+        let all = draws_as_from_nothing(&mut r, &f, &tp, &scene);
+        (v, tp, scene, f, r, all)
+    }
+
     #[test]
     fn an_edit_of_one_move_traces_a_few_moves_and_records_what_tracing_all_does() {
-        let mut v = blocks(600);
-        let before = toolpath(&program(&v));
-        let scene = Scene::default();
-        let f = scene.frame(&before, 120.0, 90.0);
-        let mut r = Raster::new();
-        let all = draws_as_from_nothing(&mut r, &f, &before, &scene);
+        let (mut v, before, scene, f, mut r, all) = first_drawing(600);
         assert!(all >= 4 * 600, "{all}");
         // A digit typed into a line's X: two moves change.
         v[300].1 += 0.4;
@@ -430,12 +441,7 @@ mod tests {
 
     #[test]
     fn a_block_inserted_traces_from_it_on_only_the_dashed_paths() {
-        let v = blocks(600);
-        let before = toolpath(&program(&v));
-        let scene = Scene::default();
-        let f = scene.frame(&before, 120.0, 90.0);
-        let mut r = Raster::new();
-        let all = draws_as_from_nothing(&mut r, &f, &before, &scene);
+        let (v, before, scene, f, mut r, all) = first_drawing(600);
         let mut w = v.clone();
         w.insert(200, (1, 50.0, 35.0, 0.0));
         let after = toolpath(&program(&w));
@@ -458,12 +464,7 @@ mod tests {
 
     #[test]
     fn a_dense_drawing_made_on_the_coarse_grid_is_taken_up_at_full_scale() {
-        let mut v = blocks(3000);
-        let before = toolpath(&program(&v));
-        let scene = Scene::default();
-        let f = scene.frame(&before, 120.0, 90.0);
-        let mut r = Raster::new();
-        let all = draws_as_from_nothing(&mut r, &f, &before, &scene);
+        let (mut v, _, scene, f, mut r, all) = first_drawing(3000);
         assert_eq!(r.factor(), 2, "the drawing is dense");
         v[1500].1 += 0.4;
         let after = toolpath(&program(&v));
