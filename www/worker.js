@@ -244,10 +244,11 @@ function postState() {
 /** Runs the program of run request `message`, `length` bytes in the program buffer. */
 function run(message, length) {
   const started = performance.now();
-  // A long run tells the page how far it has got (at most every 100 ms;
-  // the page shows it past 200 ms). Posted during the run, these reach
-  // the page at once: only this worker is busy.
-  let told = started;
+  // A long run tells the page how far it has got: after its first MiB,
+  // then at most every 100 ms (the page shows it past PROGRESS_AFTER_MS,
+  // modules/page.js). Posted during the run, these reach the page at
+  // once: only this worker is busy.
+  let told = -Infinity;
   const progress = (fraction) => {
     const now = performance.now();
     if (now - told < 100) return;

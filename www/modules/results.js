@@ -6,15 +6,13 @@
 import { showBanner } from './banner.js';
 import { showDiagnostics, showNotRun } from './diagnostics.js';
 import { setProgramRegisters } from './offsets.js';
+import { PROGRESS_AFTER_MS } from './page.js';
 import { openSetupJson } from './settings.js';
 import { showState } from './state.js';
 import { stepReported } from './stepper.js';
 import { saveWork } from './storage.js';
 import { setMachinePlanes, viewReported } from './view.js';
 import { currentWork, persist, work } from './work.js';
-
-// Past this, a running program shows how far it has got.
-const PROGRESS_AFTER_MS = 200;
 
 const $ = (id) => document.getElementById(id);
 const summaryLine = $('summary');
