@@ -7,7 +7,9 @@ use std::process::{Command, Output, Stdio};
 
 use serde_json::Value;
 
-const SQUARE: &str = "(SEED 000 SQUARE)\nG90 G00 X-30. Y-20.;\nG91 G00 G46 X30. Y20. D01;\nG01 G47 X80. F200.;\nG47 Y50.;\nG47 X-80.;\nG47 Y-50.;\nG00 G46 X-30. Y-20.;\n";
+/// Seed 000's square, the page's default example: a comment line, seven
+/// moving blocks and M30.
+const SQUARE: &str = include_str!("data/seed000_square.nc");
 
 fn offsetlab(args: &[&str], stdin: &[u8]) -> Output {
     let mut child = Command::new(env!("CARGO_BIN_EXE_offsetlab"))
@@ -45,7 +47,12 @@ fn run_json_has_blocks_moves_and_diagnostics() {
     assert_eq!(code, 0);
     let blocks = v["blocks"].as_array().unwrap();
     // One entry per executed block: the comment line has none.
-    assert_eq!(blocks.len(), 7);
+    assert_eq!(blocks.len(), 8);
+    assert_eq!(blocks[7]["text"], "M30");
+    assert_eq!(
+        v["summary"]["end"],
+        serde_json::json!({"reason": "program_end", "line": 9})
+    );
     let b = &blocks[1];
     assert_eq!(b["line"], 3);
     assert_eq!(
@@ -207,7 +214,7 @@ fn check_clean_program_exits_zero_with_bounds() {
     let text = String::from_utf8(out.stdout).unwrap();
     assert_eq!(
         text.trim(),
-        "<stdin>: 7 blocks, 7 moves, bounds X-30.000..86.000 Y-20.000..56.000 Z0.000..0.000 mm; 0 errors, 0 warnings"
+        "<stdin>: 8 blocks, 7 moves, bounds X-30.000..86.000 Y-20.000..56.000 Z0.000..0.000 mm; 0 errors, 0 warnings"
     );
 }
 

@@ -1,4 +1,5 @@
-//! Spec 5: lathe T-code tool position offset (seed 004), machine `lathe`.
+//! Behaviour 5 (`docs/behaviour.md`): lathe T-code tool position offset
+//! (seed 004), machine `lathe`.
 #![cfg(not(target_arch = "wasm32"))]
 
 mod common;
@@ -10,7 +11,7 @@ use offsetlab::{MoveKind, run};
 const WORKED: &str = "G50 X120. Z60.;\nG00 S800 M03 T0108;\nX50. Z3.;\nT0100;";
 
 #[test]
-fn spec5_worked_example_seed004() {
+fn behaviour5_worked_example_seed004() {
     let r = ok(WORKED, &lathe(&[(8, 0.4, -0.2)]));
     same(actual(&r, 0), [120.0, 0.0, 60.0]);
     same(actual(&r, 1), [120.4, 0.0, 59.8]);
@@ -26,14 +27,14 @@ fn spec5_worked_example_seed004() {
 }
 
 #[test]
-fn spec5_1_the_offset_starts_in_the_block_with_the_t_code() {
+fn behaviour5_1_the_offset_starts_in_the_block_with_the_t_code() {
     let r = ok(WORKED, &lathe(&[(8, 0.4, -0.2)]));
     same(r.blocks[0].state.lathe.vector, [0.0; 3]);
     same(r.blocks[1].state.lathe.vector, [0.4, 0.0, -0.2]);
 }
 
 #[test]
-fn spec5_2_t_with_a_move_lands_on_the_end_point_plus_the_offset_in_one_move() {
+fn behaviour5_2_t_with_a_move_lands_on_the_end_point_plus_the_offset_in_one_move() {
     let r = ok(
         "G50 X120. Z60.\nG00 X50. Z3. T0108",
         &lathe(&[(8, 0.4, -0.2)]),
@@ -46,13 +47,13 @@ fn spec5_2_t_with_a_move_lands_on_the_end_point_plus_the_offset_in_one_move() {
 }
 
 #[test]
-fn spec5_2_t_with_a_single_axis_move_offsets_both_axes() {
+fn behaviour5_2_t_with_a_single_axis_move_offsets_both_axes() {
     let r = ok("G50 X120. Z60.\nG00 Z3. T0108", &lathe(&[(8, 0.4, -0.2)]));
     same(actual(&r, 1), [120.4, 0.0, 2.8]);
 }
 
 #[test]
-fn spec5_3_t_alone_moves_by_the_difference_at_rapid_in_g00() {
+fn behaviour5_3_t_alone_moves_by_the_difference_at_rapid_in_g00() {
     let r = ok(WORKED, &lathe(&[(8, 0.4, -0.2)]));
     let m = &r.moves[0];
     assert_eq!((m.kind, m.at_feed), (MoveKind::Offset, false));
@@ -65,7 +66,7 @@ fn spec5_3_t_alone_moves_by_the_difference_at_rapid_in_g00() {
 }
 
 #[test]
-fn spec5_3_t_alone_in_g01_moves_at_the_cutting_feed() {
+fn behaviour5_3_t_alone_in_g01_moves_at_the_cutting_feed() {
     // Seed 004: "GO1 T0216 ;" — offset motion at the cutting feedrate.
     let text = "G50 X100. Z50.\nG00 T0202\nG01 X60. Z2. F0.2\nG01 T0216";
     let r = ok(text, &lathe(&[(2, 0.2, 0.1), (16, 0.6, -0.3)]));
@@ -81,7 +82,7 @@ fn spec5_3_t_alone_in_g01_moves_at_the_cutting_feed() {
 }
 
 #[test]
-fn spec5_4_new_offset_in_a_feed_move_corrects_the_taper() {
+fn behaviour5_4_new_offset_in_a_feed_move_corrects_the_taper() {
     // Seed 004: G01 U+… W-… F… T0216 ends shifted by the difference of the
     // offsets of T0216 and T0202.
     let text = "G50 X100. Z50.\nG00 T0202\nG01 X60. Z2. F0.2\nG01 U10. W-20. F0.2 T0216";
@@ -99,7 +100,7 @@ fn spec5_4_new_offset_in_a_feed_move_corrects_the_taper() {
 }
 
 #[test]
-fn spec5_5_cancel_with_a_move_goes_to_the_programmed_position() {
+fn behaviour5_5_cancel_with_a_move_goes_to_the_programmed_position() {
     let text = "G50 X120. Z60.\nG00 T0108\nX50. Z3.\nG00 X100. Z50. T0100";
     let r = ok(text, &lathe(&[(8, 0.4, -0.2)]));
     same(actual(&r, 3), [100.0, 0.0, 50.0]);
@@ -107,7 +108,7 @@ fn spec5_5_cancel_with_a_move_goes_to_the_programmed_position() {
 }
 
 #[test]
-fn spec5_5_cancel_alone_makes_only_the_cancel_motion() {
+fn behaviour5_5_cancel_alone_makes_only_the_cancel_motion() {
     let r = ok(WORKED, &lathe(&[(8, 0.4, -0.2)]));
     let m = r.moves.last().unwrap();
     assert_eq!(m.kind, MoveKind::Offset);
@@ -121,7 +122,7 @@ fn spec5_5_cancel_alone_makes_only_the_cancel_motion() {
 }
 
 #[test]
-fn spec5_6_a_new_tool_number_indexes_the_turret() {
+fn behaviour5_6_a_new_tool_number_indexes_the_turret() {
     let r = ok("T0101\nT0102\nT0202", &lathe(&[]));
     let tools: Vec<u32> = r
         .events
@@ -135,14 +136,14 @@ fn spec5_6_a_new_tool_number_indexes_the_turret() {
 }
 
 #[test]
-fn spec5_t108_is_the_same_as_t0108() {
+fn behaviour5_t108_is_the_same_as_t0108() {
     let a = ok("T108", &lathe(&[(8, 0.4, -0.2)]));
     let b = ok("T0108", &lathe(&[(8, 0.4, -0.2)]));
     same(actual(&a, 0), actual(&b, 0));
 }
 
 #[test]
-fn spec5_geometry_plus_wear() {
+fn behaviour5_geometry_plus_wear() {
     let mut s = lathe(&[]);
     s.set_register("08=X0.4,Z-0.2,XW-0.02,ZW0.01").unwrap();
     let r = ok("T0108", &s);
@@ -150,7 +151,7 @@ fn spec5_geometry_plus_wear() {
 }
 
 #[test]
-fn spec5_lathe_x_offset_radius_doubles_x() {
+fn behaviour5_lathe_x_offset_radius_doubles_x() {
     let mut s = lathe(&[(8, 0.2, -0.2)]);
     s.settings.lathe_x_offset = LatheXOffset::Radius;
     let r = ok("G50 X120. Z60.\nT0108", &s);
@@ -158,7 +159,7 @@ fn spec5_lathe_x_offset_radius_doubles_x() {
 }
 
 #[test]
-fn spec5_u_and_w_are_incremental_and_x_is_a_diameter() {
+fn behaviour5_u_and_w_are_incremental_and_x_is_a_diameter() {
     let r = ok("G50 X100. Z10.\nG01 U-20. W-5. F0.2", &lathe(&[]));
     same(programmed(&r, 1), [80.0, 0.0, 5.0]);
     assert_eq!(
@@ -168,7 +169,7 @@ fn spec5_u_and_w_are_incremental_and_x_is_a_diameter() {
 }
 
 #[test]
-fn spec5_arc_with_r_and_with_i_k_in_the_zx_plane() {
+fn behaviour5_arc_with_r_and_with_i_k_in_the_zx_plane() {
     let s = lathe(&[]);
     for text in [
         "G00 X20. Z0\nG02 X40. Z-10. R10. F0.2",
@@ -186,7 +187,7 @@ fn spec5_arc_with_r_and_with_i_k_in_the_zx_plane() {
 }
 
 #[test]
-fn spec5_g90_turning_cycle_legs() {
+fn behaviour5_g90_turning_cycle_legs() {
     let text = "G50 X60. Z2.\nG90 X50. Z-30. F0.2\nX45.";
     let r = ok(text, &lathe(&[]));
     let legs: Vec<([f64; 3], MoveKind)> =
@@ -210,7 +211,7 @@ fn spec5_g90_turning_cycle_legs() {
 }
 
 #[test]
-fn spec5_g90_taper_and_g94_facing_and_g92_threading() {
+fn behaviour5_g90_taper_and_g94_facing_and_g92_threading() {
     let r = ok("G50 X60. Z2.\nG90 X50. Z-30. R-2. F0.2", &lathe(&[]));
     same(r.moves[0].programmed_to, [46.0, 0.0, 2.0]);
     let r = ok("G50 X60. Z2.\nG94 X20. Z-2. F0.2", &lathe(&[]));
@@ -233,7 +234,7 @@ fn spec5_g90_taper_and_g94_facing_and_g92_threading() {
 }
 
 #[test]
-fn spec5_cycles_carry_the_t_offset() {
+fn behaviour5_cycles_carry_the_t_offset() {
     let r = ok(
         "G50 X60. Z2.\nT0108\nG90 X50. Z-30. F0.2",
         &lathe(&[(8, 0.4, -0.2)]),
@@ -243,7 +244,7 @@ fn spec5_cycles_carry_the_t_offset() {
 }
 
 #[test]
-fn spec5_g28_clears_the_vector_until_the_axis_moves_again() {
+fn behaviour5_g28_clears_the_vector_until_the_axis_moves_again() {
     let text = "G50 X100. Z50.\nT0108\nG28 U0 W0\nG00 Z10.\nX30.";
     let r = ok(text, &lathe(&[(8, 0.4, -0.2)]));
     same(r.blocks[2].state.lathe.vector, [0.0; 3]);
@@ -254,7 +255,7 @@ fn spec5_g28_clears_the_vector_until_the_axis_moves_again() {
 }
 
 #[test]
-fn spec5_unsupported_lathe_codes_are_errors_with_a_reason() {
+fn behaviour5_unsupported_lathe_codes_are_errors_with_a_reason() {
     let s = lathe(&[]);
     for (text, why) in [
         ("G71 U2. R1.", "G70–G76"),
@@ -272,14 +273,14 @@ fn spec5_unsupported_lathe_codes_are_errors_with_a_reason() {
 }
 
 #[test]
-fn spec5_offset_number_beyond_the_table_is_an_error() {
+fn behaviour5_offset_number_beyond_the_table_is_an_error() {
     let mut s = lathe(&[]);
     s.table_size = 32;
     assert_eq!(errors("T0133", &s), vec!["out-of-range"]);
 }
 
 #[test]
-fn spec5_offset_change_with_no_move_in_arc_mode_is_an_error() {
+fn behaviour5_offset_change_with_no_move_in_arc_mode_is_an_error() {
     let s = lathe(&[(8, 0.4, -0.2)]);
     assert_eq!(
         errors("G00 X20. Z0\nG02 X40. Z-10. R10. F0.2\nT0108", &s),

@@ -1,5 +1,5 @@
-//! Spec 3: tool length offset G43, G44, G49 (seed 001), one test or more per
-//! numbered rule.
+//! Behaviour 3 (`docs/behaviour.md`): tool length offset G43, G44, G49
+//! (seed 001), one test or more per numbered rule.
 #![cfg(not(target_arch = "wasm32"))]
 
 mod common;
@@ -8,20 +8,20 @@ use offsetlab::MoveKind;
 use offsetlab::setup::LengthOffsetWithoutZ;
 
 #[test]
-fn spec3_1_g43_adds_the_register_to_z() {
+fn behaviour3_1_g43_adds_the_register_to_z() {
     let r = ok("G90 G00 G43 Z50. H02", &mill(&[(2, 15.0)]));
     same(actual(&r, 0), [0.0, 0.0, 65.0]);
     same(programmed(&r, 0), [0.0, 0.0, 50.0]);
 }
 
 #[test]
-fn spec3_1_g44_subtracts_the_register_from_z() {
+fn behaviour3_1_g44_subtracts_the_register_from_z() {
     let r = ok("G90 G00 G44 Z50. H02", &mill(&[(2, 15.0)]));
     same(actual(&r, 0), [0.0, 0.0, 35.0]);
 }
 
 #[test]
-fn spec3_1_negative_value_reverses_the_direction() {
+fn behaviour3_1_negative_value_reverses_the_direction() {
     let r = ok("G90 G00 G43 Z50. H02", &mill(&[(2, -15.0)]));
     same(actual(&r, 0), [0.0, 0.0, 35.0]);
     let r = ok("G90 G00 G44 Z50. H02", &mill(&[(2, -15.0)]));
@@ -29,7 +29,7 @@ fn spec3_1_negative_value_reverses_the_direction() {
 }
 
 #[test]
-fn spec3_1_geometry_plus_wear_is_used() {
+fn behaviour3_1_geometry_plus_wear_is_used() {
     let mut s = mill(&[]);
     s.set_register("02=15.0,W-0.25").unwrap();
     let r = ok("G90 G00 G43 Z50. H02", &s);
@@ -37,7 +37,7 @@ fn spec3_1_geometry_plus_wear_is_used() {
 }
 
 #[test]
-fn spec3_1_g49_and_h00_cancel() {
+fn behaviour3_1_g49_and_h00_cancel() {
     let s = mill(&[(2, 15.0)]);
     let r = ok("G90 G00 G43 Z50. H02\nG49 Z50.", &s);
     same(actual(&r, 1), [0.0, 0.0, 50.0]);
@@ -47,7 +47,7 @@ fn spec3_1_g49_and_h00_cancel() {
 }
 
 #[test]
-fn spec3_2_worked_example() {
+fn behaviour3_2_worked_example() {
     // `G90 G00 G43 Z50. H02` with register 02 = 15. → Z65.
     let text = "G90 G00 G43 Z50. H02";
     let r = ok(text, &mill(&[(2, 15.0)]));
@@ -62,7 +62,7 @@ fn spec3_2_worked_example() {
 }
 
 #[test]
-fn spec3_3_no_z_word_moves_z_by_the_offset() {
+fn behaviour3_3_no_z_word_moves_z_by_the_offset() {
     let text = "G90 G00 Z50.\nG43 H02";
     let r = ok(text, &mill(&[(2, 15.0)]));
     same(actual(&r, 1), [0.0, 0.0, 65.0]);
@@ -78,7 +78,7 @@ fn spec3_3_no_z_word_moves_z_by_the_offset() {
 }
 
 #[test]
-fn spec3_3_offset_motion_in_g01_mode_is_at_feed() {
+fn behaviour3_3_offset_motion_in_g01_mode_is_at_feed() {
     let r = ok("G90 G01 Z50. F100.\nG43 H02", &mill(&[(2, 15.0)]));
     let m = r.moves.last().unwrap();
     assert_eq!(m.kind, MoveKind::Offset);
@@ -86,7 +86,7 @@ fn spec3_3_offset_motion_in_g01_mode_is_at_feed() {
 }
 
 #[test]
-fn spec3_3_setting_next_z_waits_for_the_next_z_move() {
+fn behaviour3_3_setting_next_z_waits_for_the_next_z_move() {
     let mut s = mill(&[(2, 15.0)]);
     s.settings.length_offset_without_z = LengthOffsetWithoutZ::NextZ;
     let text = "G90 G00 Z50.\nG43 H02\nX10.\nZ20.";
@@ -101,7 +101,7 @@ fn spec3_3_setting_next_z_waits_for_the_next_z_move() {
 }
 
 #[test]
-fn spec3_3_h_with_xy_move_and_no_z_shifts_z_in_the_same_move() {
+fn behaviour3_3_h_with_xy_move_and_no_z_shifts_z_in_the_same_move() {
     let r = ok("G90 G00 Z50.\nG43 H02 X10. Y5.", &mill(&[(2, 15.0)]));
     assert_eq!(r.blocks[1].move_count, 1);
     let m = r.moves.last().unwrap();
@@ -110,7 +110,7 @@ fn spec3_3_h_with_xy_move_and_no_z_shifts_z_in_the_same_move() {
 }
 
 #[test]
-fn spec3_4_new_h_moves_by_the_difference() {
+fn behaviour3_4_new_h_moves_by_the_difference() {
     let text = "G90 G00 G43 Z50. H02\nH03";
     let r = ok(text, &mill(&[(2, 15.0), (3, 12.0)]));
     same(actual(&r, 1), [0.0, 0.0, 62.0]);
@@ -126,14 +126,14 @@ fn spec3_4_new_h_moves_by_the_difference() {
 }
 
 #[test]
-fn spec3_4_switching_g43_to_g44_moves_by_the_difference() {
+fn behaviour3_4_switching_g43_to_g44_moves_by_the_difference() {
     let r = ok("G90 G00 G43 Z50. H02\nG44", &mill(&[(2, 15.0)]));
     same(actual(&r, 1), [0.0, 0.0, 35.0]);
     assert_eq!(r.moves.last().unwrap().kind, MoveKind::Offset);
 }
 
 #[test]
-fn spec3_5_in_g91_the_offset_is_added_to_the_incremental_move() {
+fn behaviour3_5_in_g91_the_offset_is_added_to_the_incremental_move() {
     // `G91 G43 Z-20. H03` with register 03 = -2. moves Z by -22.
     let r = ok("G91 G00 G43 Z-20. H03", &mill(&[(3, -2.0)]));
     let m = r.moves.last().unwrap();
@@ -147,13 +147,13 @@ fn spec3_5_in_g91_the_offset_is_added_to_the_incremental_move() {
 }
 
 #[test]
-fn spec3_6_cancel_with_z_in_g90_goes_to_the_uncompensated_target() {
+fn behaviour3_6_cancel_with_z_in_g90_goes_to_the_uncompensated_target() {
     let r = ok("G90 G00 G43 Z50. H02\nG49 Z30.", &mill(&[(2, 15.0)]));
     same(actual(&r, 1), [0.0, 0.0, 30.0]);
 }
 
 #[test]
-fn spec3_6_cancel_with_z_in_g91_moves_by_the_move_minus_the_old_vector() {
+fn behaviour3_6_cancel_with_z_in_g91_moves_by_the_move_minus_the_old_vector() {
     let r = ok("G90 G00 G43 Z50. H02\nG91 G49 Z-10.", &mill(&[(2, 15.0)]));
     let m = r.moves.last().unwrap();
     assert!((m.to[2] - m.from[2] + 25.0).abs() < 1e-9);
@@ -161,7 +161,7 @@ fn spec3_6_cancel_with_z_in_g91_moves_by_the_move_minus_the_old_vector() {
 }
 
 #[test]
-fn spec3_6_cancel_without_z_moves_back_by_the_old_vector() {
+fn behaviour3_6_cancel_without_z_moves_back_by_the_old_vector() {
     let r = ok("G90 G00 G43 Z50. H02\nG49", &mill(&[(2, 15.0)]));
     same(actual(&r, 1), [0.0, 0.0, 50.0]);
     let m = r.moves.last().unwrap();
@@ -171,7 +171,7 @@ fn spec3_6_cancel_without_z_moves_back_by_the_old_vector() {
 }
 
 #[test]
-fn spec3_7_length_offset_in_arc_mode_is_an_error() {
+fn behaviour3_7_length_offset_in_arc_mode_is_an_error() {
     let s = mill(&[(2, 15.0)]);
     assert_eq!(
         errors("G17 G02 X10. Y10. I10. F100.\nG43 H02", &s),
@@ -185,13 +185,13 @@ fn spec3_7_length_offset_in_arc_mode_is_an_error() {
         errors("G43 Z5. H02\nG03 X10. Y10. J10. F100.\nG49", &s),
         vec!["length-offset-in-arc"]
     );
-    // Blocks before the error keep their motion (spec 2).
+    // Blocks before the error keep their motion (behaviour 2.1).
     let r = offsetlab::run("G43 Z5. H02\nG03 X10. Y10. J10. F100.\nG49", &s);
     assert_eq!(r.block_count, 2);
 }
 
 #[test]
-fn spec3_8_h_number_beyond_the_table_is_an_error() {
+fn behaviour3_8_h_number_beyond_the_table_is_an_error() {
     assert_eq!(errors("G43 Z50. H100", &mill(&[])), vec!["out-of-range"]);
     let mut s = mill(&[]);
     s.table_size = 10;
@@ -200,8 +200,9 @@ fn spec3_8_h_number_beyond_the_table_is_an_error() {
 }
 
 #[test]
-fn spec3_offset_values_are_read_in_the_current_unit() {
-    // Spec 2: G20/G21 — offset values are read in the current unit, not converted.
+fn behaviour3_offset_values_are_read_in_the_current_unit() {
+    // Behaviour 2.6 and 3.9: G20/G21 — offset values are read in the current
+    // unit, not converted.
     let text = "G20 G90 G00 G43 Z1. H02";
     let r = ok(text, &mill(&[(2, 0.5)]));
     let b = at_line(&r, text, 1);
@@ -211,7 +212,7 @@ fn spec3_offset_values_are_read_in_the_current_unit() {
 }
 
 #[test]
-fn spec3_g43_with_h00_warns() {
+fn behaviour3_g43_with_h00_warns() {
     let r = offsetlab::run("G43 Z10.", &mill(&[]));
     assert!(r.diagnostics.iter().any(|d| d.code == "length-offset-h00"));
     assert!(!r.has_errors());

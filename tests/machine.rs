@@ -1,5 +1,6 @@
-//! Spec 2: the execution model — modes, coordinates, arcs, canned cycles,
-//! G28, mirror image, M codes, and stopping at the first error.
+//! Behaviour 2 (`docs/behaviour.md`): the machine — modes, coordinates,
+//! arcs, canned cycles, G28, mirror image, M codes, and stopping at the first
+//! error. Each test is named after the rule it checks (`behaviour2_12_…`).
 #![cfg(not(target_arch = "wasm32"))]
 
 mod common;
@@ -10,7 +11,7 @@ use offsetlab::{MoveKind, Setup, run};
 use std::f64::consts::{FRAC_PI_2, PI};
 
 #[test]
-fn spec2_start_state_and_absolute_incremental() {
+fn behaviour2_3_start_state_and_absolute_incremental() {
     let r = ok("X10. Y5.\nG91 X10.\nG90 X0", &mill(&[]));
     same(programmed(&r, 0), [10.0, 5.0, 0.0]);
     same(programmed(&r, 1), [20.0, 5.0, 0.0]);
@@ -40,7 +41,7 @@ fn spec2_start_state_and_absolute_incremental() {
 }
 
 #[test]
-fn spec2_units_g20_g21() {
+fn behaviour2_6_units_g20_g21() {
     let text = "G20\nG01 X1. F10.\nG21\nG01 X50.8";
     let r = ok(text, &mill(&[]));
     same(programmed(&r, 1), [25.4, 0.0, 0.0]);
@@ -51,7 +52,7 @@ fn spec2_units_g20_g21() {
 }
 
 #[test]
-fn spec2_work_offsets_g54_to_g59_from_the_setup() {
+fn behaviour2_7_work_offsets_g54_to_g59_from_the_setup() {
     let mut s = mill(&[]);
     s.work_offsets.g55 = Position {
         x: 100.0,
@@ -69,7 +70,7 @@ fn spec2_work_offsets_g54_to_g59_from_the_setup() {
 }
 
 #[test]
-fn spec2_g92_sets_the_programmed_position_without_motion() {
+fn behaviour2_8_g92_sets_the_programmed_position_without_motion() {
     let r = ok("G00 X10. Y10.\nG92 X0 Y0\nG01 X5. F100.", &mill(&[]));
     same(programmed(&r, 1), [0.0, 0.0, 0.0]);
     assert_eq!(r.blocks[1].move_count, 0);
@@ -77,7 +78,7 @@ fn spec2_g92_sets_the_programmed_position_without_motion() {
 }
 
 #[test]
-fn spec2_g04_dwell_p_milliseconds_and_x_seconds() {
+fn behaviour2_9_g04_dwell_p_milliseconds_and_x_seconds() {
     let r = ok("G04 P1500\nG04 X2.5\nG04 X2500", &mill(&[]));
     let secs: Vec<f64> = r
         .events
@@ -93,7 +94,7 @@ fn spec2_g04_dwell_p_milliseconds_and_x_seconds() {
 }
 
 #[test]
-fn spec2_g28_clears_the_offset_vectors_and_g43_applies_again_at_the_next_z_move() {
+fn behaviour2_10_g28_clears_the_offset_vectors_and_g43_applies_again_at_the_next_z_move() {
     let mut s = mill(&[(1, 5.0), (2, 15.0)]);
     s.reference = Position {
         x: 0.0,
@@ -121,7 +122,7 @@ fn spec2_g28_clears_the_offset_vectors_and_g43_applies_again_at_the_next_z_move(
 }
 
 #[test]
-fn spec2_g28_intermediate_point_then_reference() {
+fn behaviour2_10_g28_intermediate_point_then_reference() {
     let mut s = mill(&[]);
     s.reference = Position {
         x: 200.0,
@@ -135,7 +136,7 @@ fn spec2_g28_intermediate_point_then_reference() {
 }
 
 #[test]
-fn spec2_arcs_in_g17_with_i_j_and_with_r() {
+fn behaviour2_12_arcs_in_g17_with_i_j_and_with_r() {
     let s = mill(&[]);
     let r = ok("G00 X10. Y0\nG03 X0 Y10. I-10. J0 F100.", &s);
     let a = r.moves.last().unwrap().arc.unwrap();
@@ -152,7 +153,7 @@ fn spec2_arcs_in_g17_with_i_j_and_with_r() {
 }
 
 #[test]
-fn spec2_arcs_in_g18_and_g19_and_helix() {
+fn behaviour2_12_arcs_in_g18_and_g19_and_helix() {
     let s = mill(&[]);
     // G18: the ZX plane, CW seen from +Y with Z to the right and X up.
     // From (Z10, X0) clockwise to (Z0, X10): the centre is at Z10 X10.
@@ -173,7 +174,7 @@ fn spec2_arcs_in_g18_and_g19_and_helix() {
 }
 
 #[test]
-fn spec2_radius_check_and_r_too_small_are_errors() {
+fn behaviour2_13_radius_check_and_r_too_small_are_errors() {
     let s = mill(&[]);
     assert_eq!(
         errors("G00 X10.\nG03 X0 Y10.05 I-10. F100.", &s),
@@ -185,7 +186,7 @@ fn spec2_radius_check_and_r_too_small_are_errors() {
 }
 
 #[test]
-fn spec2_g81_drilling_with_g98_and_g99_returns() {
+fn behaviour2_14_g81_drilling_with_g98_and_g99_returns() {
     let text = "G90 G00 X0 Y0 Z50.\nG98 G81 X10. Y10. Z-5. R2. F100.\nG99 X20.\nG80";
     let r = ok(text, &mill(&[]));
     let hole1: Vec<(MoveKind, f64)> = r
@@ -214,7 +215,7 @@ fn spec2_g81_drilling_with_g98_and_g99_returns() {
 }
 
 #[test]
-fn spec2_cycles_in_g91_r_from_initial_and_z_from_r_with_k_repeats() {
+fn behaviour2_14_cycles_in_g91_r_from_initial_and_z_from_r_with_k_repeats() {
     let text = "G90 G00 X0 Y0 Z50.\nG91 G99 G81 X10. R-48. Z-7. K3 F100.";
     let r = ok(text, &mill(&[]));
     let bottoms: Vec<[f64; 3]> = r
@@ -229,7 +230,7 @@ fn spec2_cycles_in_g91_r_from_initial_and_z_from_r_with_k_repeats() {
 }
 
 #[test]
-fn spec2_length_offset_applies_to_the_cycle_levels() {
+fn behaviour2_14_length_offset_applies_to_the_cycle_levels() {
     let text = "G90 G00 G43 Z50. H01\nG98 G81 X10. Y10. Z-5. R2. F100.";
     let r = ok(text, &mill(&[(1, 10.0)]));
     let feed = r.moves.iter().find(|m| m.kind == MoveKind::Feed).unwrap();
@@ -238,7 +239,7 @@ fn spec2_length_offset_applies_to_the_cycle_levels() {
 }
 
 #[test]
-fn spec2_g83_pecks_out_to_r_and_g73_backs_off() {
+fn behaviour2_15_g83_pecks_out_to_r_and_g73_backs_off() {
     let s = mill(&[]);
     let r = ok("G90 G00 Z10.\nG83 X0 Y0 Z-10. R1. Q4. F100.", &s);
     let feeds: Vec<f64> = r
@@ -267,7 +268,7 @@ fn spec2_g83_pecks_out_to_r_and_g73_backs_off() {
 }
 
 #[test]
-fn spec2_tapping_boring_and_dwell_cycles() {
+fn behaviour2_15_tapping_boring_and_dwell_cycles() {
     let s = mill(&[]);
     for (code, feeds_up) in [
         (84, true),
@@ -313,7 +314,7 @@ fn spec2_tapping_boring_and_dwell_cycles() {
 }
 
 #[test]
-fn spec2_g80_and_group_01_cancel_the_cycle() {
+fn behaviour2_14_g80_and_group_01_cancel_the_cycle() {
     let r = ok(
         "G90 G00 Z10.\nG81 X0 Y0 Z-5. R1. F100.\nG80\nX10.",
         &mill(&[]),
@@ -336,7 +337,7 @@ fn spec2_g80_and_group_01_cancel_the_cycle() {
 }
 
 #[test]
-fn spec2_mirror_image_reverses_movements_about_the_start() {
+fn behaviour2_17_mirror_image_reverses_movements_about_the_start() {
     let mut s = mill(&[]);
     s.start = Position {
         x: 10.0,
@@ -353,7 +354,7 @@ fn spec2_mirror_image_reverses_movements_about_the_start() {
 }
 
 #[test]
-fn spec2_m_codes_are_events_and_m30_ends_the_program() {
+fn behaviour2_18_m_codes_are_events_and_m30_ends_the_program() {
     let text = "M03 S1000\nM08\nM06 T2\nM01\nM123\nM05 M09\nM30\nG00 X10.";
     let r = ok(text, &mill(&[]));
     assert_eq!(r.end, End::ProgramEnd { line: 7 });
@@ -368,7 +369,7 @@ fn spec2_m_codes_are_events_and_m30_ends_the_program() {
 }
 
 #[test]
-fn spec2_m06_changes_to_the_selected_tool() {
+fn behaviour2_18_m06_changes_to_the_selected_tool() {
     let r = ok("T5\nM06", &mill(&[]));
     assert_eq!(r.blocks[1].state.tool, 5);
     assert!(
@@ -379,7 +380,7 @@ fn spec2_m06_changes_to_the_selected_tool() {
 }
 
 #[test]
-fn spec2_feed_move_before_any_f_word_warns_once() {
+fn behaviour2_20_feed_move_before_any_f_word_warns_once() {
     let r = run("G01 X10.\nG01 X20.\nG01 X30. F100.", &mill(&[]));
     let w: Vec<_> = r
         .diagnostics
@@ -392,7 +393,7 @@ fn spec2_feed_move_before_any_f_word_warns_once() {
 }
 
 #[test]
-fn spec2_execution_stops_at_the_first_error_and_every_parse_error_is_reported() {
+fn behaviour2_1_execution_stops_at_the_first_error_and_every_parse_error_is_reported() {
     let text = "G00 X10.\nG01 X20. F100.\nG01 X1.2.3\nG00 X40.\nG00 Y1.2.3";
     let r = run(text, &mill(&[]));
     assert_eq!(
@@ -406,14 +407,14 @@ fn spec2_execution_stops_at_the_first_error_and_every_parse_error_is_reported() 
 }
 
 #[test]
-fn spec2_run_time_error_stops_too() {
+fn behaviour2_1_run_time_error_stops_too() {
     let r = run("G00 X10.\nG02 X30. R5. F100.\nG00 X0", &mill(&[]));
     assert_eq!(r.block_count, 1);
     assert_eq!(r.end, End::Error { line: 2 });
 }
 
 #[test]
-fn spec2_unsupported_g_codes_are_errors_not_skips() {
+fn behaviour2_21_unsupported_g_codes_are_errors_not_skips() {
     for code in [
         "G41 D1 X10.",
         "G68 X0 Y0 R45.",
@@ -431,7 +432,7 @@ fn spec2_unsupported_g_codes_are_errors_not_skips() {
 }
 
 #[test]
-fn spec2_block_skip_setting() {
+fn behaviour2_2_block_skip_setting() {
     let text = "G00 X10.\n/G00 X20.\nG00 Y5.";
     let r = ok(text, &mill(&[]));
     same(programmed(&r, 2), [20.0, 5.0, 0.0]);
@@ -443,7 +444,7 @@ fn spec2_block_skip_setting() {
 }
 
 #[test]
-fn spec2_a_setup_start_position_and_bad_setup() {
+fn behaviour2_3_a_setup_start_position_and_bad_setup() {
     let mut s = Setup {
         start: Position {
             x: 1.0,

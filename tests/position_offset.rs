@@ -1,14 +1,18 @@
-//! Spec 4: tool position offset G45–G48 (seeds 000 and 003), one test or more
-//! per numbered rule, and the spec's worked example.
+//! Behaviour 4 (`docs/behaviour.md`): tool position offset G45–G48 (seeds
+//! 000 and 003), one test or more per numbered rule, and the worked example
+//! of seed 000's square.
 #![cfg(not(target_arch = "wasm32"))]
 
 mod common;
 use common::*;
 use offsetlab::setup::Mirror;
 
+/// Seed 000's square (comment line, seven blocks, M30), register 01 = 6.
+const SQUARE: &str = include_str!("data/seed000_square.nc");
+
 #[test]
-fn spec4_worked_example_seed000_square() {
-    let text = "G90 G00 X-30. Y-20.;\nG91 G00 G46 X30. Y20. D01;\nG01 G47 X80. F200.;\nG47 Y50.;\nG47 X-80.;\nG47 Y-50.;\nG00 G46 X-30. Y-20.;";
+fn behaviour4_worked_example_seed000_square() {
+    let text = SQUARE;
     let r = ok(text, &mill(&[(1, 6.0)]));
     let want = [
         [-30.0, -20.0],
@@ -17,6 +21,8 @@ fn spec4_worked_example_seed000_square() {
         [86.0, 56.0],
         [-6.0, 56.0],
         [-6.0, -6.0],
+        [-30.0, -20.0],
+        // M30 ends the program where the last block left the tool.
         [-30.0, -20.0],
     ];
     assert_eq!(r.blocks.len(), want.len());
@@ -32,14 +38,14 @@ fn spec4_worked_example_seed000_square() {
 }
 
 #[test]
-fn spec4_1_g91_amount_is_the_word() {
+fn behaviour4_1_g91_amount_is_the_word() {
     let r = ok("G91 G01 G45 X50. D01 F100.", &mill(&[(1, 6.0)]));
     same(actual(&r, 0), [56.0, 0.0, 0.0]);
     same(programmed(&r, 0), [50.0, 0.0, 0.0]);
 }
 
 #[test]
-fn spec4_1_g90_amount_is_from_the_preceding_end_point() {
+fn behaviour4_1_g90_amount_is_from_the_preceding_end_point() {
     let r = ok("G90 G00 X10.\nG45 X30. D01", &mill(&[(1, 6.0)]));
     // Movement 20 extended by 6 → 26, from 10: actual 36.
     same(actual(&r, 1), [36.0, 0.0, 0.0]);
@@ -49,7 +55,7 @@ fn spec4_1_g90_amount_is_from_the_preceding_end_point() {
 }
 
 #[test]
-fn spec4_1_double_codes_use_twice_the_value() {
+fn behaviour4_1_double_codes_use_twice_the_value() {
     let s = mill(&[(1, 6.0)]);
     same(actual(&ok("G91 G47 X50. D01", &s), 0), [62.0, 0.0, 0.0]);
     same(actual(&ok("G91 G48 X50. D01", &s), 0), [38.0, 0.0, 0.0]);
@@ -57,14 +63,14 @@ fn spec4_1_double_codes_use_twice_the_value() {
 }
 
 #[test]
-fn spec4_2_negative_register_turns_reduction_into_extension() {
+fn behaviour4_2_negative_register_turns_reduction_into_extension() {
     // `G91 G46 X30. D02` with register 02 = -4. moves X by +34.
     let r = ok("G91 G46 X30. D02", &mill(&[(2, -4.0)]));
     same(actual(&r, 0), [34.0, 0.0, 0.0]);
 }
 
 #[test]
-fn spec4_3_reduction_larger_than_the_movement_reverses_it() {
+fn behaviour4_3_reduction_larger_than_the_movement_reverses_it() {
     // `G91 G48 X8. D03` with register 03 = 6. moves X by -4.
     let r = ok("G91 G48 X8. D03", &mill(&[(3, 6.0)]));
     same(actual(&r, 0), [-4.0, 0.0, 0.0]);
@@ -72,7 +78,7 @@ fn spec4_3_reduction_larger_than_the_movement_reverses_it() {
 }
 
 #[test]
-fn spec4_4_g91_zero_movement_seed003() {
+fn behaviour4_4_g91_zero_movement_seed003() {
     // `G91 G01 G45 X0 Y0 D10 F…` moves +v along X and Y.
     let r = ok("G91 G01 G45 X0 Y0 D10 F100.", &mill(&[(10, 2.5)]));
     same(actual(&r, 0), [2.5, 2.5, 0.0]);
@@ -86,10 +92,12 @@ fn spec4_4_g91_zero_movement_seed003() {
 }
 
 #[test]
-fn spec4_5_g90_zero_movement_changes_nothing() {
+fn behaviour4_5_g90_zero_movement_changes_nothing() {
     let r = ok("G90 G00 X10.\nG45 X10. Y5. D01", &mill(&[(1, 6.0)]));
     same(actual(&r, 1), [10.0, 11.0, 0.0]);
     assert!(
+        // The machine's own sentence, which still cites the rule by the
+        // number it has in docs/behaviour.md.
         explain(&r, 1).contains("not changed (spec 4.5)"),
         "{}",
         explain(&r, 1)
@@ -97,7 +105,7 @@ fn spec4_5_g90_zero_movement_changes_nothing() {
 }
 
 #[test]
-fn spec4_6_each_axis_changed_on_its_own() {
+fn behaviour4_6_each_axis_changed_on_its_own() {
     // A 45° move is changed on both axes (overcut is the user's problem).
     let r = ok("G91 G01 G45 X10. Y10. D01 F100.", &mill(&[(1, 2.0)]));
     same(actual(&r, 0), [12.0, 12.0, 0.0]);
@@ -109,7 +117,7 @@ fn spec4_6_each_axis_changed_on_its_own() {
 }
 
 #[test]
-fn spec4_7_the_vector_stays_until_an_opposite_code_removes_it() {
+fn behaviour4_7_the_vector_stays_until_an_opposite_code_removes_it() {
     let text = "G91 G45 X10. D01\nX5.\nG90 X40.\nG91 G46 X5.";
     let r = ok(text, &mill(&[(1, 2.0)]));
     same(actual(&r, 1), [17.0, 0.0, 0.0]);
@@ -127,7 +135,7 @@ fn spec4_7_the_vector_stays_until_an_opposite_code_removes_it() {
 }
 
 #[test]
-fn spec4_7_g92_clears_the_vector_on_the_named_axes() {
+fn behaviour4_7_g92_clears_the_vector_on_the_named_axes() {
     let text = "G91 G45 X10. Y10. D01\nG92 X0\nG90 X5. Y20.";
     let r = ok(text, &mill(&[(1, 2.0)]));
     same(programmed(&r, 1), [0.0, 10.0, 0.0]);
@@ -143,7 +151,7 @@ fn spec4_7_g92_clears_the_vector_on_the_named_axes() {
 }
 
 #[test]
-fn spec4_8_quarter_circle_gives_the_concentric_arc() {
+fn behaviour4_8_quarter_circle_gives_the_concentric_arc() {
     // The Fanuc manual's pattern: the tool carries (0, -5) from a G46 Y move,
     // then G45 G03 X30 Y30 J30 cuts a quarter circle with radius 30 + 5.
     let text = "G90 G00 X0 Y-10.\nG91 G46 Y10. D01\nG45 G03 X30. Y30. J30. F100.";
@@ -163,7 +171,7 @@ fn spec4_8_quarter_circle_gives_the_concentric_arc() {
 }
 
 #[test]
-fn spec4_8_r_is_changed_as_a_radius() {
+fn behaviour4_8_r_is_changed_as_a_radius() {
     let text = "G90 G00 X0 Y-10.\nG91 G46 Y10. D01\nG45 G03 X30. Y30. R30. F100.";
     let r = ok(text, &mill(&[(1, 5.0)]));
     let arc = r.moves.last().unwrap().arc.unwrap();
@@ -177,7 +185,7 @@ fn spec4_8_r_is_changed_as_a_radius() {
 }
 
 #[test]
-fn spec4_8_other_arcs_fail_the_radius_check() {
+fn behaviour4_8_other_arcs_fail_the_radius_check() {
     // A 45° arc is not a quarter circle on the axes: seed 003, build the arc
     // from quarter circles.
     let e = errors(
@@ -197,7 +205,7 @@ fn spec4_8_other_arcs_fail_the_radius_check() {
 }
 
 #[test]
-fn spec4_9_only_g00_to_g03_and_g90_g91_may_share_the_block() {
+fn behaviour4_9_only_g00_to_g03_and_g90_g91_may_share_the_block() {
     let s = mill(&[(1, 5.0), (2, 10.0)]);
     assert!(errors("G90 G01 G45 X10. D01 F100.", &s).is_empty());
     assert_eq!(
@@ -215,7 +223,7 @@ fn spec4_9_only_g00_to_g03_and_g90_g91_may_share_the_block() {
 }
 
 #[test]
-fn spec4_9_two_position_offset_codes_in_a_block_is_an_error() {
+fn behaviour4_9_two_position_offset_codes_in_a_block_is_an_error() {
     assert_eq!(
         errors("G45 G46 X10. D01", &mill(&[(1, 5.0)])),
         vec!["modal-conflict"]
@@ -223,7 +231,7 @@ fn spec4_9_two_position_offset_codes_in_a_block_is_an_error() {
 }
 
 #[test]
-fn spec4_9_position_offset_without_an_axis_word_is_an_error() {
+fn behaviour4_9_position_offset_without_an_axis_word_is_an_error() {
     assert_eq!(
         errors("G45 D01", &mill(&[(1, 5.0)])),
         vec!["position-offset-without-axis"]
@@ -231,7 +239,7 @@ fn spec4_9_position_offset_without_an_axis_word_is_an_error() {
 }
 
 #[test]
-fn spec4_10_position_offset_in_a_canned_cycle_is_an_error() {
+fn behaviour4_10_position_offset_in_a_canned_cycle_is_an_error() {
     let text = "G90 G00 Z10.\nG81 X0 Y0 Z-5. R2. F100.\nG45 X10. D01";
     assert_eq!(
         errors(text, &mill(&[(1, 5.0)])),
@@ -242,7 +250,7 @@ fn spec4_10_position_offset_in_a_canned_cycle_is_an_error() {
 }
 
 #[test]
-fn spec4_11_length_and_position_offsets_add_up_on_z() {
+fn behaviour4_11_length_and_position_offsets_add_up_on_z() {
     let text = "G90 G00 G43 Z50. H02\nG91 G45 Z-10. D01";
     let r = ok(text, &mill(&[(1, 6.0), (2, 15.0)]));
     // Programmed 40, + length 15, + position -6 (extension along the -Z move).
@@ -254,7 +262,7 @@ fn spec4_11_length_and_position_offsets_add_up_on_z() {
 }
 
 #[test]
-fn spec4_12_the_register_is_read_when_the_block_runs() {
+fn behaviour4_12_the_register_is_read_when_the_block_runs() {
     // D is modal; a later block reads the register's value of the run.
     let text = "G91 G45 X10. D01\nG45 X10.";
     let a = ok(text, &mill(&[(1, 1.0)]));
@@ -264,17 +272,17 @@ fn spec4_12_the_register_is_read_when_the_block_runs() {
 }
 
 #[test]
-fn spec4_d00_reads_zero_and_d_is_modal() {
+fn behaviour4_d00_reads_zero_and_d_is_modal() {
     let r = ok("G91 G45 X10. D00\nG45 Y10.", &mill(&[(1, 5.0)]));
     same(actual(&r, 1), [10.0, 10.0, 0.0]);
 }
 
 #[test]
-fn spec4_mirror_image_reverses_the_offset_with_the_movement() {
+fn behaviour4_mirror_image_reverses_the_offset_with_the_movement() {
     // Seed 003: mirror image can be applied to tool position offset.
     let mut s = mill(&[(1, 6.0)]);
     s.settings.mirror = Mirror { x: true, y: false };
-    let text = "G90 G00 X-30. Y-20.;\nG91 G00 G46 X30. Y20. D01;\nG01 G47 X80. F200.;\nG47 Y50.;\nG47 X-80.;\nG47 Y-50.;\nG00 G46 X-30. Y-20.;";
+    let text = SQUARE;
     let r = ok(text, &s);
     let want = [
         [30.0, -20.0],
