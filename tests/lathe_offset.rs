@@ -287,3 +287,20 @@ fn behaviour5_offset_change_with_no_move_in_arc_mode_is_an_error() {
         vec!["offset-motion-mode"]
     );
 }
+
+#[test]
+fn behaviour5_9_g50_needs_x_and_z_or_s() {
+    assert_eq!(errors("G50", &lathe(&[])), vec!["g50-without-axis"]);
+    assert!(errors("G50 S3000", &lathe(&[])).is_empty());
+    // U and W set the coordinate incrementally.
+    let r = ok("G50 X100. Z50.\nG50 U-10. W5.", &lathe(&[]));
+    same(programmed(&r, 1), [90.0, 0.0, 55.0]);
+}
+
+#[test]
+fn behaviour5_10_a_turning_cycle_needs_its_x_and_z() {
+    assert_eq!(
+        errors("G50 X60. Z2.\nG90 X50. F0.2", &lathe(&[])),
+        vec!["cycle-without-target"]
+    );
+}

@@ -217,3 +217,26 @@ fn behaviour3_g43_with_h00_warns() {
     assert!(r.diagnostics.iter().any(|d| d.code == "length-offset-h00"));
     assert!(!r.has_errors());
 }
+
+#[test]
+fn behaviour3_3_with_next_z_a_z_less_h_change_or_cancel_waits_too() {
+    let mut s = mill(&[(2, 15.0), (3, 10.0)]);
+    s.settings.length_offset_without_z = LengthOffsetWithoutZ::NextZ;
+    let r = ok("G90 G00 G43 Z50. H02\nH03\nZ20.", &s);
+    assert_eq!(r.blocks[1].move_count, 0);
+    same(actual(&r, 1), [0.0, 0.0, 65.0]);
+    same(actual(&r, 2), [0.0, 0.0, 30.0]);
+    let r = ok("G90 G00 G43 Z50. H02\nG49\nZ20.", &s);
+    assert_eq!(r.blocks[1].move_count, 0);
+    same(actual(&r, 1), [0.0, 0.0, 65.0]);
+    same(actual(&r, 2), [0.0, 0.0, 20.0]);
+}
+
+#[test]
+fn behaviour3_11_the_offset_is_on_z_whatever_the_plane() {
+    for plane in ["G17", "G18", "G19"] {
+        let text = format!("{plane} G90 G00 G43 Z50. H02");
+        let r = ok(&text, &mill(&[(2, 15.0)]));
+        same(actual(&r, 0), [0.0, 0.0, 65.0]);
+    }
+}

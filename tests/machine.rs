@@ -482,3 +482,118 @@ fn limits_a_block_that_would_make_too_many_moves_stops_with_an_error() {
         vec!["cycle-pecks"]
     );
 }
+
+#[test]
+fn behaviour1_14_a_feed_rate_is_0_to_999999() {
+    // Program text (behaviour 1.14), checked where the machine is given it.
+    assert!(errors("G01 X1. F999999.", &mill(&[])).is_empty());
+    assert_eq!(
+        errors("G01 X1. F1000000.", &mill(&[])),
+        vec!["out-of-range"]
+    );
+    assert_eq!(errors("G01 X1. F-1.", &mill(&[])), vec!["out-of-range"]);
+}
+
+#[test]
+fn behaviour2_8_g92_and_g28_need_an_axis() {
+    assert_eq!(errors("G92", &mill(&[])), vec!["g92-without-axis"]);
+    assert_eq!(errors("G91 G28", &mill(&[])), vec!["g28-without-axis"]);
+    assert_eq!(errors("G28", &lathe(&[])), vec!["g28-without-axis"]);
+}
+
+#[test]
+fn behaviour2_9_the_lathe_dwells_u_seconds() {
+    let r = ok("G04 U1.5", &lathe(&[]));
+    assert_eq!(r.events[0].kind, EventKind::Dwell { seconds: 1.5 });
+    assert!(r.moves.is_empty());
+}
+
+#[test]
+fn behaviour2_13_r_wins_over_centre_words_and_a_centre_word_off_the_plane_is_ignored() {
+    let s = mill(&[]);
+    let r = run("G00 X10.\nG03 X0 Y10. R10. I-10. F100.", &s);
+    assert!(!r.has_errors());
+    let codes: Vec<&str> = r.diagnostics.iter().map(|d| d.code).collect();
+    assert_eq!(codes, vec!["arc-r-and-center"]);
+    same(r.moves.last().unwrap().arc.unwrap().center, [0.0, 0.0, 0.0]);
+    let r = run("G00 X10.\nG03 X0 Y10. I-10. K5. F100.", &s);
+    assert!(!r.has_errors());
+    let codes: Vec<&str> = r.diagnostics.iter().map(|d| d.code).collect();
+    assert_eq!(codes, vec!["arc-center-word"]);
+    // An R arc that ends where it starts moves like G01, with a warning.
+    let r = run("G17 G02 Z-5. R10. F100.", &s);
+    assert!(!r.has_errors());
+    assert_eq!(r.diagnostics[0].code, "arc-r-no-motion");
+    assert_eq!(r.moves[0].kind, MoveKind::Feed);
+    same(r.moves[0].to, [0.0, 0.0, -5.0]);
+}
+
+#[test]
+fn behaviour2_18_m19_m07_and_a_t_word_in_the_m06_block() {
+    let r = ok("M19\nM07\nT5\nM06 T2\nM06", &mill(&[]));
+    let kinds: Vec<EventKind> = r.events.iter().map(|e| e.kind.clone()).collect();
+    assert_eq!(
+        kinds,
+        vec![
+            EventKind::SpindleOrient,
+            EventKind::CoolantOn { m: 7 },
+            EventKind::ToolChange { tool: 5 },
+            EventKind::ToolChange { tool: 2 },
+        ]
+    );
+    // M06 changes to the tool selected before its block; the block's own T
+    // selects the next one.
+    assert_eq!(r.blocks[3].state.tool, 5);
+    assert_eq!(r.blocks[3].state.next_tool, 2);
+    // M00 is reported, and the run goes on.
+    let r = ok("M00\nG00 X1.", &mill(&[]));
+    assert_eq!(r.events[0].kind, EventKind::ProgramStop);
+    assert_eq!((r.block_count, r.end), (2, End::Completed));
+    // On the lathe M06 is an auxiliary function (the turret indexes on T).
+    let r = ok("M06", &lathe(&[]));
+    assert_eq!(r.events[0].kind, EventKind::Auxiliary { m: 6 });
+}
+
+#[test]
+fn behaviour2_19_feed_spindle_and_their_modes() {
+    let r = ok("G95 G01 X1. F0.1 S1200\nX2.", &mill(&[]));
+    let s = &r.blocks[1].state;
+    assert_eq!((s.feed, s.spindle), (Some(0.1), Some(1200.0)));
+    let m = s.modal.codes(offsetlab::MachineKind::Mill);
+    assert_eq!(m.feed_mode, "G95");
+    let r = ok("G50 X100. Z50. S3000\nG96 G98 S200", &lathe(&[]));
+    assert_eq!(r.blocks[0].state.spindle, None, "G50 S is the speed limit");
+    let s = &r.blocks[1].state;
+    assert_eq!(s.spindle, Some(200.0));
+    let m = s.modal.codes(offsetlab::MachineKind::Lathe);
+    assert_eq!((m.feed_mode, m.surface_speed), ("G98", Some("G96")));
+    // The lathe starts in G99 (feed per revolution) and G97.
+    let m = r.blocks[0].state.modal.codes(offsetlab::MachineKind::Lathe);
+    assert_eq!(
+        (m.feed_mode, m.surface_speed, m.plane),
+        ("G99", Some("G97"), "G18")
+    );
+}
+
+#[test]
+fn behaviour7_5_mirror_image_is_for_the_mill_only() {
+    let mut s = lathe(&[]);
+    s.settings.mirror = Mirror { x: true, y: false };
+    let r = run("G00 X10.", &s);
+    assert_eq!(r.diagnostics[0].code, "setup-mirror");
+    assert_eq!(r.block_count, 0);
+}
+
+#[test]
+fn behaviour7_6_peck_retract_sets_the_back_off_of_g73_and_g83() {
+    let mut s = mill(&[]);
+    s.settings.peck_retract = Some(0.5);
+    let r = ok("G90 G00 Z10.\nG73 X0 Y0 Z-10. R1. Q4. F100.", &s);
+    let backs: Vec<f64> = r
+        .moves
+        .iter()
+        .filter(|m| m.kind == MoveKind::Rapid)
+        .map(|m| m.programmed_to[2])
+        .collect();
+    assert_eq!(backs, vec![10.0, 1.0, -2.5, -6.5, 10.0]);
+}
