@@ -298,3 +298,12 @@ fn behaviour4_mirror_image_reverses_the_offset_with_the_movement() {
     let r = ok("G91 G45 X0 D01", &s);
     same(actual(&r, 0), [-6.0, 0.0, 0.0]);
 }
+
+#[test]
+fn behaviour1_18_d_and_h_read_one_table() {
+    // One offset memory (YASNAC; Fanuc memory type A): H01 and D01 are the
+    // same register.
+    let text = "G90 G00 G43 Z10. H01\nG91 G45 X10. D01";
+    let r = ok(text, &mill(&[(1, 5.0)]));
+    same(actual(&r, 1), [15.0, 0.0, 15.0]);
+}
