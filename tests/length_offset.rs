@@ -240,3 +240,19 @@ fn behaviour3_11_the_offset_is_on_z_whatever_the_plane() {
         same(actual(&r, 0), [0.0, 0.0, 65.0]);
     }
 }
+
+#[test]
+fn behaviour3_12_an_h_given_in_g49_applies_at_the_next_g43() {
+    let r = ok("G90 G00 Z50.\nH02\nG43 Z50.", &mill(&[(2, 15.0)]));
+    same(actual(&r, 1), [0.0, 0.0, 50.0]);
+    same(actual(&r, 2), [0.0, 0.0, 65.0]);
+}
+
+#[test]
+fn behaviour3_13_a_change_in_a_cycle_block_without_a_hole_moves_at_rapid() {
+    let text = "G90 G01 Z50. F100.\nG81 X0 Y0 Z-5. R2.\nG43 H02\nG80";
+    let r = ok(text, &mill(&[(2, 15.0)]));
+    let m = r.moves.last().unwrap();
+    assert_eq!((m.kind, m.at_feed, m.line), (MoveKind::Offset, false, 3));
+    same(m.to, [0.0, 0.0, 65.0]);
+}

@@ -597,3 +597,31 @@ fn behaviour7_6_peck_retract_sets_the_back_off_of_g73_and_g83() {
         .collect();
     assert_eq!(backs, vec![10.0, 1.0, -2.5, -6.5, 10.0]);
 }
+
+#[test]
+fn behaviour2_14_k0_keeps_the_cycle_data_and_drills_nothing() {
+    let text = "G90 G00 Z10.\nG81 X5. Y5. Z-5. R2. K0 F100.\nX10.";
+    let r = ok(text, &mill(&[]));
+    assert_eq!(r.blocks[1].move_count, 0);
+    same(programmed(&r, 1), [0.0, 0.0, 10.0]);
+    // The next block drills with the R and Z the K0 block gave.
+    let bottom = r.moves.iter().find(|m| m.kind == MoveKind::Feed).unwrap();
+    same(bottom.programmed_to, [10.0, 0.0, -5.0]);
+}
+
+#[test]
+fn behaviour7_8_an_inch_setup_positions_the_tool_in_inches() {
+    let s = Setup {
+        units: offsetlab::Units::Inch,
+        start: Position {
+            x: 1.0,
+            y: 2.0,
+            z: 3.0,
+        },
+        ..Setup::default()
+    };
+    let r = ok("G91 G00 X1.", &s);
+    // Kept in millimetres; the start and the word both in inches.
+    same(programmed(&r, 0), [50.8, 50.8, 76.2]);
+    assert_eq!(r.units, offsetlab::Units::Inch);
+}
