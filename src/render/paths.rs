@@ -162,14 +162,15 @@ const SAMPLES: usize = 64;
 /// what lies below finished pixels is found hidden when it is recorded
 /// and not recorded at all ([`Raster::plan`]). For drawings too large to
 /// be kept for the next edit: the parts' first moves start afresh, which
-/// a kept drawing's comparison does not expect.
+/// a kept drawing's comparison does not expect. Returns how many moves of
+/// its paths it traced (each path counts its moves).
 pub(super) fn draw_paths_in_parts(
     r: &mut Raster,
     f: &Frame,
     tp: &Toolpath,
     scene: &Scene,
     split: usize,
-) {
+) -> usize {
     // Top first.
     let layers: Vec<Layer> = layers(f, tp, scene, split).into_iter().rev().collect();
     // The grid: from the ink the lines would cover, measured on samples.
@@ -207,6 +208,7 @@ pub(super) fn draw_paths_in_parts(
         ink += sampled * n as f64 / (SAMPLES * PART_MOVES) as f64;
     }
     r.plan(ink);
+    let moves = layers.iter().map(|l| l.moves.len()).sum();
     for Layer {
         kind,
         moves: range,
@@ -227,6 +229,7 @@ pub(super) fn draw_paths_in_parts(
             end = start;
         }
     }
+    moves
 }
 
 /// Where a path being drawn is.

@@ -29,15 +29,15 @@
 mod filled;
 mod keep;
 mod open;
+mod pieces;
 mod record;
-mod resume;
 mod sweep;
 #[cfg(test)]
 mod tests;
 
+pub(crate) use pieces::Recorded;
 use record::Recorder;
 pub use record::{InkMeter, parse_color};
-pub(crate) use resume::Recorded;
 
 /// Surfaces larger than this (device pixels) are drawn as vectors: the
 /// buffers take 8 bytes a pixel.
@@ -111,7 +111,7 @@ pub struct Raster {
     reach_tiles: Vec<u64>,
     /// The box of the pixels drawn (x0, y0, x1, y1; exclusive ends), and
     /// the width in tiles of the grid they were drawn on (the pixels may be
-    /// those of the drawing before the last: [`keep::Older`]).
+    /// those of the drawing before the last: [`keep::BeforeLast`]).
     dirty: Option<(usize, usize, usize, usize)>,
     dirty_tiles_w: usize,
     /// What was recorded since [`Raster::begin`].
@@ -141,15 +141,17 @@ pub struct Raster {
     /// What the last drawing recorded, whose pixels `px` holds: the next
     /// one is compared with it, and only where they differ drawn again
     /// ([`keep`]).
-    last: keep::Last,
+    last: keep::Recording,
     /// The drawing before the last one, set aside with its pixels when a
-    /// drawing was made from nothing ([`keep::Older`]).
-    older: keep::Older,
+    /// drawing was made from nothing ([`keep::BeforeLast`]).
+    before_last: keep::BeforeLast,
+    /// How many recordings were kept ([`keep::Recording::number`]).
+    recordings: u64,
     /// Whether this drawing was made on the last one's pixels, or on those
     /// of the drawing before it.
     kept: bool,
     /// Which of the two pixel buffers `px` is (the other is the drawing's
-    /// before the last: [`keep::Older`]).
+    /// before the last: [`keep::BeforeLast`]).
     buffer: usize,
     /// The box (x0, y0, x1, y1; exclusive ends) outside which every pixel
     /// is finished: the surface, or where a drawing made on the last one's
@@ -161,9 +163,17 @@ pub struct Raster {
     open: (usize, usize, usize, usize),
     open_pixels: Option<[f64; 4]>,
     open_all: bool,
-    /// What was traced to make this drawing's recording, kept with it
-    /// when the drawing is kept for the next one ([`keep::Last`]).
-    traced: Option<Box<crate::render::resume::Traced>>,
+}
+
+/// One of the two drawings a raster keeps for the next one: the last, or
+/// the one before it ([`keep`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Drawing {
+    /// The drawing made last (before [`Raster::finish`]: the one before the
+    /// drawing being recorded).
+    Last,
+    /// The one before it, set aside with its pixels ([`keep::BeforeLast`]).
+    BeforeLast,
 }
 
 /// A pixel of the drawing: its colour and which path covered it last,
@@ -280,7 +290,7 @@ impl Raster {
             self.base = 1;
             self.dirty = None;
             self.last.forget();
-            self.older = keep::Older::default();
+            self.before_last = keep::BeforeLast::default();
         }
         (self.width, self.height) = self.full;
         self.coarse = None;
@@ -306,7 +316,6 @@ impl Raster {
         self.tessellated = 0;
         self.pen = Recorder::default();
         self.ink_area = 0.0;
-        self.traced = None;
     }
 
     /// Clears what the last drawing touched (in its own grid, which may have
@@ -439,7 +448,7 @@ impl Raster {
             self.choose_grid();
             // The last drawing's pixels where this one is the same, or none.
             // (keep_last sets the open box of a drawing it keeps.)
-            self.kept = self.keep_last() || self.keep_older();
+            self.kept = self.keep_last() || self.keep_before_last();
             if !self.kept {
                 self.set_last_aside();
                 self.clear_last();
@@ -532,17 +541,15 @@ impl Raster {
         self.arcs.clear();
         if first && (self.planned || points.len() > keep::MOST_KEPT || whole_arcs) {
             self.last.forget();
-            self.traced = None;
             self.subs = subs;
             self.points = points;
         } else if first {
             // What the next drawing is compared with; the allocations of
             // the one before are kept for it.
             let surface = (self.full, self.coarse, self.scale);
-            let traced = self.traced.take();
-            let (subs, points) = self
-                .last
-                .keep((subs, points), &self.styles, surface, traced);
+            self.recordings += 1;
+            let (subs, points) =
+                (self.last).keep(self.recordings, (subs, points), &self.styles, surface);
             self.subs = subs;
             self.points = points;
         } else {
@@ -556,7 +563,7 @@ impl Raster {
     /// Makes the next drawing from nothing, not on this one's pixels.
     pub fn forget(&mut self) {
         self.last.forget();
-        self.older.forget();
+        self.before_last.forget();
     }
 
     /// Whether this drawing was made on the last one's pixels (or on those
@@ -592,7 +599,7 @@ impl Raster {
 
     /// Which of the raster's two pixel buffers this drawing is in (0 or 1):
     /// a drawing is made on the last one's pixels, on those of the one
-    /// before it in the other buffer ([`keep::Older`]), or from nothing in
+    /// before it in the other buffer ([`keep::BeforeLast`]), or from nothing in
     /// either. A copy of the pixels kept per buffer (the page's scratch
     /// canvases) takes only [`Raster::changed`]'s box from the next drawing
     /// made in its buffer.

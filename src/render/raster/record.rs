@@ -20,7 +20,7 @@ pub(super) struct Recorder {
 
 /// The area a segment's line covers, in whole 64ths of a device pixel²:
 /// such areas add up exactly in any order (far below 2^53 of them), so a
-/// recording made partly of the last one's pieces ([`super::resume`])
+/// recording made partly of the last one's pieces ([`super::pieces`])
 /// sums to what recording it in one go does, and chooses the same grid.
 pub(super) fn covered(area: f64) -> f64 {
     (area * 64.0).round() / 64.0
@@ -363,7 +363,7 @@ impl Pen for Raster {
 /// A coordinate or a phase as recorded: as `f32`, with the tiniest numbers
 /// (below 2^-100 pixels) made 0, so that halving a recording for the
 /// coarse grid ([`Raster::choose_grid`]) and doubling it back (a recording
-/// resumed from the last one's pieces: `super::resume`) is exact — it is
+/// resumed from the last one's pieces: `super::pieces`) is exact — it is
 /// for every normal `f32` at least 2^-125.
 pub(super) fn recorded(v: f64) -> f32 {
     let v = v as f32;

@@ -320,7 +320,7 @@ fn same_as_from_nothing(
 
 #[test]
 fn a_drawing_close_to_the_one_before_the_last_is_made_on_its_pixels() {
-    // Typing back and forth (keep::Older): a digit makes a block wrong, the
+    // Typing back and forth (keep::BeforeLast): a digit makes a block wrong, the
     // path and the fitted view change (every point moves), the next key
     // makes it right again — the frame before, or an edit of it.
     let path: Vec<(f64, f64)> = (0..301)
@@ -338,7 +338,7 @@ fn a_drawing_close_to_the_one_before_the_last_is_made_on_its_pixels() {
     let surface = (400, 300, 1.0);
     let mut r = Raster::new();
     let mut previous = 1;
-    for (points, kept, on_older) in [
+    for (points, kept, on_before_last) in [
         (&path, false, false),
         (&refitted, false, false),
         (&path, true, true),
@@ -355,7 +355,7 @@ fn a_drawing_close_to_the_one_before_the_last_is_made_on_its_pixels() {
         assert_eq!(r.changed().is_none(), !kept);
         // The pixels of the drawing before the last are in the other buffer;
         // a drawing from nothing takes it too.
-        assert_eq!(buffer != previous, on_older || !kept);
+        assert_eq!(buffer != previous, on_before_last || !kept);
         previous = buffer;
     }
     // The drawing before the last on the coarse grid, the next ones on the
