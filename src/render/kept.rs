@@ -378,3 +378,118 @@ impl Kept {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::paths::draw_paths;
+    use crate::render::test_support::{assert_same_pixels, drawn_from_nothing, toolpath};
+
+    const SURFACE: (usize, usize, f64) = (240, 180, 2.0);
+
+    /// `n` feed moves between scattered points, the one of `bent` (if any)
+    /// to another place.
+    fn scattered(n: usize, bent: Option<usize>) -> Toolpath {
+        let mut program = String::from("G90 G00 X0. Y0.\nG01 F300.\n");
+        for k in 0..n {
+            let (x, y) = ((k * 37 % 101) as f64, (k * 53 % 71) as f64);
+            let y = if Some(k) == bent { y + 9.5 } else { y };
+            program.push_str(&format!("X{x:.3} Y{y:.3}\n"));
+        }
+        toolpath(&program)
+    }
+
+    /// Draws `tp` with `kept` as the page does; asserts that it recorded
+    /// and painted what a drawing from nothing does. How many moves were
+    /// traced.
+    fn draws_as_from_nothing(kept: &mut Kept, f: &Frame, tp: &Toolpath, scene: &Scene) -> usize {
+        let (w, h, scale) = SURFACE;
+        assert!(kept.begin(w, h, (scale, scale)));
+        let traced = kept.draw_paths(f, tp, scene, scene.drawn_moves(tp));
+        let mut fresh = drawn_from_nothing(f, tp, scene, SURFACE);
+        let r = kept.raster();
+        assert_eq!(r.kept_recording(), fresh.kept_recording());
+        assert_same_pixels(r, &mut fresh, "kept against from nothing");
+        traced
+    }
+
+    #[test]
+    fn a_tracing_is_taken_up_only_with_the_recording_it_made() {
+        let scene = Scene::default();
+        let first = scattered(400, None);
+        let f = scene.frame(&first, 120.0, 90.0);
+        let mut kept = Kept::new();
+        let all = draws_as_from_nothing(&mut kept, &f, &first, &scene);
+        // A drawing of another toolpath made on the raster itself, not
+        // through what it is kept with: on the first's pixels, its
+        // recording in the first's place. The first's tracing is not its.
+        let bent = scattered(400, Some(200));
+        let (w, h, scale) = SURFACE;
+        let r = kept.raster();
+        assert!(r.begin(w, h, (scale, scale)));
+        draw_paths(r, &f, &bent, &scene, scene.drawn_moves(&bent));
+        assert!(r.kept(), "made on the first drawing's pixels");
+        // The first again: traced whole, as from nothing.
+        assert_eq!(draws_as_from_nothing(&mut kept, &f, &first, &scene), all);
+        // Through `Kept`, an edit is resumed from the last tracing.
+        let traced = draws_as_from_nothing(&mut kept, &f, &bent, &scene);
+        assert!(traced < all / 2, "{traced} of {all}");
+    }
+
+    #[test]
+    fn the_layer_on_the_canvas_is_shown_again_for_its_key_and_moved_with_the_view() {
+        let scene = Scene::default();
+        let tp = scattered(300, None);
+        let f = scene.frame(&tp, 120.0, 90.0);
+        let (w, h, scale) = SURFACE;
+        let mut kept = Kept::new();
+        assert!(kept.begin(w, h, (scale, scale)));
+        kept.draw_paths(&f, &tp, &scene, scene.drawn_moves(&tp));
+        // Nothing on the scratch canvas yet: all that was drawn is put.
+        let put = kept.layer_to_put().expect("something drawn");
+        assert_eq!((put.put, put.at), (put.drawn, (0.0, 0.0)));
+        assert_eq!(kept.image_of(put.put).len(), 4 * put.drawn.2 * put.drawn.3);
+        let t = f.transform;
+        let (op, change) = kept.layer_put(&put, &t, 7, (scale, scale));
+        assert_eq!(change, LayerChange::Whole);
+        let Op::Layer { dest, .. } = op else {
+            panic!("{op:?}");
+        };
+        // The same key and view: the same call; another key: none.
+        assert_eq!(
+            kept.layer_again(&t, true, 7, (scale, scale)),
+            Some((op.clone(), false))
+        );
+        assert_eq!(kept.layer_again(&t, true, 8, (scale, scale)), None);
+        // Zoomed in twice about the origin: moved and scaled, but only
+        // when not asked for the same pixels.
+        let zoomed = Transform {
+            scale: 2.0 * t.scale,
+            ..t
+        };
+        assert_eq!(kept.layer_again(&zoomed, true, 7, (scale, scale)), None);
+        let (moved, true) = kept
+            .layer_again(&zoomed, false, 7, (scale, scale))
+            .expect("moved")
+        else {
+            panic!("not moved");
+        };
+        let Op::Layer {
+            dest: to, smooth, ..
+        } = moved
+        else {
+            panic!("{moved:?}");
+        };
+        assert!(smooth);
+        assert_eq!((to.2, to.3), (2.0 * dest.2, 2.0 * dest.3));
+        // The same drawing again is made on its pixels: nothing to put,
+        // and the canvas's layer changes nowhere.
+        assert!(kept.begin(w, h, (scale, scale)));
+        kept.draw_paths(&f, &tp, &scene, scene.drawn_moves(&tp));
+        let again = kept.layer_to_put().expect("something drawn");
+        assert_eq!(again.buffer, put.buffer);
+        assert_eq!((again.put.2, again.put.3), (0, 0));
+        let (_, change) = kept.layer_put(&again, &t, 7, (scale, scale));
+        assert!(matches!(change, LayerChange::Within(r) if r.w == 0.0 && r.h == 0.0));
+    }
+}

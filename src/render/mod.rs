@@ -22,6 +22,8 @@ mod resume;
 pub mod scene;
 pub mod style;
 pub mod svg;
+#[cfg(test)]
+mod test_support;
 pub mod view;
 
 use crate::setup::MachineKind;
@@ -412,15 +414,7 @@ pub fn is_rapid(kind: u8) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Setup, run};
-
-    fn toolpath(program: &str) -> Toolpath {
-        let mut setup = Setup::default();
-        setup.set_register("01=6.0").unwrap();
-        let r = run(program, &setup);
-        assert!(!r.has_errors(), "{:?}", r.diagnostics);
-        Toolpath::from_run(&r)
-    }
+    use crate::render::test_support::toolpath;
 
     #[test]
     fn path_never_runs_under_the_legend_and_stays_on_the_surface() {

@@ -347,15 +347,11 @@ fn next_mark(shared: Shared, path: &TracedPath, at: usize) -> Option<usize> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::render::test_support::{assert_same_pixels, drawn_from_nothing, toolpath_to_stop};
     use crate::render::{Kept, Plane};
-    use crate::{Setup, run};
 
     /// A block of [`program`]: (kind, x, y, r).
     type Block = (u8, f64, f64, f64);
-
-    fn toolpath(program: &str) -> Toolpath {
-        Toolpath::from_run(&run(program, &Setup::default()))
-    }
 
     /// A program of `blocks`: each (kind, x, y, r) a rapid (0), a feed
     /// (1), an arc (2 clockwise, 3 counter-clockwise, of radius `r` times
@@ -390,21 +386,12 @@ mod tests {
     /// drawing it in one go. How many moves were traced.
     fn draws_as_from_nothing(kept: &mut Kept, f: &Frame, tp: &Toolpath, scene: &Scene) -> usize {
         let (w, h, scale) = SURFACE;
-        let split = scene.drawn_moves(tp);
         assert!(kept.begin(w, h, (scale, scale)));
-        let traced = kept.draw_paths(f, tp, scene, split);
-        let mut fresh = Raster::new();
-        assert!(fresh.begin(w, h, (scale, scale)));
-        draw_paths(&mut fresh, f, tp, scene, split);
+        let traced = kept.draw_paths(f, tp, scene, scene.drawn_moves(tp));
+        let mut fresh = drawn_from_nothing(f, tp, scene, SURFACE);
         let r = kept.raster();
         assert_eq!(r.kept_recording(), fresh.kept_recording());
-        let (gw, gh) = fresh.size();
-        assert_eq!(r.size(), (gw, gh));
-        for y in 0..gh {
-            for x in 0..gw {
-                assert_eq!(r.pixel(x, y), fresh.pixel(x, y), "pixel ({x}, {y})");
-            }
-        }
+        assert_same_pixels(r, &mut fresh, "resumed against from nothing");
         traced
     }
 
@@ -430,7 +417,7 @@ mod tests {
     /// frame, what was kept and how many moves were traced.
     fn first_drawing(n: usize) -> (Vec<Block>, Toolpath, Scene, Frame, Kept, usize) {
         let v = blocks(n);
-        let tp = toolpath(&program(&v));
+        let tp = toolpath_to_stop(&program(&v));
         let scene = Scene::default();
         let f = scene.frame(&tp, 120.0, 90.0);
         let mut r = Kept::new();
@@ -445,7 +432,7 @@ mod tests {
         // A digit typed into a line's X: two moves change.
         v[300].1 += 0.4;
         v[300].0 = 1;
-        let after = toolpath(&program(&v));
+        let after = toolpath_to_stop(&program(&v));
         let traced = draws_as_from_nothing(&mut r, &f, &after, &scene);
         assert!(traced <= 4 * 3 * EVERY, "{traced} of {all}");
         // And back: the last drawing's pieces again.
@@ -458,7 +445,7 @@ mod tests {
         let (v, before, scene, f, mut r, all) = first_drawing(600);
         let mut w = v.clone();
         w.insert(200, (1, 50.0, 35.0, 0.0));
-        let after = toolpath(&program(&w));
+        let after = toolpath_to_stop(&program(&w));
         // The solid paths take up the last recording again past the new
         // block; the dashed ones (rapids) start their dashes afresh at
         // other moves from there on, and are traced to their ends.
@@ -469,7 +456,7 @@ mod tests {
         for k in 0..16 {
             x.insert(200, (1, 50.0 + k as f64, 35.0, 0.0));
         }
-        let after = toolpath(&program(&x));
+        let after = toolpath_to_stop(&program(&x));
         let back = draws_as_from_nothing(&mut r, &f, &before, &scene);
         assert!(back < all * 2 / 3, "{back} of {all}");
         let traced = draws_as_from_nothing(&mut r, &f, &after, &scene);
@@ -481,7 +468,7 @@ mod tests {
         let (mut v, _, scene, f, mut r, all) = first_drawing(3000);
         assert_eq!(r.raster().factor(), 2, "the drawing is dense");
         v[1500].1 += 0.4;
-        let after = toolpath(&program(&v));
+        let after = toolpath_to_stop(&program(&v));
         let traced = draws_as_from_nothing(&mut r, &f, &after, &scene);
         assert!(traced <= 4 * 3 * EVERY, "{traced} of {all}");
     }
@@ -489,7 +476,7 @@ mod tests {
     #[test]
     fn a_step_through_the_program_is_recorded_as_in_one_go() {
         let v = blocks(400);
-        let tp = toolpath(&program(&v));
+        let tp = toolpath_to_stop(&program(&v));
         let f = Scene::default().frame(&tp, 120.0, 90.0);
         let mut r = Kept::new();
         for step in [Some(100), Some(101), Some(250), None, Some(250), Some(3)] {
@@ -503,7 +490,7 @@ mod tests {
 
     #[test]
     fn another_view_traces_everything() {
-        let tp = toolpath(&program(&blocks(300)));
+        let tp = toolpath_to_stop(&program(&blocks(300)));
         let scene = Scene::default();
         let f = scene.frame(&tp, 120.0, 90.0);
         let g = Scene {
@@ -528,7 +515,7 @@ mod tests {
             zoom in proptest::sample::select(vec![1.0, 3.0]),
         ) {
             let mut v = blocks.clone();
-            let first = toolpath(&program(&v));
+            let first = toolpath_to_stop(&program(&v));
             let view = Scene { zoom, ..Scene::default() };
             let f = view.frame(&first, 120.0, 90.0);
             let mut r = Kept::new();
@@ -549,7 +536,7 @@ mod tests {
                         }
                     }
                 }
-                let tp = toolpath(&program(&v));
+                let tp = toolpath_to_stop(&program(&v));
                 let scene = Scene {
                     step: (step > 0).then_some((at * usize::from(step) % 400) as u32),
                     ..view

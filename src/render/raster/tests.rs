@@ -2,6 +2,7 @@ use super::*;
 use crate::render::Pen;
 use crate::render::style::Stroke;
 use crate::render::style::{ACTUAL_FEED, PROGRAMMED_FEED};
+use crate::render::test_support::{assert_same_pixels, pixels};
 
 fn raster(w: usize, h: usize) -> Raster {
     let mut r = Raster::new();
@@ -200,15 +201,6 @@ fn draw_chains(
     }
 }
 
-/// Every pixel of both drawings, as straight RGBA.
-fn pixels(r: &mut Raster) -> Vec<[u8; 4]> {
-    let (w, h) = r.size();
-    (0..h)
-        .flat_map(|y| (0..w).map(move |x| (x, y)))
-        .map(|(x, y)| r.pixel(x, y))
-        .collect()
-}
-
 const TRANSLUCENT: Stroke = Stroke {
     color: "rgba(250, 180, 20, 0.55)",
     width: 7.0,
@@ -239,17 +231,8 @@ fn assert_drawn_again_as_from_nothing(
     draw_chains(&mut fresh, surface, &paths(after));
     assert!(!fresh.kept());
     assert_eq!(again.factor(), fresh.factor());
-    let (a, b) = (pixels(&mut again), pixels(&mut fresh));
-    let w = again.size().0;
-    if let Some(i) = (0..a.len()).find(|&i| a[i] != b[i]) {
-        panic!(
-            "pixel ({}, {}) drawn again {:?}, from nothing {:?} (kept: {kept})",
-            i % w,
-            i / w,
-            a[i],
-            b[i]
-        );
-    }
+    let what = format!("drawn again against from nothing (kept: {kept})");
+    assert_same_pixels(&mut again, &mut fresh, &what);
     kept
 }
 
@@ -408,17 +391,7 @@ fn assert_same_without_the_filled_box(surface: (usize, usize, f64), points: &[(f
     let mut without = Raster::new();
     without.filled.off = true;
     draw_chains(&mut without, surface, &paths);
-    let (a, b) = (pixels(&mut with), pixels(&mut without));
-    let w = with.size().0;
-    if let Some(i) = (0..a.len()).find(|&i| a[i] != b[i]) {
-        panic!(
-            "pixel ({}, {}) with the box {:?}, without {:?}",
-            i % w,
-            i / w,
-            a[i],
-            b[i]
-        );
-    }
+    assert_same_pixels(&mut with, &mut without, "with the box against without");
     with.filled.px.is_some()
 }
 
