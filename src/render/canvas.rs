@@ -311,9 +311,9 @@ impl<'a> CanvasSurface<'a> {
         ctx.set_transform(1.0, 0.0, 0.0, 1.0, 0.0, 0.0)?;
         // A drawing on the coarse grid is put at exactly twice its size:
         // each of its pixels is 2 × 2 device pixels (one CSS pixel at 2
-        // device pixels per CSS pixel) — not smoothed, which was a third of
-        // Chromium's time for the frame after an edit (bench-browser, 4c:
-        // 6.6 → 4.6 ms). A layer moved and scaled during a gesture is.
+        // device pixels per CSS pixel) — not smoothed: smoothing was much of
+        // Chromium's time for the frame after an edit (`make bench-browser`,
+        // target 4c, guards it). A layer moved and scaled during a gesture is.
         ctx.set_image_smoothing_enabled(!exact);
         let drawn = ctx.draw_image_with_offscreen_canvas_and_sw_and_sh_and_dx_and_dy_and_dw_and_dh(
             scratch, 0.0, 0.0, w, h, dx, dy, dw, dh,

@@ -453,8 +453,9 @@ fn whole_arc(
 /// `dx.hypot(dy)` where it is near `limit` or below; else a number that
 /// compares with `limit` as it does (`<`, `<=`, `>`, `>=`). The level of
 /// detail asks this of every point, and `hypot`, for this and for the
-/// lengths of segments, was 15 % of a 1M-block frame natively (perf):
-/// most points are far apart along an axis, and
+/// lengths of segments, was a large share of a 1M-block frame natively
+/// (`examples/render_time` on the 1M-block program guards it): most points
+/// are far apart along an axis, and
 /// `hypot` (rounded faithfully) is never less than the longer side, nor
 /// more than the sum of the sides rounded up.
 #[inline(always)]

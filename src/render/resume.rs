@@ -3,9 +3,10 @@
 //! Why: after a one-character edit of a 10k-block program, the page's
 //! frame is drawn again only where the path changed ([`Raster`]'s
 //! `keep`), but every move was still traced — projected, passed through
-//! the level of detail, clipped and recorded — to find which: about 20 M
-//! of the 57 M instructions of such a frame (callgrind, `examples/render_time`
-//! with `EDITED`), for moves that the edit left as they were.
+//! the level of detail, clipped and recorded — to find which: a large
+//! part of such a frame, for moves that the edit left as they were (the
+//! kept frame's instruction count of `examples/render_time` with `EDITED`,
+//! in `docs/performance.md`, guards it).
 //!
 //! How: while a path is traced, where the tracing stands (the tracer's
 //! state, the recorder's, and how much is recorded) is noted at the start

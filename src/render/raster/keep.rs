@@ -1,8 +1,7 @@
 //! A drawing made again where it changed: the pixels of the last drawing
 //! are kept where the new one records the same segments, so an edit that
 //! moves a few moves of a large path costs about those moves, not the
-//! whole frame (issue 6, target 4: a whole 10k-block frame is 55–60 ms in
-//! the page's wasm).
+//! whole frame (`make bench-browser`, target 4c, guards it).
 //!
 //! How: every move is a sub-path of its own in the recording
 //! ([`super::Raster`]'s `next_move`), with the dash phase it starts at; a
@@ -21,8 +20,9 @@ use super::sweep::tile_span;
 use super::{Ink, Pixel, Raster, Sub, TILE_BITS, TILE_MASK};
 
 /// Surfaces of more pixels than this do not keep the drawing before the
-/// last one ([`BeforeLast`]): its pixels take 8 bytes each (32 MiB here; the
-/// page's 10k-block benchmark frame, on the coarse grid, takes 2.2 MB).
+/// last one ([`BeforeLast`]): its pixels take 8 bytes each (32 MiB here,
+/// many times what the page's 10k-block benchmark frame takes on the
+/// coarse grid).
 const BEFORE_LAST_MOST_PIXELS: usize = 1 << 22;
 
 /// Past this share of changed points (of both recordings together) or of
@@ -32,11 +32,12 @@ const MOST: f64 = 0.5;
 
 /// Recordings of more points than this are not kept, nor split into a
 /// sub-path per move past it (nor do their dashes start afresh there): the
-/// 10k-block benchmark program records 40 k points on the page, the
-/// 1M-block one 5.2 M, and a sub-path per move made its first frame 10 %
-/// slower in the page (606 → 668 ms) and its wasm memory 69 MB larger, for
-/// an edit drawn in 0.32–0.40 s instead of 0.73–0.88 (natively,
-/// `examples/render_time` with `EDITED`).
+/// 10k-block benchmark program records far fewer points on the page, the
+/// 1M-block one several times more, and a sub-path per move made that
+/// one's first frame slower and its wasm memory larger than an edit drawn
+/// on its pixels would have saved (`make bench-browser`, target 3, guards
+/// the first frame and the memory; `examples/render_time` with `EDITED`,
+/// the edit).
 pub(super) const MOST_KEPT: usize = 1 << 20;
 
 /// The recording of a kept drawing (in its grid's coordinates) and what
@@ -100,8 +101,8 @@ impl Recording {
 /// view, so that every point of the next frame moves; the next digit (or
 /// Backspace, or an undo) makes the block right again and brings the
 /// view back — and that frame is the one before, or a small edit of it,
-/// made on its pixels like any edit of the last one (issue 6, target 4b:
-/// a whole 10k-block frame is 50–90 ms in the page).
+/// made on its pixels like any edit of the last one, instead of a whole
+/// frame (`make bench-browser`, target 4b, guards it).
 #[derive(Default)]
 pub(super) struct BeforeLast {
     px: Vec<Pixel>,

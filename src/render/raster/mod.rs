@@ -3,9 +3,9 @@
 //!
 //! Why: a browser's 2D canvas records every `lineTo` and rasterises the
 //! recorded paths afterwards, and Chromium's cost for that grows faster than
-//! the path's length — the 1M-block benchmark program (4.2 M segments at
-//! full view, 850 M device pixels of line) was not painted within two
-//! minutes, a 10k-block program took 0.74 s a frame (`docs/performance.md`).
+//! the path's length: the 1M-block benchmark program was not painted in any
+//! time a page can wait, and a 10k-block program's frames were far too slow
+//! to follow typing (`make bench-browser`, targets 3 and 4, guard it).
 //!
 //! How: the segments are recorded (clipped to the view, as `f32`), then
 //! drawn front to back — last path first, each path's segments last
@@ -80,17 +80,18 @@ pub struct Raster {
     planned: bool,
     /// The pixels, tile by tile (tiles row by row, each tile's pixels row
     /// by row: [`Raster::index`]). The pixels a line covers are read
-    /// there, scattered over megabytes, and waiting for them was half of
-    /// drawing a 10k-block frame (perf) with the image's rows in memory;
-    /// a tile's row is one cache line, and a steep line steps to the next
-    /// one rather than an image row (10 kB) further: the wait halved.
+    /// there, scattered over megabytes, and waiting for them was much of
+    /// drawing a 10k-block frame with the image's rows in memory; a tile's
+    /// row is one cache line, and a steep line steps to the next one rather
+    /// than an image row further (`examples/render_time` on the 10k-block
+    /// program guards it).
     px: Vec<Pixel>,
     /// The stamp of the first path of this drawing.
     base: u32,
     /// Finished (opaque) pixels per tile: bit `8 (y mod 8) + (x mod 8)`,
     /// so that the pixels across a line that are not finished are found a
-    /// tile at a time and only they are read (128 kB of bits instead of
-    /// 8 MB of pixels at 2560 × 1600). Finished tiles per block. Both start
+    /// tile at a time and only they are read (a bit a pixel instead of
+    /// its eight bytes). Finished tiles per block. Both start
     /// with what lies outside the surface finished, so `FULL_TILE` and
     /// `FULL` mean finished.
     tiles: Vec<u64>,
@@ -204,7 +205,8 @@ struct Ink {
 /// A recorded sub-path: its points run from `first` to the next one's;
 /// or, when its style has [`WHOLE_ARC`], it is the next of the arcs
 /// recorded whole (in order: a sub-path has no room for their number, and
-/// twelve bytes a sub-path instead of sixteen are 8 MB of a 1M-block frame).
+/// twelve bytes a sub-path instead of sixteen are megabytes of a 1M-block
+/// frame).
 #[derive(Clone, Copy, Debug)]
 struct Sub {
     first: u32,
@@ -264,8 +266,8 @@ impl Raster {
 
     /// Takes arcs whole once `points` points are recorded (for tests:
     /// 1 Mi otherwise, where a drawing is no longer kept for the next edit;
-    /// in the 1M-block frame, 4.4 M of the 5.2 M points were arcs', and
-    /// most of those arcs lie under the moves drawn after them).
+    /// in the 1M-block frame most points are arcs', and most of those arcs
+    /// lie under the moves drawn after them).
     pub fn take_arcs_whole_past(&mut self, points: usize) {
         self.whole_arcs_past = points;
     }
@@ -380,8 +382,9 @@ impl Raster {
     /// records a part (the last moves of the top path first), calls
     /// [`Raster::finish`] to draw it below what is drawn, records the part
     /// before it, and so on; a segment already hidden when it is recorded is
-    /// not recorded (most of a dense drawing's are: the 1M-block frame's
-    /// recording was half of its time, and 5.2 M points of memory). The
+    /// not recorded (most of a dense drawing's are: recording them was
+    /// much of the 1M-block frame's time and memory, which `make
+    /// bench-browser`, target 3, guards). The
     /// grid is chosen now, from `ink_area` (device pixels² its lines would
     /// cover, overlaps counted; see [`Raster::choose_grid`]). Such a drawing
     /// is not kept for the next one (it records too little to compare).
@@ -517,7 +520,8 @@ impl Raster {
             }
             // Dashes are laid from the sub-path's start; drawn from its end.
             // Each segment's length is worked out once (three times, with
-            // `hypot`, that was a tenth of a 1M-block frame natively).
+            // `hypot`, that was a share of a 1M-block frame of
+            // `examples/render_time`).
             let mut lengths = std::mem::take(&mut self.lengths);
             lengths.clear();
             lengths.extend(
@@ -698,13 +702,13 @@ impl Raster {
             return true;
         }
         // In a block not yet finished: its own tiles, 64 at a time along a
-        // row ([`open`]). Of the 1.66 M segments of a 1M-block frame that
-        // reached the sweep, 1.62 M covered no pixel, and 1.34 M of those
-        // lay in finished tiles (a block is finished only when all its 64
-        // tiles are): the frame 4 % faster in wasm (`examples/render_time`
-        // for wasm32-wasip1 under Node, 537–540 → 513–518 ms), 6 % fewer
-        // instructions natively. (Once tested a tile at a time, for boxes
-        // of 4 × 4 tiles at most; the box of a whole arc is larger.)
+        // row ([`open`]). Most segments of a 1M-block frame that reach the
+        // sweep cover no pixel, and most of those lie in finished tiles (a
+        // block is finished only when all its 64 tiles are): looking here
+        // saves their sweep (`examples/render_time` on the 1M-block
+        // program, natively and built for wasm32-wasip1, guards it). (Once
+        // tested a tile at a time, for boxes of 4 × 4 tiles at most; the box
+        // of a whole arc is larger.)
         let tiles = (
             (px0 >> TILE_BITS, px1 >> TILE_BITS),
             (py0 >> TILE_BITS, py1 >> TILE_BITS),
@@ -732,8 +736,8 @@ fn index(tiles_w: usize, x: usize, y: usize) -> usize {
 /// answers for NaN, which wasm's `f64.min` does not do as Rust wants, so
 /// there it is a call to libm's `fmin`, or that inlined: two comparisons
 /// and two selections where this has one of each (before wasm-opt the
-/// calls to fmin, fmax and their f32 forms were 16 % of a 1M-block run of
-/// `examples/render_time` built for wasm32-wasip1, node --cpu-prof).
+/// calls to fmin, fmax and their f32 forms were a large share of a 1M-block
+/// run of `examples/render_time` built for wasm32-wasip1, which guards it).
 #[inline(always)]
 fn smaller<T: PartialOrd>(a: T, b: T) -> T {
     if b < a { b } else { a }
@@ -748,7 +752,8 @@ fn larger<T: PartialOrd>(a: T, b: T) -> T {
 /// A pixel coordinate as a float: through `u32` (coordinates are below
 /// [`MAX_PIXELS`]), which converts in one instruction natively where a
 /// `usize` takes several — the conversions of the sweep and
-/// [`Raster::hidden`] were a tenth of a 1M-block frame (callgrind).
+/// [`Raster::hidden`] were a share of a 1M-block frame of
+/// `examples/render_time`, which guards it.
 #[inline]
 fn coord(v: usize) -> f64 {
     f64::from(v as u32)
@@ -762,9 +767,9 @@ fn pixel(v: f64) -> usize {
 }
 
 /// The length of a segment (dx, dy): the square root of the sum of the
-/// squares, within an ulp of `hypot` (which cost five times as much, and
-/// 5 % of a 1M-block frame natively); `hypot` where the squares would
-/// overflow or lose digits below the normal numbers.
+/// squares, within an ulp of `hypot` (which cost several times as much, a
+/// share of a 1M-block frame of `examples/render_time`); `hypot` where the
+/// squares would overflow or lose digits below the normal numbers.
 fn length(dx: f64, dy: f64) -> f64 {
     let squares = dx * dx + dy * dy;
     if (1e-290..1e290).contains(&squares) {
