@@ -7,7 +7,9 @@
 //! two backends: [`svg::SvgSurface`] (a string, native and wasm; how the
 //! renderer is tested) and `canvas::CanvasSurface` (an OffscreenCanvas 2D
 //! context through web-sys, wasm only), which lets the page draw a million
-//! segments without them ever crossing into JavaScript.
+//! segments without them ever crossing into JavaScript. What a frame keeps
+//! for the next one (the pixel layer's drawings and their tracings, what
+//! the canvas shows) has one owner, [`Kept`].
 //!
 //! Everything is laid out in CSS pixels; a backend scales to device pixels.
 
