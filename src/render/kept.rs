@@ -163,10 +163,10 @@ impl Kept {
     }
 
     /// Makes the next drawing from nothing: not on the pixels of a kept
-    /// one, nor from its tracing.
+    /// one, nor from its tracing (the raster forgets their recordings, and
+    /// the next drawing, finding them gone, forgets their tracings).
     pub fn forget(&mut self) {
         self.raster.forget();
-        self.tracings = [None, None];
     }
 
     /// The canvas is new or was resized (which clears it): what it shows
