@@ -2,10 +2,11 @@
 //! large paths: `cargo run --release --example render_time -- FILE [W H DPR
 //! FRAMES [RGBA_OUT]]`, every frame a whole one; with `EDITED=FILE2`, each
 //! frame after the first draws FILE2 and FILE alternately on the last
-//! frame's pixels, as the page does after an edit (`Raster::kept`).
+//! frame's pixels, as the page does after an edit (`Raster::kept`; all
+//! that a frame keeps for the next one: `render::Kept`).
 use std::time::Instant;
 
-use offsetlab::render::{self, Font, Pen, Raster, Rect, Scene, Stroke, Surface};
+use offsetlab::render::{self, Font, Kept, Pen, Rect, Scene, Stroke, Surface};
 use offsetlab::toolpath::Toolpath;
 
 struct Layer {
@@ -13,7 +14,7 @@ struct Layer {
     segments: usize,
     length: f64,
     at: (f64, f64),
-    raster: Raster,
+    kept: Kept,
     size: (usize, usize),
     scale: f64,
     bytes: Vec<u8>,
@@ -32,15 +33,15 @@ impl Pen for Layer {
 }
 impl Surface for Layer {
     fn clear(&mut self, _: f64, _: f64, _: &str) {}
-    fn raster(&mut self) -> Option<&mut Raster> {
+    fn kept(&mut self) -> Option<&mut Kept> {
         if self.vector {
             return None;
         }
         let (w, h, s) = (self.size.0, self.size.1, self.scale);
-        self.raster.begin(w, h, (s, s)).then_some(&mut self.raster)
+        self.kept.begin(w, h, (s, s)).then_some(&mut self.kept)
     }
     fn composite(&mut self, _: &offsetlab::render::Transform) {
-        self.raster.image(&mut self.bytes);
+        self.kept.raster().image(&mut self.bytes);
     }
     fn fill_rect(&mut self, _: Rect, _: &str, _: Option<&str>) {}
     fn fill_text(&mut self, _: &str, _: f64, _: f64, _: &Font) {}
@@ -62,7 +63,7 @@ fn main() {
         segments: 0,
         length: 0.0,
         at: (0.0, 0.0),
-        raster: Raster::new(),
+        kept: Kept::new(),
         size: ((w * dpr) as usize, (h * dpr) as usize),
         scale: dpr,
         bytes: Vec::new(),
@@ -81,13 +82,13 @@ fn main() {
             Some(other) if frame % 2 == 1 => other,
             Some(_) => &tp,
             None => {
-                layer.raster.forget();
+                layer.kept.forget();
                 &tp
             }
         };
         let t = Instant::now();
         render::draw_scene(&mut layer, drawn, &Scene::default(), w, h);
-        let kept = layer.raster.kept();
+        let kept = layer.kept.raster().kept();
         println!(
             "{} moves: {:.1} ms{}; {} vector segments, {:.0} CSS px long",
             drawn.len(),
@@ -110,11 +111,12 @@ fn main() {
         );
     }
     if let Some(out) = args.get(6) {
-        let (w, h) = layer.raster.size();
+        let raster = layer.kept.raster();
+        let (w, h) = raster.size();
         let mut bytes = Vec::with_capacity(4 * w * h);
         for y in 0..h {
             for x in 0..w {
-                bytes.extend_from_slice(&layer.raster.pixel(x, y));
+                bytes.extend_from_slice(&raster.pixel(x, y));
             }
         }
         std::fs::write(out, bytes).unwrap();

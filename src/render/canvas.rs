@@ -6,23 +6,21 @@ use js_sys::Array;
 use wasm_bindgen::{Clamped, JsValue};
 use web_sys::{ImageData, OffscreenCanvas, OffscreenCanvasRenderingContext2d};
 
-use super::display::{self, Damage, LayerChange, Op};
+use super::display::{Damage, LayerChange, Op};
 use super::style::{Align, FONT_FAMILY, Font, Stroke};
-use super::{Pen, Raster, Rect, Surface, Transform};
-
-/// Frames whose calls hold more points than this are not kept for the
-/// next frame (which is then painted whole).
-const KEPT_POINTS: usize = 1 << 16;
+use super::{Kept, Pen, Rect, Surface, Transform};
 
 /// A 2D context seen as a [`Surface`] in CSS pixels; the caller sets the
 /// device-pixel transform.
 ///
 /// The calls of a frame are kept ([`Op`]) and made on the canvas by
 /// [`CanvasSurface::present`], only inside the box where they differ from
-/// the last frame's ([`display::damage`]).
+/// the last frame's ([`Kept::damage`]).
 pub struct CanvasSurface<'a> {
     ctx: &'a OffscreenCanvasRenderingContext2d,
     font: String,
+    /// What the frames on this canvas keep for the next one.
+    kept: &'a mut Kept,
     layer: Option<Layer<'a>>,
     reused: bool,
     moved: bool,
@@ -31,74 +29,49 @@ pub struct CanvasSurface<'a> {
     layer_change: LayerChange,
     /// Something of this frame could not be drawn (its layer's image).
     failed: bool,
-    /// The calls of the frame the canvas shows: None when its pixels are
-    /// not known to be theirs (a new or resized canvas).
-    shown: &'a mut Option<Vec<Op>>,
 }
 
-/// The pixel layer of a canvas: the raster, the canvas's size in device
-/// pixels and CSS to device scale, and what carries the raster's pixels
-/// onto the canvas (an `ImageData` is put on `scratch`, which is then
-/// drawn: `putImageData` straight onto the canvas would replace the grid
-/// under the paths instead of drawing over it).
+/// The pixel layer of a canvas: what carries the raster's pixels onto the
+/// canvas (an `ImageData` is put on `scratch`, which is then drawn:
+/// `putImageData` straight onto the canvas would replace the grid under
+/// the paths instead of drawing over it), the canvas's size in device
+/// pixels and CSS to device scale, and the key of the drawing.
 pub struct Layer<'a> {
-    /// The pixels.
-    pub raster: &'a mut Raster,
-    /// A canvas per pixel buffer of the raster ([`Raster::buffer`]), as
-    /// large as its drawn part (grown as needed).
+    /// A canvas per pixel buffer of the raster ([`crate::render::Raster::buffer`]),
+    /// as large as its drawn part (grown as needed); [`Kept`] knows what
+    /// each holds.
     pub scratch: [&'a OffscreenCanvas; 2],
-    /// The box of its buffer's pixels each of them holds, if any.
-    pub held: &'a mut [Option<(usize, usize, usize, usize)>; 2],
-    /// Straight RGBA handed to `ImageData` (kept to reuse its memory).
-    pub bytes: &'a mut Vec<u8>,
     /// Device pixels of the canvas.
     pub size: (u32, u32),
     /// Device pixels per CSS pixel.
     pub scale: (f64, f64),
-    /// What the last layer put on the canvas was (its `scratch` still
-    /// holds it), for [`Surface::reuse_layer`].
-    pub shot: &'a mut Option<Shot>,
     /// What this drawing shows besides the view's zoom and pan (the run,
-    /// plane, current block, colours, size): a kept layer is reused only
-    /// for the same key.
+    /// plane, current block, colours, size): the layer on the canvas is
+    /// shown again only for the same key ([`Surface::reuse_layer`]).
     pub key: u64,
-}
-
-/// The layer last put on the canvas: its key, where it went (device
-/// pixels) and the transform it was drawn with.
-#[derive(Clone, Copy, Debug)]
-pub struct Shot {
-    /// Which scratch canvas holds it.
-    scratch: usize,
-    key: u64,
-    /// Its size on `scratch`.
-    source: (f64, f64),
-    /// Where it went on the canvas.
-    rect: (f64, f64, f64, f64),
-    transform: Transform,
 }
 
 impl<'a> CanvasSurface<'a> {
     /// Wraps a context; with a `layer`, large paths are drawn as pixels.
-    /// `shown`: the calls of the frame on the canvas, kept by the caller
-    /// from one frame to the next (None for a new or resized canvas).
+    /// `kept`: what the frames on this canvas keep for the next one, kept
+    /// by the caller from one frame to the next.
     pub fn new(
         ctx: &'a OffscreenCanvasRenderingContext2d,
+        kept: &'a mut Kept,
         layer: Option<Layer<'a>>,
-        shown: &'a mut Option<Vec<Op>>,
     ) -> CanvasSurface<'a> {
         ctx.set_line_cap("round");
         ctx.set_line_join("round");
         CanvasSurface {
             ctx,
             font: String::new(),
+            kept,
             layer,
             reused: false,
             moved: false,
             ops: Vec::new(),
             layer_change: LayerChange::Whole,
             failed: false,
-            shown,
         }
     }
 
@@ -110,16 +83,14 @@ impl<'a> CanvasSurface<'a> {
         let CanvasSurface {
             ctx,
             mut font,
+            kept,
             layer,
             ops,
             layer_change,
             failed,
-            shown,
             ..
         } = self;
-        let damage = display::damage(shown.as_deref(), &ops, layer_change, size);
-        // Until this frame is wholly on the canvas, what it shows is not known.
-        *shown = None;
+        let damage = kept.damage(&ops, layer_change, size);
         let scratch = layer.as_ref().map(|l| l.scratch);
         let mut draw_all = || {
             ops.iter()
@@ -148,11 +119,8 @@ impl<'a> CanvasSurface<'a> {
                 drawn?;
             }
         }
-        // The calls of a vector drawing (a small program) may hold many
-        // points (arcs zoomed into); compared with the next frame's they
-        // would save little — its frames are quick — and hold memory.
-        if !failed && display::points(&ops) <= KEPT_POINTS {
-            *shown = Some(ops);
+        if !failed {
+            kept.keep_frame(ops);
         }
         Ok(())
     }
@@ -291,47 +259,20 @@ impl<'a> CanvasSurface<'a> {
 
     /// Puts the layer's pixels on the scratch canvas of their buffer —
     /// where they changed, when the layer was drawn on the pixels of the
-    /// last drawing in that buffer and the canvas holds those — and adds
-    /// the call that draws it on the canvas.
+    /// last drawing in that buffer and the canvas holds those
+    /// ([`Kept::layer_to_put`]) — and adds the call that draws it on the
+    /// canvas.
     fn put_layer(&mut self, transform: &Transform) -> Result<(), JsValue> {
-        let Some(layer) = &mut self.layer else {
+        let Some(layer) = &self.layer else {
             return Ok(());
         };
-        let shown = layer.shot.take().map(|s| s.scratch);
-        let k = layer.raster.buffer();
-        let previous = layer.held[k].take();
-        let Some(drawn) = layer.raster.dirty() else {
+        let Some(put) = self.kept.layer_to_put() else {
             // Nothing drawn: the frame has no layer (a change of its own).
             self.layer_change = LayerChange::Whole;
             return Ok(());
         };
-        // A drawing made on the pixels of the last one in its buffer
-        // ([`Raster::changed`]) is put where it changed on that buffer's
-        // canvas, which holds the last one's (the same box): a few tiles
-        // instead of the whole drawing. Typing back and forth across a
-        // refitted view alternates the buffers (`raster::keep::Older`).
-        let changed = match (previous, layer.raster.changed()) {
-            (Some(p), Some(c)) if p == drawn => Some(c),
-            _ => None,
-        };
-        let scratch_canvas = layer.scratch[k];
-        let (put, at) = match changed {
-            // (An empty box, nothing changed, may lie anywhere: nothing is put.)
-            Some(c) => (
-                c,
-                (
-                    c.0.saturating_sub(drawn.0) as f64,
-                    c.1.saturating_sub(drawn.1) as f64,
-                ),
-            ),
-            None => (drawn, (0.0, 0.0)),
-        };
-        let (x, y, w, h) = (
-            drawn.0 as u32,
-            drawn.1 as u32,
-            drawn.2 as u32,
-            drawn.3 as u32,
-        );
+        let scratch_canvas = layer.scratch[put.buffer];
+        let (w, h) = (put.drawn.2 as u32, put.drawn.3 as u32);
         if scratch_canvas.width() < w {
             scratch_canvas.set_width(w);
         }
@@ -344,43 +285,15 @@ impl<'a> CanvasSurface<'a> {
                 wasm_bindgen::JsCast::dyn_into::<OffscreenCanvasRenderingContext2d>(c).ok()
             })
             .ok_or_else(|| JsValue::from_str("no 2d context for the scratch canvas"))?;
-        if put.2 > 0 && put.3 > 0 {
-            layer.raster.image_of(put, layer.bytes);
-            let (pw, ph) = (put.2 as u32, put.3 as u32);
-            let image =
-                ImageData::new_with_u8_clamped_array_and_sh(Clamped(&layer.bytes[..]), pw, ph)?;
-            scratch.put_image_data(&image, at.0, at.1)?;
+        if put.put.2 > 0 && put.put.3 > 0 {
+            let (pw, ph) = (put.put.2 as u32, put.put.3 as u32);
+            let bytes = self.kept.image_of(put.put);
+            let image = ImageData::new_with_u8_clamped_array_and_sh(Clamped(bytes), pw, ph)?;
+            scratch.put_image_data(&image, put.at.0, put.at.1)?;
         }
-        // A drawing on the coarse grid is scaled up to device pixels.
-        let f = layer.raster.factor() as f64;
-        let (sx, sy) = layer.scale;
-        layer.held[k] = Some(drawn);
-        self.layer_change = match changed {
-            // Its box in CSS pixels (the canvas shows the same buffer's).
-            Some(c) if shown == Some(k) => LayerChange::Within(Rect::new(
-                c.0 as f64 * f / sx,
-                c.1 as f64 * f / sy,
-                c.2 as f64 * f / sx,
-                c.3 as f64 * f / sy,
-            )),
-            _ => LayerChange::Whole,
-        };
-        let (x, y, w, h) = (f64::from(x), f64::from(y), f64::from(w), f64::from(h));
-        let rect = (x * f, y * f, w * f, h * f);
-        self.ops.push(Op::Layer {
-            source: (w, h),
-            dest: rect,
-            smooth: false,
-            scratch: k,
-            transform: *transform,
-        });
-        *layer.shot = Some(Shot {
-            scratch: k,
-            key: layer.key,
-            source: (w, h),
-            rect,
-            transform: *transform,
-        });
+        let (op, change) = self.kept.layer_put(&put, transform, layer.key, layer.scale);
+        self.layer_change = change;
+        self.ops.push(op);
         Ok(())
     }
 
@@ -398,9 +311,9 @@ impl<'a> CanvasSurface<'a> {
         ctx.set_transform(1.0, 0.0, 0.0, 1.0, 0.0, 0.0)?;
         // A drawing on the coarse grid is put at exactly twice its size:
         // each of its pixels is 2 × 2 device pixels (one CSS pixel at 2
-        // device pixels per CSS pixel) — not smoothed, which was a third of
-        // Chromium's time for the frame after an edit (bench-browser, 4c:
-        // 6.6 → 4.6 ms). A layer moved and scaled during a gesture is.
+        // device pixels per CSS pixel) — not smoothed: smoothing was much of
+        // Chromium's time for the frame after an edit (`make bench-browser`,
+        // target 4c, guards it). A layer moved and scaled during a gesture is.
         ctx.set_image_smoothing_enabled(!exact);
         let drawn = ctx.draw_image_with_offscreen_canvas_and_sw_and_sh_and_dx_and_dy_and_dw_and_dh(
             scratch, 0.0, 0.0, w, h, dx, dy, dw, dh,
@@ -434,13 +347,12 @@ impl Pen for CanvasSurface<'_> {
 }
 
 impl Surface for CanvasSurface<'_> {
-    fn raster(&mut self) -> Option<&mut Raster> {
-        let layer = self.layer.as_mut()?;
-        let (w, h) = layer.size;
-        let raster = &mut *layer.raster;
-        raster
-            .begin(w as usize, h as usize, layer.scale)
-            .then_some(raster)
+    fn kept(&mut self) -> Option<&mut Kept> {
+        let layer = self.layer.as_ref()?;
+        let ((w, h), scale) = (layer.size, layer.scale);
+        self.kept
+            .begin(w as usize, h as usize, scale)
+            .then_some(&mut *self.kept)
     }
 
     fn composite(&mut self, transform: &Transform) {
@@ -457,49 +369,21 @@ impl Surface for CanvasSurface<'_> {
         let Some(layer) = &self.layer else {
             return false;
         };
-        let Some(shot) = *layer.shot else {
+        let Some((op, moved)) = self
+            .kept
+            .layer_again(transform, exact, layer.key, layer.scale)
+        else {
             return false;
         };
-        if shot.key != layer.key || (exact && shot.transform != *transform) {
-            return false;
-        }
-        // A world point at screen s under the shot's transform is at
-        // k·s + (o − k·o_shot) under the new one (CSS pixels; the layer's
-        // rectangle is in device pixels).
-        let was = shot.transform;
-        let k = transform.scale / was.scale;
-        let (sx, sy) = layer.scale;
-        let (x, y, w, h) = shot.rect;
-        let dest = (
-            k * x + sx * (transform.origin_x - k * was.origin_x),
-            k * y + sy * (transform.origin_y - k * was.origin_y),
-            k * w,
-            k * h,
-        );
-        let sane = k.is_finite()
-            && k > 0.0
-            && [dest.0, dest.1, dest.2, dest.3]
-                .iter()
-                .all(|v| v.is_finite() && v.abs() < 1e9);
-        if !sane {
-            return false;
-        }
-        let same = shot.transform == *transform;
-        self.ops.push(Op::Layer {
-            source: shot.source,
-            dest,
-            smooth: !same,
-            scratch: shot.scratch,
-            transform: *transform,
-        });
+        self.ops.push(op);
         // The same pixels at the same place, or moved: anywhere.
-        self.layer_change = if same {
-            LayerChange::Within(Rect::new(0.0, 0.0, 0.0, 0.0))
-        } else {
+        self.layer_change = if moved {
             LayerChange::Whole
+        } else {
+            LayerChange::Within(Rect::new(0.0, 0.0, 0.0, 0.0))
         };
         self.reused = true;
-        self.moved = !same;
+        self.moved = moved;
         true
     }
 

@@ -6,9 +6,9 @@
 //! layer is drawn again only around them ([`super::Raster`] keeps the
 //! rest), but the canvas was still cleared and painted whole — grid,
 //! labels, the layer's image, arrows — and Chromium's software
-//! rasterisation of that was a third of the frame (bench-browser, target
-//! 4c: 5.9 of 28.6 ms keystroke → drawn; painted inside the changed box,
-//! 2.2 of 19.7 ms). A 2D canvas keeps its pixels between frames, so
+//! rasterisation of that was much of the frame (`make bench-browser`,
+//! target 4c, keystroke → drawn, guards it). A 2D canvas keeps its pixels
+//! between frames, so
 //! drawing every call again inside a clip to that box gives the pixels a
 //! whole frame would have: outside the box nothing differs.
 

@@ -7,7 +7,9 @@
 //! two backends: [`svg::SvgSurface`] (a string, native and wasm; how the
 //! renderer is tested) and `canvas::CanvasSurface` (an OffscreenCanvas 2D
 //! context through web-sys, wasm only), which lets the page draw a million
-//! segments without them ever crossing into JavaScript.
+//! segments without them ever crossing into JavaScript. What a frame keeps
+//! for the next one (the pixel layer's drawings and their tracings, what
+//! the canvas shows) has one owner, [`Kept`].
 //!
 //! Everything is laid out in CSS pixels; a backend scales to device pixels.
 
@@ -15,18 +17,22 @@ mod annotate;
 #[cfg(target_arch = "wasm32")]
 pub mod canvas;
 pub mod display;
+mod kept;
 mod paths;
 pub mod raster;
 mod resume;
 pub mod scene;
 pub mod style;
 pub mod svg;
+#[cfg(test)]
+mod test_support;
 pub mod view;
 
 use crate::setup::MachineKind;
 use crate::toolpath::{ArcPoints, Toolpath};
 pub use annotate::grid_step;
 use annotate::{draw_axes, draw_grid, draw_legend, draw_scale_bar, legend_row_count};
+pub use kept::{Kept, LayerPut, ShownLayer};
 #[cfg(test)]
 use paths::draw_path;
 use paths::draw_paths;
@@ -100,13 +106,14 @@ pub struct WholeArc {
 pub trait Surface: Pen {
     /// Fills the whole surface with a colour.
     fn clear(&mut self, width: f64, height: f64, color: &str);
-    /// A transparent pixel layer the size of the surface for the paths of a
-    /// large drawing, when the backend has one (the page's canvas; see
-    /// [`raster`] for why). None: draw them as vectors.
-    fn raster(&mut self) -> Option<&mut Raster> {
+    /// What the surface keeps from one frame to the next ([`Kept`]), with a
+    /// drawing begun on its transparent pixel layer the size of the surface,
+    /// for the paths of a large drawing — when the backend has one (the
+    /// page's canvas; see [`raster`] for why). None: draw them as vectors.
+    fn kept(&mut self) -> Option<&mut Kept> {
         None
     }
-    /// Puts what was drawn on the layer of [`Surface::raster`] on the
+    /// Puts what was drawn on the layer of [`Surface::kept`] on the
     /// surface; `transform` is the one it was drawn with.
     fn composite(&mut self, _transform: &Transform) {}
     /// Puts the last layer composited back on the surface, moved and scaled
@@ -384,12 +391,8 @@ fn draw_scene_as(
     let moved = reused && moving;
     if reused {
         // A moved layer's arrows come back with the next whole frame.
-    } else if large && let Some(raster) = surface.raster() {
-        if moves >= IN_PARTS_FROM_MOVES {
-            paths::draw_paths_in_parts(raster, &frame, toolpath, scene, split);
-        } else {
-            resume::record_paths(raster, &frame, toolpath, scene, split);
-        }
+    } else if large && let Some(kept) = surface.kept() {
+        kept.draw_paths(&frame, toolpath, scene, split);
         surface.composite(&frame.transform);
     } else {
         draw_paths(surface, &frame, toolpath, scene, split);
@@ -413,15 +416,7 @@ pub fn is_rapid(kind: u8) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Setup, run};
-
-    fn toolpath(program: &str) -> Toolpath {
-        let mut setup = Setup::default();
-        setup.set_register("01=6.0").unwrap();
-        let r = run(program, &setup);
-        assert!(!r.has_errors(), "{:?}", r.diagnostics);
-        Toolpath::from_run(&r)
-    }
+    use crate::render::test_support::toolpath;
 
     #[test]
     fn path_never_runs_under_the_legend_and_stays_on_the_surface() {
@@ -598,7 +593,7 @@ mod tests {
     /// A surface with a pixel layer, which counts what it is asked to do.
     #[derive(Default)]
     struct Layered {
-        raster: Raster,
+        kept: Kept,
         composited: usize,
         vector_paths: usize,
     }
@@ -612,10 +607,10 @@ mod tests {
     }
     impl Surface for Layered {
         fn clear(&mut self, _: f64, _: f64, _: &str) {}
-        fn raster(&mut self) -> Option<&mut Raster> {
-            self.raster
+        fn kept(&mut self) -> Option<&mut Kept> {
+            self.kept
                 .begin(400, 300, (1.0, 1.0))
-                .then_some(&mut self.raster)
+                .then_some(&mut self.kept)
         }
         fn composite(&mut self, _: &Transform) {
             self.composited += 1;
@@ -628,11 +623,12 @@ mod tests {
 
     /// The opaque colours of a surface's pixel layer.
     fn layer_colours(s: &mut Layered) -> std::collections::HashSet<String> {
-        let (w, h) = s.raster.size();
+        let raster = s.kept.raster();
+        let (w, h) = raster.size();
         let mut colours = std::collections::HashSet::new();
         for y in 0..h {
             for x in 0..w {
-                let [r, g, b, a] = s.raster.pixel(x, y);
+                let [r, g, b, a] = raster.pixel(x, y);
                 if a == 255 {
                     colours.insert(format!("#{r:02x}{g:02x}{b:02x}"));
                 }
@@ -661,7 +657,7 @@ mod tests {
         let mut s = Layered::default();
         draw_scene(&mut s, &tp, &Scene::default(), 400.0, 300.0);
         assert_eq!(s.composited, 1);
-        assert_eq!(s.raster.factor(), 1);
+        assert_eq!(s.kept.raster().factor(), 1);
         let around = s.vector_paths; // grid, axes, scale bar, legend samples
         let colours = layer_colours(&mut s);
         let drawn = [
@@ -690,8 +686,8 @@ mod tests {
         let mut s = Layered::default();
         draw_scene(&mut s, &tp, &Scene::default(), 400.0, 300.0);
         assert_eq!(s.composited, 1);
-        assert_eq!(s.raster.factor(), 2);
-        assert_eq!(s.raster.size(), (200, 150));
+        assert_eq!(s.kept.raster().factor(), 2);
+        assert_eq!(s.kept.raster().size(), (200, 150));
         // The actual path's lines (2.25 px) still have pixels of their own
         // colour; the thinner programmed ones blend with what lies below.
         let colours = layer_colours(&mut s);

@@ -162,14 +162,15 @@ const SAMPLES: usize = 64;
 /// what lies below finished pixels is found hidden when it is recorded
 /// and not recorded at all ([`Raster::plan`]). For drawings too large to
 /// be kept for the next edit: the parts' first moves start afresh, which
-/// a kept drawing's comparison does not expect.
+/// a kept drawing's comparison does not expect. Returns how many moves of
+/// its paths it traced (each path counts its moves).
 pub(super) fn draw_paths_in_parts(
     r: &mut Raster,
     f: &Frame,
     tp: &Toolpath,
     scene: &Scene,
     split: usize,
-) {
+) -> usize {
     // Top first.
     let layers: Vec<Layer> = layers(f, tp, scene, split).into_iter().rev().collect();
     // The grid: from the ink the lines would cover, measured on samples.
@@ -207,6 +208,7 @@ pub(super) fn draw_paths_in_parts(
         ink += sampled * n as f64 / (SAMPLES * PART_MOVES) as f64;
     }
     r.plan(ink);
+    let moves = layers.iter().map(|l| l.moves.len()).sum();
     for Layer {
         kind,
         moves: range,
@@ -227,6 +229,7 @@ pub(super) fn draw_paths_in_parts(
             end = start;
         }
     }
+    moves
 }
 
 /// Where a path being drawn is.
@@ -450,8 +453,9 @@ fn whole_arc(
 /// `dx.hypot(dy)` where it is near `limit` or below; else a number that
 /// compares with `limit` as it does (`<`, `<=`, `>`, `>=`). The level of
 /// detail asks this of every point, and `hypot`, for this and for the
-/// lengths of segments, was 15 % of a 1M-block frame natively (perf):
-/// most points are far apart along an axis, and
+/// lengths of segments, was a large share of a 1M-block frame natively
+/// (`examples/render_time` on the 1M-block program guards it): most points
+/// are far apart along an axis, and
 /// `hypot` (rounded faithfully) is never less than the longer side, nor
 /// more than the sum of the sides rounded up.
 #[inline(always)]
@@ -472,19 +476,10 @@ fn distance_near(dx: f64, dy: f64, limit: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::MachineKind;
     use crate::render::style::{ACTUAL_FEED, PROGRAMMED_FEED};
+    use crate::render::test_support::{assert_same_pixels, toolpath_on};
     use crate::render::{Plane, Raster};
-    use crate::{MachineKind, Setup, run};
-
-    fn toolpath(program: &str, machine: MachineKind) -> Toolpath {
-        let setup = Setup {
-            machine,
-            ..Setup::default()
-        };
-        let r = run(program, &setup);
-        assert!(!r.has_errors(), "{:?}", r.diagnostics);
-        Toolpath::from_run(&r)
-    }
 
     /// The toolpath drawn on a raster of `w` × `h` (scale 2) with `stroke`,
     /// its arcs taken whole or as their points; how many were taken whole.
@@ -592,7 +587,7 @@ mod tests {
 
     #[test]
     fn whole_arcs_draw_the_pixels_their_points_draw() {
-        let tp = toolpath(MILL, MachineKind::Mill);
+        let tp = toolpath_on(MILL, MachineKind::Mill);
         for stroke in [&ACTUAL_FEED, &PROGRAMMED_FEED] {
             let (mut points, by_points) = drawn(&tp, Plane::Xy, stroke, false);
             let (mut whole, taken) = drawn(&tp, Plane::Xy, stroke, true);
@@ -610,7 +605,7 @@ mod tests {
 
     #[test]
     fn lathe_arcs_are_whole_in_the_zx_view() {
-        let tp = toolpath(
+        let tp = toolpath_on(
             "G50 X120. Z60.\nG00 X40. Z2.\nG01 Z-10. F0.2\nG02 X60. Z-20. R10.\nG03 X80. Z-30. R10.\nG01 Z-40.\n",
             MachineKind::Lathe,
         );
@@ -640,7 +635,7 @@ mod tests {
             let x = if k % 2 == 0 { 41.0 } else { 0.0 };
             program.push_str(&format!("G01 X{x}. Y{y:.1}\nY{:.1}\n", y + 0.1));
         }
-        let tp = toolpath(&program, MachineKind::Mill);
+        let tp = toolpath_on(&program, MachineKind::Mill);
         let (mut points, _) = drawn(&tp, Plane::Xy, &ACTUAL_FEED, false);
         let (mut whole, taken) = drawn(&tp, Plane::Xy, &ACTUAL_FEED, true);
         assert_eq!(taken, 50);
@@ -660,7 +655,7 @@ mod tests {
         for _ in 0..1000 {
             program.push_str("G03 X10. Y0. I-10. J0.\n");
         }
-        let tp = toolpath(&program, MachineKind::Mill);
+        let tp = toolpath_on(&program, MachineKind::Mill);
         let wide = Stroke {
             width: 6.0,
             ..ACTUAL_FEED
@@ -724,7 +719,7 @@ mod tests {
             (300, (900.0, 700.0), 1),
             (20_000, (120.0, 100.0), 2),
         ] {
-            let tp = toolpath(&scattered(n), MachineKind::Mill);
+            let tp = toolpath_on(&scattered(n), MachineKind::Mill);
             // The whole path, and stepped to a block: the ghost of the
             // moves after it and the block's highlight too.
             for step in [None, Some(1234)] {
@@ -736,17 +731,8 @@ mod tests {
                 let mut parts = scene_drawn(&tp, &scene, size, true);
                 assert_eq!(whole.factor(), coarse);
                 assert_eq!(parts.factor(), coarse);
-                let (w, h) = whole.size();
-                assert_eq!(parts.size(), (w, h));
-                for y in 0..h {
-                    for x in 0..w {
-                        assert_eq!(
-                            whole.pixel(x, y),
-                            parts.pixel(x, y),
-                            "({x}, {y}) at {size:?}, step {step:?}"
-                        );
-                    }
-                }
+                let what = format!("at {size:?}, step {step:?}");
+                assert_same_pixels(&mut whole, &mut parts, &what);
             }
         }
     }

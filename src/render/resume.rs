@@ -3,9 +3,10 @@
 //! Why: after a one-character edit of a 10k-block program, the page's
 //! frame is drawn again only where the path changed ([`Raster`]'s
 //! `keep`), but every move was still traced — projected, passed through
-//! the level of detail, clipped and recorded — to find which: about 20 M
-//! of the 57 M instructions of such a frame (callgrind, `examples/render_time`
-//! with `EDITED`), for moves that the edit left as they were.
+//! the level of detail, clipped and recorded — to find which: a large
+//! part of such a frame, for moves that the edit left as they were (the
+//! kept frame's instruction count of `examples/render_time` with `EDITED`,
+//! in `docs/performance.md`, guards it).
 //!
 //! How: while a path is traced, where the tracing stands (the tracer's
 //! state, the recorder's, and how much is recorded) is noted at the start
@@ -25,8 +26,8 @@
 use std::ops::Range;
 
 use super::paths::{Layer, Tracer, TracerState, draw_paths, layers};
+use super::raster::{Drawing, Recorded};
 use super::{Frame, Pen, RESTART_EVERY, Raster, Scene};
-use crate::render::raster::Recorded;
 use crate::toolpath::Toolpath;
 
 /// Checkpoints are noted every this many moves of a path (about a thousand
@@ -35,7 +36,8 @@ use crate::toolpath::Toolpath;
 const EVERY: usize = 16;
 
 /// What was traced to make a drawing's recording: the toolpath and the
-/// view, and per path where the tracing stood at its checkpoints.
+/// view, and per path where the tracing stood at its checkpoints. Kept with
+/// the raster's recording of the drawing ([`super::Kept`]).
 pub(crate) struct Traced {
     toolpath: Toolpath,
     frame: Frame,
@@ -94,28 +96,38 @@ struct Shared {
     shift: isize,
 }
 
-/// The last drawing's tracing to take pieces of: which ([`Raster::take_traced`]),
+/// A kept drawing's tracing to take pieces of: which drawing it traced,
 /// and how its moves stand to these.
 struct Source<'a> {
-    which: usize,
+    which: Drawing,
     traced: &'a Traced,
     shared: Shared,
 }
 
+/// How a drawing's paths were recorded ([`record_paths`]).
+pub(super) struct RecordedPaths {
+    /// What was traced, for the next drawing; None when the paths were
+    /// recorded in one go, not so that pieces of the recording can be taken.
+    pub(super) traced: Option<Box<Traced>>,
+    /// How many moves of its paths were traced (each path counts its moves).
+    pub(super) moves_traced: usize,
+}
+
 /// [`draw_paths`] on a raster, taking from the last drawing's recording
 /// (or from the one before it's) the pieces that tracing the paths again
-/// would record alike. Returns how many moves of its paths it traced
-/// (each path counts its moves).
+/// would record alike: `tracings` are what was traced to make them (the
+/// last drawing's first), when the raster lets this drawing take pieces of
+/// their recordings ([`Raster::resumable`]).
 pub(super) fn record_paths(
     r: &mut Raster,
+    tracings: [Option<&Traced>; 2],
     f: &Frame,
     tp: &Toolpath,
     scene: &Scene,
     split: usize,
-) -> usize {
+) -> RecordedPaths {
     let layers = layers(f, tp, scene, split);
-    let taken = [r.take_traced(0), r.take_traced(1)];
-    let source = choose(&taken, f, tp, &layers);
+    let source = choose(tracings, f, tp, &layers);
     let mut traced = Traced {
         toolpath: tp.clone(),
         frame: *f,
@@ -130,25 +142,27 @@ pub(super) fn record_paths(
         resumed |= took;
         traced.paths.push(path);
     }
-    let [last, older] = taken;
-    r.give_back(0, last);
-    r.give_back(1, older);
     if !copied || (resumed && r.recorded().points >= r.most_resumed()) {
         // A piece could not be taken as it was, or a recording this long
         // would not be made alike in pieces: in one go.
         r.restart();
         draw_paths(r, f, tp, scene, split);
-        return layers.iter().map(|l| l.moves.len()).sum();
+        return RecordedPaths {
+            traced: None,
+            moves_traced: layers.iter().map(|l| l.moves.len()).sum(),
+        };
     }
-    r.set_traced(Box::new(traced));
-    visited
+    RecordedPaths {
+        traced: Some(Box::new(traced)),
+        moves_traced: visited,
+    }
 }
 
 /// Of the last drawing and the one before it, the one traced in this view
 /// with these paths whose toolpath differs from this one in the fewest
 /// moves.
 fn choose<'a>(
-    taken: &'a [Option<Box<Traced>>; 2],
+    tracings: [Option<&'a Traced>; 2],
     f: &Frame,
     tp: &Toolpath,
     layers: &[Layer],
@@ -160,11 +174,11 @@ fn choose<'a>(
                 (p.layer.group, p.layer.kind, p.layer.stroke) == (l.group, l.kind, l.stroke)
             })
     };
-    taken
-        .iter()
-        .enumerate()
+    [Drawing::Last, Drawing::BeforeLast]
+        .into_iter()
+        .zip(tracings)
         .filter_map(|(which, t)| {
-            let traced = t.as_deref().filter(|t| alike(t))?;
+            let traced = t.filter(|t| alike(t))?;
             let (start, end) = tp.shared_moves(&traced.toolpath);
             let shared = Shared {
                 shared: start,
@@ -334,15 +348,11 @@ fn next_mark(shared: Shared, path: &TracedPath, at: usize) -> Option<usize> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::render::Plane;
-    use crate::{Setup, run};
+    use crate::render::test_support::{assert_same_pixels, drawn_from_nothing, toolpath_to_stop};
+    use crate::render::{Kept, Plane};
 
     /// A block of [`program`]: (kind, x, y, r).
     type Block = (u8, f64, f64, f64);
-
-    fn toolpath(program: &str) -> Toolpath {
-        Toolpath::from_run(&run(program, &Setup::default()))
-    }
 
     /// A program of `blocks`: each (kind, x, y, r) a rapid (0), a feed
     /// (1), an arc (2 clockwise, 3 counter-clockwise, of radius `r` times
@@ -372,25 +382,17 @@ mod tests {
 
     const SURFACE: (usize, usize, f64) = (240, 180, 2.0);
 
-    /// Draws `tp` on `r` as the page does (resumed where it can be);
+    /// Draws `tp` with `kept` as the page does (resumed where it can be);
     /// asserts that it recorded and painted what a new raster does
     /// drawing it in one go. How many moves were traced.
-    fn draws_as_from_nothing(r: &mut Raster, f: &Frame, tp: &Toolpath, scene: &Scene) -> usize {
+    fn draws_as_from_nothing(kept: &mut Kept, f: &Frame, tp: &Toolpath, scene: &Scene) -> usize {
         let (w, h, scale) = SURFACE;
-        let split = scene.drawn_moves(tp);
-        assert!(r.begin(w, h, (scale, scale)));
-        let traced = record_paths(r, f, tp, scene, split);
-        let mut fresh = Raster::new();
-        assert!(fresh.begin(w, h, (scale, scale)));
-        draw_paths(&mut fresh, f, tp, scene, split);
+        assert!(kept.begin(w, h, (scale, scale)));
+        let traced = kept.draw_paths(f, tp, scene, scene.drawn_moves(tp));
+        let mut fresh = drawn_from_nothing(f, tp, scene, SURFACE);
+        let r = kept.raster();
         assert_eq!(r.kept_recording(), fresh.kept_recording());
-        let (gw, gh) = fresh.size();
-        assert_eq!(r.size(), (gw, gh));
-        for y in 0..gh {
-            for x in 0..gw {
-                assert_eq!(r.pixel(x, y), fresh.pixel(x, y), "pixel ({x}, {y})");
-            }
-        }
+        assert_same_pixels(r, &mut fresh, "resumed against from nothing");
         traced
     }
 
@@ -413,13 +415,13 @@ mod tests {
 
     /// `n` blocks ([`blocks`]) drawn on a new raster in the default scene,
     /// in a view fitted to them: the blocks, their toolpath, the scene, the
-    /// frame, the raster and how many moves were traced.
-    fn first_drawing(n: usize) -> (Vec<Block>, Toolpath, Scene, Frame, Raster, usize) {
+    /// frame, what was kept and how many moves were traced.
+    fn first_drawing(n: usize) -> (Vec<Block>, Toolpath, Scene, Frame, Kept, usize) {
         let v = blocks(n);
-        let tp = toolpath(&program(&v));
+        let tp = toolpath_to_stop(&program(&v));
         let scene = Scene::default();
         let f = scene.frame(&tp, 120.0, 90.0);
-        let mut r = Raster::new();
+        let mut r = Kept::new();
         let all = draws_as_from_nothing(&mut r, &f, &tp, &scene);
         (v, tp, scene, f, r, all)
     }
@@ -431,7 +433,7 @@ mod tests {
         // A digit typed into a line's X: two moves change.
         v[300].1 += 0.4;
         v[300].0 = 1;
-        let after = toolpath(&program(&v));
+        let after = toolpath_to_stop(&program(&v));
         let traced = draws_as_from_nothing(&mut r, &f, &after, &scene);
         assert!(traced <= 4 * 3 * EVERY, "{traced} of {all}");
         // And back: the last drawing's pieces again.
@@ -444,7 +446,7 @@ mod tests {
         let (v, before, scene, f, mut r, all) = first_drawing(600);
         let mut w = v.clone();
         w.insert(200, (1, 50.0, 35.0, 0.0));
-        let after = toolpath(&program(&w));
+        let after = toolpath_to_stop(&program(&w));
         // The solid paths take up the last recording again past the new
         // block; the dashed ones (rapids) start their dashes afresh at
         // other moves from there on, and are traced to their ends.
@@ -455,7 +457,7 @@ mod tests {
         for k in 0..16 {
             x.insert(200, (1, 50.0 + k as f64, 35.0, 0.0));
         }
-        let after = toolpath(&program(&x));
+        let after = toolpath_to_stop(&program(&x));
         let back = draws_as_from_nothing(&mut r, &f, &before, &scene);
         assert!(back < all * 2 / 3, "{back} of {all}");
         let traced = draws_as_from_nothing(&mut r, &f, &after, &scene);
@@ -465,9 +467,9 @@ mod tests {
     #[test]
     fn a_dense_drawing_made_on_the_coarse_grid_is_taken_up_at_full_scale() {
         let (mut v, _, scene, f, mut r, all) = first_drawing(3000);
-        assert_eq!(r.factor(), 2, "the drawing is dense");
+        assert_eq!(r.raster().factor(), 2, "the drawing is dense");
         v[1500].1 += 0.4;
-        let after = toolpath(&program(&v));
+        let after = toolpath_to_stop(&program(&v));
         let traced = draws_as_from_nothing(&mut r, &f, &after, &scene);
         assert!(traced <= 4 * 3 * EVERY, "{traced} of {all}");
     }
@@ -475,9 +477,9 @@ mod tests {
     #[test]
     fn a_step_through_the_program_is_recorded_as_in_one_go() {
         let v = blocks(400);
-        let tp = toolpath(&program(&v));
+        let tp = toolpath_to_stop(&program(&v));
         let f = Scene::default().frame(&tp, 120.0, 90.0);
-        let mut r = Raster::new();
+        let mut r = Kept::new();
         for step in [Some(100), Some(101), Some(250), None, Some(250), Some(3)] {
             let scene = Scene {
                 step,
@@ -489,7 +491,7 @@ mod tests {
 
     #[test]
     fn another_view_traces_everything() {
-        let tp = toolpath(&program(&blocks(300)));
+        let tp = toolpath_to_stop(&program(&blocks(300)));
         let scene = Scene::default();
         let f = scene.frame(&tp, 120.0, 90.0);
         let g = Scene {
@@ -497,7 +499,7 @@ mod tests {
             ..Scene::default()
         }
         .frame(&tp, 120.0, 90.0);
-        let mut r = Raster::new();
+        let mut r = Kept::new();
         let all = draws_as_from_nothing(&mut r, &f, &tp, &scene);
         assert_eq!(draws_as_from_nothing(&mut r, &g, &tp, &scene), all);
     }
@@ -514,10 +516,10 @@ mod tests {
             zoom in proptest::sample::select(vec![1.0, 3.0]),
         ) {
             let mut v = blocks.clone();
-            let first = toolpath(&program(&v));
+            let first = toolpath_to_stop(&program(&v));
             let view = Scene { zoom, ..Scene::default() };
             let f = view.frame(&first, 120.0, 90.0);
-            let mut r = Raster::new();
+            let mut r = Kept::new();
             draws_as_from_nothing(&mut r, &f, &first, &view);
             for (kind, at, d, step) in edits {
                 let i = at % v.len();
@@ -535,7 +537,7 @@ mod tests {
                         }
                     }
                 }
-                let tp = toolpath(&program(&v));
+                let tp = toolpath_to_stop(&program(&v));
                 let scene = Scene {
                     step: (step > 0).then_some((at * usize::from(step) % 400) as u32),
                     ..view

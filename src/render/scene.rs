@@ -321,35 +321,8 @@ pub fn pick(tp: &Toolpath, f: &Frame, x: f64, y: f64, tolerance: f64) -> Option<
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::render::svg::SvgSurface;
-    use crate::render::{draw_scene, style};
-    use crate::{Setup, run};
-
-    const SQUARE: &str = "G90 G00 X-30. Y-20.;\nG91 G00 G46 X30. Y20. D01;\nG01 G47 X80. F200.;\n\
-                          G47 Y50.;\nG47 X-80.;\nG47 Y-50.;\nG00 G46 X-30. Y-20.;\nM30;\n";
-
-    fn square() -> Toolpath {
-        let mut setup = Setup::default();
-        setup.set_register("01=6.0").unwrap();
-        let r = run(SQUARE, &setup);
-        assert!(!r.has_errors(), "{:?}", r.diagnostics);
-        Toolpath::from_run(&r)
-    }
-
-    fn group<'a>(svg: &'a str, name: &str) -> &'a str {
-        let open = format!("<g class=\"{name}\">");
-        let Some(start) = svg.find(&open).map(|i| i + open.len()) else {
-            return "";
-        };
-        let end = svg[start..].find("</g>").unwrap() + start;
-        &svg[start..end]
-    }
-
-    fn svg(tp: &Toolpath, scene: &Scene) -> String {
-        let mut s = SvgSurface::new();
-        let f = draw_scene(&mut s, tp, scene, 800.0, 500.0);
-        s.finish(f.width, f.height)
-    }
+    use crate::render::style;
+    use crate::render::test_support::{group, square, svg_of};
 
     #[test]
     fn zoom_at_the_cursor_keeps_the_point_under_it() {
@@ -390,7 +363,7 @@ mod tests {
         // last (back on the programmed path at (-30, -20)) and the first
         // (no offset yet).
         let tp = square();
-        let out = svg(&tp, &Scene::default());
+        let out = svg_of(&tp, &Scene::default());
         let arrows = group(&out, "offsets");
         assert_eq!(arrows.matches("<polygon").count(), 5, "{arrows}");
         assert!(arrows.contains(style::LIGHT.arrow));
@@ -407,7 +380,7 @@ mod tests {
         assert_eq!(scene.drawn_moves(&tp), 3);
         // Block 2 (G01 G47 X80.) ends at (86, -6), programmed (80, 0).
         assert_eq!(scene.marker, Some([[86.0, -6.0, 0.0], [80.0, 0.0, 0.0]]));
-        let out = svg(&tp, &scene);
+        let out = svg_of(&tp, &scene);
         assert!(group(&out, "ghost").contains(style::LIGHT.ghost));
         assert!(group(&out, "current").contains("<path"));
         assert_eq!(group(&out, "offsets").matches("<polygon").count(), 2);
@@ -442,7 +415,7 @@ mod tests {
             theme: Theme::named("dark"),
             ..Scene::default()
         };
-        let out = svg(&tp, &scene);
+        let out = svg_of(&tp, &scene);
         assert!(out.contains(style::DARK.background) && out.contains(style::DARK.actual_feed));
         assert!(!out.contains(style::LIGHT.actual_feed));
     }

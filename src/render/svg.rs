@@ -229,36 +229,7 @@ pub fn escape(text: &str) -> String {
 mod tests {
     use super::*;
     use crate::render::style;
-    use crate::{Setup, run};
-
-    /// Seed 000: the G45–G48 square, register 01 = 6 (spec's worked example).
-    const SQUARE: &str = "(SEED 000: SQUARE WITH G45-G48, REGISTER 01 = 6.)
-G90 G00 X-30. Y-20.;
-G91 G00 G46 X30. Y20. D01;
-G01 G47 X80. F200.;
-G47 Y50.;
-G47 X-80.;
-G47 Y-50.;
-G00 G46 X-30. Y-20.;
-M30;
-";
-
-    fn square() -> Toolpath {
-        let mut setup = Setup::default();
-        setup.set_register("01=6.0").unwrap();
-        let r = run(SQUARE, &setup);
-        assert!(!r.has_errors(), "{:?}", r.diagnostics);
-        Toolpath::from_run(&r)
-    }
-
-    /// The text between `<g class="name">` and its `</g>` (groups do not nest
-    /// in the renderer's output).
-    fn group<'a>(svg: &'a str, name: &str) -> &'a str {
-        let open = format!("<g class=\"{name}\">");
-        let start = svg.find(&open).expect("group present") + open.len();
-        let end = svg[start..].find("</g>").expect("group closed") + start;
-        &svg[start..end]
-    }
+    use crate::render::test_support::{group, square, toolpath_on, toolpath_to_stop};
 
     #[test]
     fn square_draws_both_paths_as_groups_with_their_styles() {
@@ -365,13 +336,10 @@ M30;
 
     #[test]
     fn lathe_is_drawn_in_zx_with_a_centre_line() {
-        let setup = Setup {
-            machine: crate::MachineKind::Lathe,
-            ..Setup::default()
-        };
-        let r = run("G50 X120. Z60.\nG00 X50. Z3.\nG01 Z-20. F0.2\n", &setup);
-        assert!(!r.has_errors(), "{:?}", r.diagnostics);
-        let tp = Toolpath::from_run(&r);
+        let tp = toolpath_on(
+            "G50 X120. Z60.\nG00 X50. Z3.\nG01 Z-20. F0.2\n",
+            crate::MachineKind::Lathe,
+        );
         let svg = render(&tp, 900.0, 600.0);
         assert!(svg.contains("lathe · ZX · mm"));
         assert!(svg.contains(">X (radius)</text>"));
@@ -385,8 +353,7 @@ M30;
 
     #[test]
     fn empty_run_draws_grid_axes_and_legend_but_no_path() {
-        let r = run("", &Setup::default());
-        let svg = render(&Toolpath::from_run(&r), 300.0, 200.0);
+        let svg = render(&toolpath_to_stop(""), 300.0, 200.0);
         assert!(group(&svg, "actual").trim().is_empty());
         assert!(group(&svg, "grid").contains("<path"));
         assert!(group(&svg, "axes").contains("<path"));

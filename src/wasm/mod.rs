@@ -18,10 +18,8 @@ use web_sys::{OffscreenCanvas, OffscreenCanvasRenderingContext2d};
 
 use crate::diag::Diagnostic;
 use crate::document::{Document, ViewPlane, ViewState};
-use crate::render::canvas::Shot;
-use crate::render::display::Op;
 use crate::render::scene::{self, Scene};
-use crate::render::{Frame, Raster};
+use crate::render::{Frame, Kept};
 use crate::report::{BlockReport, End, Run};
 use crate::run::RunOptions;
 use crate::setup::{MachineKind, Setup};
@@ -75,17 +73,13 @@ pub struct Session {
     run: Run,
     toolpath: Toolpath,
     canvas: Option<(OffscreenCanvas, OffscreenCanvasRenderingContext2d)>,
-    /// The pixel layer large paths are drawn on, and what carries it to the
-    /// canvas (`render::canvas::Layer`); kept between frames for their memory.
-    raster: Raster,
-    /// A canvas per pixel buffer of the raster, and what each holds.
+    /// What a frame on the canvas keeps for the next one (`render::Kept`):
+    /// the pixel layer's drawings, what the scratch canvases hold, the
+    /// layer and the calls of the frame the canvas shows.
+    kept: Kept,
+    /// A scratch canvas per pixel buffer of the pixel layer, which carries
+    /// its pixels onto the canvas (`render::canvas::Layer`).
     scratch: Option<[OffscreenCanvas; 2]>,
-    held: [Option<(usize, usize, usize, usize)>; 2],
-    raster_bytes: Vec<u8>,
-    shot: Option<Shot>,
-    /// The drawing calls of the frame the canvas shows (None: not known),
-    /// so that the next frame is painted only where it differs.
-    shown: Option<Vec<Op>>,
     /// Runs so far.
     runs: u64,
     /// Counts the runs whose toolpath differed from the one before: a kept
@@ -128,12 +122,8 @@ impl Default for Session {
             run,
             toolpath,
             canvas: None,
-            raster: Raster::new(),
+            kept: Kept::new(),
             scratch: None,
-            held: [None; 2],
-            raster_bytes: Vec::new(),
-            shot: None,
-            shown: None,
             runs: 0,
             drawing: 0,
             setup_refused: false,

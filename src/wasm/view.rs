@@ -34,7 +34,7 @@ impl Session {
             .dyn_into::<OffscreenCanvasRenderingContext2d>()?;
         self.canvas = Some((canvas, ctx));
         self.last_whole = None;
-        self.shown = None;
+        self.kept.forget_canvas();
         Ok(())
     }
 
@@ -81,7 +81,7 @@ impl Session {
         if canvas.width() != device(w) || canvas.height() != device(h) {
             canvas.set_width(device(w));
             canvas.set_height(device(h));
-            self.shown = None;
+            self.kept.forget_canvas();
         }
         let sx = f64::from(device(w)) / f64::from(w);
         let sy = f64::from(device(h)) / f64::from(h);
@@ -97,16 +97,12 @@ impl Session {
             hash.finish()
         };
         let layer = self.scratch.as_ref().map(|[a, b]| Layer {
-            raster: &mut self.raster,
             scratch: [a, b],
-            held: &mut self.held,
-            bytes: &mut self.raster_bytes,
             size: (device(w), device(h)),
             scale: (sx, sy),
-            shot: &mut self.shot,
             key,
         });
-        let mut surface = CanvasSurface::new(ctx, layer, &mut self.shown);
+        let mut surface = CanvasSurface::new(ctx, &mut self.kept, layer);
         let draw = if moving {
             render::draw_scene_moving
         } else {

@@ -4,11 +4,11 @@
 //!
 //! Why: a dense drawing (the 1M-block frame) soon fills an area: from then
 //! on nearly every segment drawn below lies in finished tiles, and finding
-//! that out tile by tile cost 256 instructions a segment ([`Raster::hidden`],
-//! 2.26 M of them, 0.58 G) — and a segment whose box reaches an open tile
-//! (the ragged edge of the filled area) was swept along its whole length,
-//! 2,500 instructions for each of 350 k segments that covered almost no
-//! pixel (0.87 G; callgrind, `examples/render_time`). Finished tiles stay
+//! that out tile by tile ([`Raster::hidden`]) cost each of millions of
+//! segments — and a segment whose box reaches an open tile (the ragged edge
+//! of the filled area) was swept along its whole length, for segments that
+//! covered almost no pixel (the instruction count of `examples/render_time`
+//! on the 1M-block program guards both). Finished tiles stay
 //! finished while a drawing is made, so a box found once stays true; it is
 //! looked for again each time another sixty-fourth of the tiles has
 //! finished.

@@ -1,8 +1,7 @@
 //! A drawing made again where it changed: the pixels of the last drawing
 //! are kept where the new one records the same segments, so an edit that
 //! moves a few moves of a large path costs about those moves, not the
-//! whole frame (issue 6, target 4: a whole 10k-block frame is 55–60 ms in
-//! the page's wasm).
+//! whole frame (`make bench-browser`, target 4c, guards it).
 //!
 //! How: every move is a sub-path of its own in the recording
 //! ([`super::Raster`]'s `next_move`), with the dash phase it starts at; a
@@ -19,12 +18,12 @@
 
 use super::sweep::tile_span;
 use super::{Ink, Pixel, Raster, Sub, TILE_BITS, TILE_MASK};
-use crate::render::resume::Traced;
 
 /// Surfaces of more pixels than this do not keep the drawing before the
-/// last one ([`Older`]): its pixels take 8 bytes each (32 MiB here; the
-/// page's 10k-block benchmark frame, on the coarse grid, takes 2.2 MB).
-const OLDER_MOST_PIXELS: usize = 1 << 22;
+/// last one ([`BeforeLast`]): its pixels take 8 bytes each (32 MiB here,
+/// many times what the page's 10k-block benchmark frame takes on the
+/// coarse grid).
+const BEFORE_LAST_MOST_PIXELS: usize = 1 << 22;
 
 /// Past this share of changed points (of both recordings together) or of
 /// pixels to draw again, the drawing is made from nothing: the comparison
@@ -33,17 +32,21 @@ const MOST: f64 = 0.5;
 
 /// Recordings of more points than this are not kept, nor split into a
 /// sub-path per move past it (nor do their dashes start afresh there): the
-/// 10k-block benchmark program records 40 k points on the page, the
-/// 1M-block one 5.2 M, and a sub-path per move made its first frame 10 %
-/// slower in the page (606 → 668 ms) and its wasm memory 69 MB larger, for
-/// an edit drawn in 0.32–0.40 s instead of 0.73–0.88 (natively,
-/// `examples/render_time` with `EDITED`).
+/// 10k-block benchmark program records far fewer points on the page, the
+/// 1M-block one several times more, and a sub-path per move made that
+/// one's first frame slower and its wasm memory larger than an edit drawn
+/// on its pixels would have saved (`make bench-browser`, target 3, guards
+/// the first frame and the memory; `examples/render_time` with `EDITED`,
+/// the edit).
 pub(super) const MOST_KEPT: usize = 1 << 20;
 
-/// The recording of the last drawing (in its grid's coordinates) and what
+/// The recording of a kept drawing (in its grid's coordinates) and what
 /// it was drawn on.
 #[derive(Default)]
-pub(super) struct Last {
+pub(super) struct Recording {
+    /// Its number: each recording kept gets the next one, so that what the
+    /// renderer keeps with it outside the raster is known for its own.
+    pub(super) number: u64,
     pub(super) subs: Vec<Sub>,
     pub(super) points: Vec<[f32; 2]>,
     pub(super) styles: Vec<Ink>,
@@ -56,29 +59,24 @@ pub(super) struct Last {
     /// The pixels to draw again, per tile as [`Raster::tiles`] (kept for
     /// its memory).
     marks: Vec<u64>,
-    /// What was traced to make the recording, move by move, when the
-    /// drawing was made so (the page's paths: [`crate::render::resume`]):
-    /// a drawing of the same view takes the pieces of the recording that
-    /// an edit left alone instead of tracing them again.
-    pub(super) traced: Option<Box<Traced>>,
 }
 
-impl Last {
+impl Recording {
     /// The pixels are no longer this recording's.
     pub(super) fn forget(&mut self) {
         self.valid = false;
     }
 
-    /// Keeps the recording just drawn; returns the one it replaces (its
-    /// memory, for the next drawing).
+    /// Keeps the recording just drawn as recording `number`; returns the
+    /// one it replaces (its memory, for the next drawing).
     pub(super) fn keep(
         &mut self,
+        number: u64,
         (subs, points): (Vec<Sub>, Vec<[f32; 2]>),
         styles: &[Ink],
         (full, coarse, scale): ((usize, usize), Option<bool>, (f64, f64)),
-        traced: Option<Box<Traced>>,
     ) -> (Vec<Sub>, Vec<[f32; 2]>) {
-        self.traced = traced;
+        self.number = number;
         let old = (
             std::mem::replace(&mut self.subs, subs),
             std::mem::replace(&mut self.points, points),
@@ -103,19 +101,19 @@ impl Last {
 /// view, so that every point of the next frame moves; the next digit (or
 /// Backspace, or an undo) makes the block right again and brings the
 /// view back — and that frame is the one before, or a small edit of it,
-/// made on its pixels like any edit of the last one (issue 6, target 4b:
-/// a whole 10k-block frame is 50–90 ms in the page).
+/// made on its pixels like any edit of the last one, instead of a whole
+/// frame (`make bench-browser`, target 4b, guards it).
 #[derive(Default)]
-pub(super) struct Older {
+pub(super) struct BeforeLast {
     px: Vec<Pixel>,
     dirty: Option<(usize, usize, usize, usize)>,
     dirty_tiles_w: usize,
-    pub(super) last: Last,
+    pub(super) recording: Recording,
 }
 
-impl Older {
+impl BeforeLast {
     pub(super) fn forget(&mut self) {
-        self.last.forget();
+        self.recording.forget();
     }
 }
 
@@ -136,37 +134,38 @@ fn points_of<'a>(subs: &[Sub], points: &'a [[f32; 2]], k: usize) -> &'a [[f32; 2
 impl Raster {
     /// Trades the last drawing (pixels, their drawn box, recording) for the
     /// one before it.
-    fn swap_older(&mut self) {
-        std::mem::swap(&mut self.px, &mut self.older.px);
-        std::mem::swap(&mut self.dirty, &mut self.older.dirty);
-        std::mem::swap(&mut self.dirty_tiles_w, &mut self.older.dirty_tiles_w);
-        std::mem::swap(&mut self.last, &mut self.older.last);
+    fn swap_before_last(&mut self) {
+        let before = &mut self.before_last;
+        std::mem::swap(&mut self.px, &mut before.px);
+        std::mem::swap(&mut self.dirty, &mut before.dirty);
+        std::mem::swap(&mut self.dirty_tiles_w, &mut before.dirty_tiles_w);
+        std::mem::swap(&mut self.last, &mut before.recording);
         self.buffer ^= 1;
     }
 
     /// Prepares a drawing on the pixels of the drawing before the last one
-    /// ([`Older`]) when [`Raster::keep_last`] keeps them (it checks their
-    /// surface first); the last drawing becomes the one before. False, and
-    /// nothing changed, otherwise.
-    pub(super) fn keep_older(&mut self) -> bool {
-        self.swap_older();
+    /// ([`BeforeLast`]) when [`Raster::keep_last`] keeps them (it checks
+    /// their surface first); the last drawing becomes the one before. False,
+    /// and nothing changed, otherwise.
+    pub(super) fn keep_before_last(&mut self) -> bool {
+        self.swap_before_last();
         if self.keep_last() {
             return true;
         }
-        self.swap_older();
+        self.swap_before_last();
         false
     }
 
     /// Before a drawing made from nothing: the last one, when it can be
     /// compared with the next ones, is set aside as the one before
-    /// ([`Older`]), and this one is made on the pixels of the one set aside
-    /// before (cleared as the last drawing's always are), or on new ones.
+    /// ([`BeforeLast`]), and this one is made on the pixels of the one set
+    /// aside before (cleared as the last drawing's always are), or on new ones.
     pub(super) fn set_last_aside(&mut self) {
-        if !self.last.valid || self.px.len() > OLDER_MOST_PIXELS {
+        if !self.last.valid || self.px.len() > BEFORE_LAST_MOST_PIXELS {
             return;
         }
-        self.swap_older();
-        let len = self.older.px.len();
+        self.swap_before_last();
+        let len = self.before_last.px.len();
         if self.px.len() != len {
             self.px.clear();
             self.px.resize(len, Pixel::default());

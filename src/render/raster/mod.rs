@@ -3,9 +3,9 @@
 //!
 //! Why: a browser's 2D canvas records every `lineTo` and rasterises the
 //! recorded paths afterwards, and Chromium's cost for that grows faster than
-//! the path's length — the 1M-block benchmark program (4.2 M segments at
-//! full view, 850 M device pixels of line) was not painted within two
-//! minutes, a 10k-block program took 0.74 s a frame (`docs/performance.md`).
+//! the path's length: the 1M-block benchmark program was not painted in any
+//! time a page can wait, and a 10k-block program's frames were far too slow
+//! to follow typing (`make bench-browser`, targets 3 and 4, guard it).
 //!
 //! How: the segments are recorded (clipped to the view, as `f32`), then
 //! drawn front to back — last path first, each path's segments last
@@ -29,15 +29,15 @@
 mod filled;
 mod keep;
 mod open;
+mod pieces;
 mod record;
-mod resume;
 mod sweep;
 #[cfg(test)]
 mod tests;
 
+pub(crate) use pieces::Recorded;
 use record::Recorder;
 pub use record::{InkMeter, parse_color};
-pub(crate) use resume::Recorded;
 
 /// Surfaces larger than this (device pixels) are drawn as vectors: the
 /// buffers take 8 bytes a pixel.
@@ -80,17 +80,18 @@ pub struct Raster {
     planned: bool,
     /// The pixels, tile by tile (tiles row by row, each tile's pixels row
     /// by row: [`Raster::index`]). The pixels a line covers are read
-    /// there, scattered over megabytes, and waiting for them was half of
-    /// drawing a 10k-block frame (perf) with the image's rows in memory;
-    /// a tile's row is one cache line, and a steep line steps to the next
-    /// one rather than an image row (10 kB) further: the wait halved.
+    /// there, scattered over megabytes, and waiting for them was much of
+    /// drawing a 10k-block frame with the image's rows in memory; a tile's
+    /// row is one cache line, and a steep line steps to the next one rather
+    /// than an image row further (`examples/render_time` on the 10k-block
+    /// program guards it).
     px: Vec<Pixel>,
     /// The stamp of the first path of this drawing.
     base: u32,
     /// Finished (opaque) pixels per tile: bit `8 (y mod 8) + (x mod 8)`,
     /// so that the pixels across a line that are not finished are found a
-    /// tile at a time and only they are read (128 kB of bits instead of
-    /// 8 MB of pixels at 2560 × 1600). Finished tiles per block. Both start
+    /// tile at a time and only they are read (a bit a pixel instead of
+    /// its eight bytes). Finished tiles per block. Both start
     /// with what lies outside the surface finished, so `FULL_TILE` and
     /// `FULL` mean finished.
     tiles: Vec<u64>,
@@ -111,7 +112,7 @@ pub struct Raster {
     reach_tiles: Vec<u64>,
     /// The box of the pixels drawn (x0, y0, x1, y1; exclusive ends), and
     /// the width in tiles of the grid they were drawn on (the pixels may be
-    /// those of the drawing before the last: [`keep::Older`]).
+    /// those of the drawing before the last: [`keep::BeforeLast`]).
     dirty: Option<(usize, usize, usize, usize)>,
     dirty_tiles_w: usize,
     /// What was recorded since [`Raster::begin`].
@@ -141,15 +142,17 @@ pub struct Raster {
     /// What the last drawing recorded, whose pixels `px` holds: the next
     /// one is compared with it, and only where they differ drawn again
     /// ([`keep`]).
-    last: keep::Last,
+    last: keep::Recording,
     /// The drawing before the last one, set aside with its pixels when a
-    /// drawing was made from nothing ([`keep::Older`]).
-    older: keep::Older,
+    /// drawing was made from nothing ([`keep::BeforeLast`]).
+    before_last: keep::BeforeLast,
+    /// How many recordings were kept ([`keep::Recording::number`]).
+    recordings: u64,
     /// Whether this drawing was made on the last one's pixels, or on those
     /// of the drawing before it.
     kept: bool,
     /// Which of the two pixel buffers `px` is (the other is the drawing's
-    /// before the last: [`keep::Older`]).
+    /// before the last: [`keep::BeforeLast`]).
     buffer: usize,
     /// The box (x0, y0, x1, y1; exclusive ends) outside which every pixel
     /// is finished: the surface, or where a drawing made on the last one's
@@ -161,9 +164,17 @@ pub struct Raster {
     open: (usize, usize, usize, usize),
     open_pixels: Option<[f64; 4]>,
     open_all: bool,
-    /// What was traced to make this drawing's recording, kept with it
-    /// when the drawing is kept for the next one ([`keep::Last`]).
-    traced: Option<Box<crate::render::resume::Traced>>,
+}
+
+/// One of the two drawings a raster keeps for the next one: the last, or
+/// the one before it ([`keep`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Drawing {
+    /// The drawing made last (before [`Raster::finish`]: the one before the
+    /// drawing being recorded).
+    Last,
+    /// The one before it, set aside with its pixels ([`keep::BeforeLast`]).
+    BeforeLast,
 }
 
 /// A pixel of the drawing: its colour and which path covered it last,
@@ -194,7 +205,8 @@ struct Ink {
 /// A recorded sub-path: its points run from `first` to the next one's;
 /// or, when its style has [`WHOLE_ARC`], it is the next of the arcs
 /// recorded whole (in order: a sub-path has no room for their number, and
-/// twelve bytes a sub-path instead of sixteen are 8 MB of a 1M-block frame).
+/// twelve bytes a sub-path instead of sixteen are megabytes of a 1M-block
+/// frame).
 #[derive(Clone, Copy, Debug)]
 struct Sub {
     first: u32,
@@ -254,8 +266,8 @@ impl Raster {
 
     /// Takes arcs whole once `points` points are recorded (for tests:
     /// 1 Mi otherwise, where a drawing is no longer kept for the next edit;
-    /// in the 1M-block frame, 4.4 M of the 5.2 M points were arcs', and
-    /// most of those arcs lie under the moves drawn after them).
+    /// in the 1M-block frame most points are arcs', and most of those arcs
+    /// lie under the moves drawn after them).
     pub fn take_arcs_whole_past(&mut self, points: usize) {
         self.whole_arcs_past = points;
     }
@@ -280,7 +292,7 @@ impl Raster {
             self.base = 1;
             self.dirty = None;
             self.last.forget();
-            self.older = keep::Older::default();
+            self.before_last = keep::BeforeLast::default();
         }
         (self.width, self.height) = self.full;
         self.coarse = None;
@@ -306,7 +318,6 @@ impl Raster {
         self.tessellated = 0;
         self.pen = Recorder::default();
         self.ink_area = 0.0;
-        self.traced = None;
     }
 
     /// Clears what the last drawing touched (in its own grid, which may have
@@ -371,8 +382,9 @@ impl Raster {
     /// records a part (the last moves of the top path first), calls
     /// [`Raster::finish`] to draw it below what is drawn, records the part
     /// before it, and so on; a segment already hidden when it is recorded is
-    /// not recorded (most of a dense drawing's are: the 1M-block frame's
-    /// recording was half of its time, and 5.2 M points of memory). The
+    /// not recorded (most of a dense drawing's are: recording them was
+    /// much of the 1M-block frame's time and memory, which `make
+    /// bench-browser`, target 3, guards). The
     /// grid is chosen now, from `ink_area` (device pixels² its lines would
     /// cover, overlaps counted; see [`Raster::choose_grid`]). Such a drawing
     /// is not kept for the next one (it records too little to compare).
@@ -439,7 +451,7 @@ impl Raster {
             self.choose_grid();
             // The last drawing's pixels where this one is the same, or none.
             // (keep_last sets the open box of a drawing it keeps.)
-            self.kept = self.keep_last() || self.keep_older();
+            self.kept = self.keep_last() || self.keep_before_last();
             if !self.kept {
                 self.set_last_aside();
                 self.clear_last();
@@ -508,7 +520,8 @@ impl Raster {
             }
             // Dashes are laid from the sub-path's start; drawn from its end.
             // Each segment's length is worked out once (three times, with
-            // `hypot`, that was a tenth of a 1M-block frame natively).
+            // `hypot`, that was a share of a 1M-block frame of
+            // `examples/render_time`).
             let mut lengths = std::mem::take(&mut self.lengths);
             lengths.clear();
             lengths.extend(
@@ -532,17 +545,15 @@ impl Raster {
         self.arcs.clear();
         if first && (self.planned || points.len() > keep::MOST_KEPT || whole_arcs) {
             self.last.forget();
-            self.traced = None;
             self.subs = subs;
             self.points = points;
         } else if first {
             // What the next drawing is compared with; the allocations of
             // the one before are kept for it.
             let surface = (self.full, self.coarse, self.scale);
-            let traced = self.traced.take();
-            let (subs, points) = self
-                .last
-                .keep((subs, points), &self.styles, surface, traced);
+            self.recordings += 1;
+            let (subs, points) =
+                (self.last).keep(self.recordings, (subs, points), &self.styles, surface);
             self.subs = subs;
             self.points = points;
         } else {
@@ -556,7 +567,7 @@ impl Raster {
     /// Makes the next drawing from nothing, not on this one's pixels.
     pub fn forget(&mut self) {
         self.last.forget();
-        self.older.forget();
+        self.before_last.forget();
     }
 
     /// Whether this drawing was made on the last one's pixels (or on those
@@ -592,7 +603,7 @@ impl Raster {
 
     /// Which of the raster's two pixel buffers this drawing is in (0 or 1):
     /// a drawing is made on the last one's pixels, on those of the one
-    /// before it in the other buffer ([`keep::Older`]), or from nothing in
+    /// before it in the other buffer ([`keep::BeforeLast`]), or from nothing in
     /// either. A copy of the pixels kept per buffer (the page's scratch
     /// canvases) takes only [`Raster::changed`]'s box from the next drawing
     /// made in its buffer.
@@ -691,13 +702,13 @@ impl Raster {
             return true;
         }
         // In a block not yet finished: its own tiles, 64 at a time along a
-        // row ([`open`]). Of the 1.66 M segments of a 1M-block frame that
-        // reached the sweep, 1.62 M covered no pixel, and 1.34 M of those
-        // lay in finished tiles (a block is finished only when all its 64
-        // tiles are): the frame 4 % faster in wasm (`examples/render_time`
-        // for wasm32-wasip1 under Node, 537–540 → 513–518 ms), 6 % fewer
-        // instructions natively. (Once tested a tile at a time, for boxes
-        // of 4 × 4 tiles at most; the box of a whole arc is larger.)
+        // row ([`open`]). Most segments of a 1M-block frame that reach the
+        // sweep cover no pixel, and most of those lie in finished tiles (a
+        // block is finished only when all its 64 tiles are): looking here
+        // saves their sweep (`examples/render_time` on the 1M-block
+        // program, natively and built for wasm32-wasip1, guards it). (Once
+        // tested a tile at a time, for boxes of 4 × 4 tiles at most; the box
+        // of a whole arc is larger.)
         let tiles = (
             (px0 >> TILE_BITS, px1 >> TILE_BITS),
             (py0 >> TILE_BITS, py1 >> TILE_BITS),
@@ -725,8 +736,8 @@ fn index(tiles_w: usize, x: usize, y: usize) -> usize {
 /// answers for NaN, which wasm's `f64.min` does not do as Rust wants, so
 /// there it is a call to libm's `fmin`, or that inlined: two comparisons
 /// and two selections where this has one of each (before wasm-opt the
-/// calls to fmin, fmax and their f32 forms were 16 % of a 1M-block run of
-/// `examples/render_time` built for wasm32-wasip1, node --cpu-prof).
+/// calls to fmin, fmax and their f32 forms were a large share of a 1M-block
+/// run of `examples/render_time` built for wasm32-wasip1, which guards it).
 #[inline(always)]
 fn smaller<T: PartialOrd>(a: T, b: T) -> T {
     if b < a { b } else { a }
@@ -741,7 +752,8 @@ fn larger<T: PartialOrd>(a: T, b: T) -> T {
 /// A pixel coordinate as a float: through `u32` (coordinates are below
 /// [`MAX_PIXELS`]), which converts in one instruction natively where a
 /// `usize` takes several — the conversions of the sweep and
-/// [`Raster::hidden`] were a tenth of a 1M-block frame (callgrind).
+/// [`Raster::hidden`] were a share of a 1M-block frame of
+/// `examples/render_time`, which guards it.
 #[inline]
 fn coord(v: usize) -> f64 {
     f64::from(v as u32)
@@ -755,9 +767,9 @@ fn pixel(v: f64) -> usize {
 }
 
 /// The length of a segment (dx, dy): the square root of the sum of the
-/// squares, within an ulp of `hypot` (which cost five times as much, and
-/// 5 % of a 1M-block frame natively); `hypot` where the squares would
-/// overflow or lose digits below the normal numbers.
+/// squares, within an ulp of `hypot` (which cost several times as much, a
+/// share of a 1M-block frame of `examples/render_time`); `hypot` where the
+/// squares would overflow or lose digits below the normal numbers.
 fn length(dx: f64, dy: f64) -> f64 {
     let squares = dx * dx + dy * dy;
     if (1e-290..1e290).contains(&squares) {

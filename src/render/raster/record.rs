@@ -20,7 +20,7 @@ pub(super) struct Recorder {
 
 /// The area a segment's line covers, in whole 64ths of a device pixel²:
 /// such areas add up exactly in any order (far below 2^53 of them), so a
-/// recording made partly of the last one's pieces ([`super::resume`])
+/// recording made partly of the last one's pieces ([`super::pieces`])
 /// sums to what recording it in one go does, and chooses the same grid.
 pub(super) fn covered(area: f64) -> f64 {
     (area * 64.0).round() / 64.0
@@ -84,8 +84,8 @@ fn clip_within(
     // Most segments lie well inside. With both ends a pixel inside the
     // edges, each edge is more than a pixel beyond the segment's ends
     // along it, far more than the rounding of the divisions below: they
-    // would give (0, length) too (and were a twentieth of recording a
-    // 1M-block frame).
+    // would give (0, length) too (and were a measurable share of recording
+    // a 1M-block frame: `examples/render_time` guards it).
     let inside = |(x, y): (f64, f64)| {
         (1.0 - margin..=w + margin - 1.0).contains(&x)
             && (1.0 - margin..=h + margin - 1.0).contains(&y)
@@ -223,8 +223,8 @@ impl Pen for Raster {
     fn next_move(&mut self, x: f64, y: f64, restart: bool) {
         if self.points.len() >= MOST_KEPT {
             // Past what is kept, the line runs on, dashes too: a sub-path
-            // per move would only cost (a tenth of a 1M-block frame in the
-            // page, 606 → 668 ms, and 69 MB of wasm memory).
+            // per move would only cost time and wasm memory ([`MOST_KEPT`];
+            // `make bench-browser`, target 3, guards both).
         } else if restart {
             self.move_to(x, y);
         } else {
@@ -363,7 +363,7 @@ impl Pen for Raster {
 /// A coordinate or a phase as recorded: as `f32`, with the tiniest numbers
 /// (below 2^-100 pixels) made 0, so that halving a recording for the
 /// coarse grid ([`Raster::choose_grid`]) and doubling it back (a recording
-/// resumed from the last one's pieces: `super::resume`) is exact — it is
+/// resumed from the last one's pieces: `super::pieces`) is exact — it is
 /// for every normal `f32` at least 2^-125.
 pub(super) fn recorded(v: f64) -> f32 {
     let v = v as f32;
@@ -373,9 +373,10 @@ pub(super) fn recorded(v: f64) -> f32 {
 const TINY: f32 = 1.0 / (1u128 << 100) as f32;
 
 /// Where the distance `along` a sub-path falls in a dash pattern of
-/// `period` (0 for a solid line). `rem_euclid` is a call to fmod (3 % of a
-/// 1M-block frame), so it is made only when `along` is not within the
-/// first period already (a move's sub-path mostly starts at 0).
+/// `period` (0 for a solid line). `rem_euclid` is a call to fmod (a share
+/// of a 1M-block frame of `examples/render_time`), so it is made only when
+/// `along` is not within the first period already (a move's sub-path
+/// mostly starts at 0).
 fn phase_of(along: f64, period: f64) -> f64 {
     if period > 0.0 && !(0.0..period).contains(&along) {
         along.rem_euclid(period)

@@ -8,10 +8,11 @@ use super::{coord, larger, pixel, smaller};
 /// The stretches of a dashed segment that are drawn, worked out when the
 /// sweep first looks at a column of a stretch of columns it may draw in:
 /// in a dense drawing most dashed segments cross only finished tiles, and
-/// working out their dashes beforehand was 7 % of a 1M-block frame; a
-/// drawing made on the last one's pixels looks at a few columns of a long
-/// segment, and working out all of its dashes for those was 7 % of such a
-/// frame (callgrind).
+/// working out their dashes beforehand was work for nothing; a drawing
+/// made on the last one's pixels looks at a few columns of a long segment,
+/// and working out all of its dashes was work for columns it never looks
+/// at (the instruction counts of `examples/render_time` on the 1M-block
+/// program, and with `EDITED`, guard both).
 struct Dashes {
     /// Where the segment's start is in the pattern, and its length.
     at: f64,
@@ -239,8 +240,8 @@ impl Raster {
     /// each pixel it passes; `TRANSPOSED` when the major axis is y. Only
     /// the tile columns where it may reach an open tile are looked at
     /// ([`Raster::open_along`]). (One
-    /// version for each axis: the choices per pixel go, 7 % of the
-    /// instructions of a 10k-block frame.)
+    /// version for each axis: the choices per pixel go; the instruction
+    /// count of a 10k-block frame of `examples/render_time` guards it.)
     fn sweep<const TRANSPOSED: bool>(
         &mut self,
         ink: &Ink,

@@ -2,6 +2,7 @@ use super::*;
 use crate::render::Pen;
 use crate::render::style::Stroke;
 use crate::render::style::{ACTUAL_FEED, PROGRAMMED_FEED};
+use crate::render::test_support::{assert_same_pixels, pixels};
 
 fn raster(w: usize, h: usize) -> Raster {
     let mut r = Raster::new();
@@ -200,15 +201,6 @@ fn draw_chains(
     }
 }
 
-/// Every pixel of both drawings, as straight RGBA.
-fn pixels(r: &mut Raster) -> Vec<[u8; 4]> {
-    let (w, h) = r.size();
-    (0..h)
-        .flat_map(|y| (0..w).map(move |x| (x, y)))
-        .map(|(x, y)| r.pixel(x, y))
-        .collect()
-}
-
 const TRANSLUCENT: Stroke = Stroke {
     color: "rgba(250, 180, 20, 0.55)",
     width: 7.0,
@@ -239,17 +231,8 @@ fn assert_drawn_again_as_from_nothing(
     draw_chains(&mut fresh, surface, &paths(after));
     assert!(!fresh.kept());
     assert_eq!(again.factor(), fresh.factor());
-    let (a, b) = (pixels(&mut again), pixels(&mut fresh));
-    let w = again.size().0;
-    if let Some(i) = (0..a.len()).find(|&i| a[i] != b[i]) {
-        panic!(
-            "pixel ({}, {}) drawn again {:?}, from nothing {:?} (kept: {kept})",
-            i % w,
-            i / w,
-            a[i],
-            b[i]
-        );
-    }
+    let what = format!("drawn again against from nothing (kept: {kept})");
+    assert_same_pixels(&mut again, &mut fresh, &what);
     kept
 }
 
@@ -320,7 +303,7 @@ fn same_as_from_nothing(
 
 #[test]
 fn a_drawing_close_to_the_one_before_the_last_is_made_on_its_pixels() {
-    // Typing back and forth (keep::Older): a digit makes a block wrong, the
+    // Typing back and forth (keep::BeforeLast): a digit makes a block wrong, the
     // path and the fitted view change (every point moves), the next key
     // makes it right again — the frame before, or an edit of it.
     let path: Vec<(f64, f64)> = (0..301)
@@ -338,7 +321,7 @@ fn a_drawing_close_to_the_one_before_the_last_is_made_on_its_pixels() {
     let surface = (400, 300, 1.0);
     let mut r = Raster::new();
     let mut previous = 1;
-    for (points, kept, on_older) in [
+    for (points, kept, on_before_last) in [
         (&path, false, false),
         (&refitted, false, false),
         (&path, true, true),
@@ -355,7 +338,7 @@ fn a_drawing_close_to_the_one_before_the_last_is_made_on_its_pixels() {
         assert_eq!(r.changed().is_none(), !kept);
         // The pixels of the drawing before the last are in the other buffer;
         // a drawing from nothing takes it too.
-        assert_eq!(buffer != previous, on_older || !kept);
+        assert_eq!(buffer != previous, on_before_last || !kept);
         previous = buffer;
     }
     // The drawing before the last on the coarse grid, the next ones on the
@@ -408,17 +391,7 @@ fn assert_same_without_the_filled_box(surface: (usize, usize, f64), points: &[(f
     let mut without = Raster::new();
     without.filled.off = true;
     draw_chains(&mut without, surface, &paths);
-    let (a, b) = (pixels(&mut with), pixels(&mut without));
-    let w = with.size().0;
-    if let Some(i) = (0..a.len()).find(|&i| a[i] != b[i]) {
-        panic!(
-            "pixel ({}, {}) with the box {:?}, without {:?}",
-            i % w,
-            i / w,
-            a[i],
-            b[i]
-        );
-    }
+    assert_same_pixels(&mut with, &mut without, "with the box against without");
     with.filled.px.is_some()
 }
 

@@ -1,14 +1,16 @@
-//! What a recording resumed from the last one's pieces needs of the
-//! raster ([`crate::render::resume`]): where the recording and its pen
-//! stand, to note at a checkpoint and to go on from; the recordings of the
-//! last drawing and of the one before it, to copy pieces of.
+//! A recording made partly of pieces of the kept ones: what a tracer that
+//! resumes from the last drawing's tracing needs of the raster (the raster
+//! knows nothing of tracing: it numbers the recordings it keeps, and
+//! whoever keeps something with one knows it by its number). Where the
+//! recording and its pen stand, to note at a checkpoint and to go on from;
+//! the recordings of the last drawing and of the one before it, to copy
+//! pieces of.
 
 use std::ops::Range;
 
-use super::keep::MOST_KEPT;
+use super::keep::{MOST_KEPT, Recording};
 use super::record::covered;
-use super::{Raster, Sub};
-use crate::render::resume::Traced;
+use super::{Drawing, Raster, Sub};
 
 /// Where a recording stands: its pen (where it is, how far along its
 /// sub-path, whether the next segment starts a sub-path) and how much is
@@ -83,37 +85,32 @@ impl Raster {
         MOST_KEPT.min(self.whole_arcs_past)
     }
 
-    /// Takes what was traced for the last drawing (`which` 0) or the one
-    /// before it (1), when this drawing may take pieces of its recording:
-    /// its pixels are its recording's (it is kept), recorded on this
-    /// surface at this scale, and this drawing is not made in parts.
-    /// [`Raster::give_back`] returns it.
-    pub(crate) fn take_traced(&mut self, which: usize) -> Option<Box<Traced>> {
-        let (full, scale, planned) = (self.full, self.scale, self.planned);
-        let last = if which == 0 {
-            &mut self.last
-        } else {
-            &mut self.older.last
-        };
-        let usable = last.valid && last.full == full && last.scale == scale && !planned;
-        if usable { last.traced.take() } else { None }
-    }
-
-    /// Returns what [`Raster::take_traced`] took.
-    pub(crate) fn give_back(&mut self, which: usize, traced: Option<Box<Traced>>) {
-        let last = if which == 0 {
-            &mut self.last
-        } else {
-            &mut self.older.last
-        };
-        if traced.is_some() {
-            last.traced = traced;
+    /// The recording kept of a drawing.
+    fn recording(&self, which: Drawing) -> &Recording {
+        match which {
+            Drawing::Last => &self.last,
+            Drawing::BeforeLast => &self.before_last.recording,
         }
     }
 
-    /// Keeps what was traced to make this drawing, for the next one.
-    pub(crate) fn set_traced(&mut self, traced: Box<Traced>) {
-        self.traced = Some(traced);
+    /// The number of the recording kept of a drawing (each recording kept
+    /// gets the next number), or None when none is: the drawing was not
+    /// kept, or its pixels are no longer its recording's.
+    pub(crate) fn recording_number(&self, which: Drawing) -> Option<u64> {
+        let recording = self.recording(which);
+        recording.valid.then_some(recording.number)
+    }
+
+    /// The number of a drawing's recording ([`Raster::recording_number`])
+    /// when the drawing being recorded may take pieces of it: it was
+    /// recorded on this surface at this scale, and this drawing is not made
+    /// in parts.
+    pub(crate) fn resumable(&self, which: Drawing) -> Option<u64> {
+        let recording = self.recording(which);
+        let alike = recording.full == self.full && recording.scale == self.scale;
+        (alike && !self.planned)
+            .then(|| self.recording_number(which))
+            .flatten()
     }
 
     /// Adds ink recorded elsewhere (a sum of [`covered`] areas).
@@ -121,23 +118,21 @@ impl Raster {
         self.ink_area += covered(ink);
     }
 
-    /// Appends the sub-paths `subs` and the points `points` of the last
-    /// drawing's recording (`which` 0) or the one before's (1), the
-    /// sub-paths in style `style`: a piece of the path being recorded that
-    /// an edit left alone. A recording made on the coarse grid was halved
-    /// ([`Raster::choose_grid`]) and is doubled back. False, and nothing
-    /// appended, for a piece out of range.
+    /// Appends the sub-paths `subs` and the points `points` of a kept
+    /// drawing's recording, the sub-paths in style `style`: a piece of the
+    /// path being recorded that an edit left alone. A recording made on the
+    /// coarse grid was halved ([`Raster::choose_grid`]) and is doubled back.
+    /// False, and nothing appended, for a piece out of range.
     pub(crate) fn copy_recorded(
         &mut self,
-        which: usize,
+        which: Drawing,
         subs: Range<usize>,
         points: Range<usize>,
         style: u16,
     ) -> bool {
-        let last = if which == 0 {
-            &self.last
-        } else {
-            &self.older.last
+        let last = match which {
+            Drawing::Last => &self.last,
+            Drawing::BeforeLast => &self.before_last.recording,
         };
         let (Some(from_subs), Some(from_points)) =
             (last.subs.get(subs), last.points.get(points.clone()))
