@@ -211,13 +211,20 @@ describe('the autosave writes the document', () => {
   });
 });
 
-/** A value in the page's first saved shape and what the page writes for it. */
+/**
+ * Values in the page's first saved shape and what the page writes for each.
+ * `every` is what that page wrote for the user's own work (its work.js
+ * currentWork(): every key, null and false where nothing was there).
+ */
 const OLD = {
   every: {
     old: {
       program: MILL_PROGRAM,
       setup: { machine: 'mill', offsets: { '01': 5, '02': { geometry: 95.3, wear: -0.05 } }, settings: { block_skip: true } },
+      setupText: null,
       view: { plane: 'XZ', zoom: 2, pan: [1.5, -2], step: 2 },
+      example: null,
+      link: false,
     },
     migrated: {
       version: 1, machine: 'mill', offsets: { '01': 5, '02': { geometry: 95.3, wear: -0.05 } }, settings: { block_skip: true },
