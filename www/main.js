@@ -4,6 +4,8 @@
 // thread. Each concept has its module in modules/:
 //
 //   work.js       the work shown (setup, where it came from) and its autosave
+//   storage.js    the autosave in localStorage, and the work a document displaced
+//   saved.js      what is saved: the work's document (links' and --setup's format)
 //   runner.js     run requests (generations, typing debounce) and calls to the worker
 //   results.js    what the worker reports, shown: summary, diagnostics, current block
 //   recovery.js   a worker that hung or crashed replaced (issue 7, supervisor.js watches)

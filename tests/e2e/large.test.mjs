@@ -32,8 +32,8 @@ function zigzag(n) {
 describe('large programs', () => {
   test('a 600,000-block program shows its progress, stays responsive, is drawn and can be stepped', { timeout: 180_000 }, async () => {
     // The page shows the progress from the run's start (a test hook): past
-    // its 200 ms only on a machine where this program runs that long (about
-    // 140 ms in the worker on a quick one, 2026-12-03).
+    // its 200 ms only on a machine where this program runs that long, and on
+    // a quick one it runs for less.
     await withPage(async (page) => {
       const file = join(tmp, 'zigzag.nc');
       writeFileSync(file, zigzag(600_000));

@@ -14,7 +14,8 @@ const WROTE_BEFORE_KEY = 'offsetlab.address.before.v1';
 
 let getFragment = async () => null;
 let timer = 0;
-let last = -Infinity;
+let last = -Infinity; // when the last write began (it asks the worker for the link)
+let lastReplace = -Infinity; // when the address was last written
 let dirty = false;
 let writing = false;
 let wrote = null;
@@ -69,8 +70,14 @@ async function write() {
     const fragment = await getFragment();
     const hash = fragment ? `#${fragment}` : '';
     if (fragment !== null && hash !== location.hash) {
+      // The worker's answer to the last write may have come later than this
+      // one's (a busy worker): the address is still written at most once per
+      // MIN_INTERVAL_MS.
+      const early = lastReplace + MIN_INTERVAL_MS - performance.now();
+      if (early > 0) await new Promise((resolve) => { setTimeout(resolve, early); });
       // No fragment at all (not even `#`) when the document is too long for the address.
       history.replaceState(history.state, '', hash || location.href.split('#')[0]);
+      lastReplace = performance.now();
       wroteBefore = wrote;
       wrote = fragment;
       try {

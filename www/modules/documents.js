@@ -46,11 +46,10 @@ export function loadDocument(w, { ran = 0 } = {}) {
     work.setup = cloneSetup(w.setup);
     work.setupText = typeof w.setupText === 'string' ? w.setupText : null;
     setPendingView(viewOf(w));
-    // The editor takes a long text in steps (a second or two for 31 MB)
-    // while the worker runs it; the text of a file the worker is running
-    // already (`ran`) once its drawing is made: on two cores, the editor's
-    // work at the same time slowed the run and the drawing by a third
-    // (issue 6, target 3).
+    // The editor takes a long text in steps while the worker runs it; the
+    // text of a file the worker is running already (`ran`) once its drawing
+    // is made: on two cores, the editor's work at the same time slowed the
+    // run and the drawing (bench-browser target 3).
     const { text } = editor.setText(w.program, ran ? { after: workerDone('drawn', ran) } : {});
     // A file the worker is running already (`ran`, modules/opening.js) is
     // not sent again.

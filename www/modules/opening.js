@@ -17,9 +17,8 @@ const MAX_FILE = 300 * 1024 * 1024;
 /**
  * A program file at least this large is read by the worker itself, straight
  * into wasm memory, and run; this thread reads its text for the editor once
- * the worker has read it (issue 6, target 3): reading the text here, copying
- * it to the worker and there into wasm memory came before the run, 0.2–0.3 s
- * of a 31 MB program.
+ * the worker has read it: reading the text here, copying it to the worker
+ * and there into wasm memory came before the run (bench-browser target 3).
  */
 const WORKER_READS_FROM = 1024 * 1024;
 
@@ -55,7 +54,7 @@ async function openFile(file) {
   }
   let text;
   // Once the worker has read the file: the two reads at once stalled this
-  // thread for up to a sixth of a second (a 31 MB file).
+  // thread (bench-browser target 3, its longest main-thread task).
   if (ran) await workerDone('read', ran, 2000);
   try {
     text = await file.text();

@@ -21,10 +21,11 @@ const nonNegative = (v) => (Number.isFinite(v) && v >= 0 ? v : null);
 
 /**
  * The time budget of one task the page waits for (a run, a link, an
- * export). The core stops every run at 5,000,000 blocks or moves; such a
- * run took 2.6 s in the worker on a 2-core machine (the slowest file of
- * tests/data/hostile, 3.4 s), so 30 s leaves a slow machine about ten times
- * that; past it the task is stopped as a runaway.
+ * export). The core stops every run at 5,000,000 blocks or moves, so every
+ * run is bounded; the budget leaves a slow machine ten times what the
+ * longest such run takes on the project's 2-core machine (the slowest file
+ * of tests/data/hostile, which the hostile corpus test opens); past it the
+ * task is stopped as a runaway.
  */
 export const BUDGET_MS = positive(TEST?.budgetMs) ?? 30_000;
 /** The worker must have loaded the core within this. */

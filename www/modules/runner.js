@@ -120,9 +120,10 @@ function sendRun(doc, view, what) {
   sent.set(requested, lastSent);
   const message = { type: 'run', gen: requested, ...what, setup: doc.setup, view };
   // The editor's text goes as an edit of the last one sent to the same
-  // worker: a keystroke in a 100k-block program copied its 3 MB to the
-  // worker (4 ms of this thread, and more in the worker's). The worker
-  // checks the length it makes and asks for the whole text if they differ.
+  // worker: the whole text of a large program, copied to the worker at
+  // every keystroke, took this thread's and the worker's time (bench-browser
+  // target 4). The worker checks the length it makes and asks for the whole
+  // text if they differ.
   const edit = takeEdit();
   const current = what.program !== undefined && edit !== null && what.program === program();
   if (current && base && base.serial === workerSerial()) {

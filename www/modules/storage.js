@@ -1,8 +1,10 @@
 // No lost work: the program, the setup (offsets and settings) and the view
 // are saved in localStorage as the user types (at most every SAVE_MS, when
 // the page is idle, and at once when the page is hidden) and restored on the
-// next visit; the work is made when it is saved, not at every keystroke. When
-// the browser refuses (storage full, disabled, private mode), the page says so:
+// next visit; the work is made when it is saved, not at every keystroke. What
+// is saved is the work's document, the format of links and `--setup` files,
+// with the page's own extras beside it (modules/saved.js). When the browser
+// refuses (storage full, disabled, private mode), the page says so:
 // at load if storage cannot be used at all, and at every save that fails
 // (the message goes again once a save succeeds). The message has its own
 // banner, so that no other message (a link, an example) can hide it.
@@ -11,6 +13,13 @@
 // under its own key (PREVIOUS_KEY) until it is restored, so it stays one
 // click away across reloads. An embedded page (embed=1) reads and writes
 // neither: a lesson's example must never touch the reader's own work.
+//
+// Both keys are those of the page's first saved shape: a value in that shape
+// is read, and written again as a document the first time it is read (the
+// old value stays until the new one is written; where the browser refuses,
+// it stays and is read again next time).
+
+import { readSaved, savedOf } from './saved.js';
 
 const KEY = 'offsetlab.work.v1';
 const PREVIOUS_KEY = 'offsetlab.previous.v1';
@@ -20,8 +29,9 @@ const IDLE_WAIT_MS = 1000;
 /**
  * Programs longer than this are never saved: no browser keeps that much for
  * a page (Chromium 10 MiB of UTF-16, about 5.2 million characters; Firefox
- * and Safari 5 MB), and trying would cost the page a tenth of a second
- * each time (the JSON of a 31 MB program alone takes that long to make).
+ * and Safari 5 MB), and trying would make the JSON of the whole program at
+ * each save, a long task of the page's thread while a large file is open
+ * (bench-browser target 3, its "localStorage writes").
  */
 const MAX_SAVED_CHARS = 5 * 1024 * 1024;
 const idle = typeof requestIdleCallback === 'function'
@@ -52,12 +62,20 @@ function reason(error) {
   return full ? 'the browser’s storage is full' : (error?.message || 'storage is unavailable');
 }
 
+/** The work saved under `key`, or null; a value in the first shape is written again as a document. */
 function readJson(key) {
   const text = localStorage.getItem(key);
   if (!text) return null;
-  const work = JSON.parse(text);
-  if (typeof work?.program !== 'string' || typeof work.setup !== 'object' || work.setup === null) return null;
-  return work;
+  const read = readSaved(JSON.parse(text));
+  if (!read) return null;
+  if (read.old) {
+    try {
+      localStorage.setItem(key, JSON.stringify(savedOf(read.work)));
+    } catch {
+      // Refused (storage full): the old value stays, and is read again next time.
+    }
+  }
+  return read.work;
 }
 
 /** The work an opened link, file or example displaced, or null. */
@@ -71,13 +89,13 @@ export function loadPrevious() {
   }
 }
 
-/** Keeps displaced work { program, setup, view?, example? } (null forgets it). */
+/** Keeps displaced work { program, setup, setupText?, view? } (null forgets it). */
 export function keepPrevious(work) {
   if (!enabled) return;
   previousInMemory = work;
   try {
     if (work?.program.length > MAX_SAVED_CHARS) throw new DOMException('too large', 'QuotaExceededError');
-    if (work) localStorage.setItem(PREVIOUS_KEY, JSON.stringify(work));
+    if (work) localStorage.setItem(PREVIOUS_KEY, JSON.stringify(savedOf(work)));
     else localStorage.removeItem(PREVIOUS_KEY);
   } catch (error) {
     // An older work kept there must not come back in place of this one.
@@ -116,15 +134,15 @@ function flush() {
   const work = typeof pending === 'function' ? pending() : pending;
   pending = null;
   // A full storage stays full for the same program: a pan or a step does
-  // not make a 30 MB program fit, and writing it again would cost the page
-  // a tenth of a second each time. The message stays up.
+  // not make a 30 MB program fit, and writing it again would make its JSON
+  // again each time (bench-browser target 3). The message stays up.
   if (tooLarge !== null && work.program === tooLarge) return;
   if (work.program.length > MAX_SAVED_CHARS) {
     refused({ name: 'QuotaExceededError' }, work.program);
     return;
   }
   try {
-    localStorage.setItem(KEY, JSON.stringify(work));
+    localStorage.setItem(KEY, JSON.stringify(savedOf(work)));
     tooLarge = null;
     document.body.dataset.saved = String(Date.now());
     if (failing) {
