@@ -42,12 +42,12 @@ fn main() {
         path: offsetlab::toolpath::PathBuilder::new(setup.machine, setup.units, None),
         len: text.len(),
     };
-    let run = offsetlab::run_observed(&text, &setup, opts, &mut session);
+    let (run, checkpoints) = offsetlab::run_observed(&text, &setup, opts, &mut session);
     let mut tp = session.path.finish(&run, &offsetlab::Reuse::default());
     tp.shrink_to_fit();
     let t1 = t.elapsed();
-    let ck = run.checkpoints.len() * std::mem::size_of::<offsetlab::Checkpoint>()
-        + run.lines.capacity() * 4;
+    let ck = checkpoints.points.len() * std::mem::size_of::<offsetlab::Checkpoint>()
+        + checkpoints.lines.capacity() * 4;
     println!(
         "blocks {} moves {} vertices {} arcs {} run+toolpath {:?}; toolpath {} B ({:.1} B/block), checkpoints+lines {} B ({:.1} B/block)",
         run.block_count,

@@ -10,7 +10,8 @@
 use std::sync::Arc;
 use std::sync::mpsc::{channel, sync_channel};
 
-use super::{RunOptions, Runner, Step, Totals, close, counts, fresh, stop};
+use super::checkpoint::Totals;
+use super::{RunOptions, Runner, Step, close, counts, fresh, stop};
 use crate::diag::Diagnostic;
 use crate::machine::Machine;
 use crate::report::Run;
@@ -172,7 +173,7 @@ fn on_two_threads(text: &str, setup: &Setup, options: RunOptions) -> Option<Run>
         diagnostics.extend(warnings.map(|(_, w)| w));
         diagnostics.append(&mut run_diagnostics);
         counts(&mut result, &r);
-        close(&mut result, totals, diagnostics, text);
+        close(&mut result, &mut [], totals, diagnostics, text);
         Some(result)
     })
 }

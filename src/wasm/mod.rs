@@ -73,6 +73,8 @@ pub struct Session {
     text: String,
     setup: Setup,
     run: Run,
+    /// What the run kept to make its blocks' reports again.
+    checkpoints: crate::Checkpoints,
     toolpath: Toolpath,
     canvas: Option<(OffscreenCanvas, OffscreenCanvasRenderingContext2d)>,
     /// The pixel layer large paths are drawn on, and what carries it to the
@@ -126,6 +128,7 @@ impl Default for Session {
             text: String::new(),
             setup,
             run,
+            checkpoints: Default::default(),
             toolpath,
             canvas: None,
             raster: Raster::new(),
@@ -487,6 +490,7 @@ impl Session {
             _ => {
                 self.text = program;
                 self.run = crate::run("", &Setup::default());
+                self.checkpoints = Default::default();
                 self.toolpath = Toolpath::default();
                 None
             }
@@ -496,6 +500,7 @@ impl Session {
                 let earlier = earlier_text.as_deref().map(|text| crate::Earlier {
                     text,
                     run: &self.run,
+                    checkpoints: &self.checkpoints,
                 });
                 let mut observer = SessionObserver {
                     path: PathBuilder::new(
@@ -506,7 +511,7 @@ impl Session {
                     progress,
                     len: self.text.len(),
                 };
-                let (run, reuse) =
+                let (run, checkpoints, reuse) =
                     crate::rerun_observed(&self.text, &setup, SESSION_RUN, earlier, &mut observer);
                 let mut toolpath = observer.path.finish(&run, &reuse);
                 toolpath.shrink_to_fit();
@@ -514,6 +519,7 @@ impl Session {
                     self.drawing += 1;
                 }
                 self.run = run;
+                self.checkpoints = checkpoints;
                 self.toolpath = toolpath;
                 self.setup = setup;
                 self.setup_refused = false;
@@ -524,6 +530,7 @@ impl Session {
                 run.diagnostics = diagnostics;
                 run.end = End::Error { line: 0 };
                 self.run = run;
+                self.checkpoints = Default::default();
                 self.toolpath = Toolpath::new(self.setup.machine, self.setup.units);
                 self.drawing += 1;
                 self.setup_refused = true;
@@ -617,7 +624,7 @@ impl Session {
     /// The report of block `index`, made again from the checkpoint before
     /// it (the session keeps checkpoints, not a report per block).
     fn report(&self, index: u32) -> Option<BlockReport> {
-        crate::run::report_at(&self.text, &self.setup, &self.run, index)
+        crate::run::report_at(&self.text, &self.setup, &self.checkpoints, index)
     }
 
     /// The last run again, keeping its moves (for the exports: the session

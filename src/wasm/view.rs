@@ -252,7 +252,9 @@ impl Session {
     /// cursor on that line belongs to, or the one before a comment line),
     /// or -1 when no block runs before it.
     pub fn block_at_line(&self, line: u32) -> i32 {
-        let n = self.run.lines.partition_point(|&l| l <= line);
-        i32::try_from(n).map(|n| n - 1).unwrap_or(-1)
+        self.checkpoints
+            .block_at_line(line)
+            .and_then(|b| i32::try_from(b).ok())
+            .unwrap_or(-1)
     }
 }
