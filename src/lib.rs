@@ -28,6 +28,7 @@ pub mod offsets;
 pub mod render;
 pub mod report;
 mod run;
+pub mod session;
 pub mod setup;
 pub mod share;
 pub mod syntax;
