@@ -245,19 +245,24 @@ pub fn check_run_with(setup: &Setup, program: &str, max_moves: usize) {
             );
         }
     }
+    // At the chord tolerance of the vector outputs, both paths: every move
+    // has its two ends at least, every point finite.
     if full.moves.len() <= 2_000 {
-        let lines = path.polylines();
-        assert_eq!(lines.actual.len(), lines.programmed.len());
-        assert_eq!(lines.starts.len(), full.moves.len() + 1);
-        assert_eq!(
-            *lines.starts.last().unwrap() as usize * 3,
-            lines.actual.len()
-        );
-        assert!(lines.starts.windows(2).all(|w| w[0] < w[1]), "empty move");
-        assert!(
-            lines.actual.iter().all(|v| v.is_finite()),
-            "NaN in polylines"
-        );
+        assert_eq!(path.actual.len(), path.programmed.len());
+        for programmed in [false, true] {
+            let mut points = vec![0usize; path.len()];
+            path.for_each_point(
+                0..path.len(),
+                programmed,
+                (offsetlab::toolpath::CHORD_TOLERANCE, ArcPoints::Exact),
+                |_| true,
+                |m, _, p| {
+                    assert!(finite(&p), "NaN in a tessellated move: {p:?}");
+                    points[m] += 1;
+                },
+            );
+            assert!(points.iter().all(|&n| n >= 2), "empty move");
+        }
     }
 
     // The page's way: checkpoints, reports made again equal the kept ones.
