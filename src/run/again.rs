@@ -263,7 +263,8 @@ pub(crate) fn common_ends(a: &[u8], b: &[u8]) -> (usize, usize) {
 /// Length of the common start of `a` and `b`.
 fn common_prefix(a: &[u8], b: &[u8]) -> usize {
     // A page at a time (`==` on slices is a `memcmp`), then byte by byte:
-    // a 30 MB text in a few milliseconds.
+    // a million-block text is compared well within an edit's budget
+    // (bench-browser target 4; `cargo bench --bench edit`).
     const STEP: usize = 4096;
     let mut n = 0;
     while n + STEP <= a.len().min(b.len()) && a[n..n + STEP] == b[n..n + STEP] {

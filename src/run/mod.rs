@@ -207,7 +207,8 @@ impl<'t> Runner<'t> {
 
     /// Runs the block just read into `self.block`; always Some (the
     /// answer of [`Runner::step`], made in place: a `Step` made here and
-    /// wrapped there was copied, 18 instructions a block).
+    /// wrapped there was copied every block; the `check` instruction count
+    /// in docs/performance.md guards it).
     #[inline(always)]
     fn execute(&mut self) -> Option<Step> {
         let block = &self.block;
@@ -513,7 +514,8 @@ fn account(
         result.moves.extend_from_slice(&out.moves);
     }
     // Most blocks have no event and no warning: the tests skip setting
-    // up the two drains (callgrind: 30 instructions a block).
+    // up the two drains (the `check` instruction count in
+    // docs/performance.md guards it).
     if !out.events.is_empty() {
         result.events.extend(out.events.drain(..).map(|kind| Event {
             block: index,
