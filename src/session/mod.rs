@@ -294,6 +294,11 @@ impl Session {
         &self.last.run
     }
 
+    /// What the last run kept to make its blocks' reports again.
+    pub fn checkpoints(&self) -> &Checkpoints {
+        &self.last.checkpoints
+    }
+
     /// The last run's toolpath.
     pub fn toolpath(&self) -> &Toolpath {
         &self.last.toolpath
