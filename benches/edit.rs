@@ -13,7 +13,7 @@ mod programs;
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use offsetlab::toolpath::PathBuilder;
-use offsetlab::{Earlier, Run, RunOptions, Setup, Toolpath, rerun_observed};
+use offsetlab::{Checkpoints, Earlier, Run, RunOptions, Setup, Toolpath, rerun_observed};
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -28,13 +28,17 @@ const PAGE: RunOptions = RunOptions {
 fn page_run(
     text: &str,
     setup: &Setup,
-    earlier: Option<(&str, &(Run, Toolpath))>,
-) -> (Run, Toolpath) {
-    let mut builder = PathBuilder::new(setup.machine, setup.units, earlier.map(|(_, e)| &e.1));
-    let earlier = earlier.map(|(text, e)| Earlier { text, run: &e.0 });
-    let (run, reuse) = rerun_observed(text, setup, PAGE, earlier, &mut builder);
+    earlier: Option<(&str, &(Run, Checkpoints, Toolpath))>,
+) -> (Run, Checkpoints, Toolpath) {
+    let mut builder = PathBuilder::new(setup.machine, setup.units, earlier.map(|(_, e)| &e.2));
+    let earlier = earlier.map(|(text, e)| Earlier {
+        text,
+        run: &e.0,
+        checkpoints: &e.1,
+    });
+    let (run, checkpoints, reuse) = rerun_observed(text, setup, PAGE, earlier, &mut builder);
     let path = builder.finish(&run, &reuse);
-    (run, path)
+    (run, checkpoints, path)
 }
 
 /// The text with a 7 typed after the first digit of the first `G01 X`

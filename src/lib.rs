@@ -28,6 +28,7 @@ pub mod offsets;
 pub mod render;
 pub mod report;
 mod run;
+pub mod session;
 pub mod setup;
 pub mod share;
 pub mod syntax;
@@ -39,12 +40,13 @@ pub mod wasm;
 pub use diag::{Diagnostic, Severity, Span};
 pub use document::Document;
 pub use report::{BlockReport, End, Event, Move, MoveKind, Run};
-pub use run::{
-    Checkpoint, Earlier, MAX_BLOCKS, MAX_MOVES, Observer, Reuse, RunOptions, Tail, report_at,
-    rerun_observed, run, run_observed, run_with,
-};
+pub use run::again::{Earlier, Reuse, Tail, rerun_observed};
 #[cfg(not(target_arch = "wasm32"))]
-pub use run::{PIPELINE_FROM_BYTES, run_on_two_threads, run_pipelined};
+pub use run::pipeline::{PIPELINE_FROM_BYTES, run_on_two_threads, run_pipelined};
+pub use run::{
+    Checkpoint, Checkpoints, MAX_BLOCKS, MAX_MOVES, Observer, RunOptions, report_at, run,
+    run_observed, run_with,
+};
 pub use setup::{MachineKind, Setup, Units};
 pub use syntax::{ParseOptions, Program, parse};
 pub use toolpath::Toolpath;

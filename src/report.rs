@@ -358,11 +358,6 @@ pub struct Run {
     pub move_count: usize,
     /// Bounds of both paths (mm), kept as the moves are made.
     pub bounds: Option<Bounds>,
-    /// Where [`crate::run::report_at`] can resume, in block order (empty
-    /// unless [`crate::RunOptions::checkpoint_every`] asked for them).
-    pub checkpoints: Vec<crate::run::Checkpoint>,
-    /// Per executed block, its 1-based line (kept with the checkpoints).
-    pub lines: Vec<u32>,
 }
 
 impl Run {

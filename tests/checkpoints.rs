@@ -7,48 +7,49 @@
 
 mod common;
 use common::fixture;
-use offsetlab::{RunOptions, Setup, report_at, run, run_with};
+use offsetlab::report::Run;
+use offsetlab::{Checkpoints, RunOptions, Setup, report_at, run, run_observed};
 
-fn checkpointed(text: &str, setup: &Setup, every: u32) -> offsetlab::report::Run {
+fn checkpointed(text: &str, setup: &Setup, every: u32) -> (Run, Checkpoints) {
     let options = RunOptions {
         keep_blocks: false,
         checkpoint_every: every,
         ..RunOptions::default()
     };
-    run_with(text, setup, options)
+    run_observed(text, setup, options, &mut ())
 }
 
 /// Every block's report made again equals the kept one.
 fn assert_same_reports(text: &str, setup: &Setup) {
     let full = run(text, setup);
     for every in [1, 2, 3, 7, 1000] {
-        let light = checkpointed(text, setup, every);
+        let (light, checkpoints) = checkpointed(text, setup, every);
         assert!(light.blocks.is_empty());
         assert_eq!(light.block_count, full.block_count);
         assert_eq!(light.moves, full.moves, "the same moves");
         assert_eq!(light.diagnostics, full.diagnostics, "the same diagnostics");
         assert_eq!(light.end, full.end);
         assert_eq!(
-            light.lines,
+            checkpoints.lines,
             full.blocks.iter().map(|b| b.span.line).collect::<Vec<_>>(),
             "a line per block"
         );
         // One before every N-th block (and before a block that then fails).
-        let n = light.checkpoints.len() as u32;
+        let n = checkpoints.points.len() as u32;
         assert!(
             (full.block_count.div_ceil(every).max(1)..=full.block_count / every + 1).contains(&n),
             "{n} checkpoints for {} blocks, one every {every}",
             full.block_count
         );
         for (i, kept) in full.blocks.iter().enumerate() {
-            let again = report_at(text, setup, &light, i as u32);
+            let again = report_at(text, setup, &checkpoints, i as u32);
             assert_eq!(
                 again.as_ref(),
                 Some(kept),
                 "block {i} with a checkpoint every {every}"
             );
         }
-        assert_eq!(report_at(text, setup, &light, full.block_count), None);
+        assert_eq!(report_at(text, setup, &checkpoints, full.block_count), None);
     }
 }
 
@@ -82,17 +83,21 @@ fn a_run_stopped_by_an_error_has_no_reports_past_it() {
     let full = run(text, &setup);
     assert!(full.has_errors());
     assert_same_reports(text, &setup);
-    let light = checkpointed(text, &setup, 1);
-    assert_eq!(report_at(text, &setup, &light, full.block_count), None);
+    let (_, checkpoints) = checkpointed(text, &setup, 1);
+    assert_eq!(
+        report_at(text, &setup, &checkpoints, full.block_count),
+        None
+    );
 }
 
 #[test]
 fn a_run_without_checkpoints_makes_no_report_again() {
     let setup = Setup::default();
     let text = "G00 X10.\n";
-    let r = run(text, &setup);
-    assert!(r.checkpoints.is_empty() && r.lines.is_empty());
-    assert_eq!(report_at(text, &setup, &r, 0), None);
+    let (r, checkpoints) = run_observed(text, &setup, RunOptions::default(), &mut ());
+    assert_eq!(r, run(text, &setup));
+    assert!(checkpoints.points.is_empty() && checkpoints.lines.is_empty());
+    assert_eq!(report_at(text, &setup, &checkpoints, 0), None);
 }
 
 #[test]

@@ -8,7 +8,6 @@ mod fuzz_common;
 
 use offsetlab::report::End;
 use offsetlab::syntax::{MAX_DIAGNOSTICS, MAX_PROGRAM_BYTES, MAX_REPEATS, check_size};
-use offsetlab::toolpath::MAX_VERTICES;
 use offsetlab::{MAX_BLOCKS, MAX_MOVES, ParseOptions, RunOptions, Setup, Units, parse, run_with};
 
 fn codes(r: &offsetlab::Run) -> Vec<&'static str> {
@@ -61,7 +60,6 @@ fn the_limits_are_the_documented_values() {
     assert_eq!(MAX_MOVES, 5_000_000);
     assert_eq!(MAX_DIAGNOSTICS, 1000);
     assert_eq!(MAX_REPEATS, 9999);
-    assert_eq!(MAX_VERTICES, 16_777_216);
     assert_eq!(offsetlab::machine::arc::MAX_ARC_SEGMENTS, 1024);
     assert_eq!(offsetlab::render::DRAW_TOLERANCE_PX, 0.2);
     assert_eq!(offsetlab::toolpath::CHORD_TOLERANCE, 0.01);
@@ -78,7 +76,6 @@ fn the_limits_are_the_documented_values() {
         "| canned-cycle repeats K/L | 9999",
         "| pecks per G73/G83 hole | 10,000",
         "| segments per drawn arc | 1024",
-        "| vertices per `toolpath()` | 16,777,216",
         "| chord tolerance of drawn arcs | 0.2 px on screen; 0.01 mm",
         "| share link | 4 MiB",
         "| inflated link document | 2 MiB",

@@ -16,7 +16,9 @@ mod programs;
 use common::fixture;
 
 use offsetlab::toolpath::PathBuilder;
-use offsetlab::{Earlier, Reuse, Run, RunOptions, Setup, Toolpath, report_at, rerun_observed, run};
+use offsetlab::{
+    Checkpoints, Earlier, Reuse, Run, RunOptions, Setup, Toolpath, report_at, rerun_observed, run,
+};
 use proptest::prelude::*;
 
 const FIXTURES: [&str; 5] = [
@@ -36,16 +38,19 @@ fn page(every: u32) -> RunOptions {
     }
 }
 
-/// A run as the page makes it, with its toolpath, made again from
-/// `earlier` when given; also how many moves were actually made.
+/// A run as the page makes it: the run, its checkpoints and its toolpath.
+type PageRun = (Run, Checkpoints, Toolpath);
+
+/// A run as the page makes it, made again from `earlier` when given; also
+/// how many moves were actually made.
 fn page_run(
     text: &str,
     setup: &Setup,
     every: u32,
-    earlier: Option<(&str, &(Run, Toolpath))>,
-) -> ((Run, Toolpath), Reuse, usize) {
+    earlier: Option<(&str, &PageRun)>,
+) -> (PageRun, Reuse, usize) {
     let mut made = 0usize;
-    let mut builder = PathBuilder::new(setup.machine, setup.units, earlier.map(|(_, e)| &e.1));
+    let mut builder = PathBuilder::new(setup.machine, setup.units, earlier.map(|(_, e)| &e.2));
     struct Counting<'a, 'b>(&'a mut PathBuilder<'b>, &'a mut usize);
     impl offsetlab::Observer for Counting<'_, '_> {
         fn on_move(&mut self, m: &offsetlab::Move) {
@@ -56,8 +61,12 @@ fn page_run(
             self.0.on_resume(prefix_moves);
         }
     }
-    let earlier_run = earlier.map(|(text, e)| Earlier { text, run: &e.0 });
-    let (run, reuse) = rerun_observed(
+    let earlier_run = earlier.map(|(text, e)| Earlier {
+        text,
+        run: &e.0,
+        checkpoints: &e.1,
+    });
+    let (run, checkpoints, reuse) = rerun_observed(
         text,
         setup,
         page(every),
@@ -65,21 +74,26 @@ fn page_run(
         &mut Counting(&mut builder, &mut made),
     );
     let path = builder.finish(&run, &reuse);
-    ((run, path), reuse, made)
+    ((run, checkpoints, path), reuse, made)
 }
 
 /// The run made again is the whole run of `text`, checkpoints aside, and
 /// its checkpoints make every block's report again.
-fn assert_same_as_whole(text: &str, setup: &Setup, every: u32, got: &(Run, Toolpath)) {
-    let ((want, want_path), _, _) = page_run(text, setup, every, None);
-    let (got, got_path) = got;
+fn assert_same_as_whole(text: &str, setup: &Setup, every: u32, got: &PageRun) {
+    let ((want, want_checkpoints, want_path), _, _) = page_run(text, setup, every, None);
+    let (got, got_checkpoints, got_path) = got;
     let context = || format!("with a checkpoint every {every} blocks:\n{text}");
     assert_eq!(got.diagnostics, want.diagnostics, "{}", context());
     assert_eq!(got.block_count, want.block_count, "{}", context());
     assert_eq!(got.move_count, want.move_count, "{}", context());
     assert_eq!(got.end, want.end, "{}", context());
     assert_eq!(got.events, want.events, "{}", context());
-    assert_eq!(got.lines, want.lines, "{}", context());
+    assert_eq!(
+        got_checkpoints.lines,
+        want_checkpoints.lines,
+        "{}",
+        context()
+    );
     assert_eq!(got.registers, want.registers, "{}", context());
     assert_eq!(got.bounds, want.bounds, "{}", context());
     assert_eq!(
@@ -91,7 +105,7 @@ fn assert_same_as_whole(text: &str, setup: &Setup, every: u32, got: &(Run, Toolp
     assert_eq!(got_path, &want_path, "the toolpath {}", context());
     // The checkpoints: in order, at most `every` blocks apart, and each
     // block's report made again from them is the kept one.
-    let offsets: Vec<u32> = got.checkpoints.iter().map(|c| c.index).collect();
+    let offsets: Vec<u32> = got_checkpoints.points.iter().map(|c| c.index).collect();
     assert!(
         offsets
             .windows(2)
@@ -100,7 +114,7 @@ fn assert_same_as_whole(text: &str, setup: &Setup, every: u32, got: &(Run, Toolp
     );
     let full = run(text, setup);
     for (i, kept) in full.blocks.iter().enumerate() {
-        let again = report_at(text, setup, got, i as u32);
+        let again = report_at(text, setup, got_checkpoints, i as u32);
         assert_eq!(again.as_ref(), Some(kept), "block {i} {}", context());
     }
 }

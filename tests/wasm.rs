@@ -1,10 +1,13 @@
 //! Wasm contract tests: the core runs in Chromium (`wasm-pack test --headless
-//! --chrome -- --test wasm`) and these pin the shape JavaScript sees — field
-//! names, `null` (never `undefined`) for absent values, typed array classes
-//! and lengths — so the page and the core cannot drift apart silently.
+//! --chrome -- --test wasm`) and these pin what only a browser shows — the
+//! shape JavaScript sees (field names, `null`, never `undefined`, for absent
+//! values, the program buffer's addresses), what throws and what answers an
+//! error value, and the canvas's pixels — so the page and the core cannot
+//! drift apart silently. The session's rules are tested natively, in
+//! `tests/session.rs`.
 #![cfg(target_arch = "wasm32")]
 
-use js_sys::{Array, Float64Array, Function, JSON, Reflect, Uint8Array, Uint32Array};
+use js_sys::{Array, Function, JSON, Reflect, Uint8Array};
 use offsetlab::wasm::Session;
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::{wasm_bindgen_test, wasm_bindgen_test_configure};
@@ -13,16 +16,7 @@ use web_sys::{OffscreenCanvas, OffscreenCanvasRenderingContext2d};
 wasm_bindgen_test_configure!(run_in_browser);
 
 /// Seed 000 (spec's worked example): the G45–G48 square, register 01 = 6.
-const SQUARE: &str = "(SEED 000: SQUARE WITH G45-G48, REGISTER 01 = 6.)
-G90 G00 X-30. Y-20.;
-G91 G00 G46 X30. Y20. D01;
-G01 G47 X80. F200.;
-G47 Y50.;
-G47 X-80.;
-G47 Y-50.;
-G00 G46 X-30. Y-20.;
-M30;
-";
+const SQUARE: &str = include_str!("data/seed000_square.nc");
 
 fn json(text: &str) -> JsValue {
     JSON::parse(text).expect("test JSON parses")
@@ -66,10 +60,41 @@ fn square_setup() -> JsValue {
     json(r#"{"offsets":{"01":6.0}}"#)
 }
 
+/// Writes `bytes` at the start of the session's program buffer of `room`
+/// bytes, as the page's worker does with `TextEncoder.encodeInto`; false
+/// when the session had no room.
+fn write_program(s: &mut Session, bytes: &[u8], room: usize) -> bool {
+    let at = s.program_buffer(room);
+    if at.is_null() {
+        return false;
+    }
+    write_at(at, bytes);
+    true
+}
+
+/// Writes `bytes` at `at` in wasm memory (the address a session gave).
+fn write_at(at: *mut u8, bytes: &[u8]) {
+    let memory: js_sys::WebAssembly::Memory = wasm_bindgen::memory().unchecked_into();
+    let view = Uint8Array::new_with_byte_offset_and_length(
+        &memory.buffer(),
+        at as u32,
+        bytes.len() as u32,
+    );
+    view.copy_from(bytes);
+}
+
+/// Runs `program` with `setup` as the page's worker does: written into the
+/// session's program buffer, then `run_buffer`.
+fn run(s: &mut Session, program: impl AsRef<str>, setup: JsValue) -> JsValue {
+    let bytes = program.as_ref().as_bytes();
+    assert!(write_program(s, bytes, bytes.len()), "room for the program");
+    s.run_buffer(bytes.len(), setup, None).expect("run")
+}
+
 #[wasm_bindgen_test]
 fn run_returns_summary_and_diagnostics() {
     let mut s = Session::new();
-    let result = s.run(SQUARE.into(), square_setup()).expect("run");
+    let result = run(&mut s, SQUARE, square_setup());
     assert_keys(&result, &["summary", "diagnostics"]);
     let summary = get(&result, "summary");
     assert_keys(
@@ -95,7 +120,7 @@ fn run_returns_summary_and_diagnostics() {
 #[wasm_bindgen_test]
 fn block_shape_uses_null_for_absent_values() {
     let mut s = Session::new();
-    s.run(SQUARE.into(), square_setup()).expect("run");
+    run(&mut s, SQUARE, square_setup());
     // Block 1 is line 3: G91 G00 G46 X30. Y20. D01 from (-30, -20): the
     // programmed point is the origin, the actual one 6 short of it (seed 000).
     let b = s.block(1).expect("block");
@@ -146,58 +171,9 @@ fn block_shape_uses_null_for_absent_values() {
 }
 
 #[wasm_bindgen_test]
-fn toolpath_is_flat_typed_arrays() {
-    let mut s = Session::new();
-    s.run(SQUARE.into(), square_setup()).expect("run");
-    let t = s.toolpath().expect("toolpath");
-    assert_keys(
-        &t,
-        &[
-            "units",
-            "machine",
-            "actual",
-            "programmed",
-            "starts",
-            "kinds",
-            "blocks",
-            "lines",
-        ],
-    );
-    assert_eq!(string(&t, "units"), "mm");
-    assert_eq!(string(&t, "machine"), "mill");
-    let actual: Float64Array = get(&t, "actual").dyn_into().expect("Float64Array");
-    let programmed: Float64Array = get(&t, "programmed").dyn_into().expect("Float64Array");
-    let starts: Uint32Array = get(&t, "starts").dyn_into().expect("Uint32Array");
-    let kinds: Uint8Array = get(&t, "kinds").dyn_into().expect("Uint8Array");
-    let blocks: Uint32Array = get(&t, "blocks").dyn_into().expect("Uint32Array");
-    let lines: Uint32Array = get(&t, "lines").dyn_into().expect("Uint32Array");
-    let moves = kinds.length();
-    assert_eq!(moves, 7, "seed 000 makes seven moves");
-    assert_eq!(starts.length(), moves + 1);
-    assert_eq!(blocks.length(), moves);
-    assert_eq!(lines.length(), moves);
-    let vertices = starts.get_index(starts.length() - 1);
-    assert_eq!(actual.length(), 3 * vertices);
-    assert_eq!(programmed.length(), 3 * vertices);
-    // Rapid, rapid, then four feeds, then the rapid home (kinds 0 and 1).
-    assert_eq!(kinds.to_vec(), vec![0, 0, 1, 1, 1, 1, 0]);
-    assert_eq!(lines.get_index(2), 4);
-    // The second move ends at the actual point (-6, -6), the programmed
-    // one at the origin.
-    let end = 3 * (starts.get_index(2) as usize - 1);
-    assert_eq!(&actual.to_vec()[end..end + 3], &[-6.0, -6.0, 0.0]);
-    assert_eq!(&programmed.to_vec()[end..end + 3], &[0.0, 0.0, 0.0]);
-    // A copy: a later run does not change arrays JS already holds.
-    s.run("G00 X1.".into(), JsValue::NULL).expect("run");
-    assert_eq!(kinds.length(), 7);
-}
-
-#[wasm_bindgen_test]
 fn a_syntax_error_is_a_diagnostic_with_line_and_column() {
     let mut s = Session::new();
-    let result = s
-        .run("G00 X10.\nG01 X1.2.3 F100.\n".into(), JsValue::UNDEFINED)
-        .expect("run");
+    let result = run(&mut s, "G00 X10.\nG01 X1.2.3 F100.\n", JsValue::UNDEFINED);
     let diagnostics = array(&get(&result, "diagnostics"));
     assert_eq!(diagnostics.length(), 1);
     let d = diagnostics.get(0);
@@ -236,7 +212,7 @@ fn a_bad_setup_gives_diagnostics_not_an_exception() {
     ];
     for setup in cases {
         let mut s = Session::new();
-        let result = s.run(SQUARE.into(), setup).expect("never throws");
+        let result = run(&mut s, SQUARE, setup);
         let diagnostics = array(&get(&result, "diagnostics"));
         assert!(diagnostics.length() >= 1);
         for d in diagnostics.iter() {
@@ -244,8 +220,8 @@ fn a_bad_setup_gives_diagnostics_not_an_exception() {
             assert_eq!(num(&d, "line"), 0.0);
             assert_eq!(string(&d, "severity"), "error");
         }
-        let t = s.toolpath().expect("toolpath");
-        assert_eq!(get(&t, "kinds").unchecked_into::<Uint8Array>().length(), 0);
+        // An empty path (its toolpath: tests/session.rs).
+        assert_eq!(num(&get(&result, "summary"), "moves"), 0.0);
         assert_eq!(s.block_count(), 0);
         assert!(get(&get(&result, "summary"), "bounds").is_null());
     }
@@ -254,12 +230,11 @@ fn a_bad_setup_gives_diagnostics_not_an_exception() {
 #[wasm_bindgen_test]
 fn setup_may_be_json_text() {
     let mut s = Session::new();
-    let result = s
-        .run(
-            SQUARE.into(),
-            JsValue::from_str(r#"{"offsets":{"01":6.0}}"#),
-        )
-        .expect("run");
+    let result = run(
+        &mut s,
+        SQUARE,
+        JsValue::from_str(r#"{"offsets":{"01":6.0}}"#),
+    );
     assert_eq!(num(&get(&result, "summary"), "errors"), 0.0);
     let setup = s.setup().expect("setup");
     assert_eq!(num(&get(&setup, "offsets"), "01"), 6.0);
@@ -270,12 +245,11 @@ fn setup_may_be_json_text() {
 fn lathe_positions_have_x_and_z_only() {
     let mut s = Session::new();
     let setup = json(r#"{"machine":"lathe","lathe_offsets":{"08":{"x":0.4,"z":-0.2}}}"#);
-    let result = s
-        .run(
-            "G50 X120. Z60.\nG00 S800 M03 T0108;\nX50. Z3.;\nT0100;".into(),
-            setup,
-        )
-        .expect("run");
+    let result = run(
+        &mut s,
+        "G50 X120. Z60.\nG00 S800 M03 T0108;\nX50. Z3.;\nT0100;",
+        setup,
+    );
     assert_eq!(num(&get(&result, "summary"), "errors"), 0.0);
     assert_eq!(string(&get(&result, "summary"), "machine"), "lathe");
     let b = s.block(1).expect("block");
@@ -289,8 +263,6 @@ fn lathe_positions_have_x_and_z_only() {
     assert_eq!(num(&lathe, "offset"), 8.0);
     assert_eq!(num(&get(&lathe, "value"), "x"), 0.4);
     assert!(!has(&b, "length_offset") && !has(&b, "position_offset"));
-    let t = s.toolpath().expect("toolpath");
-    assert_eq!(string(&t, "machine"), "lathe");
     // The svg backend draws the lathe's ZX view with its centre line.
     let svg = s.render_svg(400, 300);
     assert!(svg.contains("centre line"));
@@ -299,7 +271,7 @@ fn lathe_positions_have_x_and_z_only() {
 #[wasm_bindgen_test]
 fn render_draws_on_an_offscreen_canvas_at_device_pixels() {
     let mut s = Session::new();
-    s.run(SQUARE.into(), square_setup()).expect("run");
+    run(&mut s, SQUARE, square_setup());
     // Without a canvas, render does nothing and does not throw.
     s.render(300, 200, 2.0).expect("render without canvas");
     let canvas = OffscreenCanvas::new(10, 10).expect("OffscreenCanvas");
@@ -364,7 +336,7 @@ fn a_large_path_is_drawn_as_pixels_and_moved_while_the_view_moves() {
         program.push_str(&format!("X{}. Y{}.\n", i % 100, (i % 2) * 50));
     }
     let mut s = Session::new();
-    s.run(program.clone(), JsValue::NULL).expect("run");
+    run(&mut s, program.clone(), JsValue::NULL);
     let canvas = OffscreenCanvas::new(10, 10).expect("OffscreenCanvas");
     s.attach_canvas(canvas.clone()).expect("attach");
     // Before a whole frame there is nothing to move: it draws in full.
@@ -377,12 +349,15 @@ fn a_large_path_is_drawn_as_pixels_and_moved_while_the_view_moves() {
     assert!(s.render_moving(400, 300, 2.0).expect("render_moving"));
     assert!(painted_pixels(&canvas) > whole / 2);
     // A run of the same path keeps the drawing: it is still moved.
-    s.run(program.clone(), JsValue::NULL).expect("run");
+    run(&mut s, program.clone(), JsValue::NULL);
     assert!(s.render_moving(400, 300, 2.0).expect("render_moving"));
     // Another path (or plane, step, colours, size): drawn in full again;
     // the same view asked for again is that frame, nothing is drawn.
-    s.run(program.replace("X7. Y50.", "X7. Y40."), JsValue::NULL)
-        .expect("run");
+    run(
+        &mut s,
+        program.replace("X7. Y50.", "X7. Y40."),
+        JsValue::NULL,
+    );
     assert!(!s.render_moving(400, 300, 2.0).expect("render_moving"));
     assert!(!s.render_moving(400, 300, 2.0).expect("render_moving"));
     s.pan_by(10.0, 0.0);
@@ -407,9 +382,10 @@ fn pan_of(v: &JsValue) -> (f64, f64) {
 }
 
 #[wasm_bindgen_test]
-fn view_state_is_plane_zoom_pan_and_step() {
+fn view_state_is_a_plain_object_with_null_for_no_step() {
+    // The rules (ranges, planes, zoom and pan, the lathe's ZX): tests/session.rs.
     let mut s = Session::new();
-    s.run(SQUARE.into(), square_setup()).expect("run");
+    run(&mut s, SQUARE, square_setup());
     let v = view_of(&s);
     assert_eq!(string(&v, "plane"), "XY");
     assert_eq!(num(&v, "zoom"), 1.0);
@@ -425,84 +401,33 @@ fn view_state_is_plane_zoom_pan_and_step() {
     assert_ne!(pan_of(&v), (0.0, 0.0));
     s.fit();
     assert_eq!(pan_of(&view_of(&s)), (0.0, 0.0));
-    // Planes: the mill has XY, XZ, YZ; ZX is the lathe's.
     assert!(s.set_plane("xz"));
     assert!(!s.set_plane("ZX"));
-    assert!(!s.set_plane("QQ"));
     assert_eq!(string(&view_of(&s), "plane"), "XZ");
-    // set_view reads what view writes, and limits the values.
+    // set_view reads what view writes, and answers the view state.
     let v = s
         .set_view(json(r#"{"plane":"YZ","zoom":1e9,"pan":[5,-2],"step":3}"#))
         .expect("set_view");
+    assert_keys(&v, &["plane", "zoom", "pan", "step"]);
     assert_eq!(string(&v, "plane"), "YZ");
     assert_eq!(num(&v, "zoom"), 1e6);
     assert_eq!(pan_of(&v), (5.0, -2.0));
     assert_eq!(num(&v, "step"), 3.0);
-    assert!(s.set_view(json(r#"{"zoom":"big"}"#)).is_err());
-    // A lathe run is drawn in ZX.
-    s.run("G50 X120. Z60.\nG00 X50. Z3.".into(), JsValue::NULL)
-        .expect("run");
-    s.run(
-        "G50 X120. Z60.\nG00 X50. Z3.".into(),
-        json(r#"{"machine":"lathe"}"#),
-    )
-    .expect("run");
-    assert_eq!(string(&view_of(&s), "plane"), "ZX");
-}
-
-#[wasm_bindgen_test]
-fn step_is_clamped_and_follows_the_end() {
-    let mut s = Session::new();
-    s.run(SQUARE.into(), square_setup()).expect("run");
-    assert_eq!(s.step(), -1);
-    assert_eq!(s.set_step(2), 2);
-    assert_eq!(s.set_step(999), 7, "past the end: the last block");
-    assert_eq!(s.set_step(-5), -1);
-    // At the last block, a longer program keeps the session at its last block.
-    s.set_step(7);
-    let longer = SQUARE.replace("M30;\n", "G01 X5.;\nM30;\n");
-    s.run(longer.clone(), square_setup()).expect("run");
-    assert_eq!(s.step(), 8);
-    // Elsewhere, the step stays; past a shorter program's end it is clamped.
-    s.set_step(2);
-    s.run(SQUARE.into(), square_setup()).expect("run");
-    assert_eq!(s.step(), 2);
-    s.run("G00 X1.".into(), JsValue::NULL).expect("run");
-    assert_eq!(s.step(), 0);
-    // A block set by the user stays set when a run stops at an error just
-    // after it (it is then the last block) and the next run mends it: the
-    // current block does not jump to the program's end.
-    s.run(SQUARE.into(), square_setup()).expect("run");
-    s.set_step(3);
-    let broken = SQUARE.replacen("G47 X-80.", "G47 X-80. Q", 1);
-    s.run(broken.clone(), square_setup()).expect("run");
-    assert_eq!(s.step(), 3);
-    s.run(SQUARE.into(), square_setup()).expect("run");
-    assert_eq!(s.step(), 3);
-    // At the end it follows the end, across a run stopped at an error too.
-    s.set_step(7);
-    s.run(broken, square_setup()).expect("run");
-    s.run(longer, square_setup()).expect("run");
-    assert_eq!(s.step(), 8);
-}
-
-#[wasm_bindgen_test]
-fn block_at_line_is_the_last_block_at_or_before_the_line() {
-    let mut s = Session::new();
-    s.run(SQUARE.into(), square_setup()).expect("run");
-    // Line 1 is a comment before any block.
-    assert_eq!(s.block_at_line(1), -1);
-    assert_eq!(s.block_at_line(2), 0);
-    assert_eq!(s.block_at_line(3), 1);
-    assert_eq!(s.block_at_line(9), 7);
-    assert_eq!(s.block_at_line(500), 7);
-    assert_eq!(s.block_at_line(0), -1);
+    let again = s.set_view(view_of(&s)).expect("set_view");
+    assert_eq!(stringify(&again), stringify(&v));
+    // An object of another shape throws an Error saying what is wrong.
+    let e = s
+        .set_view(json(r#"{"zoom":"big"}"#))
+        .expect_err("a bad view");
+    let e = JsValue::from(e);
+    assert!(e.is_instance_of::<js_sys::Error>());
+    assert!(string(&e, "message").starts_with("view: "), "{e:?}");
 }
 
 #[wasm_bindgen_test]
 fn pick_returns_the_block_under_the_pointer() {
     let mut s = Session::new();
-    s.run(SQUARE.into(), square_setup()).expect("run");
+    run(&mut s, SQUARE, square_setup());
     // Nothing drawn yet: -1.
     assert_eq!(s.pick(10.0, 10.0, 6.0), -1);
     let canvas = OffscreenCanvas::new(10, 10).expect("OffscreenCanvas");
@@ -527,7 +452,7 @@ fn pick_returns_the_block_under_the_pointer() {
 #[wasm_bindgen_test]
 fn dark_theme_and_step_draw_on_the_canvas() {
     let mut s = Session::new();
-    s.run(SQUARE.into(), square_setup()).expect("run");
+    run(&mut s, SQUARE, square_setup());
     let canvas = OffscreenCanvas::new(10, 10).expect("OffscreenCanvas");
     s.attach_canvas(canvas.clone()).expect("attach");
     s.set_theme("dark");
@@ -571,7 +496,7 @@ fn native(value: &JsValue) -> Document {
 #[wasm_bindgen_test]
 fn document_is_program_setup_view_and_step() {
     let mut s = Session::new();
-    s.run(SQUARE.into(), square_setup()).expect("run");
+    run(&mut s, SQUARE, square_setup());
     // The machine's default view and no current block: both null.
     let d = s.document().expect("document");
     assert_keys(
@@ -602,7 +527,7 @@ fn document_is_program_setup_view_and_step() {
 #[wasm_bindgen_test]
 fn links_round_trip_through_the_exports() {
     let mut s = Session::new();
-    s.run(SQUARE.into(), square_setup()).expect("run");
+    run(&mut s, SQUARE, square_setup());
     s.set_view(json(r#"{"plane":"YZ","step":2}"#))
         .expect("set_view");
     let d = s.document().expect("document");
@@ -712,7 +637,7 @@ fn golden_links_decode_in_wasm_to_the_native_documents() {
 #[wasm_bindgen_test]
 fn document_files_read_and_write() {
     let mut s = Session::new();
-    s.run(SQUARE.into(), square_setup()).expect("run");
+    run(&mut s, SQUARE, square_setup());
     s.set_step(4);
     let text = document_json(s.document().expect("document")).expect("json");
     assert!(text.contains("\n  \"program\": "), "indented: {text}");
@@ -737,78 +662,6 @@ fn document_files_read_and_write() {
     assert_eq!(string(&limits, "default_base"), "http://127.0.0.1:8000/");
 }
 
-#[wasm_bindgen_test]
-fn moves_export_as_the_cli_json_and_csv() {
-    let mut s = Session::new();
-    s.run(SQUARE.into(), square_setup()).expect("run");
-    let file: serde_json::Value = serde_json::from_str(&s.moves_json()).expect("JSON");
-    let moves = file["moves"].as_array().expect("moves");
-    assert_eq!(moves.len(), 7);
-    assert_eq!(file["summary"]["machine"], "mill");
-    assert_eq!(
-        moves[1]["to"],
-        serde_json::json!({"x": -6.0, "y": -6.0, "z": 0.0})
-    );
-    assert_eq!(moves[1]["programmed_to"]["x"], 0.0);
-    let csv = s.moves_csv();
-    let lines: Vec<&str> = csv.split("\r\n").filter(|l| !l.is_empty()).collect();
-    assert_eq!(lines.len(), 8);
-    assert!(lines[0].starts_with("line,block,kind,rate,from_x,from_y,from_z,to_x"));
-    assert!(
-        lines[2].starts_with("3,1,rapid,,-30,-20,0,-6,-6,0,"),
-        "{}",
-        lines[2]
-    );
-    // After a refused setup nothing ran: the exports have no moves (and the
-    // program is not run again with some other setup).
-    s.run(SQUARE.into(), JsValue::from_str("{\"version\": 99}"))
-        .expect("run");
-    let file: serde_json::Value = serde_json::from_str(&s.moves_json()).expect("JSON");
-    assert_eq!(file["moves"].as_array().map(Vec::len), Some(0));
-    assert_eq!(
-        s.moves_csv()
-            .split("\r\n")
-            .filter(|l| !l.is_empty())
-            .count(),
-        1
-    );
-}
-
-#[wasm_bindgen_test]
-fn run_with_progress_reports_growing_fractions_and_the_same_result() {
-    // 3 MiB of program: a progress call after each MiB read.
-    let program = "G01 X1. Y2. F100.\nG01 X3. Y4.\n".repeat(110_000);
-    let seen = Array::new();
-    let record: Function =
-        JsValue::from(Function::new_with_args("a, f", "a.push(f)").bind1(&JsValue::NULL, &seen))
-            .unchecked_into();
-    let mut s = Session::new();
-    let with = s
-        .run_with_progress(program.clone(), square_setup(), &record)
-        .expect("run");
-    let fractions: Vec<f64> = seen.iter().map(|v| v.as_f64().expect("a number")).collect();
-    assert!(fractions.len() >= 2, "{fractions:?}");
-    assert!(fractions.windows(2).all(|w| w[0] < w[1]), "{fractions:?}");
-    assert!(
-        fractions.iter().all(|f| *f > 0.0 && *f <= 1.0),
-        "{fractions:?}"
-    );
-    let without = Session::new()
-        .run(program.clone(), square_setup())
-        .expect("run");
-    assert_eq!(
-        JSON::stringify(&get(&with, "summary")).unwrap(),
-        JSON::stringify(&get(&without, "summary")).unwrap()
-    );
-    // A callback that throws does not stop the run.
-    let throwing: Function =
-        JsValue::from(Function::new_with_args("f", "throw new Error('no')")).unchecked_into();
-    let r = s
-        .run_with_progress(program.clone(), square_setup(), &throwing)
-        .expect("run");
-    assert_eq!(num(&get(&r, "summary"), "blocks"), 220_000.0);
-}
-
 /// A large program of feed moves and arcs, with N numbers.
 fn numbered_program(blocks: usize) -> String {
     let mut program = String::from("N1 G90 G00 X0 Y0\nN2 G01 F100.\n");
@@ -823,49 +676,10 @@ fn numbered_program(blocks: usize) -> String {
 }
 
 #[wasm_bindgen_test]
-fn an_edit_is_run_again_from_the_last_run_with_the_result_of_a_whole_run() {
-    let program = numbered_program(3000);
-    let edits = [
-        program.replacen("N1500 G01 X", "N1500 G01 X1", 1),
-        program.replacen("N1500 ", "N15007 ", 1),
-        program.replacen("N2000 G01", "(A NOTE)\nN2000 G01", 1),
-        program.replacen("N10 G01 X7.", "N10 G01 X7. Y1 E2", 1),
-        program.replacen("N2", "N2 G91", 1),
-    ];
-    for edited in edits {
-        let mut again = Session::new();
-        again.run(program.clone(), JsValue::NULL).expect("run");
-        let got = again.run(edited.clone(), JsValue::NULL).expect("run again");
-        let mut fresh = Session::new();
-        let want = fresh.run(edited.clone(), JsValue::NULL).expect("run");
-        assert_eq!(stringify(&got), stringify(&want), "{}", &edited[..60]);
-        let (a, b) = (
-            again.toolpath().expect("toolpath"),
-            fresh.toolpath().expect("toolpath"),
-        );
-        for key in ["actual", "programmed", "starts", "kinds", "blocks", "lines"] {
-            assert_eq!(
-                stringify(&Array::from(&get(&a, key))),
-                stringify(&Array::from(&get(&b, key))),
-                "{key}"
-            );
-        }
-        assert_eq!(again.block_count(), fresh.block_count());
-        for index in [0, 1499, 1500, 2999] {
-            assert_eq!(
-                stringify(&again.block(index).expect("block")),
-                stringify(&fresh.block(index).expect("block")),
-                "block {index}"
-            );
-        }
-    }
-}
-
-#[wasm_bindgen_test]
 fn a_run_that_changes_nothing_drawn_leaves_the_canvas_as_it_is() {
     let program = numbered_program(3000);
     let mut s = Session::new();
-    s.run(program.clone(), JsValue::NULL).expect("run");
+    run(&mut s, program.clone(), JsValue::NULL);
     let canvas = OffscreenCanvas::new(10, 10).expect("OffscreenCanvas");
     s.attach_canvas(canvas.clone()).expect("attach");
     s.render(400, 300, 1.0).expect("render");
@@ -877,16 +691,19 @@ fn a_run_that_changes_nothing_drawn_leaves_the_canvas_as_it_is() {
     let black = painted_pixels(&canvas);
     assert!(black > drawn);
     // An N number typed: the same path, the same frame — not drawn again.
-    s.run(program.replacen("N1500 ", "N15007 ", 1), JsValue::NULL)
-        .expect("run");
+    run(
+        &mut s,
+        program.replacen("N1500 ", "N15007 ", 1),
+        JsValue::NULL,
+    );
     s.render(400, 300, 1.0).expect("render");
     assert_eq!(painted_pixels(&canvas), black);
     // A coordinate typed: the path moved, the frame is drawn again.
-    s.run(
+    run(
+        &mut s,
         program.replacen("N1500 G01 X", "N1500 G01 X1", 1),
         JsValue::NULL,
-    )
-    .expect("run");
+    );
     s.render(400, 300, 1.0).expect("render");
     let again = painted_pixels(&canvas);
     assert!(again < black && again > drawn / 2, "{again} of {black}");
@@ -896,7 +713,7 @@ fn a_run_that_changes_nothing_drawn_leaves_the_canvas_as_it_is() {
 /// drawn by a new session on a new canvas; and both.
 fn whole_frame(program: &str, step: Option<i32>, dpr: f64) -> (Session, OffscreenCanvas) {
     let mut s = Session::new();
-    s.run(program.into(), JsValue::NULL).expect("run");
+    run(&mut s, program, JsValue::NULL);
     let canvas = OffscreenCanvas::new(10, 10).expect("OffscreenCanvas");
     s.attach_canvas(canvas.clone()).expect("attach");
     if let Some(step) = step {
@@ -933,7 +750,7 @@ fn an_edit_is_painted_where_it_changed_with_the_pixels_of_a_whole_frame() {
                 .expect("transform");
             ctx.set_fill_style_str("#ff00ff");
             ctx.fill_rect(0.0, 0.0, 1.0, 1.0);
-            s.run(then.clone(), JsValue::NULL).expect("run");
+            run(&mut s, then.clone(), JsValue::NULL);
             if let Some(step) = step {
                 s.set_step(step);
             }
@@ -986,7 +803,7 @@ fn typing_back_and_forth_across_views_paints_the_pixels_of_a_whole_frame() {
             .into_iter()
             .enumerate()
         {
-            s.run(then.clone(), JsValue::NULL).expect("run");
+            run(&mut s, then.clone(), JsValue::NULL);
             s.render(400, 300, dpr).expect("render");
             let whole = canvas_pixels(&whole_frame(then, None, dpr).1);
             let painted = canvas_pixels(&canvas);
@@ -1000,120 +817,61 @@ fn typing_back_and_forth_across_views_paints_the_pixels_of_a_whole_frame() {
     }
 }
 
-/// Writes `bytes` at the start of the session's program buffer of `room`
-/// bytes, as the page's worker does with `TextEncoder.encodeInto`; false
-/// when the session had no room.
-fn write_program(s: &mut Session, bytes: &[u8], room: usize) -> bool {
-    let at = s.program_buffer(room);
-    if at.is_null() {
-        return false;
-    }
-    let memory: js_sys::WebAssembly::Memory = wasm_bindgen::memory().unchecked_into();
-    let view =
-        Uint8Array::new_with_byte_offset_and_length(&memory.buffer(), at as u32, room as u32);
-    view.subarray(0, bytes.len() as u32).copy_from(bytes);
-    true
-}
-
-/// Everything JavaScript reads of a run: its result, the toolpath's
-/// arrays and the last block's report.
-type Seen = (
-    String,
-    Vec<f64>,
-    Vec<f64>,
-    Vec<u32>,
-    Vec<u8>,
-    Vec<u32>,
-    Vec<u32>,
-    String,
-);
-
-fn seen(s: &Session, result: &JsValue) -> Seen {
-    let t = s.toolpath().expect("toolpath");
-    let f64s = |k: &str| get(&t, k).unchecked_into::<Float64Array>().to_vec();
-    let u32s = |k: &str| get(&t, k).unchecked_into::<Uint32Array>().to_vec();
-    let last = s.block(s.block_count().saturating_sub(1)).expect("block");
-    (
-        stringify(result),
-        f64s("actual"),
-        f64s("programmed"),
-        u32s("starts"),
-        get(&t, "kinds").unchecked_into::<Uint8Array>().to_vec(),
-        u32s("blocks"),
-        u32s("lines"),
-        stringify(&last),
-    )
+#[wasm_bindgen_test]
+fn progress_calls_get_growing_fractions_and_a_throwing_one_does_not_stop_the_run() {
+    // 3 MiB of program: a progress call after each MiB read.
+    let program = "G01 X1. Y2. F100.\nG01 X3. Y4.\n".repeat(110_000);
+    let seen = Array::new();
+    let record: Function =
+        JsValue::from(Function::new_with_args("a, f", "a.push(f)").bind1(&JsValue::NULL, &seen))
+            .unchecked_into();
+    let mut s = Session::new();
+    assert!(write_program(&mut s, program.as_bytes(), program.len()));
+    let with = s
+        .run_buffer(program.len(), square_setup(), Some(record))
+        .expect("run");
+    let fractions: Vec<f64> = seen.iter().map(|v| v.as_f64().expect("a number")).collect();
+    assert!(fractions.len() >= 2, "{fractions:?}");
+    assert!(fractions.windows(2).all(|w| w[0] < w[1]), "{fractions:?}");
+    assert!(
+        fractions.iter().all(|f| *f > 0.0 && *f <= 1.0),
+        "{fractions:?}"
+    );
+    let without = run(&mut Session::new(), &program, square_setup());
+    assert_eq!(
+        stringify(&get(&with, "summary")),
+        stringify(&get(&without, "summary"))
+    );
+    // A callback that throws does not stop the run.
+    let throwing: Function =
+        JsValue::from(Function::new_with_args("f", "throw new Error('no')")).unchecked_into();
+    assert!(write_program(&mut s, program.as_bytes(), program.len()));
+    let r = s
+        .run_buffer(program.len(), square_setup(), Some(throwing))
+        .expect("run");
+    assert_eq!(num(&get(&r, "summary"), "blocks"), 220_000.0);
 }
 
 #[wasm_bindgen_test]
-fn a_program_written_into_the_buffer_runs_as_its_text_does() {
-    // 2.6 MiB, beyond ASCII: the toolpath's room is foreseen after the
-    // first MiB (PathBuilder::foresee), the columns count characters.
-    let program = format!(
-        "(Fräsen — 2 µm)\n{}(ß) G01 X1.2.3\n",
-        "G01 X1. Y2. F100.\nG02 X3. Y4. R5.\n".repeat(80_000)
-    );
-    let mut by_text = Session::new();
-    let text_result = by_text.run(program.clone(), square_setup()).expect("run");
-    let mut by_buffer = Session::new();
-    assert!(write_program(
-        &mut by_buffer,
-        program.as_bytes(),
-        program.len()
-    ));
-    let buffer_result = by_buffer
+fn the_program_buffer_is_wasm_memory_at_the_address_returned() {
+    // The rules (lengths, edits, U+FFFD, what is kept): tests/session.rs.
+    // Beyond ASCII: the columns count characters.
+    let program = "(Fräsen — 2 µm)\nG01 X1. Y2. F100.\n(ß) G01 X1.2.3\n";
+    let mut s = Session::new();
+    assert!(write_program(&mut s, program.as_bytes(), program.len()));
+    let r = s
         .run_buffer(program.len(), square_setup(), None)
         .expect("run");
-    assert_eq!(
-        seen(&by_buffer, &buffer_result),
-        seen(&by_text, &text_result)
-    );
-    let diagnostics = array(&get(&buffer_result, "diagnostics"));
+    assert_eq!(num(&get(&r, "summary"), "blocks"), 1.0);
+    let diagnostics = array(&get(&r, "diagnostics"));
     assert_eq!(num(&diagnostics.get(0), "column"), 9.0);
 
-    // Invalid UTF-8 reads as U+FFFD, as the page's decoder shows it.
-    let mut s = Session::new();
-    let bytes = b"G00 X1.\n(\xff\xfe)\nG01 X2. F1. Y\xc3\n";
-    assert!(write_program(&mut s, bytes, bytes.len()));
-    let r = s.run_buffer(bytes.len(), JsValue::NULL, None).expect("run");
-    let mut t = Session::new();
-    let text = String::from_utf8_lossy(bytes).into_owned();
-    let tr = t.run(text, JsValue::NULL).expect("run");
-    assert_eq!(seen(&s, &r), seen(&t, &tr));
-
-    // A length past the room runs what the room holds; no room, nothing.
-    assert!(write_program(&mut s, b"G00 X7.", 7));
-    let r = s.run_buffer(1 << 20, JsValue::NULL, None).expect("run");
-    assert_eq!(num(&get(&r, "summary"), "moves"), 1.0);
-    assert!(
-        s.program_buffer(u32::MAX as usize).is_null(),
-        "more than wasm32 can hold"
-    );
-    let r = s.run_buffer(100, JsValue::NULL, None).expect("run");
-    assert_eq!(num(&get(&r, "summary"), "blocks"), 0.0);
-}
-
-/// Writes `bytes` at `at` in wasm memory (the address a session gave).
-fn write_at(at: *mut u8, bytes: &[u8]) {
-    let memory: js_sys::WebAssembly::Memory = wasm_bindgen::memory().unchecked_into();
-    let view = Uint8Array::new_with_byte_offset_and_length(
-        &memory.buffer(),
-        at as u32,
-        bytes.len() as u32,
-    );
-    view.copy_from(bytes);
-}
-
-#[wasm_bindgen_test]
-fn an_edit_made_in_the_buffer_runs_as_the_edited_text_does() {
+    // "X10." becomes "X12.5", as the page's worker makes a typed edit.
     let program = "G00 X0 Y0\nG01 X10. F100.\nG01 Y10.\n";
-    let mut s = Session::new();
     assert!(write_program(&mut s, program.as_bytes(), program.len()));
     s.run_buffer(program.len(), JsValue::NULL, None)
         .expect("run");
-    // "X10." becomes "X12.5", as the page's worker makes a typed edit.
-    let (from, to) = (15, 18);
-    let at = s.program_splice(program.len(), from, to, 4);
+    let at = s.program_splice(program.len(), 15, 18, 4);
     assert!(!at.is_null());
     write_at(at, b"12.5");
     let edited = "G00 X0 Y0\nG01 X12.5 F100.\nG01 Y10.\n";
@@ -1121,19 +879,24 @@ fn an_edit_made_in_the_buffer_runs_as_the_edited_text_does() {
         .run_buffer(edited.len(), JsValue::NULL, None)
         .expect("run");
     let mut t = Session::new();
-    let tr = t.run(edited.to_string(), JsValue::NULL).expect("run");
-    assert_eq!(seen(&s, &r), seen(&t, &tr));
-    // And again, on the text just run (a line added at the end).
-    let at = s.program_splice(edited.len(), edited.len(), edited.len(), 9);
-    write_at(at, b"G00 Z5.\n\n");
-    let again = format!("{edited}G00 Z5.\n\n");
-    let r = s.run_buffer(again.len(), JsValue::NULL, None).expect("run");
-    let tr = t.run(again.clone(), JsValue::NULL).expect("run");
-    assert_eq!(seen(&s, &r), seen(&t, &tr));
-    // Not the length of the text held, or not within it: refused, and the
-    // buffer is empty (the worker then writes the whole text).
-    assert!(s.program_splice(again.len() + 1, 0, 0, 0).is_null());
-    assert!(s.program_splice(0, 0, 1, 0).is_null());
-    let r = s.run_buffer(again.len(), JsValue::NULL, None).expect("run");
+    let tr = run(&mut t, edited, JsValue::NULL);
+    assert_eq!(stringify(&r), stringify(&tr));
+    assert_eq!(
+        stringify(&s.block(2).expect("block")),
+        stringify(&t.block(2).expect("block"))
+    );
+    // Not the length of the text held: 0, and the buffer is empty (the
+    // worker then writes the whole text).
+    assert!(s.program_splice(edited.len() + 1, 0, 0, 0).is_null());
+    let r = s
+        .run_buffer(edited.len(), JsValue::NULL, None)
+        .expect("run");
+    assert_eq!(num(&get(&r, "summary"), "blocks"), 0.0);
+    // No room: 0, and nothing to run.
+    assert!(
+        s.program_buffer(u32::MAX as usize).is_null(),
+        "more than wasm32 can hold"
+    );
+    let r = s.run_buffer(100, JsValue::NULL, None).expect("run");
     assert_eq!(num(&get(&r, "summary"), "blocks"), 0.0);
 }

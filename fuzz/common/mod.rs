@@ -245,24 +245,29 @@ pub fn check_run_with(setup: &Setup, program: &str, max_moves: usize) {
             );
         }
     }
+    // At the chord tolerance of the vector outputs, both paths: every move
+    // has its two ends at least, every point finite.
     if full.moves.len() <= 2_000 {
-        let lines = path.polylines();
-        assert_eq!(lines.actual.len(), lines.programmed.len());
-        assert_eq!(lines.starts.len(), full.moves.len() + 1);
-        assert_eq!(
-            *lines.starts.last().unwrap() as usize * 3,
-            lines.actual.len()
-        );
-        assert!(lines.starts.windows(2).all(|w| w[0] < w[1]), "empty move");
-        assert!(
-            lines.actual.iter().all(|v| v.is_finite()),
-            "NaN in polylines"
-        );
+        assert_eq!(path.actual.len(), path.programmed.len());
+        for programmed in [false, true] {
+            let mut points = vec![0usize; path.len()];
+            path.for_each_point(
+                0..path.len(),
+                programmed,
+                (offsetlab::toolpath::CHORD_TOLERANCE, ArcPoints::Exact),
+                |_| true,
+                |m, _, p| {
+                    assert!(finite(&p), "NaN in a tessellated move: {p:?}");
+                    points[m] += 1;
+                },
+            );
+            assert!(points.iter().all(|&n| n >= 2), "empty move");
+        }
     }
 
     // The page's way: checkpoints, reports made again equal the kept ones.
     if full.block_count <= 300 {
-        let light = run_with(
+        let (light, checkpoints) = offsetlab::run_observed(
             program,
             setup,
             RunOptions {
@@ -271,10 +276,11 @@ pub fn check_run_with(setup: &Setup, program: &str, max_moves: usize) {
                 max_moves,
                 ..RunOptions::default()
             },
+            &mut (),
         );
         assert_eq!(light.block_count, full.block_count);
         for b in &full.blocks {
-            let again = offsetlab::report_at(program, setup, &light, b.index);
+            let again = offsetlab::report_at(program, setup, &checkpoints, b.index);
             assert_eq!(again.as_ref(), Some(b), "block {} made again", b.index);
         }
         check_runs_made_again(setup, program, max_moves);
@@ -466,12 +472,18 @@ fn check_runs_made_again(setup: &Setup, program: &str, max_moves: usize) {
         max_moves,
         ..RunOptions::default()
     };
-    let page_run = |text: &str, earlier: Option<(&str, &(offsetlab::Run, Toolpath))>| {
-        let mut b = PathBuilder::new(setup.machine, setup.units, earlier.map(|(_, e)| &e.1));
-        let earlier = earlier.map(|(text, e)| offsetlab::Earlier { text, run: &e.0 });
-        let (run, reuse) = offsetlab::rerun_observed(text, setup, options, earlier, &mut b);
+    type PageRun = (offsetlab::Run, offsetlab::Checkpoints, Toolpath);
+    let page_run = |text: &str, earlier: Option<(&str, &PageRun)>| {
+        let mut b = PathBuilder::new(setup.machine, setup.units, earlier.map(|(_, e)| &e.2));
+        let earlier = earlier.map(|(text, e)| offsetlab::Earlier {
+            text,
+            run: &e.0,
+            checkpoints: &e.1,
+        });
+        let (run, checkpoints, reuse) =
+            offsetlab::rerun_observed(text, setup, options, earlier, &mut b);
         let path = b.finish(&run, &reuse);
-        (run, path)
+        (run, checkpoints, path)
     };
     // The middle line out: an edit that moves everything after it.
     let lines: Vec<&str> = program.split_inclusive('\n').collect();
@@ -483,8 +495,8 @@ fn check_runs_made_again(setup: &Setup, program: &str, max_moves: usize) {
         .collect();
     for (from, to) in [(cut.as_str(), program), (program, cut.as_str())] {
         let earlier = page_run(from, None);
-        let (got, got_path) = page_run(to, Some((from, &earlier)));
-        let (want, want_path) = page_run(to, None);
+        let (got, got_checkpoints, got_path) = page_run(to, Some((from, &earlier)));
+        let (want, want_checkpoints, want_path) = page_run(to, None);
         assert_eq!(got.diagnostics, want.diagnostics, "diagnostics run again");
         assert_eq!(
             (got.block_count, got.move_count, &got.end, &got.registers),
@@ -497,8 +509,8 @@ fn check_runs_made_again(setup: &Setup, program: &str, max_moves: usize) {
             "totals run again"
         );
         assert_eq!(
-            (&got.lines, &got.events),
-            (&want.lines, &want.events),
+            (&got_checkpoints.lines, &got.events),
+            (&want_checkpoints.lines, &want.events),
             "lines run again"
         );
         assert_eq!(got.bounds, want.bounds, "bounds run again");

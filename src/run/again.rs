@@ -1,11 +1,12 @@
-//! Runs made again after an edit ([`super::rerun_observed`]): where a run
-//! of the edited text can start from the earlier run (its last checkpoint
-//! before the edit), where it has caught up with it (a checkpoint after the
-//! edit where the parser and the machine stand as they stood then), and
-//! how the earlier run's end is taken from there, shifted by what the edit
-//! added or removed.
+//! Runs made again after an edit ([`rerun_observed`]), a wrapper around the
+//! plain run's loop: where a run of the edited text can start from the
+//! earlier run (its last checkpoint before the edit), where it has caught
+//! up with it (a checkpoint after the edit where the parser and the
+//! machine stand as they stood then), and how the earlier run's end is
+//! taken from there, shifted by what the edit added or removed.
 
-use super::{Checkpoint, Observer, RunOptions, Runner, Segment, Totals};
+use super::checkpoint::{Checkpoint, Checkpoints, Segment};
+use super::{Lookout, Making, Observer, RunOptions, Runner};
 use crate::diag::{Diagnostic, Span};
 use crate::report::{End, Event, Run};
 use crate::setup::Setup;
@@ -19,9 +20,78 @@ pub struct Earlier<'a> {
     pub text: &'a str,
     /// Its run.
     pub run: &'a Run,
+    /// The checkpoints its run kept.
+    pub checkpoints: &'a Checkpoints,
 }
 
-/// What a run made again ([`super::rerun_observed`]) took from the earlier run.
+/// Runs `text` as [`super::run_observed`] does, from the earlier run of a
+/// text it was edited from where it can: it resumes at the earlier run's
+/// last checkpoint before the edit and, once past the edit, stops at the
+/// first checkpoint of the earlier run where the parser and the machine
+/// stand as they stood then, and takes the earlier run's end from there.
+/// The run is the same as a whole run of `text` would be, but for where its
+/// checkpoints are. Only runs that keep checkpoints and neither block
+/// reports nor moves (the page's) are made again (others, and those
+/// without `earlier`, are whole runs); `observer` is told of the moves
+/// actually made, and [`Reuse`] says which moves of the earlier run come
+/// before and after them.
+pub fn rerun_observed(
+    text: &str,
+    setup: &Setup,
+    options: RunOptions,
+    earlier: Option<Earlier<'_>>,
+    observer: &mut impl Observer,
+) -> (Run, Checkpoints, Reuse) {
+    let plan = match earlier {
+        Some(earlier) if super::refused(text, setup).is_none() => {
+            Plan::new(earlier, text, setup, options)
+        }
+        _ => None,
+    };
+    let Some(plan) = plan else {
+        let (run, checkpoints) = super::run_observed(text, setup, options, observer);
+        return (run, checkpoints, Reuse::default());
+    };
+    let mut making = Making::new(setup);
+    let mut reuse = Reuse::default();
+    let mut r = plan.resume(text, setup, options, &mut making, &mut reuse, observer);
+    let mut catch_up = CatchUp {
+        plan: &plan,
+        last_pos: usize::MAX,
+        tail: None,
+    };
+    making.drive(&mut r, setup.machine, observer, &mut catch_up);
+    reuse.tail = catch_up.tail;
+    let (run, checkpoints) = making.finish(r, text, reuse.tail.is_none());
+    (run, checkpoints, reuse)
+}
+
+/// Watches a run made again for the place where it has caught up with the
+/// earlier run, and ends it there with the earlier run's end.
+struct CatchUp<'p, 'a> {
+    plan: &'p Plan<'a>,
+    /// The parser's place when last asked (a block read but not run
+    /// leaves it where it was: asked once per place).
+    last_pos: usize,
+    /// The earlier run's end, once taken.
+    tail: Option<Tail>,
+}
+
+impl Lookout for CatchUp<'_, '_> {
+    fn ends_here(&mut self, r: &mut Runner<'_>, making: &mut Making) -> bool {
+        if r.parser.offset() == self.last_pos {
+            return false;
+        }
+        self.last_pos = r.parser.offset();
+        let Some((k, d)) = self.plan.caught_up(r) else {
+            return false;
+        };
+        self.tail = Some(take_tail(making, r, self.plan, k, &d));
+        true
+    }
+}
+
+/// What a run made again ([`rerun_observed`]) took from the earlier run.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Reuse {
     /// The earlier run's first `prefix_moves` moves are this run's first
@@ -45,7 +115,7 @@ pub struct Tail {
 
 /// How far a point after an edit moved from the earlier run to this one.
 #[derive(Clone, Copy, Debug)]
-pub(super) struct Shift {
+struct Shift {
     blocks: i64,
     moves: i64,
     bytes: i64,
@@ -54,7 +124,7 @@ pub(super) struct Shift {
 
 /// How a run made again uses the earlier run: where it resumes, and where
 /// the two texts are the same again.
-pub(super) struct Plan<'a> {
+struct Plan<'a> {
     earlier: Earlier<'a>,
     /// The earlier run's checkpoint this run resumes at.
     resume: usize,
@@ -70,17 +140,18 @@ pub(super) struct Plan<'a> {
 }
 
 impl<'a> Plan<'a> {
-    pub(super) fn new(
+    fn new(
         earlier: Earlier<'a>,
         text: &str,
         setup: &Setup,
         options: RunOptions,
     ) -> Option<Plan<'a>> {
         let old = earlier.run;
+        let checkpoints = &earlier.checkpoints.points;
         if options.keep_blocks || options.keep_moves || options.checkpoint_every == 0 {
             return None;
         }
-        if old.checkpoints.first()?.machine.setup() != setup {
+        if checkpoints.first()?.machine.setup() != setup {
             return None;
         }
         let (a, b) = (earlier.text.as_bytes(), text.as_bytes());
@@ -88,8 +159,7 @@ impl<'a> Plan<'a> {
         // The last checkpoint before the edit: the parser there had read
         // the text before it and looked one character further at most (the
         // LF after a CR). The first one, at the start, always qualifies.
-        let resume = old
-            .checkpoints
+        let resume = checkpoints
             .partition_point(|c| c.parser.offset() == 0 || c.parser.offset() < prefix)
             .checked_sub(1)?;
         let limited = |d: &Diagnostic| {
@@ -109,27 +179,28 @@ impl<'a> Plan<'a> {
 
     /// Starts the run at the earlier run's checkpoint before the edit:
     /// the part before it is the earlier run's, as it was made.
-    #[allow(clippy::too_many_arguments)]
-    pub(super) fn resume<'t>(
+    fn resume<'t>(
         &self,
         text: &'t str,
         setup: &Setup,
         options: RunOptions,
-        result: &mut Run,
-        totals: &mut Totals,
+        making: &mut Making,
         reuse: &mut Reuse,
         observer: &mut impl Observer,
     ) -> Runner<'t> {
         let old = self.earlier.run;
-        let c = &old.checkpoints[self.resume];
+        let earlier = self.earlier.checkpoints;
+        let c = &earlier.points[self.resume];
         let before = c.parser.offset();
-        result.checkpoints = old.checkpoints[..=self.resume].to_vec();
-        for k in &result.checkpoints[..self.resume] {
-            totals.before.add(&k.segment);
+        let points = &mut making.checkpoints.points;
+        *points = earlier.points[..=self.resume].to_vec();
+        for k in &points[..self.resume] {
+            making.totals.before.add(&k.segment);
         }
-        result.checkpoints[self.resume].segment = Segment::default();
-        result.events = old.events[..old.events.partition_point(|e| e.block < c.index)].to_vec();
-        result.lines = old.lines[..c.index as usize].to_vec();
+        points[self.resume].segment = Segment::default();
+        making.run.events =
+            old.events[..old.events.partition_point(|e| e.block < c.index)].to_vec();
+        making.checkpoints.lines = earlier.lines[..c.index as usize].to_vec();
         let diagnostics = old
             .diagnostics
             .iter()
@@ -144,18 +215,21 @@ impl<'a> Plan<'a> {
     /// The earlier checkpoint the runner stands at, if the two runs go on
     /// alike from there: the same text ahead, the same parser and machine
     /// state, room under the limits and the cap for the earlier run's end.
-    pub(super) fn caught_up(&self, r: &Runner<'_>, options: &RunOptions) -> Option<(usize, Shift)> {
+    fn caught_up(&self, r: &Runner<'_>) -> Option<(usize, Shift)> {
         let pos = r.parser.offset();
         if !self.tail_ok || r.stopped || pos < self.same_from || r.parser.dropped() > 0 {
             return None;
         }
         let old = self.earlier.run;
+        let options = &r.options;
         let at = shift(pos as i64, -self.bytes) as usize;
-        let k = old
+        let k = self
+            .earlier
             .checkpoints
+            .points
             .binary_search_by_key(&at, |c| c.parser.offset())
             .ok()?;
-        let c = &old.checkpoints[k];
+        let c = &self.earlier.checkpoints.points[k];
         let here = r.parser.resume_point();
         if !here.same_course(&c.parser) || !r.machine.same_course(&c.machine) {
             return None;
@@ -189,7 +263,8 @@ pub(crate) fn common_ends(a: &[u8], b: &[u8]) -> (usize, usize) {
 /// Length of the common start of `a` and `b`.
 fn common_prefix(a: &[u8], b: &[u8]) -> usize {
     // A page at a time (`==` on slices is a `memcmp`), then byte by byte:
-    // a 30 MB text in a few milliseconds.
+    // a million-block text is compared well within an edit's budget
+    // (bench-browser target 4; `cargo bench --bench edit`).
     const STEP: usize = 4096;
     let mut n = 0;
     while n + STEP <= a.len().min(b.len()) && a[n..n + STEP] == b[n..n + STEP] {
@@ -223,35 +298,36 @@ fn common_suffix(a: &[u8], b: &[u8], max: usize) -> usize {
 
 /// Ends a run made again with the earlier run's end from its checkpoint
 /// `k`, where the runner caught up with it, shifted by `d`.
-pub(super) fn take_tail(
-    result: &mut Run,
+fn take_tail(
+    making: &mut Making,
     r: &mut Runner<'_>,
-    totals: &mut Totals,
     plan: &Plan<'_>,
     k: usize,
     d: &Shift,
 ) -> Tail {
     let old = plan.earlier.run;
-    let c = &old.checkpoints[k];
+    let earlier = plan.earlier.checkpoints;
+    let c = &earlier.points[k];
+    let Making {
+        run: result,
+        checkpoints,
+        totals,
+        ..
+    } = making;
     let at = c.parser.offset();
     let line = |l: u32| shift(i64::from(l), d.lines) as u32;
     // The earlier checkpoint stands where the runner stands. A checkpoint
     // the runner has just made there (nothing ran since) gives way to it;
     // otherwise the runner's last segment ends here.
-    if result
-        .checkpoints
-        .last()
-        .is_some_and(|l| l.index == r.index)
-    {
-        result.checkpoints.pop();
+    let points = &mut checkpoints.points;
+    if points.last().is_some_and(|l| l.index == r.index) {
+        points.pop();
     } else {
-        totals.close(&mut result.checkpoints);
+        totals.close(points);
     }
-    let first = result.checkpoints.len();
-    result
-        .checkpoints
-        .extend(old.checkpoints[k..].iter().map(|c| c.shifted(d)));
-    let (last, taken) = result.checkpoints[first..]
+    let first = points.len();
+    points.extend(earlier.points[k..].iter().map(|c| c.shifted(d)));
+    let (last, taken) = points[first..]
         .split_last()
         .expect("the earlier run has the checkpoint k");
     for c in taken {
@@ -267,9 +343,9 @@ pub(super) fn take_tail(
             line: line(e.line),
             kind: e.kind.clone(),
         }));
-    result
+    checkpoints
         .lines
-        .extend(old.lines[c.index as usize..].iter().map(|&l| line(l)));
+        .extend(earlier.lines[c.index as usize..].iter().map(|&l| line(l)));
     r.parser.report_all(
         old.diagnostics
             .iter()

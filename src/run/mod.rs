@@ -2,23 +2,29 @@
 //! machine, and collects the report. Parse errors are reported for the whole
 //! program; execution stops at the first error, parse or run, the way a
 //! control stops at an alarm (spec 2).
+//!
+//! [`run_observed`] is the run: one loop over the blocks, which may keep
+//! [`Checkpoints`] beside the [`Run`] it makes. A run made again after an
+//! edit (`again.rs`) wraps that loop: it starts it at the earlier run's
+//! checkpoint before the edit and stops it where it catches up with the
+//! earlier run. The run on two threads (`pipeline.rs`) shares the loop's
+//! accounting of a block.
 
 use std::sync::Arc;
 
 pub(crate) mod again;
+mod checkpoint;
 #[cfg(not(target_arch = "wasm32"))]
-mod pipeline;
+pub(crate) mod pipeline;
 
-pub use again::{Earlier, Reuse, Tail};
-use again::{Plan, take_tail};
-#[cfg(not(target_arch = "wasm32"))]
-pub use pipeline::{PIPELINE_FROM_BYTES, run_on_two_threads, run_pipelined};
+use checkpoint::Totals;
+pub use checkpoint::{Checkpoint, Checkpoints};
 
 use crate::diag::{self, Diagnostic};
 use crate::machine::{Flow, Machine, Out};
-use crate::report::{BlockReport, Bounds, End, Event, Run, include_move};
-use crate::setup::{MachineKind, Setup, Units};
-use crate::syntax::{Address, Block, Blocks, ParseOptions, Resume};
+use crate::report::{BlockReport, End, Event, Run, include_move};
+use crate::setup::{MachineKind, Setup};
+use crate::syntax::{Address, Block, Blocks, ParseOptions};
 
 /// Most moves one run records by default; past this the run stops with an
 /// error (a move is about 200 bytes: 5 million is about 1 GB).
@@ -60,76 +66,6 @@ impl Default for RunOptions {
             max_blocks: MAX_BLOCKS,
             checkpoint_every: 0,
         }
-    }
-}
-
-/// Everything needed to go on running a program before block `index`: the
-/// parser's place and the machine's state. A machine is a few hundred bytes
-/// and shares the setup, so a checkpoint every thousand blocks costs well
-/// under a byte per block.
-#[derive(Clone, Debug)]
-pub struct Checkpoint {
-    /// The first block run after this point.
-    pub index: u32,
-    /// Moves made before this point.
-    pub move_count: usize,
-    parser: Resume,
-    machine: Machine,
-    /// What the blocks from here to the next checkpoint add to the run's
-    /// totals, so that a run made again after an edit ([`rerun_observed`])
-    /// can take the totals of the parts before and after the edit.
-    segment: Segment,
-}
-
-/// The totals of the blocks between two checkpoints.
-#[derive(Clone, Debug, Default)]
-struct Segment {
-    /// Bounds of their moves.
-    bounds: Option<Bounds>,
-    /// Offset registers they name, ascending.
-    registers: Vec<u16>,
-    /// Units of their first move.
-    first_units: Option<Units>,
-}
-
-impl Segment {
-    fn add(&mut self, other: &Segment) {
-        if let Some(b) = other.bounds {
-            merge(&mut self.bounds, b);
-        }
-        self.registers.extend_from_slice(&other.registers);
-        self.registers.sort_unstable();
-        self.registers.dedup();
-        self.first_units = self.first_units.or(other.first_units);
-    }
-}
-
-fn merge(into: &mut Option<Bounds>, b: Bounds) {
-    match into {
-        None => *into = Some(b),
-        Some(a) => {
-            for i in 0..3 {
-                a.min[i] = if b.min[i] < a.min[i] {
-                    b.min[i]
-                } else {
-                    a.min[i]
-                };
-                a.max[i] = if b.max[i] > a.max[i] {
-                    b.max[i]
-                } else {
-                    a.max[i]
-                };
-            }
-        }
-    }
-}
-
-/// Checkpoints of the same program are equal when they stand at the same
-/// place (the machine state there follows from the program).
-impl PartialEq for Checkpoint {
-    fn eq(&self, other: &Self) -> bool {
-        (self.index, self.move_count, self.parser.offset())
-            == (other.index, other.move_count, other.parser.offset())
     }
 }
 
@@ -257,7 +193,7 @@ impl<'t> Runner<'t> {
             move_count: self.move_count,
             parser: self.parser.resume_point(),
             machine: self.machine.clone(),
-            segment: Segment::default(),
+            segment: Default::default(),
         }
     }
 
@@ -271,7 +207,8 @@ impl<'t> Runner<'t> {
 
     /// Runs the block just read into `self.block`; always Some (the
     /// answer of [`Runner::step`], made in place: a `Step` made here and
-    /// wrapped there was copied, 18 instructions a block).
+    /// wrapped there was copied every block; the `check` instruction count
+    /// in docs/performance.md guards it).
     #[inline(always)]
     fn execute(&mut self) -> Option<Step> {
         let block = &self.block;
@@ -313,9 +250,10 @@ impl<'t> Runner<'t> {
     }
 }
 
-/// Runs a program with a setup.
+/// Runs a program with a setup (its checkpoints, if the options ask for
+/// any, are not kept: see [`run_observed`]).
 pub fn run_with(text: &str, setup: &Setup, options: RunOptions) -> Run {
-    run_observed(text, setup, options, &mut ())
+    run_observed(text, setup, options, &mut ()).0
 }
 
 /// Watches a run as it goes.
@@ -328,7 +266,7 @@ pub trait Observer {
     /// been read (the page shows a large program's progress).
     fn on_progress(&mut self, _read: usize) {}
 
-    /// A run made again ([`rerun_observed`]) starts after the earlier run's
+    /// A run made again ([`crate::rerun_observed`]) starts after the earlier run's
     /// first `prefix_moves` moves, before any other call.
     fn on_resume(&mut self, _prefix_moves: usize) {}
 }
@@ -347,135 +285,156 @@ impl<F: FnMut(&crate::report::Move)> Observer for F {
 pub const PROGRESS_EVERY: usize = 1 << 20;
 
 /// Runs a program with a setup, telling `observer` each move and how far
-/// it has read.
+/// it has read; with [`RunOptions::checkpoint_every`], also its
+/// [`Checkpoints`] (otherwise empty).
 pub fn run_observed(
     text: &str,
     setup: &Setup,
     options: RunOptions,
     observer: &mut impl Observer,
-) -> Run {
-    rerun_observed(text, setup, options, None, observer).0
-}
-
-/// The totals a run keeps as it goes.
-#[derive(Default)]
-struct Totals {
-    /// Since the last checkpoint (all of them without checkpoints).
-    segment: Segment,
-    /// Before the last checkpoint.
-    before: Segment,
-}
-
-impl Totals {
-    /// Closes the segment of the last checkpoint (if any) at a new one.
-    fn close(&mut self, checkpoints: &mut [Checkpoint]) {
-        let mut segment = std::mem::take(&mut self.segment);
-        segment.registers.sort_unstable();
-        self.before.add(&segment);
-        if let Some(last) = checkpoints.last_mut() {
-            last.segment = segment;
-        }
+) -> (Run, Checkpoints) {
+    if let Some(refused) = refused(text, setup) {
+        return (refused, Checkpoints::default());
     }
+    let mut making = Making::new(setup);
+    let mut r = Runner::new(text, setup, options);
+    making.drive(&mut r, setup.machine, observer, &mut ());
+    making.finish(r, text, true)
 }
 
-/// Runs `text` as [`run_observed`] does, from the earlier run of a text it
-/// was edited from where it can: it resumes at the earlier run's last
-/// checkpoint before the edit and, once past the edit, stops at the first
-/// checkpoint of the earlier run where the parser and the machine stand as
-/// they stood then, and takes the earlier run's end from there. The run is
-/// the same as a whole run of `text` would be, but for where its
-/// checkpoints are. Only runs that keep checkpoints and neither block
-/// reports nor moves (the page's) are made again; `observer` is told of
-/// the moves actually made, and [`Reuse`] says which moves of the earlier
-/// run come before and after them.
-pub fn rerun_observed(
-    text: &str,
-    setup: &Setup,
-    options: RunOptions,
-    earlier: Option<Earlier<'_>>,
-    observer: &mut impl Observer,
-) -> (Run, Reuse) {
+/// The run of a setup that does not validate or a program too large to
+/// read: nothing runs, the diagnostics say why. None for a run that goes.
+fn refused(text: &str, setup: &Setup) -> Option<Run> {
+    let mut problems = setup.validate();
+    problems.extend(crate::syntax::check_size(text));
+    if problems.is_empty() {
+        return None;
+    }
     let mut result = fresh(setup);
-    let mut reuse = Reuse::default();
-    let mut setup_problems = setup.validate();
-    setup_problems.extend(crate::syntax::check_size(text));
-    if !setup_problems.is_empty() {
-        result.diagnostics = setup_problems;
-        result.end = End::Error { line: 0 };
-        return (result, reuse);
+    result.diagnostics = problems;
+    result.end = End::Error { line: 0 };
+    Some(result)
+}
+
+/// Asked before each block whether the run ends there, its end taken from
+/// elsewhere: a run made again after an edit (`again.rs`) ends where it
+/// has caught up with the earlier run. The plain run's `()` never ends it,
+/// so its loop carries no such check.
+trait Lookout {
+    /// True when the run ends before the block `r` is about to read (the
+    /// lookout has then made its end in `making`).
+    fn ends_here(&mut self, r: &mut Runner<'_>, making: &mut Making) -> bool;
+}
+
+impl Lookout for () {
+    #[inline(always)]
+    fn ends_here(&mut self, _: &mut Runner<'_>, _: &mut Making) -> bool {
+        false
     }
-    let plan = earlier.and_then(|e| Plan::new(e, text, setup, options));
-    let mut totals = Totals::default();
-    let mut r = match &plan {
-        None => Runner::new(text, setup, options),
-        Some(plan) => plan.resume(
-            text,
-            setup,
-            options,
-            &mut result,
-            &mut totals,
-            &mut reuse,
-            observer,
-        ),
-    };
-    let mut run_diagnostics: Vec<Diagnostic> = Vec::new();
-    let every = options.checkpoint_every;
-    let mut next_progress = PROGRESS_EVERY;
-    let mut last_pos = usize::MAX;
-    loop {
-        if !r.stopped
-            && every > 0
-            && result
-                .checkpoints
-                .last()
-                .is_none_or(|c| r.index >= c.index.saturating_add(every))
-        {
-            totals.close(&mut result.checkpoints);
-            result.checkpoints.push(r.checkpoint());
+}
+
+/// A run in the making: the report so far, its checkpoints, the totals and
+/// the diagnostics of the run itself (which follow the parser's).
+struct Making {
+    run: Run,
+    checkpoints: Checkpoints,
+    totals: Totals,
+    run_diagnostics: Vec<Diagnostic>,
+}
+
+impl Making {
+    fn new(setup: &Setup) -> Making {
+        Making {
+            run: fresh(setup),
+            checkpoints: Checkpoints::default(),
+            totals: Totals::default(),
+            run_diagnostics: Vec::new(),
         }
-        if let Some(plan) = &plan
-            && r.parser.offset() != last_pos
-        {
-            last_pos = r.parser.offset();
-            if let Some((k, d)) = plan.caught_up(&r, &options) {
-                reuse.tail = Some(take_tail(&mut result, &mut r, &mut totals, plan, k, &d));
+    }
+
+    /// The block loop: runs the blocks `r` reads until the program's end
+    /// or until `lookout` ends the run, keeping a checkpoint before every
+    /// [`RunOptions::checkpoint_every`] blocks.
+    #[inline(always)]
+    fn drive(
+        &mut self,
+        r: &mut Runner<'_>,
+        kind: MachineKind,
+        observer: &mut impl Observer,
+        lookout: &mut impl Lookout,
+    ) {
+        let every = r.options.checkpoint_every;
+        let mut next_progress = PROGRESS_EVERY;
+        loop {
+            if !r.stopped
+                && every > 0
+                && self
+                    .checkpoints
+                    .points
+                    .last()
+                    .is_none_or(|c| r.index >= c.index.saturating_add(every))
+            {
+                self.totals.close(&mut self.checkpoints.points);
+                self.checkpoints.points.push(r.checkpoint());
+            }
+            if lookout.ends_here(r, self) {
                 break;
             }
-        }
-        let index = r.index;
-        let first_move = r.move_count;
-        if r.parser.offset() >= next_progress {
-            observer.on_progress(r.parser.offset());
-            next_progress = r.parser.offset() + PROGRESS_EVERY;
-        }
-        let Some(step) = r.step() else { break };
-        let flow = match step {
-            Step::Passed => continue,
-            Step::Stopped(d) => {
-                stop(&mut result, &mut run_diagnostics, r.block.span.line, d);
-                continue;
+            let index = r.index;
+            let first_move = r.move_count;
+            if r.parser.offset() >= next_progress {
+                observer.on_progress(r.parser.offset());
+                next_progress = r.parser.offset() + PROGRESS_EVERY;
             }
-            Step::Ran(flow) => flow,
-        };
-        // Warnings share the diagnostics cap with the parser's (a warning
-        // per block could otherwise fill memory and the page's list).
-        let ran = (index, first_move, flow);
-        r.account(
-            &mut result,
-            &mut totals,
-            observer,
-            setup.machine,
-            ran,
-            |parser, w| parser.report(w),
+            let Some(step) = r.step() else { break };
+            let flow = match step {
+                Step::Passed => continue,
+                Step::Stopped(d) => {
+                    stop(
+                        &mut self.run,
+                        &mut self.run_diagnostics,
+                        r.block.span.line,
+                        d,
+                    );
+                    continue;
+                }
+                Step::Ran(flow) => flow,
+            };
+            // Warnings share the diagnostics cap with the parser's (a warning
+            // per block could otherwise fill memory and the page's list).
+            let ran = (index, first_move, flow);
+            r.account(
+                &mut self.run,
+                &mut self.totals,
+                observer,
+                kind,
+                ran,
+                |parser, w| parser.report(w),
+            );
+            if every > 0 {
+                self.checkpoints.lines.push(r.block.span.line);
+            }
+        }
+    }
+
+    /// The run and its checkpoints where `r` stopped; `counted`: the
+    /// counts are `r`'s (a run that took its end from the earlier run has
+    /// them from there).
+    fn finish(mut self, r: Runner<'_>, text: &str, counted: bool) -> (Run, Checkpoints) {
+        if counted {
+            counts(&mut self.run, &r);
+        }
+        let mut diagnostics = r.parser.into_diagnostics();
+        diagnostics.append(&mut self.run_diagnostics);
+        close(
+            &mut self.run,
+            &mut self.checkpoints.points,
+            self.totals,
+            diagnostics,
+            text,
         );
+        (self.run, self.checkpoints)
     }
-    if reuse.tail.is_none() {
-        counts(&mut result, &r);
-    }
-    let mut diagnostics = r.parser.into_diagnostics();
-    diagnostics.append(&mut run_diagnostics);
-    close(&mut result, totals, diagnostics, text);
-    (result, reuse)
 }
 
 /// A run of nothing yet.
@@ -493,8 +452,6 @@ fn fresh(setup: &Setup) -> Run {
         move_count: 0,
         bounds: None,
         end: End::Completed,
-        checkpoints: Vec::new(),
-        lines: Vec::new(),
     }
 }
 
@@ -506,8 +463,14 @@ fn counts(result: &mut Run, r: &Runner<'_>) {
 }
 
 /// The run's totals and its diagnostics, in order, with their columns.
-fn close(result: &mut Run, mut totals: Totals, mut diagnostics: Vec<Diagnostic>, text: &str) {
-    totals.close(&mut result.checkpoints);
+fn close(
+    result: &mut Run,
+    checkpoints: &mut [Checkpoint],
+    mut totals: Totals,
+    mut diagnostics: Vec<Diagnostic>,
+    text: &str,
+) {
+    totals.close(checkpoints);
     let all = totals.before;
     result.bounds = all.bounds;
     result.registers = all.registers;
@@ -551,7 +514,8 @@ fn account(
         result.moves.extend_from_slice(&out.moves);
     }
     // Most blocks have no event and no warning: the tests skip setting
-    // up the two drains (callgrind: 30 instructions a block).
+    // up the two drains (the `check` instruction count in
+    // docs/performance.md guards it).
     if !out.events.is_empty() {
         result.events.extend(out.events.drain(..).map(|kind| Event {
             block: index,
@@ -574,9 +538,6 @@ fn account(
             move_count: out.moves.len() as u32,
         });
     }
-    if options.checkpoint_every > 0 {
-        result.lines.push(block.span.line);
-    }
     let offset_words = match kind {
         MachineKind::Mill => block.holds(Address::D) || block.holds(Address::H),
         MachineKind::Lathe => block.holds(Address::T),
@@ -598,15 +559,20 @@ fn account(
     }
 }
 
-/// The report of block `index` of `run` (a run of `text` and `setup` made
-/// with checkpoints), made again from the checkpoint before it; None when
-/// the run has no such block or no checkpoints. It equals the report a run
+/// The report of block `index` of a run of `text` and `setup` that kept
+/// `checkpoints`, made again from the checkpoint before it; None when the
+/// run has no such block or kept no checkpoints. It equals the report a run
 /// keeping every block would have kept.
-pub fn report_at(text: &str, setup: &Setup, run: &Run, index: u32) -> Option<BlockReport> {
-    if index >= run.block_count {
+pub fn report_at(
+    text: &str,
+    setup: &Setup,
+    checkpoints: &Checkpoints,
+    index: u32,
+) -> Option<BlockReport> {
+    if index as usize >= checkpoints.block_count() {
         return None;
     }
-    let at = run.checkpoints.iter().rev().find(|c| c.index <= index)?;
+    let at = checkpoints.points.iter().rev().find(|c| c.index <= index)?;
     let options = RunOptions {
         keep_blocks: true,
         keep_moves: false,

@@ -10,7 +10,8 @@
 use std::sync::Arc;
 use std::sync::mpsc::{channel, sync_channel};
 
-use super::{RunOptions, Runner, Step, Totals, close, counts, fresh, stop};
+use super::checkpoint::Totals;
+use super::{RunOptions, Runner, Step, close, counts, fresh, stop};
 use crate::diag::Diagnostic;
 use crate::machine::Machine;
 use crate::report::Run;
@@ -18,13 +19,13 @@ use crate::setup::Setup;
 use crate::syntax::{Block, Blocks, MAX_DIAGNOSTICS, ParseOptions, check_size};
 
 /// Programs shorter than this run on one thread: a thread and its hand-overs
-/// cost more than they save (a MiB of program runs in about 5 ms).
+/// cost more than they save on a program that runs in a few milliseconds.
 pub const PIPELINE_FROM_BYTES: usize = 1 << 20;
 
 /// Blocks handed over at a time, and how many such batches are under way.
-/// A hand-over can wake the other thread (a futex call): with 256 blocks a
-/// batch, 1M-block `check` took 115 ms, with 2048 102 ms, with 16384
-/// (batches larger than the caches) 124 ms (best of 9, wall clock).
+/// A hand-over can wake the other thread (a futex call), so batches are
+/// large, but not larger than the caches: the size that gave the fastest
+/// 1M-block `check` (target 6 in docs/performance.md, `scripts/best-of.sh`).
 const BATCH: usize = 2048;
 const BATCHES: usize = 4;
 
@@ -172,7 +173,7 @@ fn on_two_threads(text: &str, setup: &Setup, options: RunOptions) -> Option<Run>
         diagnostics.extend(warnings.map(|(_, w)| w));
         diagnostics.append(&mut run_diagnostics);
         counts(&mut result, &r);
-        close(&mut result, totals, diagnostics, text);
+        close(&mut result, &mut [], totals, diagnostics, text);
         Some(result)
     })
 }

@@ -9,9 +9,8 @@
 //! zoomed in. Coordinates are in the run's display units ([`Run::units`]);
 //! on the lathe X stays a diameter.
 //!
-//! This is what crosses the wasm boundary as typed arrays, never one object
-//! per move ([`Toolpath::polylines`] makes the arrays with every arc
-//! tessellated within [`CHORD_TOLERANCE_MM`]).
+//! It stays in the core: the page's session draws it where it is kept
+//! (the worker's canvas), so it never crosses the wasm boundary.
 
 mod builder;
 #[cfg(test)]
@@ -21,21 +20,12 @@ pub use builder::PathBuilder;
 
 use std::ops::Range;
 
-use crate::machine::arc::{CHORD_TOLERANCE_MM, Circle};
+use crate::machine::arc::Circle;
 use crate::machine::modal::Plane;
 use crate::report::{Move, Run, Xyz};
 use crate::setup::{MachineKind, Units};
 
 pub use crate::machine::arc::CHORD_TOLERANCE_MM as CHORD_TOLERANCE;
-
-/// Most vertices of one tessellated path made by [`Toolpath::polylines`]. A
-/// line move has two; an arc up to [`crate::machine::arc::MAX_ARC_SEGMENTS`] + 1. When the arcs
-/// would need more, every arc is tessellated with proportionally fewer
-/// segments (at least one), so the polylines of any run that stays within
-/// [`crate::MAX_MOVES`] fit: 2 × 5,000,000 line vertices are below it.
-/// 16 Mi vertices are 384 MiB per path.
-pub const MAX_VERTICES: usize = 1 << 24;
-const _: () = assert!(MAX_VERTICES >= 2 * crate::MAX_MOVES && MAX_VERTICES <= u32::MAX as usize);
 
 /// The circle of an arc move on both paths, in the toolpath's units (plane
 /// coordinates; on the lathe X in radius, as [`crate::report::ArcInfo`]).
@@ -175,13 +165,14 @@ pub enum Visit<'a> {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ArcPoints {
     /// Each from its angle's sine and cosine ([`Circle::point`]): what the
-    /// vector outputs (SVG, [`Toolpath::polylines`]) are made of.
+    /// vector outputs (SVG) are made of.
     Exact,
     /// Each by turning the last one through the step's angle: within about
     /// 1e-13 of the radius of the exact points (each turn rounds by about
     /// 1e-16, at most 1024 turns), which no pixel shows. For a pixel
-    /// layer: a sine and a cosine per point were 5 % of drawing a
-    /// 1M-block frame (callgrind).
+    /// layer: a sine and a cosine per point were a share of a
+    /// million-block frame worth saving (bench-browser target 3 and
+    /// `examples/render_time` guard the choice).
     Rotated,
 }
 
@@ -215,18 +206,6 @@ pub struct Toolpath {
     k: f64,
 }
 
-/// The tessellated form of a toolpath (see [`Toolpath::polylines`]).
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Polylines {
-    /// Actual path vertices, x y z interleaved.
-    pub actual: Vec<f64>,
-    /// Programmed path vertices, same count.
-    pub programmed: Vec<f64>,
-    /// Index of each move's first vertex, plus one final entry: the vertex
-    /// count. Move `i` spans vertices `starts[i]..starts[i + 1]`.
-    pub starts: Vec<u32>,
-}
-
 impl Toolpath {
     /// An empty toolpath to [`push`](Toolpath::push) the moves of a run
     /// into as they are made.
@@ -257,8 +236,8 @@ impl Toolpath {
     /// Adds a move, and grows the bounds with it when `grow_bounds`: a
     /// run's toolpath built as it runs takes the run's own bounds at the
     /// end instead ([`PathBuilder::finish`]), which the run grows with the
-    /// same points — growing both, each arc's extremes worked out twice,
-    /// was 6.5 % of the session's run (instructions, `docs/performance.md`).
+    /// same points — growing both works out each arc's extremes twice (the
+    /// page's run, `session_memory` and bench-browser target 3, guards it).
     #[inline(always)]
     fn push_move(&mut self, m: &Move, grow_bounds: bool) {
         if self.kinds.is_empty() {
@@ -270,8 +249,7 @@ impl Toolpath {
         let (from, pfrom) = (scaled(m.from), scaled(m.programmed_from));
         let (to, pto) = (scaled(m.to), scaled(m.programmed_to));
         // The bounds hold every vertex (a move that starts where the last
-        // one ended adds its end only: the ends of a million moves were
-        // counted twice, and the bounds were 8 % of a run) and the arcs'
+        // one ended adds its end only, not each end twice) and the arcs'
         // extremes.
         let mut bounds = self.bounds;
         if !self.ends_at(from, pfrom) {
@@ -620,39 +598,6 @@ impl Toolpath {
         }
     }
 
-    /// The moves as polylines, every arc within [`CHORD_TOLERANCE_MM`] (at
-    /// most [`MAX_VERTICES`] per path: past that arcs get proportionally
-    /// fewer segments).
-    pub fn polylines(&self) -> Polylines {
-        self.polylines_within(MAX_VERTICES)
-    }
-
-    fn polylines_within(&self, max_vertices: usize) -> Polylines {
-        let tolerance = CHORD_TOLERANCE_MM * self.k;
-        let budget = ArcBudget::of(self, tolerance, max_vertices);
-        let mut out = Polylines::default();
-        let mut arcs = self.arcs_from(0);
-        for m in 0..self.len() {
-            out.starts.push((out.actual.len() / 3) as u32);
-            let [[a0, a1], [p0, p1]] = self.ends(m).unwrap_or_default();
-            match arcs.of(self, m) {
-                Some(c) => {
-                    let count = budget.segments(c.segments(tolerance));
-                    for i in 0..=count {
-                        out.actual.extend(c.point(false, a0, a1, i, count));
-                        out.programmed.extend(c.point(true, p0, p1, i, count));
-                    }
-                }
-                None => {
-                    out.actual.extend(a0.into_iter().chain(a1));
-                    out.programmed.extend(p0.into_iter().chain(p1));
-                }
-            }
-        }
-        out.starts.push((out.actual.len() / 3) as u32);
-        out
-    }
-
     /// Bounds of both paths, arcs included: (min, max), or None without
     /// moves.
     pub fn bounds(&self) -> Option<(Xyz, Xyz)> {
@@ -690,37 +635,6 @@ fn include(b: &mut Option<(Xyz, Xyz)>, p: Xyz) {
                 if p[i] > max[i] {
                     max[i] = p[i];
                 }
-            }
-        }
-    }
-}
-
-/// How the arcs of a toolpath share [`MAX_VERTICES`]: each arc keeps its
-/// first segment, and the segments past the first are scaled by one factor
-/// when their sum would pass the budget.
-struct ArcBudget {
-    /// Vertices for the segments past each arc's first, and how many those
-    /// arcs want; `None` when everything fits.
-    scale: Option<(usize, usize)>,
-}
-
-impl ArcBudget {
-    fn of(t: &Toolpath, tolerance: f64, max_vertices: usize) -> ArcBudget {
-        // Two vertices per move (an arc's start and its first segment's end).
-        let base = t.len().saturating_mul(2);
-        let extra: usize = t.arcs.iter().map(|a| a.segments(tolerance) - 1).sum();
-        let room = max_vertices.saturating_sub(base);
-        ArcBudget {
-            scale: (base.saturating_add(extra) > max_vertices).then_some((room, extra)),
-        }
-    }
-
-    fn segments(&self, wanted: usize) -> usize {
-        match self.scale {
-            None => wanted,
-            Some((room, extra)) => {
-                let more = (wanted - 1) as u128 * room as u128 / extra.max(1) as u128;
-                1 + more as usize
             }
         }
     }

@@ -32,13 +32,18 @@ fn one_end_vertex_per_move_and_equal_lengths() {
     );
     assert!(points.len() > 10, "arcs are tessellated");
     assert_eq!(*points.last().unwrap(), [100.0, 30.0, 0.0]);
-    let lines = t.polylines();
-    assert_eq!(lines.starts.len(), 4);
-    assert_eq!(
-        *lines.starts.last().unwrap() as usize * 3,
-        lines.actual.len()
+    // Every move within the chord tolerance: both ends of each line, the
+    // arc in many points.
+    let mut per_move = [0usize; 3];
+    t.for_each_point(
+        0..t.len(),
+        false,
+        (CHORD_TOLERANCE, ArcPoints::Exact),
+        |_| true,
+        |m, _, _| per_move[m] += 1,
     );
-    assert!(lines.starts[3] - lines.starts[2] > 10);
+    assert_eq!(per_move[..2], [2, 2]);
+    assert!(per_move[2] > 10);
 }
 
 #[test]
@@ -121,32 +126,6 @@ fn bounds_hold_the_arcs_extremes() {
     let (min, max) = Toolpath::from_run(&r).bounds().unwrap();
     assert_eq!(min, [0.0, 0.0, 0.0]);
     assert!((max[1] - 10.0).abs() < 1e-9 && max[0] == 20.0, "{max:?}");
-}
-
-#[test]
-fn arcs_share_the_vertex_budget_of_the_polylines() {
-    // 100 full circles of radius 50 m want 1024 segments each, and
-    // two lines two vertices each: 102,604 vertices for a budget of
-    // 10,000 (MAX_VERTICES works the same way, 20,000 such circles).
-    let text = "G02 X0 Y0 I50000. F100.\n".repeat(100) + "G01 X1.\nG01 X2.";
-    let r = run(&text, &Setup::default());
-    assert!(!r.has_errors(), "{:?}", r.diagnostics);
-    let t = Toolpath::from_run(&r);
-    assert_eq!(t.polylines().actual.len() / 3, 100 * 1025 + 4);
-    let p = t.polylines_within(10_000);
-    let count = p.actual.len() / 3;
-    assert_eq!(p.starts.len(), 103);
-    assert!(count <= 10_000, "{count}");
-    assert!(count > 9_000, "{count}");
-    assert_eq!(p.starts[101] - p.starts[100], 2, "lines keep both ends");
-    assert_eq!(*p.starts.last().unwrap() as usize, count);
-    // Each circle still ends where it started, on the circle.
-    let end = p.starts[1] as usize - 1;
-    assert_eq!(&p.actual[end * 3..end * 3 + 3], &[0.0, 0.0, 0.0]);
-    let mid = (p.starts[0] as usize + end) / 2;
-    let q = &p.actual[mid * 3..mid * 3 + 2];
-    let d = ((q[0] - 50_000.0).powi(2) + q[1].powi(2)).sqrt();
-    assert!((d - 50_000.0).abs() < 1e-6, "{d}");
 }
 
 #[test]

@@ -1,0 +1,130 @@
+//! What a run keeps to be taken up again without keeping a report per
+//! block: a [`Checkpoint`] before every so many blocks and each block's
+//! line, held in [`Checkpoints`] beside the run's [`Run`](crate::Run) (the
+//! report never holds the run's own machinery). From them
+//! [`super::report_at`] makes any block's report again, the page finds the
+//! block of a line, and a run after an edit resumes before it (`again.rs`).
+//! Also the totals the run keeps per stretch between two checkpoints, so
+//! that a run made again can add those before and after the edit.
+
+use crate::machine::Machine;
+use crate::report::Bounds;
+use crate::setup::Units;
+use crate::syntax::Resume;
+
+/// What a run made with [`crate::RunOptions::checkpoint_every`] keeps
+/// beside its [`Run`](crate::Run): empty without.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Checkpoints {
+    /// Where [`crate::run::report_at`] can resume, in block order.
+    pub points: Vec<Checkpoint>,
+    /// Per executed block, its 1-based line.
+    pub lines: Vec<u32>,
+}
+
+impl Checkpoints {
+    /// Executed blocks (each has a line).
+    pub fn block_count(&self) -> usize {
+        self.lines.len()
+    }
+
+    /// The last executed block at or before 1-based `line` (the block a
+    /// cursor on that line belongs to, or the one before a comment line),
+    /// or None when no block runs before it.
+    pub fn block_at_line(&self, line: u32) -> Option<u32> {
+        let n = self.lines.partition_point(|&l| l <= line);
+        n.checked_sub(1).and_then(|n| u32::try_from(n).ok())
+    }
+}
+
+/// Everything needed to go on running a program before block `index`: the
+/// parser's place and the machine's state. A machine is a few hundred bytes
+/// and shares the setup, so a checkpoint every thousand blocks costs well
+/// under a byte per block.
+#[derive(Clone, Debug)]
+pub struct Checkpoint {
+    /// The first block run after this point.
+    pub index: u32,
+    /// Moves made before this point.
+    pub move_count: usize,
+    pub(super) parser: Resume,
+    pub(super) machine: Machine,
+    /// What the blocks from here to the next checkpoint add to the run's
+    /// totals, so that a run made again after an edit
+    /// ([`crate::rerun_observed`]) can take the totals of the parts before
+    /// and after the edit.
+    pub(super) segment: Segment,
+}
+
+/// Checkpoints of the same program are equal when they stand at the same
+/// place (the machine state there follows from the program).
+impl PartialEq for Checkpoint {
+    fn eq(&self, other: &Self) -> bool {
+        (self.index, self.move_count, self.parser.offset())
+            == (other.index, other.move_count, other.parser.offset())
+    }
+}
+
+/// The totals of the blocks between two checkpoints.
+#[derive(Clone, Debug, Default)]
+pub(super) struct Segment {
+    /// Bounds of their moves.
+    pub(super) bounds: Option<Bounds>,
+    /// Offset registers they name, ascending.
+    pub(super) registers: Vec<u16>,
+    /// Units of their first move.
+    pub(super) first_units: Option<Units>,
+}
+
+impl Segment {
+    pub(super) fn add(&mut self, other: &Segment) {
+        if let Some(b) = other.bounds {
+            merge(&mut self.bounds, b);
+        }
+        self.registers.extend_from_slice(&other.registers);
+        self.registers.sort_unstable();
+        self.registers.dedup();
+        self.first_units = self.first_units.or(other.first_units);
+    }
+}
+
+fn merge(into: &mut Option<Bounds>, b: Bounds) {
+    match into {
+        None => *into = Some(b),
+        Some(a) => {
+            for i in 0..3 {
+                a.min[i] = if b.min[i] < a.min[i] {
+                    b.min[i]
+                } else {
+                    a.min[i]
+                };
+                a.max[i] = if b.max[i] > a.max[i] {
+                    b.max[i]
+                } else {
+                    a.max[i]
+                };
+            }
+        }
+    }
+}
+
+/// The totals a run keeps as it goes.
+#[derive(Default)]
+pub(super) struct Totals {
+    /// Since the last checkpoint (all of them without checkpoints).
+    pub(super) segment: Segment,
+    /// Before the last checkpoint.
+    pub(super) before: Segment,
+}
+
+impl Totals {
+    /// Closes the segment of the last checkpoint (if any) at a new one.
+    pub(super) fn close(&mut self, checkpoints: &mut [Checkpoint]) {
+        let mut segment = std::mem::take(&mut self.segment);
+        segment.registers.sort_unstable();
+        self.before.add(&segment);
+        if let Some(last) = checkpoints.last_mut() {
+            last.segment = segment;
+        }
+    }
+}
