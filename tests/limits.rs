@@ -76,7 +76,7 @@ fn the_limits_are_the_documented_values() {
         "| canned-cycle repeats K/L | 9999",
         "| pecks per G73/G83 hole | 10,000",
         "| segments per drawn arc | 1024",
-        "| chord tolerance of drawn arcs | 0.2 px on screen; 0.01 mm",
+        "| chord tolerance of drawn arcs | 0.2 px on screen |",
         "| share link | 4 MiB",
         "| inflated link document | 2 MiB",
         "| positions | 10⁹ mm",
