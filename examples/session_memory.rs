@@ -13,7 +13,7 @@ struct Session<'a> {
 }
 
 impl offsetlab::Observer for Session<'_> {
-    fn on_move(&mut self, m: &offsetlab::report::Move) {
+    fn on_move(&mut self, m: &offsetlab::Move) {
         self.path.on_move(m);
     }
 

@@ -23,6 +23,7 @@
 pub mod diag;
 pub mod document;
 pub mod export;
+pub mod geometry;
 pub mod machine;
 pub mod offsets;
 pub mod render;
@@ -38,7 +39,8 @@ pub mod wasm;
 
 pub use diag::{Diagnostic, Severity, Span};
 pub use document::Document;
-pub use report::{BlockReport, End, Event, Move, MoveKind, Run};
+pub use machine::{Move, MoveKind};
+pub use report::{BlockReport, End, Event, Run};
 pub use run::{
     Checkpoint, Earlier, MAX_BLOCKS, MAX_MOVES, Observer, Reuse, RunOptions, Tail, report_at,
     rerun_observed, run, run_observed, run_with,

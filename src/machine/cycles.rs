@@ -5,8 +5,9 @@
 
 use super::modal::{Cycle, Distance};
 use super::{AXES, Machine, Out};
+use super::{EventKind, MoveKind};
 use crate::diag::Diagnostic;
-use crate::report::{EventKind, MoveKind};
+use crate::offsets::length::LengthState;
 use crate::syntax::{Address, Block};
 
 /// Most pecks one G73/G83 hole may take.
@@ -51,7 +52,7 @@ impl Machine {
         &mut self,
         b: &Block,
         out: &mut Out,
-        old_length: crate::report::LengthState,
+        old_length: LengthState,
     ) -> Result<(), Diagnostic> {
         let code = self.state.modal.cycle.0;
         let (ia, ib, n) = self.state.modal.plane.axes();

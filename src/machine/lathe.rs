@@ -4,9 +4,10 @@
 
 use super::modal::Motion;
 use super::{ArcRequest, Codes, Machine, Mark, Out};
+use super::{EventKind, MoveKind};
 use crate::diag::Diagnostic;
+use crate::geometry::Xyz;
 use crate::offsets::lathe as toffset;
-use crate::report::{EventKind, MoveKind, Xyz};
 use crate::syntax::codes::Group;
 use crate::syntax::{Address, Block};
 

@@ -2,11 +2,13 @@
 //! two mill offsets — tool length (G43/G44/G49, spec 3) and tool position
 //! (G45–G48, spec 4).
 
+use super::MoveKind;
 use super::modal::{Distance, Motion};
 use super::{AXES, ArcRequest, Codes, Machine, Out};
 use crate::diag::Diagnostic;
+use crate::geometry::Xyz;
+use crate::offsets::length::LengthState;
 use crate::offsets::position;
-use crate::report::{LengthState, MoveKind, Xyz};
 use crate::setup::LengthOffsetWithoutZ;
 use crate::syntax::Address;
 use crate::syntax::Block;

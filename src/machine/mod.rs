@@ -13,12 +13,15 @@ mod cycles;
 mod lathe;
 mod mill;
 pub mod modal;
+pub mod state;
+
+pub use state::{ArcInfo, BlockState, EventKind, Move, MoveKind};
 
 use crate::diag::{Diagnostic, Span};
-use crate::report::{
-    ArcInfo, BlockState, EventKind, LatheState, LengthState, Move, MoveKind, PositionState, Xyz,
-    to_units,
-};
+use crate::geometry::{Xyz, add, scale, show, show_signed, sub, to_units};
+use crate::offsets::lathe::LatheState;
+use crate::offsets::length::LengthState;
+use crate::offsets::position::PositionState;
 use crate::setup::{MachineKind, Setup, Units};
 use crate::syntax::codes::Group;
 use crate::syntax::{Address, Block};
@@ -112,18 +115,6 @@ pub struct Machine {
     pub(crate) moves_left: usize,
     /// Set when a block ran out of `moves_left`.
     overflow: bool,
-}
-
-fn add(a: Xyz, b: Xyz) -> Xyz {
-    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
-}
-
-fn sub(a: Xyz, b: Xyz) -> Xyz {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-fn scale(a: Xyz, k: f64) -> Xyz {
-    [a[0] * k, a[1] * k, a[2] * k]
 }
 
 const AXES: [(Address, char); 3] = [(Address::X, 'X'), (Address::Y, 'Y'), (Address::Z, 'Z')];
@@ -265,14 +256,12 @@ impl Machine {
 
     /// A length in mm written in the current units with the control's decimals.
     fn fmt(&self, mm: f64) -> String {
-        let d = self.units().decimals();
-        format!("{:.d$}", to_units(mm, self.units()))
+        show(mm, self.units())
     }
 
     /// Like [`Machine::fmt`] with a sign.
     fn fmt_signed(&self, mm: f64) -> String {
-        let d = self.units().decimals();
-        format!("{:+.d$}", to_units(mm, self.units()))
+        show_signed(mm, self.units())
     }
 
     fn error(&self, code: &'static str, span: Span, msg: impl Into<String>) -> Diagnostic {

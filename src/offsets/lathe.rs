@@ -4,8 +4,21 @@
 //! `oo`'s X (a diameter value by default, or a radius value doubled on the
 //! diameter axis) and Z, each geometry + wear. Offset 00 cancels.
 
-use crate::report::Xyz;
+use crate::geometry::Xyz;
 use crate::setup::{LatheRegister, LatheXOffset};
+
+/// Lathe T-code offset state (spec 5).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct LatheState {
+    /// Tool number (tt of Tttoo).
+    pub tool: u32,
+    /// Offset number (oo of Tttoo).
+    pub offset: u16,
+    /// The vector the active offset asks for (X diameter, Z; mm).
+    pub target: Xyz,
+    /// The vector in the actual position now (X diameter, Z; mm).
+    pub vector: Xyz,
+}
 
 /// Tool and offset numbers of a T word (`T0108` and `T108`: tool 1, offset 8).
 pub fn split(t: u32) -> (u32, u16) {

@@ -8,7 +8,21 @@
 //! the seed's default `move` setting (rules 3, 4, 6) or leaves it for the
 //! next Z move with `next_z`; G28 Z clears `vector` until Z moves again.
 
-use crate::report::LengthState;
+/// Tool length offset state (spec 3).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct LengthState {
+    /// G43 (+1), G44 (-1) or G49 (0).
+    pub sign: i8,
+    /// Active H number.
+    pub h: u16,
+    /// Value of register H as read (mm).
+    pub value: f64,
+    /// The Z vector the mode asks for: sign × value (mm).
+    pub target: f64,
+    /// The Z vector in the actual position now (mm). It differs from `target`
+    /// after G28 Z, or with `length_offset_without_z = next_z`, until Z moves.
+    pub vector: f64,
+}
 
 /// The sign a length-offset code gives the register value: G43 +1, G44 −1,
 /// G49 0 (spec 3.1).

@@ -4,6 +4,20 @@
 //! movement amount `m` becomes `m + k·s·v`, with `v` the signed value of
 //! register D, `k` from the code and `s` the direction of the movement.
 
+use crate::geometry::Xyz;
+
+/// Tool position offset state (spec 4).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PositionState {
+    /// Active (modal) D number.
+    pub d: u16,
+    /// Value of register D as last read (mm).
+    pub value: f64,
+    /// Accumulated position-offset vector (mm): actual − programmed from
+    /// G45–G48 (seed 003's offset distance from the programmed end point).
+    pub vector: Xyz,
+}
+
 /// The factor k of spec 4.1: G45 +1 (extension), G46 −1 (reduction),
 /// G47 +2 (double extension), G48 −2 (double reduction).
 pub fn factor(code: u16) -> f64 {

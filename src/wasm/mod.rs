@@ -443,7 +443,7 @@ struct SessionObserver<'a> {
 }
 
 impl crate::run::Observer for SessionObserver<'_> {
-    fn on_move(&mut self, m: &crate::report::Move) {
+    fn on_move(&mut self, m: &crate::machine::Move) {
         self.path.on_move(m);
     }
 
