@@ -2,13 +2,13 @@
 //! G00–G03 in the ZX plane, the G90/G92/G94 single cycles (G-code system A),
 //! and T-code tool position offset (seed 004).
 
-use super::modal::Motion;
-use super::{ArcRequest, Codes, Machine, Mark, Out};
+use super::modal::{ArcDirection, LatheCycle, Motion};
+use super::{ArcRequest, Machine, Mark, Out};
 use super::{EventKind, MoveKind};
 use crate::diag::Diagnostic;
 use crate::geometry::Xyz;
 use crate::offsets::lathe as toffset;
-use crate::syntax::codes::Group;
+use crate::syntax::codes::NonModal;
 use crate::syntax::{Address, Block};
 
 /// The lathe's turning-cycle data, modal until another group 01 code.
@@ -23,12 +23,7 @@ pub(crate) struct TurningData {
 }
 
 impl Machine {
-    pub(super) fn lathe_block(
-        &mut self,
-        b: &Block,
-        c: &Codes<'_>,
-        out: &mut Out,
-    ) -> Result<(), Diagnostic> {
+    pub(super) fn lathe_block(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
         for w in &b.words {
             if matches!(w.address, Address::Y | Address::J | Address::D | Address::H) {
                 let why = match w.address {
@@ -44,9 +39,9 @@ impl Machine {
                 ));
             }
         }
-        self.common_words(b, c, out);
-        let nonmodal = c.get(Group::NonModal);
-        if nonmodal == Some(4) {
+        self.common_words(b, out);
+        let c = b.codes();
+        if c.non_modal() == Some(NonModal::Dwell) {
             return self.dwell(b, out);
         }
         for (abs, inc) in [(Address::X, Address::U), (Address::Z, Address::W)] {
@@ -63,37 +58,40 @@ impl Machine {
                 ));
             }
         }
-        if let Some(m) = c.get(Group::Motion) {
-            self.state.modal.motion =
-                Motion::from_code(self.setup.machine, m).unwrap_or(Motion::Rapid);
-            if matches!(m, 90 | 92 | 94) {
+        if let Some(m) = c.motion() {
+            self.state.modal.motion = m;
+            if let Motion::LatheCycle(_) = m {
                 self.turning = TurningData::default();
             }
         }
-        match nonmodal {
-            Some(50) => return self.g50(b),
-            Some(28) => return self.lathe_g28(b, out),
-            _ => {}
+        match c.non_modal() {
+            Some(NonModal::SetCoordinates) => return self.g50(b),
+            Some(NonModal::ReferenceReturn) => return self.lathe_g28(b, out),
+            // G04 was made above; G45–G48 are the mill's, refused by the
+            // parser on the lathe (seed 004).
+            Some(NonModal::Dwell | NonModal::PositionOffset(_)) | None => {}
         }
         let t_changed = self.t_code(b, out);
         let motion = self.state.modal.motion;
         let any_axis = [Address::X, Address::U, Address::Z, Address::W]
             .iter()
             .any(|a| b.has(*a));
-        let cycle = matches!(
-            motion,
-            Motion::TurningCycle | Motion::ThreadingCycle | Motion::FacingCycle
-        );
         let arc_words = motion.is_arc()
             && [Address::I, Address::K, Address::R]
                 .iter()
                 .any(|a| b.has(*a));
-        if cycle && (any_axis || b.has(Address::R)) {
-            return self.turning_cycle(b, out, t_changed);
+        if let Motion::LatheCycle(cycle) = motion
+            && (any_axis || b.has(Address::R))
+        {
+            return self.turning_cycle(b, cycle, out, t_changed);
         }
         if !any_axis && !arc_words {
             if t_changed {
-                if motion.is_arc() || cycle {
+                let in_feed_or_rapid = match motion {
+                    Motion::Rapid | Motion::Linear => true,
+                    Motion::Arc(_) | Motion::LatheCycle(_) => false,
+                };
+                if !in_feed_or_rapid {
                     return Err(self.error(
                         "offset-motion-mode",
                         self.word_span(b, Address::T),
@@ -156,11 +154,13 @@ impl Machine {
                 "an R arc whose end is its start makes no circle (a full circle needs I and K); the block makes no arc",
             ));
         }
-        if motion.is_arc() && !r_without_chord {
+        if let Motion::Arc(direction) = motion
+            && !r_without_chord
+        {
             let mut req = ArcRequest {
                 target,
                 actual_end: add_xz(target, vector),
-                ccw: motion == Motion::ArcCcw,
+                ccw: direction == ArcDirection::Ccw,
                 ..ArcRequest::default()
             };
             if let Some(r) = b.value(Address::R) {
@@ -363,6 +363,7 @@ impl Machine {
     fn turning_cycle(
         &mut self,
         b: &Block,
+        cycle: LatheCycle,
         out: &mut Out,
         t_changed: bool,
     ) -> Result<(), Diagnostic> {
@@ -392,20 +393,20 @@ impl Machine {
         };
         let r = self.turning.r;
         let old_vector = self.state.lathe.vector;
-        let legs: [(f64, f64, MoveKind); 4] = match motion {
-            Motion::TurningCycle => [
+        let legs: [(f64, f64, MoveKind); 4] = match cycle {
+            LatheCycle::Turning => [
                 (x1 + 2.0 * r, z0, MoveKind::Rapid),
                 (x1, z1, MoveKind::Feed),
                 (x0, z1, MoveKind::Feed),
                 (x0, z0, MoveKind::Rapid),
             ],
-            Motion::ThreadingCycle => [
+            LatheCycle::Threading => [
                 (x1 + 2.0 * r, z0, MoveKind::Rapid),
                 (x1, z1, MoveKind::Feed),
                 (x0, z1, MoveKind::Rapid),
                 (x0, z0, MoveKind::Rapid),
             ],
-            _ => [
+            LatheCycle::Facing => [
                 (x0, z1 + r, MoveKind::Rapid),
                 (x1, z1, MoveKind::Feed),
                 (x1, z0, MoveKind::Feed),

@@ -3,8 +3,8 @@
 //! (G45–G48, spec 4).
 
 use super::MoveKind;
-use super::modal::{Distance, Motion};
-use super::{AXES, ArcRequest, Codes, Machine, Out};
+use super::modal::{ArcDirection, Distance, LengthOffset, Motion, Plane};
+use super::{AXES, ArcRequest, Machine, Out};
 use crate::diag::Diagnostic;
 use crate::geometry::Xyz;
 use crate::offsets::length::LengthState;
@@ -12,7 +12,7 @@ use crate::offsets::position;
 use crate::setup::LengthOffsetWithoutZ;
 use crate::syntax::Address;
 use crate::syntax::Block;
-use crate::syntax::codes::Group;
+use crate::syntax::codes::{CannedCycle, Code, Group, NonModal, PositionOffset};
 
 /// The words of a block that only moves: sequence number, G codes of group
 /// 01, axes, arc centre and radius, feed ([`Machine::motion_block`]).
@@ -30,14 +30,9 @@ const MOTION_WORDS: [Address; 10] = [
 ];
 
 impl Machine {
-    pub(super) fn mill_block(
-        &mut self,
-        b: &Block,
-        c: &Codes<'_>,
-        out: &mut Out,
-    ) -> Result<(), Diagnostic> {
+    pub(super) fn mill_block(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
         if b.holds_only(&MOTION_WORDS, &[Group::Motion]) {
-            return self.motion_block(b, c, out);
+            return self.motion_block(b, out);
         }
         let lathe_words = b.holds(Address::U) || b.holds(Address::W);
         for w in b.words.iter().filter(|_| lathe_words) {
@@ -52,7 +47,8 @@ impl Machine {
                 ));
             }
         }
-        self.common_words(b, c, out);
+        self.common_words(b, out);
+        let c = b.codes();
         if let Some(t) = b.get(Address::T) {
             self.state.next_tool = t.int();
         }
@@ -62,43 +58,41 @@ impl Machine {
             self.state.position.value = self.mm(self.setup.mill_value(n));
         }
 
-        let motion = c.get(Group::Motion);
-        let cycle = c.get(Group::Cycle);
-        if let (Some(m), Some(cy)) = (motion, cycle)
-            && cy != 80
-        {
+        if let (Some(m), Some(CannedCycle::Cycle(cy))) = (c.motion(), c.cycle()) {
             return Err(self.error(
                 "motion-and-cycle",
-                c.span(Group::Cycle),
-                format!("G{m:02} and G{cy} in one block: a group 01 code cancels the canned cycle"),
+                b.code_span(Group::Cycle),
+                format!(
+                    "{} and {} in one block: a group 01 code cancels the canned cycle",
+                    m.gcode(),
+                    cy.gcode()
+                ),
             ));
         }
-        if let Some(m) = motion {
-            self.state.modal.motion =
-                Motion::from_code(self.setup.machine, m).unwrap_or(Motion::Rapid);
+        if let Some(m) = c.motion() {
+            self.state.modal.motion = m;
             // A group 01 code cancels the canned cycle (Fanuc/YASNAC M).
             self.cancel_cycle();
         }
-        if let Some(cy) = cycle {
-            if cy == 80 {
-                self.cancel_cycle();
-            } else {
-                self.start_cycle(cy);
-            }
+        match c.cycle() {
+            Some(CannedCycle::Cancel) => self.cancel_cycle(),
+            Some(CannedCycle::Cycle(cycle)) => self.start_cycle(cycle),
+            None => {}
         }
 
-        match c.get(Group::NonModal) {
-            Some(4) => return self.dwell(b, out),
-            Some(92) => return self.g92(b),
-            Some(28) => return self.g28(b, c, out),
-            Some(code @ 45..=48) => return self.position_offset_block(b, c, code, out),
-            _ => {}
+        match c.non_modal() {
+            Some(NonModal::Dwell) => return self.dwell(b, out),
+            Some(NonModal::SetCoordinates) => return self.g92(b),
+            Some(NonModal::ReferenceReturn) => return self.g28(b, out),
+            Some(NonModal::PositionOffset(code)) => {
+                return self.position_offset_block(b, code, out);
+            }
+            None => {}
         }
-        let old_length = self.length_words(b, c, out)?;
-        if self.state.modal.cycle.active() {
-            self.cycle_block(b, out, old_length)
-        } else {
-            self.mill_motion(b, out, old_length, None)
+        let old_length = self.length_words(b, out)?;
+        match self.state.modal.cycle {
+            Some(cycle) => self.cycle_block(b, cycle, out, old_length),
+            None => self.mill_motion(b, out, old_length, None),
         }
     }
 
@@ -107,32 +101,25 @@ impl Machine {
     /// apply (its other G codes, M, S, T, D, H words, U/W): the feed, the
     /// motion mode, then the move (callgrind: a seventh of the machine's
     /// instructions went to those steps).
-    fn motion_block(&mut self, b: &Block, c: &Codes<'_>, out: &mut Out) -> Result<(), Diagnostic> {
+    fn motion_block(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
         if let Some(f) = b.value(Address::F) {
             self.state.feed = Some(f);
         }
-        if let Some(m) = c.get(Group::Motion) {
-            self.state.modal.motion =
-                Motion::from_code(self.setup.machine, m).unwrap_or(Motion::Rapid);
+        if let Some(m) = b.codes().motion() {
+            self.state.modal.motion = m;
             // A group 01 code cancels the canned cycle (Fanuc/YASNAC M).
             self.cancel_cycle();
         }
         let old_length = self.state.length;
-        if self.state.modal.cycle.active() {
-            self.cycle_block(b, out, old_length)
-        } else {
-            self.mill_motion(b, out, old_length, None)
+        match self.state.modal.cycle {
+            Some(cycle) => self.cycle_block(b, cycle, out, old_length),
+            None => self.mill_motion(b, out, old_length, None),
         }
     }
 
     /// G43/G44/G49 and H (spec 3). Returns the state before the block.
-    fn length_words(
-        &mut self,
-        b: &Block,
-        c: &Codes<'_>,
-        out: &mut Out,
-    ) -> Result<LengthState, Diagnostic> {
-        let code = c.get(Group::Length);
+    fn length_words(&mut self, b: &Block, out: &mut Out) -> Result<LengthState, Diagnostic> {
+        let code = b.codes().length();
         let h = b.get(Address::H);
         let old = self.state.length;
         if code.is_none() && h.is_none() {
@@ -140,8 +127,10 @@ impl Machine {
         }
         if self.state.modal.motion.is_arc() && (code.is_some() || old.sign != 0) {
             // Spec 3.7 (YASNAC J50M): no length offset change in G02/G03 mode.
-            let span =
-                code.map_or_else(|| self.word_span(b, Address::H), |_| c.span(Group::Length));
+            let span = code.map_or_else(
+                || self.word_span(b, Address::H),
+                |_| b.code_span(Group::Length),
+            );
             return Err(self.error(
                 "length-offset-in-arc",
                 span,
@@ -160,14 +149,17 @@ impl Machine {
             self.state.modal.length = cd;
         }
         let l = self.state.length;
-        if l.sign != 0 && l.h == 0 && code.is_some_and(|cd| cd != 49) {
+        if let Some(cd @ (LengthOffset::Add | LengthOffset::Subtract)) = code
+            && l.sign != 0
+            && l.h == 0
+        {
             // Not an error (H00 reads 0), but rarely what was meant.
             out.warnings.push(Diagnostic::warning(
                 "length-offset-h00",
-                c.span(Group::Length),
+                b.code_span(Group::Length),
                 format!(
-                    "G{} with H00: register 00 reads 0, so no length offset applies",
-                    code.unwrap_or(43)
+                    "{} with H00: register 00 reads 0, so no length offset applies",
+                    cd.gcode()
                 ),
             ));
         }
@@ -181,7 +173,7 @@ impl Machine {
         b: &Block,
         out: &mut Out,
         old_length: LengthState,
-        pos: Option<u16>,
+        pos: Option<PositionOffset>,
     ) -> Result<(), Diagnostic> {
         let length_changed = changed(&old_length, &self.state.length);
         let motion = self.state.modal.motion;
@@ -256,7 +248,7 @@ impl Machine {
                 self.state.length.vector
             };
 
-        if motion.is_arc() {
+        if let Motion::Arc(direction) = motion {
             let planned = Planned {
                 start,
                 target,
@@ -265,7 +257,7 @@ impl Machine {
                 register,
                 new_length,
             };
-            return self.arc_move(b, out, old_length, pos, words, planned);
+            return self.arc_move(b, direction, out, old_length, pos, words, planned);
         }
 
         let kind = if motion == Motion::Linear {
@@ -290,13 +282,15 @@ impl Machine {
     /// the length offset did and records the move. Kept out of line: inlined
     /// in [`Machine::mill_motion`], its locals made every straight move's
     /// stack frame larger (callgrind: about a hundred instructions a block).
+    #[allow(clippy::too_many_arguments)]
     #[inline(never)]
     fn arc_move(
         &mut self,
         b: &Block,
+        direction: ArcDirection,
         out: &mut Out,
         old_length: LengthState,
-        pos: Option<u16>,
+        pos: Option<PositionOffset>,
         words: [Option<f64>; 3],
         planned: Planned,
     ) -> Result<(), Diagnostic> {
@@ -315,7 +309,7 @@ impl Machine {
             ..ArcRequest::default()
         };
         let (ia, ib, _) = self.state.modal.plane.axes();
-        req.ccw = (motion == Motion::ArcCcw) != (self.mirror[ia] != self.mirror[ib]);
+        req.ccw = (direction == ArcDirection::Ccw) != (self.mirror[ia] != self.mirror[ib]);
         let mut pv = self.state.position.vector;
         for i in 0..3 {
             pv[i] += delta[i];
@@ -367,9 +361,9 @@ impl Machine {
             let in_plane = |i: usize| i == ia || i == ib;
             if !(0..3).any(|i| in_plane(i) && centre_words[i].is_some()) {
                 let names = match self.state.modal.plane {
-                    super::modal::Plane::XY => "I/J",
-                    super::modal::Plane::ZX => "K/I",
-                    super::modal::Plane::YZ => "J/K",
+                    Plane::XY => "I/J",
+                    Plane::ZX => "K/I",
+                    Plane::YZ => "J/K",
                 };
                 return Err(self.error(
                     "arc-without-center",
@@ -464,44 +458,57 @@ impl Machine {
     fn position_offset_block(
         &mut self,
         b: &Block,
-        c: &Codes<'_>,
-        code: u16,
+        code: PositionOffset,
         out: &mut Out,
     ) -> Result<(), Diagnostic> {
-        for (group, n, span) in c.present() {
-            let allowed = [Group::NonModal, Group::Motion, Group::Distance]
-                .iter()
-                .any(|g| g.index() == group);
+        let machine = self.setup.machine;
+        for other in b.codes().each() {
+            let allowed = match other {
+                Code::NonModal(_) | Code::Motion(_) | Code::Distance(_) => true,
+                Code::Plane(_)
+                | Code::FeedMode(_)
+                | Code::Units(_)
+                | Code::CutterCompensation(_)
+                | Code::Length(_)
+                | Code::Cycle(_)
+                | Code::Return(_)
+                | Code::Work(_)
+                | Code::SurfaceSpeed(_) => false,
+            };
             if !allowed {
                 return Err(self.error(
                     "position-offset-g-code",
-                    span,
+                    b.code_span(other.group()),
                     format!(
-                        "G{n:02} cannot share a block with G{code}: only G00–G03 and G90/G91 may (seed 003: an input error occurs)"
+                        "{} cannot share a block with {}: only G00–G03 and G90/G91 may (seed 003: an input error occurs)",
+                        other.gcode(machine),
+                        code.gcode()
                     ),
                 ));
             }
         }
-        if self.state.modal.cycle.active() {
+        if let Some(cycle) = self.state.modal.cycle {
             return Err(self.error(
                 "position-offset-in-cycle",
-                c.span(Group::NonModal),
+                b.code_span(Group::NonModal),
                 format!(
-                    "G{code} cannot be programmed while canned cycle {} is active (seed 003): cancel it with G80 first",
-                    self.state.modal.codes(self.setup.machine).cycle.unwrap_or("G80")
+                    "{} cannot be programmed while canned cycle {} is active (seed 003): cancel it with G80 first",
+                    code.gcode(),
+                    cycle.gcode()
                 ),
             ));
         }
         if !AXES.iter().any(|(a, _)| b.has(*a)) {
             return Err(self.error(
                 "position-offset-without-axis",
-                c.span(Group::NonModal),
+                b.code_span(Group::NonModal),
                 format!(
-                    "G{code} needs an axis word to extend or reduce (spec 4.9); for a move by the offset alone write X0 in G91 (seed 003)"
+                    "{} needs an axis word to extend or reduce (spec 4.9); for a move by the offset alone write X0 in G91 (seed 003)",
+                    code.gcode()
                 ),
             ));
         }
-        let old_length = self.length_words(b, c, out)?;
+        let old_length = self.length_words(b, out)?;
         self.mill_motion(b, out, old_length, Some(code))
     }
 
@@ -527,7 +534,7 @@ impl Machine {
     /// G28: to the intermediate point, then to the reference position on the
     /// named axes; the length and position vectors are cleared on the axes
     /// that reach it, and G43/G44 applies again at the next Z move (spec 2).
-    fn g28(&mut self, b: &Block, c: &Codes<'_>, out: &mut Out) -> Result<(), Diagnostic> {
+    fn g28(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
         if !AXES.iter().any(|(a, _)| b.has(*a)) {
             return Err(self.error(
                 "g28-without-axis",
@@ -537,7 +544,7 @@ impl Machine {
         }
         // A length offset commanded here applies at the next Z move: the
         // return clears the Z vector anyway.
-        self.length_words(b, c, out)?;
+        self.length_words(b, out)?;
         let incremental = self.state.modal.distance == Distance::Incremental;
         let start = self.mark();
         let mut named = [false; 3];
@@ -590,7 +597,7 @@ impl Machine {
     #[allow(clippy::too_many_arguments)]
     fn position_note(
         &self,
-        code: u16,
+        code: PositionOffset,
         axis: char,
         m: f64,
         delta: f64,
@@ -732,6 +739,6 @@ pub(super) fn changed(old: &LengthState, new: &LengthState) -> bool {
 }
 
 /// "G45" … "G48" with the manual's meaning.
-fn gname(code: u16) -> String {
-    format!("G{code} ({})", position::meaning(code))
+fn gname(code: PositionOffset) -> String {
+    format!("{} ({})", code.gcode(), position::meaning(code))
 }

@@ -23,10 +23,10 @@ use crate::offsets::lathe::LatheState;
 use crate::offsets::length::LengthState;
 use crate::offsets::position::PositionState;
 use crate::setup::{MachineKind, Setup, Units};
-use crate::syntax::codes::Group;
+use crate::syntax::codes::NonModal;
 use crate::syntax::{Address, Block};
 use arc::{ArcError, Circle};
-use modal::{Modal, Plane};
+use modal::{Modal, WorkSystem};
 use std::sync::Arc;
 
 /// What happens after a block.
@@ -53,31 +53,6 @@ impl Out {
         self.events.clear();
         self.notes.clear();
         self.warnings.clear();
-    }
-}
-
-/// The G codes of a block, one per group: the parser classified them (and
-/// refused blocks with two of a group or an unknown code).
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct Codes<'b>(&'b Block);
-
-impl<'b> Codes<'b> {
-    fn of(block: &'b Block) -> Codes<'b> {
-        Codes(block)
-    }
-    /// The code of a group; a code in a group is a whole number (G05.1 is
-    /// in none), so the value's integer part is all of it.
-    pub fn get(&self, group: Group) -> Option<u16> {
-        self.0.group_word(group).map(|w| w.value as u16)
-    }
-    pub fn span(&self, group: Group) -> Span {
-        self.0.group_word(group).map(|w| w.span).unwrap_or_default()
-    }
-    /// The codes present, with their groups.
-    pub fn present(&self) -> impl Iterator<Item = (usize, u16, Span)> + '_ {
-        Group::ALL
-            .iter()
-            .filter_map(|&g| self.get(g).map(|n| (g.index(), n, self.span(g))))
     }
 }
 
@@ -217,10 +192,9 @@ impl Machine {
         self.line = block.span.line;
         self.span = block.span;
         self.overflow = false;
-        let codes = Codes::of(block);
         match self.setup.machine {
-            MachineKind::Mill => self.mill_block(block, &codes, out)?,
-            MachineKind::Lathe => self.lathe_block(block, &codes, out)?,
+            MachineKind::Mill => self.mill_block(block, out)?,
+            MachineKind::Lathe => self.lathe_block(block, out)?,
         }
         if self.overflow {
             return Err(self.error(
@@ -377,13 +351,10 @@ impl Machine {
     }
 
     /// G54–G59: the tool stays; its coordinates change to the new system.
-    fn select_work(&mut self, work: u8) {
+    fn select_work(&mut self, work: WorkSystem) {
         let unit = self.setup.units.mm();
         let new_origin = add(
-            scale(
-                self.setup.work_offsets.get(usize::from(work)).to_array(),
-                unit,
-            ),
+            scale(self.setup.work_offsets.get(work.index()).to_array(), unit),
             self.shift,
         );
         let delta = sub(self.origin, new_origin);
@@ -397,43 +368,37 @@ impl Machine {
 
     /// Codes, words and M functions every block may carry: units, plane,
     /// distance, feed mode, return level, work system, F, S, M codes.
-    fn common_words(&mut self, b: &Block, c: &Codes, out: &mut Out) {
+    fn common_words(&mut self, b: &Block, out: &mut Out) {
         let machine = self.setup.machine;
-        if let Some(u) = c.get(Group::Units) {
-            self.state.modal.units = if u == 20 { Units::Inch } else { Units::Mm };
+        let c = b.codes();
+        let modal = &mut self.state.modal;
+        if let Some(units) = c.units() {
+            modal.units = units;
         }
-        if let Some(p) = c.get(Group::Plane) {
-            self.state.modal.plane = match p {
-                17 => Plane::XY,
-                18 => Plane::ZX,
-                _ => Plane::YZ,
-            };
+        if let Some(plane) = c.plane() {
+            modal.plane = plane;
         }
-        if let Some(d) = c.get(Group::Distance) {
-            self.state.modal.distance = if d == 91 {
-                modal::Distance::Incremental
-            } else {
-                modal::Distance::Absolute
-            };
+        if let Some(distance) = c.distance() {
+            modal.distance = distance;
         }
-        if let Some(f) = c.get(Group::FeedMode) {
-            self.state.modal.feed_per_rev = f == 95 || (machine == MachineKind::Lathe && f == 99);
+        if let Some(feed_mode) = c.feed_mode() {
+            modal.feed_mode = feed_mode;
         }
-        if let Some(r) = c.get(Group::Return) {
-            self.state.modal.return_to_r = r == 99;
+        if let Some(level) = c.return_level() {
+            modal.return_level = level;
         }
-        if let Some(s) = c.get(Group::SurfaceSpeed) {
-            self.state.modal.surface_speed = s == 96;
+        if let Some(surface_speed) = c.surface_speed() {
+            modal.surface_speed = surface_speed;
         }
-        if let Some(w) = c.get(Group::Work) {
-            self.select_work((w - 54) as u8);
+        if let Some(work) = c.work() {
+            self.select_work(work);
         }
         if let Some(f) = b.value(Address::F) {
             self.state.feed = Some(f);
         }
         if let Some(s) = b.value(Address::S) {
             // G50 S on the lathe is the spindle speed limit, not a speed.
-            if !(machine == MachineKind::Lathe && c.get(Group::NonModal) == Some(50)) {
+            if !(machine == MachineKind::Lathe && c.non_modal() == Some(NonModal::SetCoordinates)) {
                 self.state.spindle = Some(s);
             }
         }

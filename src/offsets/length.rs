@@ -8,6 +8,8 @@
 //! the seed's default `move` setting (rules 3, 4, 6) or leaves it for the
 //! next Z move with `next_z`; G28 Z clears `vector` until Z moves again.
 
+use crate::syntax::codes::LengthOffset;
+
 /// Tool length offset state (spec 3).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct LengthState {
@@ -26,18 +28,18 @@ pub struct LengthState {
 
 /// The sign a length-offset code gives the register value: G43 +1, G44 −1,
 /// G49 0 (spec 3.1).
-pub fn sign(code: u16) -> i8 {
+pub fn sign(code: LengthOffset) -> i8 {
     match code {
-        43 => 1,
-        44 => -1,
-        _ => 0,
+        LengthOffset::Add => 1,
+        LengthOffset::Subtract => -1,
+        LengthOffset::Cancel => 0,
     }
 }
 
 impl LengthState {
     /// Applies the block's G43/G44/G49 (`code`) and H (`h`, with the value of
     /// its register in mm). H00 reads 0 and so cancels (spec 3.1).
-    pub fn command(&mut self, code: Option<u16>, h: Option<(u16, f64)>) {
+    pub fn command(&mut self, code: Option<LengthOffset>, h: Option<(u16, f64)>) {
         if let Some(c) = code {
             self.sign = sign(c);
         }
@@ -65,15 +67,15 @@ mod tests {
     #[test]
     fn spec3_1_g43_adds_g44_subtracts_g49_and_h00_cancel() {
         let mut l = LengthState::default();
-        l.command(Some(43), Some((2, 15.0)));
+        l.command(Some(LengthOffset::Add), Some((2, 15.0)));
         assert_eq!(l.target, 15.0);
-        l.command(Some(44), None);
+        l.command(Some(LengthOffset::Subtract), None);
         assert_eq!(l.target, -15.0);
         l.command(None, Some((0, 0.0)));
         assert_eq!(l.target, 0.0);
-        l.command(Some(43), Some((3, -2.0)));
+        l.command(Some(LengthOffset::Add), Some((3, -2.0)));
         assert_eq!(l.target, -2.0, "a negative value reverses the direction");
-        l.command(Some(49), None);
+        l.command(Some(LengthOffset::Cancel), None);
         assert_eq!(l.target, 0.0);
     }
 }

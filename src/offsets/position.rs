@@ -5,6 +5,7 @@
 //! register D, `k` from the code and `s` the direction of the movement.
 
 use crate::geometry::Xyz;
+use crate::syntax::codes::PositionOffset;
 
 /// Tool position offset state (spec 4).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -20,22 +21,22 @@ pub struct PositionState {
 
 /// The factor k of spec 4.1: G45 +1 (extension), G46 −1 (reduction),
 /// G47 +2 (double extension), G48 −2 (double reduction).
-pub fn factor(code: u16) -> f64 {
+pub fn factor(code: PositionOffset) -> f64 {
     match code {
-        45 => 1.0,
-        46 => -1.0,
-        47 => 2.0,
-        _ => -2.0,
+        PositionOffset::Extension => 1.0,
+        PositionOffset::Reduction => -1.0,
+        PositionOffset::DoubleExtension => 2.0,
+        PositionOffset::DoubleReduction => -2.0,
     }
 }
 
 /// What the code does, in the manual's words (seed 000's table).
-pub fn meaning(code: u16) -> &'static str {
+pub fn meaning(code: PositionOffset) -> &'static str {
     match code {
-        45 => "extension",
-        46 => "reduction",
-        47 => "double extension",
-        _ => "double reduction",
+        PositionOffset::Extension => "extension",
+        PositionOffset::Reduction => "reduction",
+        PositionOffset::DoubleExtension => "double extension",
+        PositionOffset::DoubleReduction => "double reduction",
     }
 }
 
@@ -47,7 +48,7 @@ pub fn meaning(code: u16) -> &'static str {
 /// Mitsubishi M700); a G91 zero movement counts as positive (spec 4.4, seed
 /// 003: "It is meaningless to give a sign to 0"), and under mirror image the
 /// offset follows the mirrored direction (seed 003).
-pub fn change(code: u16, m: f64, v: f64, incremental: bool, mirrored: bool) -> f64 {
+pub fn change(code: PositionOffset, m: f64, v: f64, incremental: bool, mirrored: bool) -> f64 {
     const ZERO: f64 = 1e-9;
     let s = if m > ZERO {
         1.0
@@ -65,50 +66,53 @@ pub fn change(code: u16, m: f64, v: f64, incremental: bool, mirrored: bool) -> f
 
 /// The change to an arc's R word (spec 4.8): R is changed as a radius,
 /// `R + k·v·sign(R)`.
-pub fn radius_change(code: u16, r: f64, v: f64) -> f64 {
+pub fn radius_change(code: PositionOffset, r: f64, v: f64) -> f64 {
     factor(code) * v * r.signum()
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use PositionOffset::{
+        DoubleExtension as G47, DoubleReduction as G48, Extension as G45, Reduction as G46,
+    };
 
     #[test]
     fn spec4_1_extension_and_reduction_along_the_movement() {
-        assert_eq!(change(45, 50.0, 6.0, true, false), 6.0);
-        assert_eq!(change(45, -50.0, 6.0, true, false), -6.0);
-        assert_eq!(change(46, 50.0, 6.0, true, false), -6.0);
-        assert_eq!(change(47, 50.0, 6.0, false, false), 12.0);
-        assert_eq!(change(48, -50.0, 6.0, false, false), 12.0);
+        assert_eq!(change(G45, 50.0, 6.0, true, false), 6.0);
+        assert_eq!(change(G45, -50.0, 6.0, true, false), -6.0);
+        assert_eq!(change(G46, 50.0, 6.0, true, false), -6.0);
+        assert_eq!(change(G47, 50.0, 6.0, false, false), 12.0);
+        assert_eq!(change(G48, -50.0, 6.0, false, false), 12.0);
     }
 
     #[test]
     fn spec4_2_negative_register_swaps_extension_and_reduction() {
         // G91 G46 X30. D02 with register 02 = -4. moves X by +34.
-        assert_eq!(30.0 + change(46, 30.0, -4.0, true, false), 34.0);
+        assert_eq!(30.0 + change(G46, 30.0, -4.0, true, false), 34.0);
     }
 
     #[test]
     fn spec4_3_reduction_larger_than_the_movement_reverses_it() {
         // G91 G48 X8. D03 with register 03 = 6. moves X by -4.
-        assert_eq!(8.0 + change(48, 8.0, 6.0, true, false), -4.0);
+        assert_eq!(8.0 + change(G48, 8.0, 6.0, true, false), -4.0);
     }
 
     #[test]
     fn spec4_4_g91_zero_movement_is_positive() {
-        assert_eq!(change(45, 0.0, 5.0, true, false), 5.0);
-        assert_eq!(change(46, -0.0, 5.0, true, false), -5.0);
+        assert_eq!(change(G45, 0.0, 5.0, true, false), 5.0);
+        assert_eq!(change(G46, -0.0, 5.0, true, false), -5.0);
     }
 
     #[test]
     fn spec4_5_g90_zero_movement_changes_nothing() {
-        assert_eq!(change(45, 0.0, 5.0, false, false), 0.0);
+        assert_eq!(change(G45, 0.0, 5.0, false, false), 0.0);
     }
 
     #[test]
     fn spec4_8_radius_change() {
-        assert_eq!(radius_change(45, 10.0, 2.0), 2.0);
-        assert_eq!(radius_change(45, -10.0, 2.0), -2.0);
-        assert_eq!(radius_change(46, 10.0, 2.0), -2.0);
+        assert_eq!(radius_change(G45, 10.0, 2.0), 2.0);
+        assert_eq!(radius_change(G45, -10.0, 2.0), -2.0);
+        assert_eq!(radius_change(G46, 10.0, 2.0), -2.0);
     }
 }
