@@ -23,7 +23,7 @@ use crate::offsets::lathe::LatheState;
 use crate::offsets::length::LengthState;
 use crate::offsets::position::PositionState;
 use crate::setup::{MachineKind, Setup, Units};
-use crate::syntax::codes::NonModal;
+use crate::syntax::codes::{MCode, NonModal};
 use crate::syntax::{Address, Block};
 use arc::{ArcError, Circle};
 use modal::{Modal, WorkSystem};
@@ -213,7 +213,8 @@ impl Machine {
                 "this block takes the tool beyond any machine's travel",
             ));
         }
-        let end = block.holds(Address::M) && block.mcodes().any(|(m, _)| m == 2 || m == 30);
+        let end =
+            block.holds(Address::M) && block.mcodes(self.setup.machine).any(|m| m.ends_program());
         Ok(if end { Flow::End } else { Flow::Continue })
     }
 
@@ -405,24 +406,30 @@ impl Machine {
         if !b.holds(Address::M) {
             return;
         }
-        for (m, _) in b.mcodes() {
+        for m in b.mcodes(machine) {
             let kind = match m {
-                0 => EventKind::ProgramStop,
-                1 => EventKind::OptionalStop,
-                2 | 30 => EventKind::ProgramEnd { m },
-                3 => EventKind::SpindleCw,
-                4 => EventKind::SpindleCcw,
-                5 => EventKind::SpindleStop,
-                19 => EventKind::SpindleOrient,
-                6 if machine == MachineKind::Mill => {
+                MCode::ProgramStop => EventKind::ProgramStop,
+                MCode::OptionalStop => EventKind::OptionalStop,
+                MCode::ProgramEnd | MCode::ProgramEndRewind => {
+                    EventKind::ProgramEnd { m: m.number() }
+                }
+                MCode::SpindleCw => EventKind::SpindleCw,
+                MCode::SpindleCcw => EventKind::SpindleCcw,
+                MCode::SpindleStop => EventKind::SpindleStop,
+                MCode::SpindleOrient => EventKind::SpindleOrient,
+                MCode::ToolChange => {
                     self.state.tool = self.state.next_tool;
                     EventKind::ToolChange {
                         tool: self.state.tool,
                     }
                 }
-                7 | 8 => EventKind::CoolantOn { m },
-                9 => EventKind::CoolantOff,
-                other => EventKind::Auxiliary { m: other },
+                MCode::CoolantMist | MCode::CoolantFlood => EventKind::CoolantOn { m: m.number() },
+                MCode::CoolantOff => EventKind::CoolantOff,
+                // Subprograms are carried through until they are modelled.
+                MCode::LocalSubprogramCall
+                | MCode::SubprogramCall
+                | MCode::SubprogramReturn
+                | MCode::Other(_) => EventKind::Auxiliary { m: m.number() },
             };
             self.event(out, kind);
         }

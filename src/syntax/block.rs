@@ -3,8 +3,9 @@
 
 use serde::Serialize;
 
-use super::codes::{Code, Codes, GCode, Group};
+use super::codes::{Code, Codes, GCode, Group, MCode};
 use crate::diag::Span;
+use crate::setup::MachineKind;
 
 /// The address letters offsetlab reads.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
@@ -303,11 +304,14 @@ impl Block {
             .map(|w| (w.gcode(), w))
     }
 
-    /// The M codes of the block with their words.
-    pub fn mcodes(&self) -> impl Iterator<Item = (u32, &Word)> {
+    /// The M codes of the block, in text order, as this machine reads them
+    /// (the parser checked their groups with the same [`MCode::of`]; they
+    /// are read from the words again because few blocks have any, and
+    /// keeping them cost every block).
+    pub fn mcodes(&self, machine: MachineKind) -> impl Iterator<Item = MCode> + '_ {
         self.words
             .iter()
             .filter(|w| w.address == Address::M)
-            .map(|w| (w.int(), w))
+            .map(move |w| MCode::of(machine, w.int()))
     }
 }

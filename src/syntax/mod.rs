@@ -19,7 +19,7 @@ pub use block::{Address, Block, Word, WordKind};
 
 use crate::diag::{Diagnostic, Span};
 use crate::setup::{DecimalInput, MachineKind, Setup, Units};
-use codes::{Code, GCode, Group, g_group, m_group};
+use codes::{Code, GCode, Group, MCode, g_group};
 use lexer::{Number, NumberError};
 
 /// Most diagnostics one program reports; past this one more says so.
@@ -255,16 +255,7 @@ impl Checks {
                 };
                 return self.admit_code(block, word, code);
             }
-            Address::M => {
-                let g = m_group(word.int());
-                if self.m_groups[..self.m_count].contains(&g) {
-                    return Err(Clash::MCode);
-                }
-                if self.m_count < self.m_groups.len() {
-                    self.m_groups[self.m_count] = g;
-                    self.m_count += 1;
-                }
-            }
+            Address::M => self.admit_mcode(machine, &word)?,
             _ => {
                 if block.holds(a) {
                     return Err(Clash::Duplicate);
@@ -272,6 +263,23 @@ impl Checks {
             }
         }
         block.push(word);
+        Ok(())
+    }
+
+    /// Notes the M group of an M word unless an earlier word has it. Out of
+    /// line: few blocks have an M word, and every block reads through
+    /// [`Checks::admit`] (the `check` instruction count in
+    /// docs/performance.md).
+    #[inline(never)]
+    fn admit_mcode(&mut self, machine: MachineKind, word: &Word) -> Result<(), Clash> {
+        let g = MCode::of(machine, word.int()).group();
+        if self.m_groups[..self.m_count].contains(&g) {
+            return Err(Clash::MCode);
+        }
+        if self.m_count < self.m_groups.len() {
+            self.m_groups[self.m_count] = g;
+            self.m_count += 1;
+        }
         Ok(())
     }
 

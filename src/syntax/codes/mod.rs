@@ -7,11 +7,13 @@
 //! never a silent skip).
 
 mod groups;
+mod mcodes;
 
 pub use groups::{
     ArcDirection, CannedCycle, CutterCompensation, Cycle, Distance, FeedMode, LatheCycle,
     LengthOffset, Motion, NonModal, Plane, PositionOffset, ReturnLevel, SurfaceSpeed, WorkSystem,
 };
+pub use mcodes::MCode;
 
 use crate::setup::{MachineKind, Units};
 
@@ -385,18 +387,6 @@ fn unsupported_reason(machine: MachineKind, g: GCode) -> String {
         format!("{g} {why} on the {}", machine.as_str())
     } else {
         format!("{g}: {why}")
-    }
-}
-
-/// The group of an M code: codes of one group exclude each other in a block.
-/// Codes without a group are their own group.
-pub fn m_group(m: u32) -> u32 {
-    match m {
-        0 | 1 | 2 | 30 => 1,
-        3 | 4 | 5 | 19 => 2,
-        7..=9 => 3,
-        6 => 4,
-        other => 100 + other,
     }
 }
 
