@@ -80,15 +80,12 @@ impl Machine {
         }
         let drills = [ia, ib, n].iter().any(|&i| b.has(AXES[i].0)) || b.has(Address::R);
         if !drills {
-            if super::mill::changed(&old_length, &self.state.length) {
+            if self.state.length.changed_since(&old_length) {
                 // An offset change without a hole: made as offset motion at rapid,
                 // the cycles' positioning rate.
                 let start = self.mark();
-                if self.setup.settings.length_offset_without_z
-                    == crate::setup::LengthOffsetWithoutZ::Move
-                {
-                    self.state.length.vector = self.state.length.target;
-                }
+                let setting = self.setup.settings.length_offset_without_z;
+                self.state.length.vector = self.state.length.vector_after(false, true, setting);
                 self.length_note(old_length, None, out);
                 self.emit(out, start, MoveKind::Offset, false, None);
             }

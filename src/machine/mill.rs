@@ -3,16 +3,15 @@
 //! (G45–G48, spec 4).
 
 use super::MoveKind;
-use super::modal::{ArcDirection, Distance, LengthOffset, Motion, Plane};
+use super::modal::{ArcDirection, Distance, Motion, Plane};
 use super::{AXES, ArcRequest, Machine, Out};
 use crate::diag::Diagnostic;
 use crate::geometry::Xyz;
-use crate::offsets::length::LengthState;
-use crate::offsets::position;
-use crate::setup::LengthOffsetWithoutZ;
+use crate::offsets::length::{LengthState, LengthWords, ZAfter};
+use crate::offsets::position::{self, PositionChange};
 use crate::syntax::Address;
 use crate::syntax::Block;
-use crate::syntax::codes::{CannedCycle, Code, Group, NonModal, PositionOffset};
+use crate::syntax::codes::{CannedCycle, Group, NonModal, PositionOffset};
 
 /// The words of a block that only moves: sequence number, G codes of group
 /// 01, axes, arc centre and radius, feed ([`Machine::motion_block`]).
@@ -54,8 +53,8 @@ impl Machine {
         }
         if let Some(d) = b.get(Address::D) {
             let n = d.int() as u16;
-            self.state.position.d = n;
-            self.state.position.value = self.mm(self.setup.mill_value(n));
+            let value = self.mm(self.setup.mill_value(n));
+            self.state.position.select(n, value);
         }
 
         if let (Some(m), Some(CannedCycle::Cycle(cy))) = (c.motion(), c.cycle()) {
@@ -117,7 +116,8 @@ impl Machine {
         }
     }
 
-    /// G43/G44/G49 and H (spec 3). Returns the state before the block.
+    /// G43/G44/G49 and H (spec 3, [`LengthState::block`]). Returns the
+    /// state before the block.
     fn length_words(&mut self, b: &Block, out: &mut Out) -> Result<LengthState, Diagnostic> {
         let code = b.codes().length();
         let h = b.get(Address::H);
@@ -125,43 +125,17 @@ impl Machine {
         if code.is_none() && h.is_none() {
             return Ok(old);
         }
-        if self.state.modal.motion.is_arc() && (code.is_some() || old.sign != 0) {
-            // Spec 3.7 (YASNAC J50M): no length offset change in G02/G03 mode.
-            let span = code.map_or_else(
-                || self.word_span(b, Address::H),
-                |_| b.code_span(Group::Length),
-            );
-            return Err(self.error(
-                "length-offset-in-arc",
-                span,
-                format!(
-                    "the tool length offset cannot change while {} is active (spec 3.7): command G00 or G01 first",
-                    self.state.modal.motion.gcode()
-                ),
-            ));
-        }
-        let h = h.map(|w| {
-            let n = w.int() as u16;
-            (n, self.mm(self.setup.mill_value(n)))
-        });
-        self.state.length.command(code, h);
+        let words = LengthWords {
+            code: code.map(|c| (c, b.code_span(Group::Length))),
+            h: h.map(|w| {
+                let n = w.int() as u16;
+                (n, w.span, self.mm(self.setup.mill_value(n)))
+            }),
+        };
+        let motion = self.state.modal.motion;
+        self.state.length.block(words, motion, &mut out.warnings)?;
         if let Some(cd) = code {
             self.state.modal.length = cd;
-        }
-        let l = self.state.length;
-        if let Some(cd @ (LengthOffset::Add | LengthOffset::Subtract)) = code
-            && l.sign != 0
-            && l.h == 0
-        {
-            // Not an error (H00 reads 0), but rarely what was meant.
-            out.warnings.push(Diagnostic::warning(
-                "length-offset-h00",
-                b.code_span(Group::Length),
-                format!(
-                    "{} with H00: register 00 reads 0, so no length offset applies",
-                    cd.gcode()
-                ),
-            ));
         }
         Ok(old)
     }
@@ -175,7 +149,7 @@ impl Machine {
         old_length: LengthState,
         pos: Option<PositionOffset>,
     ) -> Result<(), Diagnostic> {
-        let length_changed = changed(&old_length, &self.state.length);
+        let length_changed = self.state.length.changed_since(&old_length);
         let motion = self.state.modal.motion;
         let incremental = self.state.modal.distance == Distance::Incremental;
         let words: [Option<f64>; 3] = AXES.map(|(a, _)| b.value(a));
@@ -189,9 +163,7 @@ impl Machine {
         if !any_axis && !arc_words {
             if length_changed {
                 let start = self.mark();
-                if setting == LengthOffsetWithoutZ::Move {
-                    self.state.length.vector = self.state.length.target;
-                }
+                self.state.length.vector = self.state.length.vector_after(false, true, setting);
                 self.length_note(old_length, None, out);
                 let at_feed = motion == Motion::Linear;
                 self.emit(out, start, MoveKind::Offset, at_feed, None);
@@ -209,44 +181,27 @@ impl Machine {
             }
         }
 
-        // Spec 4.1–4.6: every axis word's amount changed on its own.
         let mut delta = [0.0; 3];
-        let mut register = 0.0;
-        if let Some(code) = pos {
+        let change = pos.map(|code| {
             let d = self.state.position.d;
-            register = self.mm(self.setup.mill_value(d));
+            let register = self.mm(self.setup.mill_value(d));
             self.state.position.value = register;
-            for (axis, w) in words.iter().enumerate() {
-                if w.is_some() {
-                    delta[axis] = position::change(
-                        code,
-                        amount[axis],
-                        register,
-                        incremental,
-                        self.mirror[axis],
-                    );
-                    let note = self.position_note(
-                        code,
-                        AXES[axis].1,
-                        amount[axis],
-                        delta[axis],
-                        d,
-                        register,
-                        incremental,
-                    );
-                    out.notes.push(note);
-                }
-            }
-        }
-
-        // Spec 3: a Z word lands on the offset target; otherwise a changed
-        // target moves Z now (setting `move`) or waits for the next Z move.
-        let new_length =
-            if words[2].is_some() || (length_changed && setting == LengthOffsetWithoutZ::Move) {
-                self.state.length.target
-            } else {
-                self.state.length.vector
+            let change = PositionChange {
+                code,
+                d,
+                register,
+                incremental,
+                mirror: self.mirror,
+                units: self.units(),
             };
+            delta = change.axes(amount, words.map(|w| w.is_some()), &mut out.notes);
+            change
+        });
+
+        let new_length =
+            self.state
+                .length
+                .vector_after(words[2].is_some(), length_changed, setting);
 
         if let Motion::Arc(direction) = motion {
             let planned = Planned {
@@ -254,10 +209,10 @@ impl Machine {
                 target,
                 amount,
                 delta,
-                register,
+                change,
                 new_length,
             };
-            return self.arc_move(b, direction, out, old_length, pos, words, planned);
+            return self.arc_move(b, direction, out, old_length, words, planned);
         }
 
         let kind = if motion == Motion::Linear {
@@ -290,7 +245,6 @@ impl Machine {
         direction: ArcDirection,
         out: &mut Out,
         old_length: LengthState,
-        pos: Option<PositionOffset>,
         words: [Option<f64>; 3],
         planned: Planned,
     ) -> Result<(), Diagnostic> {
@@ -299,7 +253,7 @@ impl Machine {
             target,
             amount,
             delta,
-            register,
+            change,
             new_length,
         } = planned;
         let motion = self.state.modal.motion;
@@ -346,15 +300,7 @@ impl Machine {
                 );
             }
             let r_mm = self.mm(r.value);
-            let dr = pos.map_or(0.0, |code| position::radius_change(code, r_mm, register));
-            if let Some(code) = pos {
-                out.notes.push(format!(
-                    "{}: R {} becomes {} (R changed as a radius)",
-                    gname(code),
-                    self.fmt(r_mm),
-                    self.fmt(r_mm + dr)
-                ));
-            }
+            let dr = change.map_or(0.0, |c| c.radius(r_mm, &mut out.notes));
             req.radius = Some((r_mm, dr));
         } else {
             let (ia, ib, _) = self.state.modal.plane.axes();
@@ -394,17 +340,8 @@ impl Machine {
                     off = -off;
                 }
                 req.center[i] = off;
-                if let Some(code) = pos {
-                    // Spec 4.8: I/J/K are incremental amounts, changed like axis words.
-                    let dc = position::change(code, off, register, true, self.mirror[i]);
-                    req.center_change[i] = dc;
-                    out.notes.push(format!(
-                        "{}: {} {} becomes {}",
-                        gname(code),
-                        ['I', 'J', 'K'][i],
-                        self.fmt(off),
-                        self.fmt(off + dc)
-                    ));
+                if let Some(c) = change {
+                    req.center_change[i] = c.center(i, off, &mut out.notes);
                 }
             }
         }
@@ -454,60 +391,14 @@ impl Machine {
         Ok(())
     }
 
-    /// A block with G45–G48 (spec 4.9, 4.10).
+    /// A block with G45–G48 (spec 4, [`position::check_block`]).
     fn position_offset_block(
         &mut self,
         b: &Block,
         code: PositionOffset,
         out: &mut Out,
     ) -> Result<(), Diagnostic> {
-        let machine = self.setup.machine;
-        for other in b.codes().each() {
-            let allowed = match other {
-                Code::NonModal(_) | Code::Motion(_) | Code::Distance(_) => true,
-                Code::Plane(_)
-                | Code::FeedMode(_)
-                | Code::Units(_)
-                | Code::CutterCompensation(_)
-                | Code::Length(_)
-                | Code::Cycle(_)
-                | Code::Return(_)
-                | Code::Work(_)
-                | Code::SurfaceSpeed(_) => false,
-            };
-            if !allowed {
-                return Err(self.error(
-                    "position-offset-g-code",
-                    b.code_span(other.group()),
-                    format!(
-                        "{} cannot share a block with {}: only G00–G03 and G90/G91 may (seed 003: an input error occurs)",
-                        other.gcode(machine),
-                        code.gcode()
-                    ),
-                ));
-            }
-        }
-        if let Some(cycle) = self.state.modal.cycle {
-            return Err(self.error(
-                "position-offset-in-cycle",
-                b.code_span(Group::NonModal),
-                format!(
-                    "{} cannot be programmed while canned cycle {} is active (seed 003): cancel it with G80 first",
-                    code.gcode(),
-                    cycle.gcode()
-                ),
-            ));
-        }
-        if !AXES.iter().any(|(a, _)| b.has(*a)) {
-            return Err(self.error(
-                "position-offset-without-axis",
-                b.code_span(Group::NonModal),
-                format!(
-                    "{} needs an axis word to extend or reduce (spec 4.9); for a move by the offset alone write X0 in G91 (seed 003)",
-                    code.gcode()
-                ),
-            ));
-        }
+        position::check_block(b, code, self.setup.machine, self.state.modal.cycle)?;
         let old_length = self.length_words(b, out)?;
         self.mill_motion(b, out, old_length, Some(code))
     }
@@ -592,127 +483,25 @@ impl Machine {
         Ok(())
     }
 
-    /// The sentence for one axis changed by G45–G48 (spec 6's example:
-    /// "G47: X move 50.000 extended by 2 × D01 (6.000) to 62.000").
-    #[allow(clippy::too_many_arguments)]
-    fn position_note(
-        &self,
-        code: PositionOffset,
-        axis: char,
-        m: f64,
-        delta: f64,
-        d: u16,
-        v: f64,
-        incremental: bool,
-    ) -> String {
-        let g = gname(code);
-        if delta == 0.0 && !incremental && m.abs() <= 1e-9 {
-            return format!(
-                "{g}: {axis} target is the current position, so {axis} is not changed (spec 4.5)"
-            );
-        }
-        let verb = if position::factor(code) > 0.0 {
-            "extended"
-        } else {
-            "reduced"
-        };
-        let twice = if position::factor(code).abs() == 2.0 {
-            "2 × "
-        } else {
-            ""
-        };
-        let mut s = format!(
-            "{g}: {axis} move {} {verb} by {twice}D{d:02} ({}) to {}",
-            self.fmt(m),
-            self.fmt(v),
-            self.fmt(m + delta)
-        );
-        if m.abs() <= 1e-9 {
-            s.push_str(" (a zero move goes by the offset alone, seed 003)");
-        } else if (m + delta) * m < 0.0 {
-            s.push_str(" — the move reverses (spec 4.3)");
-        }
-        s
-    }
-
-    /// The sentence for what the length offset did in this block (spec 3).
-    /// `z_amount` is the programmed Z movement when the block moved along Z.
-    /// Nearly every block leaves the offset as it was: that test is inlined
-    /// where the machine calls this, the sentence is written out of line.
+    /// Notes what the length offset did in this block (spec 3,
+    /// [`LengthState::note`]). `z_amount` is the programmed Z movement when
+    /// the block moved along Z.
     #[inline]
     pub(super) fn length_note(&self, old: LengthState, z_amount: Option<f64>, out: &mut Out) {
-        let new = self.state.length;
-        let mode_changed = new.sign != old.sign || new.h != old.h || new.target != old.target;
-        if mode_changed || new.vector - old.vector != 0.0 {
-            self.write_length_note(old, mode_changed, z_amount, out);
+        if self.state.length.note_due(&old) {
+            self.write_length_note(old, z_amount, out);
         }
     }
 
     #[inline(never)]
-    fn write_length_note(
-        &self,
-        old: LengthState,
-        mode_changed: bool,
-        z_amount: Option<f64>,
-        out: &mut Out,
-    ) {
-        let new = self.state.length;
-        let vector_change = new.vector - old.vector;
-        let label = if mode_changed {
-            if new.target == 0.0 && old.target != 0.0 {
-                if new.sign == 0 {
-                    "G49 cancels the tool length offset".to_string()
-                } else {
-                    "H00 cancels the tool length offset".to_string()
-                }
-            } else if new.sign == 0 {
-                "G49: no tool length offset".to_string()
-            } else {
-                let g = if new.sign > 0 { "G43" } else { "G44" };
-                let how = if new.sign > 0 { "adds" } else { "subtracts" };
-                if old.sign == new.sign && old.h != new.h && old.h != 0 {
-                    format!(
-                        "H{:02} → H{:02} while {g} is active ({} → {})",
-                        old.h,
-                        new.h,
-                        self.fmt(old.value),
-                        self.fmt(new.value)
-                    )
-                } else {
-                    format!("{g} {how} H{:02} ({})", new.h, self.fmt(new.value))
-                }
-            }
-        } else {
-            format!(
-                "this Z move applies the pending length offset H{:02} ({})",
-                new.h,
-                self.fmt_signed(new.target)
-            )
+    fn write_length_note(&self, old: LengthState, z_amount: Option<f64>, out: &mut Out) {
+        let z = ZAfter {
+            incremental: self.state.modal.distance == Distance::Incremental,
+            programmed: self.state.programmed[2],
+            actual: self.actual()[2],
+            units: self.units(),
         };
-        let effect = match z_amount {
-            Some(m) if self.state.modal.distance == Distance::Incremental => {
-                format!("the Z move {} becomes {}", self.fmt(m), self.fmt(m + vector_change))
-            }
-            Some(_) => format!(
-                "Z target {} lands at {}",
-                self.fmt(self.state.programmed[2]),
-                self.fmt(self.actual()[2])
-            ),
-            None if vector_change != 0.0 => {
-                if old.vector != 0.0 && new.vector != 0.0 {
-                    format!("no Z word: Z moves by the difference, {} (seed 001)", self.fmt_signed(vector_change))
-                } else {
-                    format!("no Z word: Z moves by {} (seed 001)", self.fmt_signed(vector_change))
-                }
-            }
-            None if new.target != new.vector => {
-                "no Z word: no motion now; the next Z move lands offset (setting length_offset_without_z = next_z)"
-                    .to_string()
-            }
-            None if old.vector == 0.0 => "no motion (no length vector was applied)".to_string(),
-            None => "no motion".to_string(),
-        };
-        out.notes.push(format!("{label}: {effect}"));
+        out.notes.push(self.state.length.note(&old, z_amount, z));
     }
 }
 
@@ -727,18 +516,8 @@ struct Planned {
     amount: Xyz,
     /// What G45–G48 change of each axis's amount.
     delta: Xyz,
-    /// The G45–G48 register value (mm), or 0.
-    register: f64,
+    /// What G45–G48 does in this block, if it holds one.
+    change: Option<PositionChange>,
     /// The length vector at the end of the move.
     new_length: f64,
-}
-
-/// True if a block changed the length offset mode, number or target.
-pub(super) fn changed(old: &LengthState, new: &LengthState) -> bool {
-    old.target != new.target || old.sign != new.sign || old.h != new.h
-}
-
-/// "G45" … "G48" with the manual's meaning.
-fn gname(code: PositionOffset) -> String {
-    format!("{} ({})", code.gcode(), position::meaning(code))
 }

@@ -338,7 +338,7 @@ impl Machine {
     fn set_coordinate(&mut self, axis: usize, value: f64, clear_position: bool) {
         let before = self.actual()[axis];
         if clear_position {
-            self.state.position.vector[axis] = 0.0;
+            self.state.position.cancel_for_coordinate_setting(axis);
         }
         self.state.programmed[axis] = value;
         let after = self.actual()[axis];
