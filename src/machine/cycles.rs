@@ -140,11 +140,7 @@ impl Machine {
         }
         let l = self.state.length;
         if n == 2 && (l.vector != old_length.vector || l.target != old_length.target) {
-            out.notes.push(format!(
-                "the cycle's Z levels carry the tool length offset H{:02} ({})",
-                l.h,
-                self.fmt_signed(l.vector)
-            ));
+            out.notes.push(l.cycle_note(self.units()));
         }
         Ok(())
     }

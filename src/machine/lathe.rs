@@ -1,6 +1,7 @@
 //! The lathe's block (spec 5): X as a diameter and Z, U/W incremental, G50,
-//! G00–G03 in the ZX plane, the G90/G92/G94 single cycles (G-code system A),
-//! and T-code tool position offset (seed 004).
+//! G00–G03 in the ZX plane and the G90/G92/G94 single cycles (G-code system
+//! A). The T-code tool position offset's rules and sentences are
+//! [`crate::offsets::lathe`]'s; this file moves the tool by them.
 
 use super::modal::{ArcDirection, LatheCycle, Motion};
 use super::{ArcRequest, Machine, Mark, Out};
@@ -87,26 +88,15 @@ impl Machine {
         }
         if !any_axis && !arc_words {
             if t_changed {
-                let in_feed_or_rapid = match motion {
-                    Motion::Rapid | Motion::Linear => true,
-                    Motion::Arc(_) | Motion::LatheCycle(_) => false,
-                };
-                if !in_feed_or_rapid {
-                    return Err(self.error(
-                        "offset-motion-mode",
-                        self.word_span(b, Address::T),
-                        format!(
-                            "a T offset change with no move is made at rapid (G00) or feed (G01); {} is active: command G00 or G01 with it",
-                            motion.gcode()
-                        ),
-                    ));
-                }
+                let at_feed =
+                    toffset::offset_motion_at_feed(motion, self.word_span(b, Address::T))?;
                 let start = self.mark();
                 let old = self.state.lathe.vector;
                 self.state.lathe.vector = self.state.lathe.target;
-                let at_feed = motion == Motion::Linear;
                 let d = self.sub_xz(self.state.lathe.vector, old);
-                out.notes.push(self.t_motion_note(d, at_feed));
+                let units = self.units();
+                out.notes
+                    .push(self.state.lathe.motion_note(d, at_feed, units));
                 self.emit(out, start, MoveKind::Offset, at_feed, None);
             }
             return Ok(());
@@ -130,16 +120,8 @@ impl Machine {
             false,
             b.has(Address::Z) || b.has(Address::W),
         ];
-        // Spec 5.2: with a T code the move lands on the new offset on both
-        // axes; otherwise each axis that moves carries the active offset
-        // (after G28 an axis regains it when it next moves).
         let old_vector = self.state.lathe.vector;
-        let mut vector = old_vector;
-        for axis in [0, 2] {
-            if t_changed || moved[axis] {
-                vector[axis] = self.state.lathe.target[axis];
-            }
-        }
+        let vector = self.state.lathe.vector_after_move(t_changed, moved);
         // As on the mill, an R arc from a point to itself has no centre: a
         // warning, and the block moves like G01 (only an offset change can
         // move the tool then).
@@ -190,8 +172,11 @@ impl Machine {
                 MoveKind::ArcCw
             };
             if t_changed {
-                out.notes
-                    .push(self.t_move_note(self.sub_xz(vector, old_vector), true));
+                out.notes.push(self.state.lathe.move_note(
+                    self.sub_xz(vector, old_vector),
+                    true,
+                    self.units(),
+                ));
             }
             self.emit(out, start, kind, true, Some(info));
             return Ok(());
@@ -200,8 +185,11 @@ impl Machine {
         self.state.lathe.vector = vector;
         let at_feed = motion == Motion::Linear || r_without_chord;
         if t_changed {
-            out.notes
-                .push(self.t_move_note(self.sub_xz(vector, old_vector), at_feed));
+            out.notes.push(self.state.lathe.move_note(
+                self.sub_xz(vector, old_vector),
+                at_feed,
+                self.units(),
+            ));
         }
         let kind = if at_feed {
             MoveKind::Feed
@@ -216,86 +204,24 @@ impl Machine {
         [a[0] - b[0], 0.0, a[2] - b[2]]
     }
 
-    /// The T word (spec 5): selects tool and offset; returns true if the
+    /// The T word (spec 5, [`LatheState::command`]): returns true if the
     /// offset vector the machine should carry changed.
     fn t_code(&mut self, b: &Block, out: &mut Out) -> bool {
         let Some(t) = b.get(Address::T) else {
             return false;
         };
-        let (tool, offset) = toffset::split(t.int());
-        let old = self.state.lathe;
-        if tool != old.tool {
-            // Spec 5.6: a new tool number indexes the turret.
+        let setup = &self.setup;
+        let unit = self.state.modal.units.mm();
+        let x_offset = setup.settings.lathe_x_offset;
+        let register = |offset| setup.lathe_register(offset);
+        let t = self
+            .state
+            .lathe
+            .command(t.int(), register, x_offset, unit, &mut out.notes);
+        if let Some(tool) = t.indexed {
             self.event(out, EventKind::ToolIndex { tool });
-            out.notes.push(format!(
-                "tool {:02} → {tool:02}: the turret indexes (spec 5.6)",
-                old.tool
-            ));
         }
-        let reg = self.setup.lathe_register(offset);
-        let target = if offset == 0 {
-            [0.0; 3]
-        } else {
-            toffset::vector(&reg, self.setup.settings.lathe_x_offset, self.units().mm())
-        };
-        self.state.lathe.tool = tool;
-        self.state.lathe.offset = offset;
-        self.state.lathe.target = target;
-        target != old.vector || offset != old.offset
-    }
-
-    fn t_label(&self) -> String {
-        let l = self.state.lathe;
-        if l.offset == 0 {
-            format!("T{:02}00 cancels the tool position offset", l.tool)
-        } else {
-            format!(
-                "T{:02}{:02}: offset {:02} (X {}, Z {})",
-                l.tool,
-                l.offset,
-                l.offset,
-                self.fmt(l.target[0]),
-                self.fmt(l.target[2])
-            )
-        }
-    }
-
-    fn t_motion_note(&self, d: Xyz, at_feed: bool) -> String {
-        let rate = if at_feed {
-            "at the cutting feed (G01)"
-        } else {
-            "at rapid (G00)"
-        };
-        let what = if self.state.lathe.offset == 0 {
-            "only the cancel motion is made"
-        } else {
-            "offset motion"
-        };
-        format!(
-            "{}: {what}, X {} Z {}, {rate} (seed 004)",
-            self.t_label(),
-            self.fmt_signed(d[0]),
-            self.fmt_signed(d[2])
-        )
-    }
-
-    fn t_move_note(&self, d: Xyz, at_feed: bool) -> String {
-        if self.state.lathe.offset == 0 {
-            return format!(
-                "{}: the tool goes to the programmed position (seed 004)",
-                self.t_label()
-            );
-        }
-        let mut s = format!(
-            "{}: the end point moves by X {} Z {} with this move",
-            self.t_label(),
-            self.fmt_signed(d[0]),
-            self.fmt_signed(d[2])
-        );
-        if at_feed && (d[0] != 0.0 || d[2] != 0.0) {
-            s.push_str(" (seed 004: a new offset in a feed move corrects the taper angle)");
-        }
-        s
+        t.changed
     }
 
     /// G50 X… Z…: coordinate system setting; the T offset is kept, so the
@@ -423,8 +349,11 @@ impl Machine {
             self.emit(out, start, kind, kind == MoveKind::Feed, None);
         }
         if t_changed {
-            out.notes
-                .push(self.t_move_note(self.sub_xz(self.state.lathe.vector, old_vector), false));
+            out.notes.push(self.state.lathe.move_note(
+                self.sub_xz(self.state.lathe.vector, old_vector),
+                false,
+                self.units(),
+            ));
         }
         Ok(())
     }

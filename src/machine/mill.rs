@@ -1,6 +1,8 @@
-//! The milling machine's block: linear and circular motion, G28, G92, and the
-//! two mill offsets — tool length (G43/G44/G49, spec 3) and tool position
-//! (G45–G48, spec 4).
+//! The milling machine's block: linear and circular motion, G28, G92. The
+//! two mill offsets' rules and sentences are their families' —
+//! [`crate::offsets::length`] (G43/G44/G49, spec 3) and
+//! [`crate::offsets::position`] (G45–G48, spec 4); this file moves the tool
+//! by them.
 
 use super::MoveKind;
 use super::modal::{ArcDirection, Distance, Motion, Plane};

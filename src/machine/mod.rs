@@ -18,7 +18,7 @@ pub mod state;
 pub use state::{ArcInfo, BlockState, EventKind, Move, MoveKind};
 
 use crate::diag::{Diagnostic, Span};
-use crate::geometry::{Xyz, add, scale, show, show_signed, sub, to_units};
+use crate::geometry::{Xyz, add, scale, sub, to_units};
 use crate::offsets::lathe::LatheState;
 use crate::offsets::length::LengthState;
 use crate::offsets::position::PositionState;
@@ -227,16 +227,6 @@ impl Machine {
     /// A program value in the current units, in mm.
     fn mm(&self, v: f64) -> f64 {
         v * self.units().mm()
-    }
-
-    /// A length in mm written in the current units with the control's decimals.
-    fn fmt(&self, mm: f64) -> String {
-        show(mm, self.units())
-    }
-
-    /// Like [`Machine::fmt`] with a sign.
-    fn fmt_signed(&self, mm: f64) -> String {
-        show_signed(mm, self.units())
     }
 
     fn error(&self, code: &'static str, span: Span, msg: impl Into<String>) -> Diagnostic {

@@ -160,6 +160,16 @@ impl LengthState {
         self.changed_since(old) || self.vector - old.vector != 0.0
     }
 
+    /// The sentence for a canned cycle whose Z levels carry the offset
+    /// (drilling along Z).
+    pub fn cycle_note(&self, units: Units) -> String {
+        format!(
+            "the cycle's Z levels carry the tool length offset H{:02} ({})",
+            self.h,
+            show_signed(self.vector, units)
+        )
+    }
+
     /// The sentence for what the length offset did in a block that made it
     /// `self` from `old` (spec 3). `z_amount` is the programmed Z movement
     /// when the block moved along Z.
