@@ -192,8 +192,8 @@ pub fn each_point_of(m: &Move, mut f: impl FnMut(Xyz)) {
 impl Bounds {
     /// Grows the box to hold `p`: per axis `f64::min`/`f64::max` written as
     /// comparisons, which compile to one `minsd`/`maxsd` each (a run
-    /// includes a few points per move; `f64::min`'s NaN handling cost twice
-    /// the instructions, callgrind). A NaN `p` is passed over as `f64::min`
+    /// includes a few points per move; `f64::min`'s NaN handling costs
+    /// more, the `check` instruction count in docs/performance.md). A NaN `p` is passed over as `f64::min`
     /// passes it over; the box never holds one, because it starts at a
     /// move's start, a position the machine checked finite.
     fn include(&mut self, p: Xyz) {

@@ -100,8 +100,8 @@ impl Machine {
     /// A block of motion words alone (most blocks of a CAM program): what
     /// [`Machine::mill_block`] does with it, without the steps that cannot
     /// apply (its other G codes, M, S, T, D, H words, U/W): the feed, the
-    /// motion mode, then the move (callgrind: a seventh of the machine's
-    /// instructions went to those steps).
+    /// motion mode, then the move (those steps cost much of the machine's
+    /// share of the `check` instruction count in docs/performance.md).
     fn motion_block(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
         if let Some(f) = b.value(Address::F) {
             self.state.feed = Some(f);
@@ -238,7 +238,7 @@ impl Machine {
     /// arc from R or I/J/K, updates the position and the vectors, notes what
     /// the length offset did and records the move. Kept out of line: inlined
     /// in [`Machine::mill_motion`], its locals made every straight move's
-    /// stack frame larger (callgrind: about a hundred instructions a block).
+    /// stack frame larger (the `check` instruction count in docs/performance.md).
     #[allow(clippy::too_many_arguments)]
     #[inline(never)]
     fn arc_move(
@@ -368,7 +368,7 @@ impl Machine {
     /// Ends a straight move: updates the position and the vectors, notes
     /// what the length offset did and records the move. Inlined where it is
     /// called: the target then goes to the state from registers, not through
-    /// a copy on the stack (callgrind: 1 M of 202 M instructions).
+    /// a copy on the stack (the `check` instruction count in docs/performance.md).
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     fn finish_line(

@@ -255,8 +255,7 @@ impl Machine {
     /// Records the motion from `from` to the current position. Line moves
     /// that go nowhere (on both paths) are not recorded. Inlined where it is
     /// called: a straight move's `None` arc then costs its tag alone, not a
-    /// copy of the 120 bytes of an `Option<ArcInfo>` (callgrind: 2 M of 204 M
-    /// instructions for 100k blocks).
+    /// copy of a whole `Option<ArcInfo>` (the `check` instruction count in docs/performance.md).
     #[inline(always)]
     fn emit(
         &mut self,

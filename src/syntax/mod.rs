@@ -235,8 +235,8 @@ enum Clash {
 #[derive(Default)]
 struct Checks {
     /// The M groups seen (the first eight; the message finds their words
-    /// again: clearing a table of their indexes too took a tenth of a short
-    /// block's instructions, callgrind).
+    /// again: clearing a table of their indexes too cost every block, see
+    /// the `check` instruction count in docs/performance.md).
     m_groups: [u32; 8],
     m_count: usize,
 }
