@@ -475,8 +475,8 @@ impl Machine {
             );
             if named[2] && self.state.length.target != 0.0 {
                 note.push_str(&format!(
-                    "; G4{} H{:02} stays active and applies again at the next Z move",
-                    if self.state.length.sign > 0 { 3 } else { 4 },
+                    "; {} H{:02} stays active and applies again at the next Z move",
+                    self.state.length.mode().gcode(),
                     self.state.length.h
                 ));
             }

@@ -124,6 +124,15 @@ impl LengthState {
         };
     }
 
+    /// The active code: G43, G44 or G49, from the sign.
+    pub fn mode(&self) -> LengthOffset {
+        match self.sign.signum() {
+            1 => LengthOffset::Add,
+            -1 => LengthOffset::Subtract,
+            _ => LengthOffset::Cancel,
+        }
+    }
+
     /// The change a Z-less block makes to Z when the target changed.
     pub fn pending(&self) -> f64 {
         self.target - self.vector
@@ -189,7 +198,7 @@ impl LengthState {
             } else if new.sign == 0 {
                 "G49: no tool length offset".to_string()
             } else {
-                let g = if new.sign > 0 { "G43" } else { "G44" };
+                let g = new.mode().gcode();
                 let how = if new.sign > 0 { "adds" } else { "subtracts" };
                 if old.sign == new.sign && old.h != new.h && old.h != 0 {
                     format!(
