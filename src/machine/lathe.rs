@@ -183,7 +183,13 @@ impl Machine {
         }
         self.state.programmed = target;
         self.state.lathe.vector = vector;
-        let at_feed = motion == Motion::Linear || r_without_chord;
+        let at_feed = match motion {
+            Motion::Linear => true,
+            // An R arc without a chord moves like G01.
+            Motion::Arc(_) => r_without_chord,
+            // The cycles were made above.
+            Motion::Rapid | Motion::LatheCycle(_) => false,
+        };
         if t_changed {
             out.notes.push(self.state.lathe.move_note(
                 self.sub_xz(vector, old_vector),

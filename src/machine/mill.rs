@@ -167,7 +167,12 @@ impl Machine {
                 let start = self.mark();
                 self.state.length.vector = self.state.length.vector_after(false, true, setting);
                 self.length_note(old_length, None, out);
-                let at_feed = motion == Motion::Linear;
+                // Made in the G00/G01 mode; G02/G03 refuse a length change
+                // (spec 3.7) and the parser gives the mill no lathe cycle.
+                let at_feed = match motion {
+                    Motion::Linear => true,
+                    Motion::Rapid | Motion::Arc(_) | Motion::LatheCycle(_) => false,
+                };
                 self.emit(out, start, MoveKind::Offset, at_feed, None);
             }
             return Ok(());
@@ -205,22 +210,21 @@ impl Machine {
                 .length
                 .vector_after(words[2].is_some(), length_changed, setting);
 
-        if let Motion::Arc(direction) = motion {
-            let planned = Planned {
-                start,
-                target,
-                amount,
-                delta,
-                change,
-                new_length,
-            };
-            return self.arc_move(b, direction, out, old_length, words, planned);
-        }
-
-        let kind = if motion == Motion::Linear {
-            MoveKind::Feed
-        } else {
-            MoveKind::Rapid
+        let kind = match motion {
+            Motion::Arc(direction) => {
+                let planned = Planned {
+                    start,
+                    target,
+                    amount,
+                    delta,
+                    change,
+                    new_length,
+                };
+                return self.arc_move(b, direction, out, old_length, words, planned);
+            }
+            Motion::Linear => MoveKind::Feed,
+            // The parser gives the mill no lathe cycle.
+            Motion::Rapid | Motion::LatheCycle(_) => MoveKind::Rapid,
         };
         self.finish_line(
             out,

@@ -23,7 +23,7 @@ use crate::offsets::lathe::LatheState;
 use crate::offsets::length::LengthState;
 use crate::offsets::position::PositionState;
 use crate::setup::{MachineKind, Setup, Units};
-use crate::syntax::codes::{MCode, NonModal};
+use crate::syntax::codes::{CutterCompensation, MCode, NonModal};
 use crate::syntax::{Address, Block};
 use arc::{ArcError, Circle};
 use modal::{Modal, WorkSystem};
@@ -382,6 +382,11 @@ impl Machine {
         }
         if let Some(work) = c.work() {
             self.select_work(work);
+        }
+        match c.cutter() {
+            // G40, cutter compensation cancel: the state offsetlab models
+            // (the parser refuses G41/G42 with the reason).
+            Some(CutterCompensation::Cancel) | None => {}
         }
         if let Some(f) = b.value(Address::F) {
             self.state.feed = Some(f);
