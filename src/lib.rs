@@ -23,6 +23,7 @@
 pub mod diag;
 pub mod document;
 pub mod export;
+pub mod geometry;
 pub mod machine;
 pub mod offsets;
 pub mod render;
@@ -39,7 +40,8 @@ pub mod wasm;
 
 pub use diag::{Diagnostic, Severity, Span};
 pub use document::Document;
-pub use report::{BlockReport, End, Event, Move, MoveKind, Run};
+pub use machine::{Move, MoveKind};
+pub use report::{BlockReport, End, Event, Run};
 pub use run::again::{Earlier, Reuse, Tail, rerun_observed};
 #[cfg(not(target_arch = "wasm32"))]
 pub use run::pipeline::{PIPELINE_FROM_BYTES, run_on_two_threads, run_pipelined};

@@ -7,8 +7,10 @@ use serde::Serialize;
 use serde::ser::{SerializeStruct, Serializer};
 
 use crate::diag::{Diagnostic, Severity};
+use crate::geometry::{Xyz, round6, to_units};
 use crate::machine::modal::ModalCodes;
-use crate::report::{BlockReport, End, Event, Move, MoveKind, Run, Xyz, round6, to_units};
+use crate::machine::{Move, MoveKind};
+use crate::report::{BlockReport, End, Event, Run};
 use crate::setup::{MachineKind, Units};
 
 /// A position in the units of its block.

@@ -4,7 +4,7 @@
 
 mod common;
 use common::*;
-use offsetlab::report::EventKind;
+use offsetlab::machine::EventKind;
 use offsetlab::setup::LatheXOffset;
 use offsetlab::{MoveKind, run};
 

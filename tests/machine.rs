@@ -5,7 +5,8 @@
 
 mod common;
 use common::*;
-use offsetlab::report::{End, EventKind};
+use offsetlab::machine::EventKind;
+use offsetlab::report::End;
 use offsetlab::setup::{Mirror, Position};
 use offsetlab::{MoveKind, Setup, run};
 use std::f64::consts::{FRAC_PI_2, PI};

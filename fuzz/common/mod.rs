@@ -8,8 +8,10 @@
 //! as the program. Inputs shorter than the header are padded with zeros.
 #![allow(dead_code)]
 
+use offsetlab::Move;
 use offsetlab::document::{ViewPlane, ViewState};
-use offsetlab::report::{BlockState, Move, Xyz};
+use offsetlab::geometry::Xyz;
+use offsetlab::machine::BlockState;
 use offsetlab::setup::{
     DecimalInput, LatheRegister, LatheXOffset, LengthOffsetWithoutZ, MillRegister, Position,
 };
@@ -192,7 +194,7 @@ pub fn check_run_with(setup: &Setup, program: &str, max_moves: usize) {
     }
     for e in &full.events {
         assert!(e.line >= 1);
-        if let offsetlab::report::EventKind::Dwell { seconds } = e.kind {
+        if let offsetlab::machine::EventKind::Dwell { seconds } = e.kind {
             assert!(seconds.is_finite() && seconds >= 0.0, "dwell {seconds}");
         }
     }

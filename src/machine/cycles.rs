@@ -3,10 +3,11 @@
 //! reported as its moves: rapid to the hole, rapid to R, the drilling legs,
 //! the retract. The tool length offset applies to the Z levels.
 
-use super::modal::{Cycle, Distance};
+use super::modal::{Cycle, Distance, ReturnLevel};
 use super::{AXES, Machine, Out};
+use super::{EventKind, MoveKind};
 use crate::diag::Diagnostic;
-use crate::report::{EventKind, MoveKind};
+use crate::offsets::length::LengthState;
 use crate::syntax::{Address, Block};
 
 /// Most pecks one G73/G83 hole may take.
@@ -30,30 +31,30 @@ pub(crate) struct CycleData {
 
 impl Machine {
     /// G73–G89: enters or changes the canned cycle mode.
-    pub(super) fn start_cycle(&mut self, code: u16) {
-        if !self.state.modal.cycle.active() {
+    pub(super) fn start_cycle(&mut self, cycle: Cycle) {
+        if self.state.modal.cycle.is_none() {
             let (_, _, n) = self.state.modal.plane.axes();
             self.cycle = CycleData {
                 initial: self.state.programmed[n],
                 ..CycleData::default()
             };
         }
-        self.state.modal.cycle = Cycle(code);
+        self.state.modal.cycle = Some(cycle);
     }
 
     /// G80, or a group 01 code: leaves the canned cycle mode.
     pub(super) fn cancel_cycle(&mut self) {
-        self.state.modal.cycle = Cycle::NONE;
+        self.state.modal.cycle = None;
     }
 
-    /// A block in canned-cycle mode.
+    /// A block in the mode of canned cycle `cycle`.
     pub(super) fn cycle_block(
         &mut self,
         b: &Block,
+        cycle: Cycle,
         out: &mut Out,
-        old_length: crate::report::LengthState,
+        old_length: LengthState,
     ) -> Result<(), Diagnostic> {
-        let code = self.state.modal.cycle.0;
         let (ia, ib, n) = self.state.modal.plane.axes();
         let incremental = self.state.modal.distance == Distance::Incremental;
         let depth_addr = AXES[n].0;
@@ -65,11 +66,11 @@ impl Machine {
         }
         if let Some(q) = b.get(Address::Q) {
             let v = self.mm(q.value);
-            if v <= 0.0 && matches!(code, 73 | 83) {
+            if v <= 0.0 && pecks(cycle) {
                 return Err(self.error(
                     "cycle-q",
                     q.span,
-                    format!("G{code} needs a positive peck depth Q"),
+                    format!("{} needs a positive peck depth Q", cycle.gcode()),
                 ));
             }
             self.cycle.q = Some(v.abs());
@@ -79,15 +80,12 @@ impl Machine {
         }
         let drills = [ia, ib, n].iter().any(|&i| b.has(AXES[i].0)) || b.has(Address::R);
         if !drills {
-            if super::mill::changed(&old_length, &self.state.length) {
+            if self.state.length.changed_since(&old_length) {
                 // An offset change without a hole: made as offset motion at rapid,
                 // the cycles' positioning rate.
                 let start = self.mark();
-                if self.setup.settings.length_offset_without_z
-                    == crate::setup::LengthOffsetWithoutZ::Move
-                {
-                    self.state.length.vector = self.state.length.target;
-                }
+                let setting = self.setup.settings.length_offset_without_z;
+                self.state.length.vector = self.state.length.vector_after(false, true, setting);
                 self.length_note(old_length, None, out);
                 self.emit(out, start, MoveKind::Offset, false, None);
             }
@@ -97,10 +95,10 @@ impl Machine {
             return Err(self.error(
                 "cycle-without-depth",
                 b.span,
-                format!("G{code} needs {}, the hole bottom", AXES[n].1),
+                format!("{} needs {}, the hole bottom", cycle.gcode(), AXES[n].1),
             ));
         };
-        if code == 87 && self.state.modal.return_to_r {
+        if cycle == Cycle::BackBoring && self.state.modal.return_level == ReturnLevel::R {
             return Err(self.error(
                 "cycle-return",
                 b.span,
@@ -138,15 +136,11 @@ impl Machine {
                 (z, true) => r_level + z,
                 (z, false) => z,
             };
-            self.drill(code, n, ia, initial, r_level, bottom, out)?;
+            self.drill(cycle, n, ia, initial, r_level, bottom, out)?;
         }
         let l = self.state.length;
         if n == 2 && (l.vector != old_length.vector || l.target != old_length.target) {
-            out.notes.push(format!(
-                "the cycle's Z levels carry the tool length offset H{:02} ({})",
-                l.h,
-                self.fmt_signed(l.vector)
-            ));
+            out.notes.push(l.cycle_note(self.units()));
         }
         Ok(())
     }
@@ -167,7 +161,7 @@ impl Machine {
     #[allow(clippy::too_many_arguments)]
     fn drill(
         &mut self,
-        code: u16,
+        cycle: Cycle,
         n: usize,
         shift_axis: usize,
         initial: f64,
@@ -176,25 +170,24 @@ impl Machine {
         out: &mut Out,
     ) -> Result<(), Diagnostic> {
         use MoveKind::{Feed, Rapid};
-        let ret = if self.state.modal.return_to_r {
-            r
-        } else {
-            initial
+        let ret = match self.state.modal.return_level {
+            ReturnLevel::R => r,
+            ReturnLevel::Initial => initial,
         };
         let dwell = self.cycle.p / 1000.0;
         let q = self.cycle.q.unwrap_or(0.0);
         let down = if bottom <= r { -1.0 } else { 1.0 };
         let pecks = |q: f64| ((bottom - r).abs() / q).ceil();
-        if code != 87 {
+        if cycle != Cycle::BackBoring {
             self.level(out, n, r, Rapid);
         }
-        match code {
-            73 | 83 => {
+        match cycle {
+            Cycle::HighSpeedPeck | Cycle::PeckDrilling => {
                 if q <= 0.0 {
                     return Err(self.error(
                         "cycle-q",
                         self.span,
-                        format!("G{code} needs a positive peck depth Q"),
+                        format!("{} needs a positive peck depth Q", cycle.gcode()),
                     ));
                 }
                 if pecks(q) > MAX_PECKS {
@@ -217,7 +210,7 @@ impl Machine {
                     if depth == bottom {
                         break;
                     }
-                    if code == 73 {
+                    if cycle == Cycle::HighSpeedPeck {
                         // High-speed peck: back off by d, then feed on.
                         self.level(out, n, depth - down * clearance, Rapid);
                     } else {
@@ -228,13 +221,13 @@ impl Machine {
                 }
                 self.level(out, n, ret, Rapid);
             }
-            74 | 84 => {
+            Cycle::LeftHandTapping | Cycle::Tapping => {
                 self.level(out, n, bottom, Feed);
                 if dwell > 0.0 {
                     self.event(out, EventKind::Dwell { seconds: dwell });
                 }
                 // Tapping reverses the spindle at the bottom and feeds out.
-                let (rev, fwd) = if code == 84 {
+                let (rev, fwd) = if cycle == Cycle::Tapping {
                     (EventKind::SpindleCcw, EventKind::SpindleCw)
                 } else {
                     (EventKind::SpindleCw, EventKind::SpindleCcw)
@@ -244,7 +237,7 @@ impl Machine {
                 self.event(out, fwd);
                 self.level(out, n, ret, Rapid);
             }
-            76 => {
+            Cycle::FineBoring => {
                 self.level(out, n, bottom, Feed);
                 if dwell > 0.0 {
                     self.event(out, EventKind::Dwell { seconds: dwell });
@@ -257,7 +250,7 @@ impl Machine {
                 self.shift(out, shift_axis, -q);
                 self.event(out, EventKind::SpindleCw);
             }
-            87 => {
+            Cycle::BackBoring => {
                 // Back boring: in shifted, down to R (below the part), back
                 // centre, bore up to Z, shift out and return to the initial level.
                 self.event(out, EventKind::SpindleOrient);
@@ -272,21 +265,21 @@ impl Machine {
                 self.shift(out, shift_axis, -q);
                 self.event(out, EventKind::SpindleCw);
             }
-            85 | 89 => {
+            Cycle::Boring | Cycle::BoringDwell => {
                 self.level(out, n, bottom, Feed);
-                if code == 89 && dwell > 0.0 {
+                if cycle == Cycle::BoringDwell && dwell > 0.0 {
                     self.event(out, EventKind::Dwell { seconds: dwell });
                 }
                 self.level(out, n, r, Feed);
                 self.level(out, n, ret, Rapid);
             }
-            86 => {
+            Cycle::BoringSpindleStop => {
                 self.level(out, n, bottom, Feed);
                 self.event(out, EventKind::SpindleStop);
                 self.level(out, n, ret, Rapid);
                 self.event(out, EventKind::SpindleCw);
             }
-            88 => {
+            Cycle::BoringManualRetract => {
                 self.level(out, n, bottom, Feed);
                 if dwell > 0.0 {
                     self.event(out, EventKind::Dwell { seconds: dwell });
@@ -297,19 +290,36 @@ impl Machine {
                 self.level(out, n, ret, Rapid);
                 self.event(out, EventKind::SpindleCw);
             }
-            82 => {
+            Cycle::CounterBoring => {
                 self.level(out, n, bottom, Feed);
                 if dwell > 0.0 {
                     self.event(out, EventKind::Dwell { seconds: dwell });
                 }
                 self.level(out, n, ret, Rapid);
             }
-            _ => {
-                // G81: drill, rapid out.
+            Cycle::Drilling => {
+                // Drill, rapid out.
                 self.level(out, n, bottom, Feed);
                 self.level(out, n, ret, Rapid);
             }
         }
         Ok(())
+    }
+}
+
+/// True for the cycles that drill in pecks of Q (G73, G83).
+fn pecks(cycle: Cycle) -> bool {
+    match cycle {
+        Cycle::HighSpeedPeck | Cycle::PeckDrilling => true,
+        Cycle::LeftHandTapping
+        | Cycle::FineBoring
+        | Cycle::Drilling
+        | Cycle::CounterBoring
+        | Cycle::Tapping
+        | Cycle::Boring
+        | Cycle::BoringSpindleStop
+        | Cycle::BackBoring
+        | Cycle::BoringManualRetract
+        | Cycle::BoringDwell => false,
     }
 }

@@ -1,13 +1,15 @@
 //! The lathe's block (spec 5): X as a diameter and Z, U/W incremental, G50,
-//! G00–G03 in the ZX plane, the G90/G92/G94 single cycles (G-code system A),
-//! and T-code tool position offset (seed 004).
+//! G00–G03 in the ZX plane and the G90/G92/G94 single cycles (G-code system
+//! A). The T-code tool position offset's rules and sentences are
+//! [`crate::offsets::lathe`]'s; this file moves the tool by them.
 
-use super::modal::Motion;
-use super::{ArcRequest, Codes, Machine, Mark, Out};
+use super::modal::{ArcDirection, LatheCycle, Motion};
+use super::{ArcRequest, Machine, Mark, Out};
+use super::{EventKind, MoveKind};
 use crate::diag::Diagnostic;
+use crate::geometry::Xyz;
 use crate::offsets::lathe as toffset;
-use crate::report::{EventKind, MoveKind, Xyz};
-use crate::syntax::codes::Group;
+use crate::syntax::codes::NonModal;
 use crate::syntax::{Address, Block};
 
 /// The lathe's turning-cycle data, modal until another group 01 code.
@@ -22,12 +24,7 @@ pub(crate) struct TurningData {
 }
 
 impl Machine {
-    pub(super) fn lathe_block(
-        &mut self,
-        b: &Block,
-        c: &Codes<'_>,
-        out: &mut Out,
-    ) -> Result<(), Diagnostic> {
+    pub(super) fn lathe_block(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
         for w in &b.words {
             if matches!(w.address, Address::Y | Address::J | Address::D | Address::H) {
                 let why = match w.address {
@@ -43,9 +40,9 @@ impl Machine {
                 ));
             }
         }
-        self.common_words(b, c, out);
-        let nonmodal = c.get(Group::NonModal);
-        if nonmodal == Some(4) {
+        self.common_words(b, out);
+        let c = b.codes();
+        if c.non_modal() == Some(NonModal::Dwell) {
             return self.dwell(b, out);
         }
         for (abs, inc) in [(Address::X, Address::U), (Address::Z, Address::W)] {
@@ -62,52 +59,44 @@ impl Machine {
                 ));
             }
         }
-        if let Some(m) = c.get(Group::Motion) {
-            self.state.modal.motion =
-                Motion::from_code(self.setup.machine, m).unwrap_or(Motion::Rapid);
-            if matches!(m, 90 | 92 | 94) {
+        if let Some(m) = c.motion() {
+            self.state.modal.motion = m;
+            if let Motion::LatheCycle(_) = m {
                 self.turning = TurningData::default();
             }
         }
-        match nonmodal {
-            Some(50) => return self.g50(b),
-            Some(28) => return self.lathe_g28(b, out),
-            _ => {}
+        match c.non_modal() {
+            Some(NonModal::SetCoordinates) => return self.g50(b),
+            Some(NonModal::ReferenceReturn) => return self.lathe_g28(b, out),
+            // G04 was made above; G45–G48 are the mill's, refused by the
+            // parser on the lathe (seed 004).
+            Some(NonModal::Dwell | NonModal::PositionOffset(_)) | None => {}
         }
         let t_changed = self.t_code(b, out);
         let motion = self.state.modal.motion;
         let any_axis = [Address::X, Address::U, Address::Z, Address::W]
             .iter()
             .any(|a| b.has(*a));
-        let cycle = matches!(
-            motion,
-            Motion::TurningCycle | Motion::ThreadingCycle | Motion::FacingCycle
-        );
         let arc_words = motion.is_arc()
             && [Address::I, Address::K, Address::R]
                 .iter()
                 .any(|a| b.has(*a));
-        if cycle && (any_axis || b.has(Address::R)) {
-            return self.turning_cycle(b, out, t_changed);
+        if let Motion::LatheCycle(cycle) = motion
+            && (any_axis || b.has(Address::R))
+        {
+            return self.turning_cycle(b, cycle, out, t_changed);
         }
         if !any_axis && !arc_words {
             if t_changed {
-                if motion.is_arc() || cycle {
-                    return Err(self.error(
-                        "offset-motion-mode",
-                        self.word_span(b, Address::T),
-                        format!(
-                            "a T offset change with no move is made at rapid (G00) or feed (G01); {} is active: command G00 or G01 with it",
-                            motion.gcode()
-                        ),
-                    ));
-                }
+                let at_feed =
+                    toffset::offset_motion_at_feed(motion, self.word_span(b, Address::T))?;
                 let start = self.mark();
                 let old = self.state.lathe.vector;
                 self.state.lathe.vector = self.state.lathe.target;
-                let at_feed = motion == Motion::Linear;
                 let d = self.sub_xz(self.state.lathe.vector, old);
-                out.notes.push(self.t_motion_note(d, at_feed));
+                let units = self.units();
+                out.notes
+                    .push(self.state.lathe.motion_note(d, at_feed, units));
                 self.emit(out, start, MoveKind::Offset, at_feed, None);
             }
             return Ok(());
@@ -131,16 +120,8 @@ impl Machine {
             false,
             b.has(Address::Z) || b.has(Address::W),
         ];
-        // Spec 5.2: with a T code the move lands on the new offset on both
-        // axes; otherwise each axis that moves carries the active offset
-        // (after G28 an axis regains it when it next moves).
         let old_vector = self.state.lathe.vector;
-        let mut vector = old_vector;
-        for axis in [0, 2] {
-            if t_changed || moved[axis] {
-                vector[axis] = self.state.lathe.target[axis];
-            }
-        }
+        let vector = self.state.lathe.vector_after_move(t_changed, moved);
         // As on the mill, an R arc from a point to itself has no centre: a
         // warning, and the block moves like G01 (only an offset change can
         // move the tool then).
@@ -155,11 +136,13 @@ impl Machine {
                 "an R arc whose end is its start makes no circle (a full circle needs I and K); the block makes no arc",
             ));
         }
-        if motion.is_arc() && !r_without_chord {
+        if let Motion::Arc(direction) = motion
+            && !r_without_chord
+        {
             let mut req = ArcRequest {
                 target,
                 actual_end: add_xz(target, vector),
-                ccw: motion == Motion::ArcCcw,
+                ccw: direction == ArcDirection::Ccw,
                 ..ArcRequest::default()
             };
             if let Some(r) = b.value(Address::R) {
@@ -189,18 +172,30 @@ impl Machine {
                 MoveKind::ArcCw
             };
             if t_changed {
-                out.notes
-                    .push(self.t_move_note(self.sub_xz(vector, old_vector), true));
+                out.notes.push(self.state.lathe.move_note(
+                    self.sub_xz(vector, old_vector),
+                    true,
+                    self.units(),
+                ));
             }
             self.emit(out, start, kind, true, Some(info));
             return Ok(());
         }
         self.state.programmed = target;
         self.state.lathe.vector = vector;
-        let at_feed = motion == Motion::Linear || r_without_chord;
+        let at_feed = match motion {
+            Motion::Linear => true,
+            // An R arc without a chord moves like G01.
+            Motion::Arc(_) => r_without_chord,
+            // The cycles were made above.
+            Motion::Rapid | Motion::LatheCycle(_) => false,
+        };
         if t_changed {
-            out.notes
-                .push(self.t_move_note(self.sub_xz(vector, old_vector), at_feed));
+            out.notes.push(self.state.lathe.move_note(
+                self.sub_xz(vector, old_vector),
+                at_feed,
+                self.units(),
+            ));
         }
         let kind = if at_feed {
             MoveKind::Feed
@@ -215,86 +210,24 @@ impl Machine {
         [a[0] - b[0], 0.0, a[2] - b[2]]
     }
 
-    /// The T word (spec 5): selects tool and offset; returns true if the
+    /// The T word (spec 5, [`LatheState::command`]): returns true if the
     /// offset vector the machine should carry changed.
     fn t_code(&mut self, b: &Block, out: &mut Out) -> bool {
         let Some(t) = b.get(Address::T) else {
             return false;
         };
-        let (tool, offset) = toffset::split(t.int());
-        let old = self.state.lathe;
-        if tool != old.tool {
-            // Spec 5.6: a new tool number indexes the turret.
+        let setup = &self.setup;
+        let unit = self.state.modal.units.mm();
+        let x_offset = setup.settings.lathe_x_offset;
+        let register = |offset| setup.lathe_register(offset);
+        let t = self
+            .state
+            .lathe
+            .command(t.int(), register, x_offset, unit, &mut out.notes);
+        if let Some(tool) = t.indexed {
             self.event(out, EventKind::ToolIndex { tool });
-            out.notes.push(format!(
-                "tool {:02} → {tool:02}: the turret indexes (spec 5.6)",
-                old.tool
-            ));
         }
-        let reg = self.setup.lathe_register(offset);
-        let target = if offset == 0 {
-            [0.0; 3]
-        } else {
-            toffset::vector(&reg, self.setup.settings.lathe_x_offset, self.units().mm())
-        };
-        self.state.lathe.tool = tool;
-        self.state.lathe.offset = offset;
-        self.state.lathe.target = target;
-        target != old.vector || offset != old.offset
-    }
-
-    fn t_label(&self) -> String {
-        let l = self.state.lathe;
-        if l.offset == 0 {
-            format!("T{:02}00 cancels the tool position offset", l.tool)
-        } else {
-            format!(
-                "T{:02}{:02}: offset {:02} (X {}, Z {})",
-                l.tool,
-                l.offset,
-                l.offset,
-                self.fmt(l.target[0]),
-                self.fmt(l.target[2])
-            )
-        }
-    }
-
-    fn t_motion_note(&self, d: Xyz, at_feed: bool) -> String {
-        let rate = if at_feed {
-            "at the cutting feed (G01)"
-        } else {
-            "at rapid (G00)"
-        };
-        let what = if self.state.lathe.offset == 0 {
-            "only the cancel motion is made"
-        } else {
-            "offset motion"
-        };
-        format!(
-            "{}: {what}, X {} Z {}, {rate} (seed 004)",
-            self.t_label(),
-            self.fmt_signed(d[0]),
-            self.fmt_signed(d[2])
-        )
-    }
-
-    fn t_move_note(&self, d: Xyz, at_feed: bool) -> String {
-        if self.state.lathe.offset == 0 {
-            return format!(
-                "{}: the tool goes to the programmed position (seed 004)",
-                self.t_label()
-            );
-        }
-        let mut s = format!(
-            "{}: the end point moves by X {} Z {} with this move",
-            self.t_label(),
-            self.fmt_signed(d[0]),
-            self.fmt_signed(d[2])
-        );
-        if at_feed && (d[0] != 0.0 || d[2] != 0.0) {
-            s.push_str(" (seed 004: a new offset in a feed move corrects the taper angle)");
-        }
-        s
+        t.changed
     }
 
     /// G50 X… Z…: coordinate system setting; the T offset is kept, so the
@@ -362,6 +295,7 @@ impl Machine {
     fn turning_cycle(
         &mut self,
         b: &Block,
+        cycle: LatheCycle,
         out: &mut Out,
         t_changed: bool,
     ) -> Result<(), Diagnostic> {
@@ -391,20 +325,20 @@ impl Machine {
         };
         let r = self.turning.r;
         let old_vector = self.state.lathe.vector;
-        let legs: [(f64, f64, MoveKind); 4] = match motion {
-            Motion::TurningCycle => [
+        let legs: [(f64, f64, MoveKind); 4] = match cycle {
+            LatheCycle::Turning => [
                 (x1 + 2.0 * r, z0, MoveKind::Rapid),
                 (x1, z1, MoveKind::Feed),
                 (x0, z1, MoveKind::Feed),
                 (x0, z0, MoveKind::Rapid),
             ],
-            Motion::ThreadingCycle => [
+            LatheCycle::Threading => [
                 (x1 + 2.0 * r, z0, MoveKind::Rapid),
                 (x1, z1, MoveKind::Feed),
                 (x0, z1, MoveKind::Rapid),
                 (x0, z0, MoveKind::Rapid),
             ],
-            _ => [
+            LatheCycle::Facing => [
                 (x0, z1 + r, MoveKind::Rapid),
                 (x1, z1, MoveKind::Feed),
                 (x1, z0, MoveKind::Feed),
@@ -421,8 +355,11 @@ impl Machine {
             self.emit(out, start, kind, kind == MoveKind::Feed, None);
         }
         if t_changed {
-            out.notes
-                .push(self.t_move_note(self.sub_xz(self.state.lathe.vector, old_vector), false));
+            out.notes.push(self.state.lathe.move_note(
+                self.sub_xz(self.state.lathe.vector, old_vector),
+                false,
+                self.units(),
+            ));
         }
         Ok(())
     }

@@ -1,16 +1,19 @@
-//! The milling machine's block: linear and circular motion, G28, G92, and the
-//! two mill offsets — tool length (G43/G44/G49, spec 3) and tool position
-//! (G45–G48, spec 4).
+//! The milling machine's block: linear and circular motion, G28, G92. The
+//! two mill offsets' rules and sentences are their families' —
+//! [`crate::offsets::length`] (G43/G44/G49, spec 3) and
+//! [`crate::offsets::position`] (G45–G48, spec 4); this file moves the tool
+//! by them.
 
-use super::modal::{Distance, Motion};
-use super::{AXES, ArcRequest, Codes, Machine, Out};
+use super::MoveKind;
+use super::modal::{ArcDirection, Distance, Motion, Plane};
+use super::{AXES, ArcRequest, Machine, Out};
 use crate::diag::Diagnostic;
-use crate::offsets::position;
-use crate::report::{LengthState, MoveKind, Xyz};
-use crate::setup::LengthOffsetWithoutZ;
+use crate::geometry::Xyz;
+use crate::offsets::length::{LengthState, LengthWords, ZAfter};
+use crate::offsets::position::{self, PositionChange};
 use crate::syntax::Address;
 use crate::syntax::Block;
-use crate::syntax::codes::Group;
+use crate::syntax::codes::{CannedCycle, Group, NonModal, PositionOffset};
 
 /// The words of a block that only moves: sequence number, G codes of group
 /// 01, axes, arc centre and radius, feed ([`Machine::motion_block`]).
@@ -28,14 +31,9 @@ const MOTION_WORDS: [Address; 10] = [
 ];
 
 impl Machine {
-    pub(super) fn mill_block(
-        &mut self,
-        b: &Block,
-        c: &Codes<'_>,
-        out: &mut Out,
-    ) -> Result<(), Diagnostic> {
+    pub(super) fn mill_block(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
         if b.holds_only(&MOTION_WORDS, &[Group::Motion]) {
-            return self.motion_block(b, c, out);
+            return self.motion_block(b, out);
         }
         let lathe_words = b.holds(Address::U) || b.holds(Address::W);
         for w in b.words.iter().filter(|_| lathe_words) {
@@ -50,124 +48,96 @@ impl Machine {
                 ));
             }
         }
-        self.common_words(b, c, out);
+        self.common_words(b, out);
+        let c = b.codes();
         if let Some(t) = b.get(Address::T) {
             self.state.next_tool = t.int();
         }
         if let Some(d) = b.get(Address::D) {
             let n = d.int() as u16;
-            self.state.position.d = n;
-            self.state.position.value = self.mm(self.setup.mill_value(n));
+            let value = self.mm(self.setup.mill_value(n));
+            self.state.position.select(n, value);
         }
 
-        let motion = c.get(Group::Motion);
-        let cycle = c.get(Group::Cycle);
-        if let (Some(m), Some(cy)) = (motion, cycle)
-            && cy != 80
-        {
+        if let (Some(m), Some(CannedCycle::Cycle(cy))) = (c.motion(), c.cycle()) {
             return Err(self.error(
                 "motion-and-cycle",
-                c.span(Group::Cycle),
-                format!("G{m:02} and G{cy} in one block: a group 01 code cancels the canned cycle"),
+                b.code_span(Group::Cycle),
+                format!(
+                    "{} and {} in one block: a group 01 code cancels the canned cycle",
+                    m.gcode(),
+                    cy.gcode()
+                ),
             ));
         }
-        if let Some(m) = motion {
-            self.state.modal.motion =
-                Motion::from_code(self.setup.machine, m).unwrap_or(Motion::Rapid);
+        if let Some(m) = c.motion() {
+            self.state.modal.motion = m;
             // A group 01 code cancels the canned cycle (Fanuc/YASNAC M).
             self.cancel_cycle();
         }
-        if let Some(cy) = cycle {
-            if cy == 80 {
-                self.cancel_cycle();
-            } else {
-                self.start_cycle(cy);
-            }
+        match c.cycle() {
+            Some(CannedCycle::Cancel) => self.cancel_cycle(),
+            Some(CannedCycle::Cycle(cycle)) => self.start_cycle(cycle),
+            None => {}
         }
 
-        match c.get(Group::NonModal) {
-            Some(4) => return self.dwell(b, out),
-            Some(92) => return self.g92(b),
-            Some(28) => return self.g28(b, c, out),
-            Some(code @ 45..=48) => return self.position_offset_block(b, c, code, out),
-            _ => {}
+        match c.non_modal() {
+            Some(NonModal::Dwell) => return self.dwell(b, out),
+            Some(NonModal::SetCoordinates) => return self.g92(b),
+            Some(NonModal::ReferenceReturn) => return self.g28(b, out),
+            Some(NonModal::PositionOffset(code)) => {
+                return self.position_offset_block(b, code, out);
+            }
+            None => {}
         }
-        let old_length = self.length_words(b, c, out)?;
-        if self.state.modal.cycle.active() {
-            self.cycle_block(b, out, old_length)
-        } else {
-            self.mill_motion(b, out, old_length, None)
+        let old_length = self.length_words(b, out)?;
+        match self.state.modal.cycle {
+            Some(cycle) => self.cycle_block(b, cycle, out, old_length),
+            None => self.mill_motion(b, out, old_length, None),
         }
     }
 
     /// A block of motion words alone (most blocks of a CAM program): what
     /// [`Machine::mill_block`] does with it, without the steps that cannot
     /// apply (its other G codes, M, S, T, D, H words, U/W): the feed, the
-    /// motion mode, then the move (callgrind: a seventh of the machine's
-    /// instructions went to those steps).
-    fn motion_block(&mut self, b: &Block, c: &Codes<'_>, out: &mut Out) -> Result<(), Diagnostic> {
+    /// motion mode, then the move (those steps cost much of the machine's
+    /// share of the `check` instruction count in docs/performance.md).
+    fn motion_block(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
         if let Some(f) = b.value(Address::F) {
             self.state.feed = Some(f);
         }
-        if let Some(m) = c.get(Group::Motion) {
-            self.state.modal.motion =
-                Motion::from_code(self.setup.machine, m).unwrap_or(Motion::Rapid);
+        if let Some(m) = b.codes().motion() {
+            self.state.modal.motion = m;
             // A group 01 code cancels the canned cycle (Fanuc/YASNAC M).
             self.cancel_cycle();
         }
         let old_length = self.state.length;
-        if self.state.modal.cycle.active() {
-            self.cycle_block(b, out, old_length)
-        } else {
-            self.mill_motion(b, out, old_length, None)
+        match self.state.modal.cycle {
+            Some(cycle) => self.cycle_block(b, cycle, out, old_length),
+            None => self.mill_motion(b, out, old_length, None),
         }
     }
 
-    /// G43/G44/G49 and H (spec 3). Returns the state before the block.
-    fn length_words(
-        &mut self,
-        b: &Block,
-        c: &Codes<'_>,
-        out: &mut Out,
-    ) -> Result<LengthState, Diagnostic> {
-        let code = c.get(Group::Length);
+    /// G43/G44/G49 and H (spec 3, [`LengthState::block`]). Returns the
+    /// state before the block.
+    fn length_words(&mut self, b: &Block, out: &mut Out) -> Result<LengthState, Diagnostic> {
+        let code = b.codes().length();
         let h = b.get(Address::H);
         let old = self.state.length;
         if code.is_none() && h.is_none() {
             return Ok(old);
         }
-        if self.state.modal.motion.is_arc() && (code.is_some() || old.sign != 0) {
-            // Spec 3.7 (YASNAC J50M): no length offset change in G02/G03 mode.
-            let span =
-                code.map_or_else(|| self.word_span(b, Address::H), |_| c.span(Group::Length));
-            return Err(self.error(
-                "length-offset-in-arc",
-                span,
-                format!(
-                    "the tool length offset cannot change while {} is active (spec 3.7): command G00 or G01 first",
-                    self.state.modal.motion.gcode()
-                ),
-            ));
-        }
-        let h = h.map(|w| {
-            let n = w.int() as u16;
-            (n, self.mm(self.setup.mill_value(n)))
-        });
-        self.state.length.command(code, h);
+        let words = LengthWords {
+            code: code.map(|c| (c, b.code_span(Group::Length))),
+            h: h.map(|w| {
+                let n = w.int() as u16;
+                (n, w.span, self.mm(self.setup.mill_value(n)))
+            }),
+        };
+        let motion = self.state.modal.motion;
+        self.state.length.block(words, motion, &mut out.warnings)?;
         if let Some(cd) = code {
             self.state.modal.length = cd;
-        }
-        let l = self.state.length;
-        if l.sign != 0 && l.h == 0 && code.is_some_and(|cd| cd != 49) {
-            // Not an error (H00 reads 0), but rarely what was meant.
-            out.warnings.push(Diagnostic::warning(
-                "length-offset-h00",
-                c.span(Group::Length),
-                format!(
-                    "G{} with H00: register 00 reads 0, so no length offset applies",
-                    code.unwrap_or(43)
-                ),
-            ));
         }
         Ok(old)
     }
@@ -179,9 +149,9 @@ impl Machine {
         b: &Block,
         out: &mut Out,
         old_length: LengthState,
-        pos: Option<u16>,
+        pos: Option<PositionOffset>,
     ) -> Result<(), Diagnostic> {
-        let length_changed = changed(&old_length, &self.state.length);
+        let length_changed = self.state.length.changed_since(&old_length);
         let motion = self.state.modal.motion;
         let incremental = self.state.modal.distance == Distance::Incremental;
         let words: [Option<f64>; 3] = AXES.map(|(a, _)| b.value(a));
@@ -195,11 +165,14 @@ impl Machine {
         if !any_axis && !arc_words {
             if length_changed {
                 let start = self.mark();
-                if setting == LengthOffsetWithoutZ::Move {
-                    self.state.length.vector = self.state.length.target;
-                }
+                self.state.length.vector = self.state.length.vector_after(false, true, setting);
                 self.length_note(old_length, None, out);
-                let at_feed = motion == Motion::Linear;
+                // Made in the G00/G01 mode; G02/G03 refuse a length change
+                // (spec 3.7) and the parser gives the mill no lathe cycle.
+                let at_feed = match motion {
+                    Motion::Linear => true,
+                    Motion::Rapid | Motion::Arc(_) | Motion::LatheCycle(_) => false,
+                };
                 self.emit(out, start, MoveKind::Offset, at_feed, None);
             }
             return Ok(());
@@ -215,61 +188,43 @@ impl Machine {
             }
         }
 
-        // Spec 4.1–4.6: every axis word's amount changed on its own.
         let mut delta = [0.0; 3];
-        let mut register = 0.0;
-        if let Some(code) = pos {
+        let change = pos.map(|code| {
             let d = self.state.position.d;
-            register = self.mm(self.setup.mill_value(d));
+            let register = self.mm(self.setup.mill_value(d));
             self.state.position.value = register;
-            for (axis, w) in words.iter().enumerate() {
-                if w.is_some() {
-                    delta[axis] = position::change(
-                        code,
-                        amount[axis],
-                        register,
-                        incremental,
-                        self.mirror[axis],
-                    );
-                    let note = self.position_note(
-                        code,
-                        AXES[axis].1,
-                        amount[axis],
-                        delta[axis],
-                        d,
-                        register,
-                        incremental,
-                    );
-                    out.notes.push(note);
-                }
-            }
-        }
-
-        // Spec 3: a Z word lands on the offset target; otherwise a changed
-        // target moves Z now (setting `move`) or waits for the next Z move.
-        let new_length =
-            if words[2].is_some() || (length_changed && setting == LengthOffsetWithoutZ::Move) {
-                self.state.length.target
-            } else {
-                self.state.length.vector
-            };
-
-        if motion.is_arc() {
-            let planned = Planned {
-                start,
-                target,
-                amount,
-                delta,
+            let change = PositionChange {
+                code,
+                d,
                 register,
-                new_length,
+                incremental,
+                mirror: self.mirror,
+                units: self.units(),
             };
-            return self.arc_move(b, out, old_length, pos, words, planned);
-        }
+            delta = change.axes(amount, words.map(|w| w.is_some()), &mut out.notes);
+            change
+        });
 
-        let kind = if motion == Motion::Linear {
-            MoveKind::Feed
-        } else {
-            MoveKind::Rapid
+        let new_length =
+            self.state
+                .length
+                .vector_after(words[2].is_some(), length_changed, setting);
+
+        let kind = match motion {
+            Motion::Arc(direction) => {
+                let planned = Planned {
+                    start,
+                    target,
+                    amount,
+                    delta,
+                    change,
+                    new_length,
+                };
+                return self.arc_move(b, direction, out, old_length, words, planned);
+            }
+            Motion::Linear => MoveKind::Feed,
+            // The parser gives the mill no lathe cycle.
+            Motion::Rapid | Motion::LatheCycle(_) => MoveKind::Rapid,
         };
         self.finish_line(
             out,
@@ -287,14 +242,15 @@ impl Machine {
     /// arc from R or I/J/K, updates the position and the vectors, notes what
     /// the length offset did and records the move. Kept out of line: inlined
     /// in [`Machine::mill_motion`], its locals made every straight move's
-    /// stack frame larger (callgrind: about a hundred instructions a block).
+    /// stack frame larger (the `check` instruction count in docs/performance.md).
+    #[allow(clippy::too_many_arguments)]
     #[inline(never)]
     fn arc_move(
         &mut self,
         b: &Block,
+        direction: ArcDirection,
         out: &mut Out,
         old_length: LengthState,
-        pos: Option<u16>,
         words: [Option<f64>; 3],
         planned: Planned,
     ) -> Result<(), Diagnostic> {
@@ -303,7 +259,7 @@ impl Machine {
             target,
             amount,
             delta,
-            register,
+            change,
             new_length,
         } = planned;
         let motion = self.state.modal.motion;
@@ -313,7 +269,7 @@ impl Machine {
             ..ArcRequest::default()
         };
         let (ia, ib, _) = self.state.modal.plane.axes();
-        req.ccw = (motion == Motion::ArcCcw) != (self.mirror[ia] != self.mirror[ib]);
+        req.ccw = (direction == ArcDirection::Ccw) != (self.mirror[ia] != self.mirror[ib]);
         let mut pv = self.state.position.vector;
         for i in 0..3 {
             pv[i] += delta[i];
@@ -350,24 +306,16 @@ impl Machine {
                 );
             }
             let r_mm = self.mm(r.value);
-            let dr = pos.map_or(0.0, |code| position::radius_change(code, r_mm, register));
-            if let Some(code) = pos {
-                out.notes.push(format!(
-                    "{}: R {} becomes {} (R changed as a radius)",
-                    gname(code),
-                    self.fmt(r_mm),
-                    self.fmt(r_mm + dr)
-                ));
-            }
+            let dr = change.map_or(0.0, |c| c.radius(r_mm, &mut out.notes));
             req.radius = Some((r_mm, dr));
         } else {
             let (ia, ib, _) = self.state.modal.plane.axes();
             let in_plane = |i: usize| i == ia || i == ib;
             if !(0..3).any(|i| in_plane(i) && centre_words[i].is_some()) {
                 let names = match self.state.modal.plane {
-                    super::modal::Plane::XY => "I/J",
-                    super::modal::Plane::ZX => "K/I",
-                    super::modal::Plane::YZ => "J/K",
+                    Plane::XY => "I/J",
+                    Plane::ZX => "K/I",
+                    Plane::YZ => "J/K",
                 };
                 return Err(self.error(
                     "arc-without-center",
@@ -398,17 +346,8 @@ impl Machine {
                     off = -off;
                 }
                 req.center[i] = off;
-                if let Some(code) = pos {
-                    // Spec 4.8: I/J/K are incremental amounts, changed like axis words.
-                    let dc = position::change(code, off, register, true, self.mirror[i]);
-                    req.center_change[i] = dc;
-                    out.notes.push(format!(
-                        "{}: {} {} becomes {}",
-                        gname(code),
-                        ['I', 'J', 'K'][i],
-                        self.fmt(off),
-                        self.fmt(off + dc)
-                    ));
+                if let Some(c) = change {
+                    req.center_change[i] = c.center(i, off, &mut out.notes);
                 }
             }
         }
@@ -433,7 +372,7 @@ impl Machine {
     /// Ends a straight move: updates the position and the vectors, notes
     /// what the length offset did and records the move. Inlined where it is
     /// called: the target then goes to the state from registers, not through
-    /// a copy on the stack (callgrind: 1 M of 202 M instructions).
+    /// a copy on the stack (the `check` instruction count in docs/performance.md).
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     fn finish_line(
@@ -458,48 +397,15 @@ impl Machine {
         Ok(())
     }
 
-    /// A block with G45–G48 (spec 4.9, 4.10).
+    /// A block with G45–G48 (spec 4, [`position::check_block`]).
     fn position_offset_block(
         &mut self,
         b: &Block,
-        c: &Codes<'_>,
-        code: u16,
+        code: PositionOffset,
         out: &mut Out,
     ) -> Result<(), Diagnostic> {
-        for (group, n, span) in c.present() {
-            let allowed = [Group::NonModal, Group::Motion, Group::Distance]
-                .iter()
-                .any(|g| g.index() == group);
-            if !allowed {
-                return Err(self.error(
-                    "position-offset-g-code",
-                    span,
-                    format!(
-                        "G{n:02} cannot share a block with G{code}: only G00–G03 and G90/G91 may (seed 003: an input error occurs)"
-                    ),
-                ));
-            }
-        }
-        if self.state.modal.cycle.active() {
-            return Err(self.error(
-                "position-offset-in-cycle",
-                c.span(Group::NonModal),
-                format!(
-                    "G{code} cannot be programmed while canned cycle {} is active (seed 003): cancel it with G80 first",
-                    self.state.modal.codes(self.setup.machine).cycle.unwrap_or("G80")
-                ),
-            ));
-        }
-        if !AXES.iter().any(|(a, _)| b.has(*a)) {
-            return Err(self.error(
-                "position-offset-without-axis",
-                c.span(Group::NonModal),
-                format!(
-                    "G{code} needs an axis word to extend or reduce (spec 4.9); for a move by the offset alone write X0 in G91 (seed 003)"
-                ),
-            ));
-        }
-        let old_length = self.length_words(b, c, out)?;
+        position::check_block(b, code, self.setup.machine, self.state.modal.cycle)?;
+        let old_length = self.length_words(b, out)?;
         self.mill_motion(b, out, old_length, Some(code))
     }
 
@@ -525,7 +431,7 @@ impl Machine {
     /// G28: to the intermediate point, then to the reference position on the
     /// named axes; the length and position vectors are cleared on the axes
     /// that reach it, and G43/G44 applies again at the next Z move (spec 2).
-    fn g28(&mut self, b: &Block, c: &Codes<'_>, out: &mut Out) -> Result<(), Diagnostic> {
+    fn g28(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
         if !AXES.iter().any(|(a, _)| b.has(*a)) {
             return Err(self.error(
                 "g28-without-axis",
@@ -535,7 +441,7 @@ impl Machine {
         }
         // A length offset commanded here applies at the next Z move: the
         // return clears the Z vector anyway.
-        self.length_words(b, c, out)?;
+        self.length_words(b, out)?;
         let incremental = self.state.modal.distance == Distance::Incremental;
         let start = self.mark();
         let mut named = [false; 3];
@@ -573,8 +479,8 @@ impl Machine {
             );
             if named[2] && self.state.length.target != 0.0 {
                 note.push_str(&format!(
-                    "; G4{} H{:02} stays active and applies again at the next Z move",
-                    if self.state.length.sign > 0 { 3 } else { 4 },
+                    "; {} H{:02} stays active and applies again at the next Z move",
+                    self.state.length.mode().gcode(),
                     self.state.length.h
                 ));
             }
@@ -583,127 +489,25 @@ impl Machine {
         Ok(())
     }
 
-    /// The sentence for one axis changed by G45–G48 (spec 6's example:
-    /// "G47: X move 50.000 extended by 2 × D01 (6.000) to 62.000").
-    #[allow(clippy::too_many_arguments)]
-    fn position_note(
-        &self,
-        code: u16,
-        axis: char,
-        m: f64,
-        delta: f64,
-        d: u16,
-        v: f64,
-        incremental: bool,
-    ) -> String {
-        let g = gname(code);
-        if delta == 0.0 && !incremental && m.abs() <= 1e-9 {
-            return format!(
-                "{g}: {axis} target is the current position, so {axis} is not changed (spec 4.5)"
-            );
-        }
-        let verb = if position::factor(code) > 0.0 {
-            "extended"
-        } else {
-            "reduced"
-        };
-        let twice = if position::factor(code).abs() == 2.0 {
-            "2 × "
-        } else {
-            ""
-        };
-        let mut s = format!(
-            "{g}: {axis} move {} {verb} by {twice}D{d:02} ({}) to {}",
-            self.fmt(m),
-            self.fmt(v),
-            self.fmt(m + delta)
-        );
-        if m.abs() <= 1e-9 {
-            s.push_str(" (a zero move goes by the offset alone, seed 003)");
-        } else if (m + delta) * m < 0.0 {
-            s.push_str(" — the move reverses (spec 4.3)");
-        }
-        s
-    }
-
-    /// The sentence for what the length offset did in this block (spec 3).
-    /// `z_amount` is the programmed Z movement when the block moved along Z.
-    /// Nearly every block leaves the offset as it was: that test is inlined
-    /// where the machine calls this, the sentence is written out of line.
+    /// Notes what the length offset did in this block (spec 3,
+    /// [`LengthState::note`]). `z_amount` is the programmed Z movement when
+    /// the block moved along Z.
     #[inline]
     pub(super) fn length_note(&self, old: LengthState, z_amount: Option<f64>, out: &mut Out) {
-        let new = self.state.length;
-        let mode_changed = new.sign != old.sign || new.h != old.h || new.target != old.target;
-        if mode_changed || new.vector - old.vector != 0.0 {
-            self.write_length_note(old, mode_changed, z_amount, out);
+        if self.state.length.note_due(&old) {
+            self.write_length_note(old, z_amount, out);
         }
     }
 
     #[inline(never)]
-    fn write_length_note(
-        &self,
-        old: LengthState,
-        mode_changed: bool,
-        z_amount: Option<f64>,
-        out: &mut Out,
-    ) {
-        let new = self.state.length;
-        let vector_change = new.vector - old.vector;
-        let label = if mode_changed {
-            if new.target == 0.0 && old.target != 0.0 {
-                if new.sign == 0 {
-                    "G49 cancels the tool length offset".to_string()
-                } else {
-                    "H00 cancels the tool length offset".to_string()
-                }
-            } else if new.sign == 0 {
-                "G49: no tool length offset".to_string()
-            } else {
-                let g = if new.sign > 0 { "G43" } else { "G44" };
-                let how = if new.sign > 0 { "adds" } else { "subtracts" };
-                if old.sign == new.sign && old.h != new.h && old.h != 0 {
-                    format!(
-                        "H{:02} → H{:02} while {g} is active ({} → {})",
-                        old.h,
-                        new.h,
-                        self.fmt(old.value),
-                        self.fmt(new.value)
-                    )
-                } else {
-                    format!("{g} {how} H{:02} ({})", new.h, self.fmt(new.value))
-                }
-            }
-        } else {
-            format!(
-                "this Z move applies the pending length offset H{:02} ({})",
-                new.h,
-                self.fmt_signed(new.target)
-            )
+    fn write_length_note(&self, old: LengthState, z_amount: Option<f64>, out: &mut Out) {
+        let z = ZAfter {
+            incremental: self.state.modal.distance == Distance::Incremental,
+            programmed: self.state.programmed[2],
+            actual: self.actual()[2],
+            units: self.units(),
         };
-        let effect = match z_amount {
-            Some(m) if self.state.modal.distance == Distance::Incremental => {
-                format!("the Z move {} becomes {}", self.fmt(m), self.fmt(m + vector_change))
-            }
-            Some(_) => format!(
-                "Z target {} lands at {}",
-                self.fmt(self.state.programmed[2]),
-                self.fmt(self.actual()[2])
-            ),
-            None if vector_change != 0.0 => {
-                if old.vector != 0.0 && new.vector != 0.0 {
-                    format!("no Z word: Z moves by the difference, {} (seed 001)", self.fmt_signed(vector_change))
-                } else {
-                    format!("no Z word: Z moves by {} (seed 001)", self.fmt_signed(vector_change))
-                }
-            }
-            None if new.target != new.vector => {
-                "no Z word: no motion now; the next Z move lands offset (setting length_offset_without_z = next_z)"
-                    .to_string()
-            }
-            None if old.vector == 0.0 => "no motion (no length vector was applied)".to_string(),
-            None => "no motion".to_string(),
-        };
-        out.notes.push(format!("{label}: {effect}"));
+        out.notes.push(self.state.length.note(&old, z_amount, z));
     }
 }
 
@@ -718,18 +522,8 @@ struct Planned {
     amount: Xyz,
     /// What G45–G48 change of each axis's amount.
     delta: Xyz,
-    /// The G45–G48 register value (mm), or 0.
-    register: f64,
+    /// What G45–G48 does in this block, if it holds one.
+    change: Option<PositionChange>,
     /// The length vector at the end of the move.
     new_length: f64,
-}
-
-/// True if a block changed the length offset mode, number or target.
-pub(super) fn changed(old: &LengthState, new: &LengthState) -> bool {
-    old.target != new.target || old.sign != new.sign || old.h != new.h
-}
-
-/// "G45" … "G48" with the manual's meaning.
-fn gname(code: u16) -> String {
-    format!("G{code} ({})", position::meaning(code))
 }

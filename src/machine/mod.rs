@@ -13,17 +13,20 @@ mod cycles;
 mod lathe;
 mod mill;
 pub mod modal;
+pub mod state;
+
+pub use state::{ArcInfo, BlockState, EventKind, Move, MoveKind};
 
 use crate::diag::{Diagnostic, Span};
-use crate::report::{
-    ArcInfo, BlockState, EventKind, LatheState, LengthState, Move, MoveKind, PositionState, Xyz,
-    to_units,
-};
+use crate::geometry::{Xyz, add, scale, sub, to_units};
+use crate::offsets::lathe::LatheState;
+use crate::offsets::length::LengthState;
+use crate::offsets::position::PositionState;
 use crate::setup::{MachineKind, Setup, Units};
-use crate::syntax::codes::Group;
+use crate::syntax::codes::{CutterCompensation, MCode, NonModal};
 use crate::syntax::{Address, Block};
 use arc::{ArcError, Circle};
-use modal::{Modal, Plane};
+use modal::{Modal, WorkSystem};
 use std::sync::Arc;
 
 /// What happens after a block.
@@ -50,31 +53,6 @@ impl Out {
         self.events.clear();
         self.notes.clear();
         self.warnings.clear();
-    }
-}
-
-/// The G codes of a block, one per group: the parser classified them (and
-/// refused blocks with two of a group or an unknown code).
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct Codes<'b>(&'b Block);
-
-impl<'b> Codes<'b> {
-    fn of(block: &'b Block) -> Codes<'b> {
-        Codes(block)
-    }
-    /// The code of a group; a code in a group is a whole number (G05.1 is
-    /// in none), so the value's integer part is all of it.
-    pub fn get(&self, group: Group) -> Option<u16> {
-        self.0.group_word(group).map(|w| w.value as u16)
-    }
-    pub fn span(&self, group: Group) -> Span {
-        self.0.group_word(group).map(|w| w.span).unwrap_or_default()
-    }
-    /// The codes present, with their groups.
-    pub fn present(&self) -> impl Iterator<Item = (usize, u16, Span)> + '_ {
-        Group::ALL
-            .iter()
-            .filter_map(|&g| self.get(g).map(|n| (g.index(), n, self.span(g))))
     }
 }
 
@@ -112,18 +90,6 @@ pub struct Machine {
     pub(crate) moves_left: usize,
     /// Set when a block ran out of `moves_left`.
     overflow: bool,
-}
-
-fn add(a: Xyz, b: Xyz) -> Xyz {
-    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
-}
-
-fn sub(a: Xyz, b: Xyz) -> Xyz {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-fn scale(a: Xyz, k: f64) -> Xyz {
-    [a[0] * k, a[1] * k, a[2] * k]
 }
 
 const AXES: [(Address, char); 3] = [(Address::X, 'X'), (Address::Y, 'Y'), (Address::Z, 'Z')];
@@ -226,10 +192,9 @@ impl Machine {
         self.line = block.span.line;
         self.span = block.span;
         self.overflow = false;
-        let codes = Codes::of(block);
         match self.setup.machine {
-            MachineKind::Mill => self.mill_block(block, &codes, out)?,
-            MachineKind::Lathe => self.lathe_block(block, &codes, out)?,
+            MachineKind::Mill => self.mill_block(block, out)?,
+            MachineKind::Lathe => self.lathe_block(block, out)?,
         }
         if self.overflow {
             return Err(self.error(
@@ -248,7 +213,8 @@ impl Machine {
                 "this block takes the tool beyond any machine's travel",
             ));
         }
-        let end = block.holds(Address::M) && block.mcodes().any(|(m, _)| m == 2 || m == 30);
+        let end =
+            block.holds(Address::M) && block.mcodes(self.setup.machine).any(|m| m.ends_program());
         Ok(if end { Flow::End } else { Flow::Continue })
     }
 
@@ -261,18 +227,6 @@ impl Machine {
     /// A program value in the current units, in mm.
     fn mm(&self, v: f64) -> f64 {
         v * self.units().mm()
-    }
-
-    /// A length in mm written in the current units with the control's decimals.
-    fn fmt(&self, mm: f64) -> String {
-        let d = self.units().decimals();
-        format!("{:.d$}", to_units(mm, self.units()))
-    }
-
-    /// Like [`Machine::fmt`] with a sign.
-    fn fmt_signed(&self, mm: f64) -> String {
-        let d = self.units().decimals();
-        format!("{:+.d$}", to_units(mm, self.units()))
     }
 
     fn error(&self, code: &'static str, span: Span, msg: impl Into<String>) -> Diagnostic {
@@ -301,8 +255,7 @@ impl Machine {
     /// Records the motion from `from` to the current position. Line moves
     /// that go nowhere (on both paths) are not recorded. Inlined where it is
     /// called: a straight move's `None` arc then costs its tag alone, not a
-    /// copy of the 120 bytes of an `Option<ArcInfo>` (callgrind: 2 M of 204 M
-    /// instructions for 100k blocks).
+    /// copy of a whole `Option<ArcInfo>` (the `check` instruction count in docs/performance.md).
     #[inline(always)]
     fn emit(
         &mut self,
@@ -374,7 +327,7 @@ impl Machine {
     fn set_coordinate(&mut self, axis: usize, value: f64, clear_position: bool) {
         let before = self.actual()[axis];
         if clear_position {
-            self.state.position.vector[axis] = 0.0;
+            self.state.position.cancel_for_coordinate_setting(axis);
         }
         self.state.programmed[axis] = value;
         let after = self.actual()[axis];
@@ -388,13 +341,10 @@ impl Machine {
     }
 
     /// G54–G59: the tool stays; its coordinates change to the new system.
-    fn select_work(&mut self, work: u8) {
+    fn select_work(&mut self, work: WorkSystem) {
         let unit = self.setup.units.mm();
         let new_origin = add(
-            scale(
-                self.setup.work_offsets.get(usize::from(work)).to_array(),
-                unit,
-            ),
+            scale(self.setup.work_offsets.get(work.index()).to_array(), unit),
             self.shift,
         );
         let delta = sub(self.origin, new_origin);
@@ -408,67 +358,72 @@ impl Machine {
 
     /// Codes, words and M functions every block may carry: units, plane,
     /// distance, feed mode, return level, work system, F, S, M codes.
-    fn common_words(&mut self, b: &Block, c: &Codes, out: &mut Out) {
+    fn common_words(&mut self, b: &Block, out: &mut Out) {
         let machine = self.setup.machine;
-        if let Some(u) = c.get(Group::Units) {
-            self.state.modal.units = if u == 20 { Units::Inch } else { Units::Mm };
+        let c = b.codes();
+        let modal = &mut self.state.modal;
+        if let Some(units) = c.units() {
+            modal.units = units;
         }
-        if let Some(p) = c.get(Group::Plane) {
-            self.state.modal.plane = match p {
-                17 => Plane::XY,
-                18 => Plane::ZX,
-                _ => Plane::YZ,
-            };
+        if let Some(plane) = c.plane() {
+            modal.plane = plane;
         }
-        if let Some(d) = c.get(Group::Distance) {
-            self.state.modal.distance = if d == 91 {
-                modal::Distance::Incremental
-            } else {
-                modal::Distance::Absolute
-            };
+        if let Some(distance) = c.distance() {
+            modal.distance = distance;
         }
-        if let Some(f) = c.get(Group::FeedMode) {
-            self.state.modal.feed_per_rev = f == 95 || (machine == MachineKind::Lathe && f == 99);
+        if let Some(feed_mode) = c.feed_mode() {
+            modal.feed_mode = feed_mode;
         }
-        if let Some(r) = c.get(Group::Return) {
-            self.state.modal.return_to_r = r == 99;
+        if let Some(level) = c.return_level() {
+            modal.return_level = level;
         }
-        if let Some(s) = c.get(Group::SurfaceSpeed) {
-            self.state.modal.surface_speed = s == 96;
+        if let Some(surface_speed) = c.surface_speed() {
+            modal.surface_speed = surface_speed;
         }
-        if let Some(w) = c.get(Group::Work) {
-            self.select_work((w - 54) as u8);
+        if let Some(work) = c.work() {
+            self.select_work(work);
+        }
+        match c.cutter() {
+            // G40, cutter compensation cancel: the state offsetlab models
+            // (the parser refuses G41/G42 with the reason).
+            Some(CutterCompensation::Cancel) | None => {}
         }
         if let Some(f) = b.value(Address::F) {
             self.state.feed = Some(f);
         }
         if let Some(s) = b.value(Address::S) {
             // G50 S on the lathe is the spindle speed limit, not a speed.
-            if !(machine == MachineKind::Lathe && c.get(Group::NonModal) == Some(50)) {
+            if !(machine == MachineKind::Lathe && c.non_modal() == Some(NonModal::SetCoordinates)) {
                 self.state.spindle = Some(s);
             }
         }
         if !b.holds(Address::M) {
             return;
         }
-        for (m, _) in b.mcodes() {
+        for m in b.mcodes(machine) {
             let kind = match m {
-                0 => EventKind::ProgramStop,
-                1 => EventKind::OptionalStop,
-                2 | 30 => EventKind::ProgramEnd { m },
-                3 => EventKind::SpindleCw,
-                4 => EventKind::SpindleCcw,
-                5 => EventKind::SpindleStop,
-                19 => EventKind::SpindleOrient,
-                6 if machine == MachineKind::Mill => {
+                MCode::ProgramStop => EventKind::ProgramStop,
+                MCode::OptionalStop => EventKind::OptionalStop,
+                MCode::ProgramEnd | MCode::ProgramEndRewind => {
+                    EventKind::ProgramEnd { m: m.number() }
+                }
+                MCode::SpindleCw => EventKind::SpindleCw,
+                MCode::SpindleCcw => EventKind::SpindleCcw,
+                MCode::SpindleStop => EventKind::SpindleStop,
+                MCode::SpindleOrient => EventKind::SpindleOrient,
+                MCode::ToolChange => {
                     self.state.tool = self.state.next_tool;
                     EventKind::ToolChange {
                         tool: self.state.tool,
                     }
                 }
-                7 | 8 => EventKind::CoolantOn { m },
-                9 => EventKind::CoolantOff,
-                other => EventKind::Auxiliary { m: other },
+                MCode::CoolantMist | MCode::CoolantFlood => EventKind::CoolantOn { m: m.number() },
+                MCode::CoolantOff => EventKind::CoolantOff,
+                // Subprograms are carried through until they are modelled.
+                MCode::LocalSubprogramCall
+                | MCode::SubprogramCall
+                | MCode::SubprogramReturn
+                | MCode::Other(_) => EventKind::Auxiliary { m: m.number() },
             };
             self.event(out, kind);
         }

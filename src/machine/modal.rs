@@ -5,111 +5,11 @@
 use serde::Serialize;
 
 use crate::setup::{MachineKind, Units};
-
-/// Group 01: how axis words move the tool.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Motion {
-    /// G00.
-    Rapid,
-    /// G01.
-    Linear,
-    /// G02.
-    ArcCw,
-    /// G03.
-    ArcCcw,
-    /// Lathe G90: outer/inner diameter turning cycle.
-    TurningCycle,
-    /// Lathe G92: thread cutting cycle.
-    ThreadingCycle,
-    /// Lathe G94: end facing cycle.
-    FacingCycle,
-}
-
-impl Motion {
-    /// The G code.
-    pub fn gcode(self) -> &'static str {
-        match self {
-            Motion::Rapid => "G00",
-            Motion::Linear => "G01",
-            Motion::ArcCw => "G02",
-            Motion::ArcCcw => "G03",
-            Motion::TurningCycle => "G90",
-            Motion::ThreadingCycle => "G92",
-            Motion::FacingCycle => "G94",
-        }
-    }
-    /// From a group-01 code number.
-    pub fn from_code(machine: MachineKind, n: u16) -> Option<Motion> {
-        Some(match (machine, n) {
-            (_, 0) => Motion::Rapid,
-            (_, 1) => Motion::Linear,
-            (_, 2) => Motion::ArcCw,
-            (_, 3) => Motion::ArcCcw,
-            (MachineKind::Lathe, 90) => Motion::TurningCycle,
-            (MachineKind::Lathe, 92) => Motion::ThreadingCycle,
-            (MachineKind::Lathe, 94) => Motion::FacingCycle,
-            _ => return None,
-        })
-    }
-    /// G02 or G03.
-    pub fn is_arc(self) -> bool {
-        matches!(self, Motion::ArcCw | Motion::ArcCcw)
-    }
-}
-
-/// Group 02: the plane of arcs (and of canned-cycle hole positions).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Plane {
-    /// G17: XY, normal Z.
-    XY,
-    /// G18: ZX, normal Y.
-    ZX,
-    /// G19: YZ, normal X.
-    YZ,
-}
-
-impl Plane {
-    /// The G code.
-    pub fn gcode(self) -> &'static str {
-        match self {
-            Plane::XY => "G17",
-            Plane::ZX => "G18",
-            Plane::YZ => "G19",
-        }
-    }
-    /// Axis indices (first, second, normal). CW/CCW are seen from the normal's
-    /// positive side, in the right-handed frame (first, second):
-    /// G17 (X, Y), G18 (Z, X), G19 (Y, Z).
-    pub fn axes(self) -> (usize, usize, usize) {
-        match self {
-            Plane::XY => (0, 1, 2),
-            Plane::ZX => (2, 0, 1),
-            Plane::YZ => (1, 2, 0),
-        }
-    }
-}
-
-/// Group 03 (mill): absolute or incremental.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Distance {
-    /// G90.
-    Absolute,
-    /// G91.
-    Incremental,
-}
-
-/// A canned cycle of the mill (group 09), or none (G80).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct Cycle(pub u16);
-
-impl Cycle {
-    /// G80.
-    pub const NONE: Cycle = Cycle(80);
-    /// True when a cycle is active.
-    pub fn active(self) -> bool {
-        self.0 != 80
-    }
-}
+use crate::syntax::codes::CannedCycle;
+pub use crate::syntax::codes::{
+    ArcDirection, Cycle, Distance, FeedMode, LatheCycle, LengthOffset, Motion, Plane, ReturnLevel,
+    SurfaceSpeed, WorkSystem,
+};
 
 /// All modal codes a block report shows.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -123,17 +23,17 @@ pub struct Modal {
     /// Group 06.
     pub units: Units,
     /// Group 05: feed per minute (mill G94, lathe G98) or per revolution.
-    pub feed_per_rev: bool,
+    pub feed_mode: FeedMode,
     /// Group 08 (mill): G43, G44 or G49.
-    pub length: u16,
-    /// Group 09 (mill).
-    pub cycle: Cycle,
-    /// Group 10 (mill): return to the R level (G99) instead of the initial level.
-    pub return_to_r: bool,
-    /// Group 14: 0 = G54 … 5 = G59.
-    pub work: u8,
-    /// Lathe: constant surface speed (G96) instead of G97.
-    pub surface_speed: bool,
+    pub length: LengthOffset,
+    /// Group 09 (mill): the active canned cycle, None after G80.
+    pub cycle: Option<Cycle>,
+    /// Group 10 (mill): where a canned cycle returns to.
+    pub return_level: ReturnLevel,
+    /// Group 14.
+    pub work: WorkSystem,
+    /// Lathe group 02: constant surface speed (G96) or G97.
+    pub surface_speed: SurfaceSpeed,
 }
 
 impl Modal {
@@ -147,12 +47,15 @@ impl Modal {
             },
             distance: Distance::Absolute,
             units,
-            feed_per_rev: machine == MachineKind::Lathe,
-            length: 49,
-            cycle: Cycle::NONE,
-            return_to_r: false,
-            work: 0,
-            surface_speed: false,
+            feed_mode: match machine {
+                MachineKind::Mill => FeedMode::PerMinute,
+                MachineKind::Lathe => FeedMode::PerRevolution,
+            },
+            length: LengthOffset::Cancel,
+            cycle: None,
+            return_level: ReturnLevel::Initial,
+            work: WorkSystem::G54,
+            surface_speed: SurfaceSpeed::Cancel,
         }
     }
 
@@ -162,45 +65,15 @@ impl Modal {
         ModalCodes {
             motion: self.motion.gcode(),
             plane: self.plane.gcode(),
-            distance: mill.then_some(match self.distance {
-                Distance::Absolute => "G90",
-                Distance::Incremental => "G91",
-            }),
+            distance: mill.then_some(self.distance.gcode()),
             units: self.units.gcode(),
-            feed_mode: match (mill, self.feed_per_rev) {
-                (true, false) => "G94",
-                (true, true) => "G95",
-                (false, false) => "G98",
-                (false, true) => "G99",
-            },
-            length: mill.then_some(match self.length {
-                43 => "G43",
-                44 => "G44",
-                _ => "G49",
-            }),
-            cycle: mill.then(|| cycle_name(self.cycle.0)),
-            return_level: mill.then_some(if self.return_to_r { "G99" } else { "G98" }),
-            work: ["G54", "G55", "G56", "G57", "G58", "G59"][usize::from(self.work.min(5))],
-            surface_speed: (!mill).then_some(if self.surface_speed { "G96" } else { "G97" }),
+            feed_mode: self.feed_mode.gcode(machine),
+            length: mill.then_some(self.length.gcode()),
+            cycle: mill.then(|| self.cycle.map_or(CannedCycle::Cancel.gcode(), Cycle::gcode)),
+            return_level: mill.then_some(self.return_level.gcode()),
+            work: self.work.gcode(),
+            surface_speed: (!mill).then_some(self.surface_speed.gcode()),
         }
-    }
-}
-
-fn cycle_name(n: u16) -> &'static str {
-    match n {
-        73 => "G73",
-        74 => "G74",
-        76 => "G76",
-        81 => "G81",
-        82 => "G82",
-        83 => "G83",
-        84 => "G84",
-        85 => "G85",
-        86 => "G86",
-        87 => "G87",
-        88 => "G88",
-        89 => "G89",
-        _ => "G80",
     }
 }
 

@@ -1,7 +1,15 @@
-//! The offset rules proper: how G43/G44/G49 (seed 001), G45–G48 (seeds 000,
-//! 003) and lathe T codes (seed 004) turn register values into vectors and
-//! changed movement amounts. The machine owns positions and modal state and
-//! calls these; nothing here moves the tool or formats text.
+//! The offset families, one file each with all of its rules, its
+//! explanation sentences and its tests: how register values become vectors
+//! and changed movement amounts, what a block holding the offset may hold,
+//! and what the report says it did.
+//!
+//! - [`length`]: tool length offset G43/G44/G49 (spec 3, seed 001);
+//! - [`position`]: tool position offset G45–G48 (spec 4, seeds 000, 003);
+//! - [`lathe`]: lathe T-code tool position offset (spec 5, seed 004).
+//!
+//! The next family (cutter radius compensation, G40–G42) is a sibling file.
+//! The machine owns positions and modal state and calls these; a family
+//! never moves the tool and imports nothing of the machine.
 
 pub mod lathe;
 pub mod length;

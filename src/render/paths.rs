@@ -8,7 +8,7 @@ use super::{
     DRAW_TOLERANCE_PX, Frame, MIN_SEGMENT_PX, Pen, RESTART_EVERY, Raster, Scene, Stroke, WholeArc,
     is_rapid,
 };
-use crate::report::Xyz;
+use crate::geometry::Xyz;
 use crate::toolpath::{ToolArc, Toolpath, Visit};
 
 /// One stroke of a scene: the moves of `moves` on the programmed or the

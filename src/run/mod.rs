@@ -260,7 +260,7 @@ pub fn run_with(text: &str, setup: &Setup, options: RunOptions) -> Run {
 pub trait Observer {
     /// Every move, as it is made (whether or not the run keeps it): the
     /// page builds its toolpath this way without keeping the moves.
-    fn on_move(&mut self, _m: &crate::report::Move) {}
+    fn on_move(&mut self, _m: &crate::machine::Move) {}
 
     /// After every [`PROGRESS_EVERY`] bytes of program: how many bytes have
     /// been read (the page shows a large program's progress).
@@ -275,8 +275,8 @@ pub trait Observer {
 impl Observer for () {}
 
 /// A closure watches the moves.
-impl<F: FnMut(&crate::report::Move)> Observer for F {
-    fn on_move(&mut self, m: &crate::report::Move) {
+impl<F: FnMut(&crate::machine::Move)> Observer for F {
+    fn on_move(&mut self, m: &crate::machine::Move) {
         self(m)
     }
 }

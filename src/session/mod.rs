@@ -20,9 +20,10 @@ use serde::Serialize;
 
 use crate::diag::Diagnostic;
 use crate::document::{Document, ViewPlane, ViewState};
+use crate::machine::Move;
 use crate::render::scene::Scene;
 use crate::render::{self, Frame};
-use crate::report::{BlockReport, End, Move, Run};
+use crate::report::{BlockReport, End, Run};
 use crate::run::again::Earlier;
 use crate::run::{Checkpoints, Observer, RunOptions};
 use crate::setup::{MachineKind, Setup};

@@ -3,8 +3,9 @@
 
 use serde::Serialize;
 
-use super::codes::{GCode, Group};
+use super::codes::{Code, Codes, GCode, Group, MCode};
 use crate::diag::Span;
+use crate::setup::MachineKind;
 
 /// The address letters offsetlab reads.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
@@ -193,9 +194,11 @@ pub struct Block {
     slots: [u8; Address::COUNT],
     /// The addresses of all the words, a bit each ([`Address::bit`]).
     addresses: u32,
+    /// The block's G codes, resolved by the parser (which refuses a second
+    /// one of a group), so the machine need not do it again.
+    codes: Codes,
     /// Per G-code modal group, 1 + the index of the block's G word of that
-    /// group, or 0: the parser classifies every G code (and refuses a
-    /// second one of a group), so the machine need not do it again.
+    /// group, or 0 (for the word's span and text).
     groups: [u32; Group::COUNT],
     /// The groups of the block's G codes, a bit each (by [`Group::index`]).
     group_bits: u16,
@@ -207,14 +210,30 @@ impl Block {
         self.words.clear();
         self.slots = [0; Address::COUNT];
         self.addresses = 0;
+        self.codes = Codes::default();
         self.groups = [0; Group::COUNT];
         self.group_bits = 0;
     }
 
-    /// Notes that the next word pushed is the block's G code of `group`.
-    pub(super) fn set_group(&mut self, group: Group) {
+    /// Notes that the next word pushed is the block's G code `code`, of
+    /// `group` (its [`Code::group`]).
+    #[inline(always)]
+    pub(super) fn set_code(&mut self, code: Code, group: Group) {
+        self.codes.set(code, group);
         self.groups[group.index()] = self.words.len() as u32 + 1;
         self.group_bits |= 1 << group.index();
+    }
+
+    /// The block's G codes, one typed value per modal group.
+    #[inline]
+    pub fn codes(&self) -> &Codes {
+        &self.codes
+    }
+
+    /// Where the block's G code of a group is written (the block's span if it
+    /// has none).
+    pub fn code_span(&self, group: Group) -> Span {
+        self.group_word(group).map_or(self.span, |w| w.span)
     }
 
     /// True if the block has a G code of this modal group.
@@ -285,11 +304,14 @@ impl Block {
             .map(|w| (w.gcode(), w))
     }
 
-    /// The M codes of the block with their words.
-    pub fn mcodes(&self) -> impl Iterator<Item = (u32, &Word)> {
+    /// The M codes of the block, in text order, as this machine reads them
+    /// (the parser checked their groups with the same [`MCode::of`]; they
+    /// are read from the words again because few blocks have any, and
+    /// keeping them cost every block).
+    pub fn mcodes(&self, machine: MachineKind) -> impl Iterator<Item = MCode> + '_ {
         self.words
             .iter()
             .filter(|w| w.address == Address::M)
-            .map(|w| (w.int(), w))
+            .map(move |w| MCode::of(machine, w.int()))
     }
 }

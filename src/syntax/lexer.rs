@@ -4,9 +4,10 @@
 //! Tape controls ignore spaces anywhere in a word, so `X 1 2 . 5` is `X12.5`;
 //! the number grammar therefore runs on the word's characters with blanks
 //! removed. The number is the parser's hot loop: [`number`] reads it in one
-//! hand-written pass (nom's combinator chain cost ~4× the instructions per
-//! number, measured with callgrind), and the nom grammar [`number_grammar`]
-//! is kept as its specification, which a property test holds it to.
+//! hand-written pass (nom's combinator chain cost several times its
+//! instructions: the `check` instruction count in docs/performance.md guards it), and the nom grammar
+//! [`number_grammar`] is kept as its specification, which a property test
+//! holds it to.
 
 use nom::{IResult, Parser, bytes::complete::take_till, character::complete::char, sequence::pair};
 #[cfg(test)]

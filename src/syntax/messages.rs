@@ -109,12 +109,12 @@ impl Blocks<'_> {
             }
             Clash::MCode => {
                 // The block holds one M code of the group: the earlier one.
-                let group = m_group(word.int());
+                let machine = self.options.machine;
+                let group = MCode::of(machine, word.int()).group();
                 let earlier = block
-                    .mcodes()
-                    .map(|(m, _)| m)
-                    .find(|m| m_group(*m) == group)
-                    .unwrap_or_default();
+                    .mcodes(machine)
+                    .find(|m| m.group() == group)
+                    .map_or(0, |m| m.number());
                 let msg = format!(
                     "M{earlier:02} and M{:02} exclude each other; a block may hold one of them",
                     word.int()

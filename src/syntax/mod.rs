@@ -19,7 +19,7 @@ pub use block::{Address, Block, Word, WordKind};
 
 use crate::diag::{Diagnostic, Span};
 use crate::setup::{DecimalInput, MachineKind, Setup, Units};
-use codes::{Group, g_group, group_of, m_group};
+use codes::{Code, GCode, Group, MCode, g_group};
 use lexer::{Number, NumberError};
 
 /// Most diagnostics one program reports; past this one more says so.
@@ -235,8 +235,8 @@ enum Clash {
 #[derive(Default)]
 struct Checks {
     /// The M groups seen (the first eight; the message finds their words
-    /// again: clearing a table of their indexes too took a tenth of a short
-    /// block's instructions, callgrind).
+    /// again: clearing a table of their indexes too cost every block, see
+    /// the `check` instruction count in docs/performance.md).
     m_groups: [u32; 8],
     m_count: usize,
 }
@@ -248,32 +248,49 @@ impl Checks {
         let a = word.address;
         match a {
             Address::G => {
-                let code = word.gcode();
-                let Some(group) = group_of(machine, code) else {
-                    let why = g_group(machine, code).err().unwrap_or_default();
+                let written = word.gcode();
+                let Some(code) = Code::of(machine, written) else {
+                    let why = g_group(machine, written).err().unwrap_or_default();
                     return Err(Clash::UnknownGCode(why));
                 };
-                if block.holds_group(group) {
-                    return Err(Clash::Group(group));
-                }
-                block.set_group(group);
+                return self.admit_code(block, word, code);
             }
-            Address::M => {
-                let g = m_group(word.int());
-                if self.m_groups[..self.m_count].contains(&g) {
-                    return Err(Clash::MCode);
-                }
-                if self.m_count < self.m_groups.len() {
-                    self.m_groups[self.m_count] = g;
-                    self.m_count += 1;
-                }
-            }
+            Address::M => self.admit_mcode(machine, &word)?,
             _ => {
                 if block.holds(a) {
                     return Err(Clash::Duplicate);
                 }
             }
         }
+        block.push(word);
+        Ok(())
+    }
+
+    /// Notes the M group of an M word unless an earlier word has it. Out of
+    /// line: few blocks have an M word, and every block reads through
+    /// [`Checks::admit`] (the `check` instruction count in
+    /// docs/performance.md).
+    #[inline(never)]
+    fn admit_mcode(&mut self, machine: MachineKind, word: &Word) -> Result<(), Clash> {
+        let g = MCode::of(machine, word.int()).group();
+        if self.m_groups[..self.m_count].contains(&g) {
+            return Err(Clash::MCode);
+        }
+        if self.m_count < self.m_groups.len() {
+            self.m_groups[self.m_count] = g;
+            self.m_count += 1;
+        }
+        Ok(())
+    }
+
+    /// [`Checks::admit`] for a G word whose code is resolved.
+    #[inline(always)]
+    fn admit_code(&mut self, block: &mut Block, word: Word, code: Code) -> Result<(), Clash> {
+        let group = code.group();
+        if block.holds_group(group) {
+            return Err(Clash::Group(group));
+        }
+        block.set_code(code, group);
         block.push(word);
         Ok(())
     }
@@ -516,18 +533,38 @@ impl<'a> Blocks<'a> {
     }
 
     /// Tracks the G codes that change how numbers are read: G20/G21 (least
-    /// increment) and mill canned cycles (K is then a repeat count).
+    /// increment) and mill canned cycles (K is then a repeat count), from
+    /// a G word's number as lexed (written without a point or sign).
     fn note_context(&mut self, n: Number) {
         if n.frac_digits != 0 || n.negative {
             return;
         }
-        // G00–G03 first: nearly every block has one.
-        match (self.options.machine, n.mantissa) {
-            (MachineKind::Mill, 0..=3 | 80) => self.in_cycle = false,
-            (_, 20) => self.units = Units::Inch,
-            (_, 21) => self.units = Units::Mm,
-            (MachineKind::Mill, 73 | 74 | 76 | 81..=89) => self.in_cycle = true,
-            _ => {}
+        let Ok(major) = u16::try_from(n.mantissa) else {
+            return;
+        };
+        if let Some(code) = Code::of(self.options.machine, GCode::new(major)) {
+            self.note_code(code);
+        }
+    }
+
+    /// [`Blocks::note_context`] for a G code resolved (and written as a whole
+    /// number).
+    #[inline(always)]
+    fn note_code(&mut self, code: Code) {
+        match code {
+            // A group 01 code ends the canned cycle (only the mill has one).
+            Code::Motion(_) | Code::Cycle(codes::CannedCycle::Cancel) => self.in_cycle = false,
+            Code::Cycle(codes::CannedCycle::Cycle(_)) => self.in_cycle = true,
+            Code::Units(units) => self.units = units,
+            Code::NonModal(_)
+            | Code::Plane(_)
+            | Code::Distance(_)
+            | Code::FeedMode(_)
+            | Code::CutterCompensation(_)
+            | Code::Length(_)
+            | Code::Return(_)
+            | Code::Work(_)
+            | Code::SurfaceSpeed(_) => {}
         }
     }
 

@@ -2,7 +2,8 @@
 //! again after an edit from the earlier run's toolpath.
 
 use super::Toolpath;
-use crate::report::{Move, Run};
+use crate::machine::Move;
+use crate::report::Run;
 use crate::setup::{MachineKind, Units};
 
 /// Builds the toolpath of a run as its moves are made (an

@@ -20,15 +20,17 @@ pub use builder::PathBuilder;
 
 use std::ops::Range;
 
+use crate::geometry::Xyz;
+use crate::machine::Move;
 use crate::machine::arc::Circle;
 use crate::machine::modal::Plane;
-use crate::report::{Move, Run, Xyz};
+use crate::report::Run;
 use crate::setup::{MachineKind, Units};
 
 pub use crate::machine::arc::CHORD_TOLERANCE_MM as CHORD_TOLERANCE;
 
 /// The circle of an arc move on both paths, in the toolpath's units (plane
-/// coordinates; on the lathe X in radius, as [`crate::report::ArcInfo`]).
+/// coordinates; on the lathe X in radius, as [`crate::machine::ArcInfo`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ToolArc {
     /// The plane of the arc.

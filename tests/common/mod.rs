@@ -1,7 +1,8 @@
 //! Helpers shared by the native integration tests.
 #![allow(dead_code)]
 
-use offsetlab::report::{Run, Xyz};
+use offsetlab::geometry::Xyz;
+use offsetlab::report::Run;
 use offsetlab::view::{BlockView, block_view};
 use offsetlab::{MachineKind, Setup, run};
 

@@ -1,0 +1,232 @@
+//! What the machine produces: the state after a block, the moves and their
+//! arcs, and the events besides motion (spec 2). The report (`crate::report`)
+//! collects these; the machine never reads the report.
+
+use serde::Serialize;
+
+use super::arc::Circle;
+use super::modal::{Modal, Plane};
+use crate::geometry::Xyz;
+use crate::offsets::lathe::LatheState;
+use crate::offsets::length::LengthState;
+use crate::offsets::position::PositionState;
+use crate::setup::{MachineKind, Units};
+
+/// What kind of motion a move is (spec 2).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum MoveKind {
+    /// G00 positioning.
+    Rapid,
+    /// G01 linear cutting feed (and the feed legs of cycles).
+    Feed,
+    /// G02.
+    ArcCw,
+    /// G03.
+    ArcCcw,
+    /// A move caused only by an offset change, made in the current G00/G01
+    /// mode (see [`Move::at_feed`]).
+    Offset,
+}
+
+impl MoveKind {
+    /// The name used in JSON.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            MoveKind::Rapid => "rapid",
+            MoveKind::Feed => "feed",
+            MoveKind::ArcCw => "arc_cw",
+            MoveKind::ArcCcw => "arc_ccw",
+            MoveKind::Offset => "offset",
+        }
+    }
+
+    /// A number for typed arrays: 0 rapid, 1 feed, 2 arc_cw, 3 arc_ccw,
+    /// 4 offset at rapid, 5 offset at feed.
+    pub fn code(self, at_feed: bool) -> u8 {
+        match self {
+            MoveKind::Rapid => 0,
+            MoveKind::Feed => 1,
+            MoveKind::ArcCw => 2,
+            MoveKind::ArcCcw => 3,
+            MoveKind::Offset if at_feed => 5,
+            MoveKind::Offset => 4,
+        }
+    }
+}
+
+/// The circle of an arc move, for the actual and the programmed path.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ArcInfo {
+    /// The plane the arc lies in.
+    pub plane: Plane,
+    /// Centre of the actual arc (at the start's height along the plane's normal).
+    pub center: Xyz,
+    /// Centre of the programmed arc.
+    pub programmed_center: Xyz,
+    /// Radius of the actual arc (mm; on a lathe a radius, not a diameter).
+    pub radius: f64,
+    /// Radius of the programmed arc.
+    pub programmed_radius: f64,
+    /// Signed sweep of the actual arc in radians (positive counter-clockwise).
+    pub sweep: f64,
+    /// Signed sweep of the programmed arc.
+    pub programmed_sweep: f64,
+    /// Angle of the actual arc's start point about its centre (radians, in
+    /// the plane's frame; radius space on the lathe).
+    pub start_angle: f64,
+    /// Angle of the programmed arc's start point.
+    pub programmed_start_angle: f64,
+    /// X is a diameter (lathe): the geometry is in radius space.
+    pub diameter_x: bool,
+}
+
+impl ArcInfo {
+    /// The actual arc in plane coordinates (radius space on the lathe).
+    pub fn circle(&self) -> Circle {
+        self.plane_circle(self.center, self.radius, self.start_angle, self.sweep)
+    }
+
+    /// The programmed arc in plane coordinates.
+    pub fn programmed_circle(&self) -> Circle {
+        self.plane_circle(
+            self.programmed_center,
+            self.programmed_radius,
+            self.programmed_start_angle,
+            self.programmed_sweep,
+        )
+    }
+
+    fn plane_circle(&self, c: Xyz, radius: f64, start_angle: f64, sweep: f64) -> Circle {
+        let (ia, ib, _) = self.plane.axes();
+        let s = |i: usize| if self.diameter_x && i == 0 { 0.5 } else { 1.0 };
+        Circle {
+            center: [c[ia] * s(ia), c[ib] * s(ib)],
+            radius,
+            start_angle,
+            sweep,
+        }
+    }
+
+    /// The points where the actual and the programmed arc of `m` reach their
+    /// extremes along the plane's axes (for bounding boxes).
+    pub fn each_extreme(&self, m: &Move, mut f: impl FnMut(Xyz)) {
+        let (ia, ib, _) = self.plane.axes();
+        let s = |i: usize| if self.diameter_x && i == 0 { 0.5 } else { 1.0 };
+        for (circle, from) in [
+            (self.circle(), m.from),
+            (self.programmed_circle(), m.programmed_from),
+        ] {
+            for e in circle.extremes() {
+                let mut p = from;
+                p[ia] = e[0] / s(ia);
+                p[ib] = e[1] / s(ib);
+                f(p);
+            }
+        }
+    }
+}
+
+/// One motion of the tool.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Move {
+    /// Rapid, feed, arc or offset motion.
+    pub kind: MoveKind,
+    /// For offset motion: made at the cutting feed (G01 mode) rather than rapid.
+    pub at_feed: bool,
+    /// Index of the block in [`crate::Run::blocks`].
+    pub block: u32,
+    /// 1-based source line.
+    pub line: u32,
+    /// Units of the block (reporting only; coordinates are mm).
+    pub units: Units,
+    /// Where the tool reference point starts (actual).
+    pub from: Xyz,
+    /// Where it ends (actual).
+    pub to: Xyz,
+    /// Start of the same motion on the programmed path.
+    pub programmed_from: Xyz,
+    /// End of the same motion on the programmed path.
+    pub programmed_to: Xyz,
+    /// Arc geometry, for arc moves.
+    pub arc: Option<ArcInfo>,
+}
+
+/// Something that happens at a block besides motion.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum EventKind {
+    /// M00.
+    ProgramStop,
+    /// M01.
+    OptionalStop,
+    /// M02 or M30.
+    ProgramEnd {
+        /// 2 or 30.
+        m: u32,
+    },
+    /// M03.
+    SpindleCw,
+    /// M04.
+    SpindleCcw,
+    /// M05.
+    SpindleStop,
+    /// M19 and the oriented stop of boring cycles.
+    SpindleOrient,
+    /// M06 on the mill.
+    ToolChange {
+        /// The tool selected by T.
+        tool: u32,
+    },
+    /// Lathe: a new tool number in a T code indexes the turret (spec 5.6).
+    ToolIndex {
+        /// The new tool number.
+        tool: u32,
+    },
+    /// M07/M08.
+    CoolantOn {
+        /// 7 (mist) or 8 (flood).
+        m: u32,
+    },
+    /// M09.
+    CoolantOff,
+    /// Any other M code, carried through.
+    Auxiliary {
+        /// The M code.
+        m: u32,
+    },
+    /// G04 or a cycle's dwell at the bottom.
+    Dwell {
+        /// Seconds.
+        seconds: f64,
+    },
+    /// G88: the operator retracts by hand.
+    ManualRetract,
+}
+
+/// The state of the machine after a block.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BlockState {
+    /// Mill or lathe.
+    pub machine: MachineKind,
+    /// Programmed position (mm, current work coordinates).
+    pub programmed: Xyz,
+    /// Actual position of the tool reference point (mm).
+    pub actual: Xyz,
+    /// Modal G codes.
+    pub modal: Modal,
+    /// Modal feed (in the block's units per minute or per revolution).
+    pub feed: Option<f64>,
+    /// Spindle speed word.
+    pub spindle: Option<f64>,
+    /// Mill: tool in the spindle (after M06) and the one selected by T.
+    pub tool: u32,
+    /// Mill: T selected for the next M06.
+    pub next_tool: u32,
+    /// Tool length offset (mill).
+    pub length: LengthState,
+    /// Tool position offset (mill).
+    pub position: PositionState,
+    /// T-code offset (lathe).
+    pub lathe: LatheState,
+}

@@ -1,0 +1,374 @@
+//! The value of each G-code modal group: what a code of the group means, as
+//! the parser resolves it for the machine (the mill's G90 is absolute mode,
+//! the lathe's a turning cycle) and as the modal state keeps it. Each type
+//! writes its own code back (`gcode`), so a message never spells a number.
+//!
+//! Group 06 (inch/metric) is [`crate::setup::Units`].
+
+use crate::setup::MachineKind;
+
+/// Group 01: how axis words move the tool.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Motion {
+    /// G00 positioning.
+    Rapid,
+    /// G01 linear interpolation.
+    Linear,
+    /// G02 (clockwise) or G03 (counter-clockwise) circular interpolation.
+    Arc(ArcDirection),
+    /// Lathe G90/G92/G94: a single cycle (G-code system A).
+    LatheCycle(LatheCycle),
+}
+
+/// The turn of a G02/G03 arc, seen from the positive side of the plane's
+/// normal.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ArcDirection {
+    /// G02.
+    Cw,
+    /// G03.
+    Ccw,
+}
+
+/// The lathe's single cycles of group 01 (G-code system A).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum LatheCycle {
+    /// G90: outer/inner diameter turning cycle.
+    Turning,
+    /// G92: thread cutting cycle.
+    Threading,
+    /// G94: end facing cycle.
+    Facing,
+}
+
+impl Motion {
+    /// The G code.
+    pub fn gcode(self) -> &'static str {
+        match self {
+            Motion::Rapid => "G00",
+            Motion::Linear => "G01",
+            Motion::Arc(ArcDirection::Cw) => "G02",
+            Motion::Arc(ArcDirection::Ccw) => "G03",
+            Motion::LatheCycle(LatheCycle::Turning) => "G90",
+            Motion::LatheCycle(LatheCycle::Threading) => "G92",
+            Motion::LatheCycle(LatheCycle::Facing) => "G94",
+        }
+    }
+
+    /// G02 or G03.
+    pub fn is_arc(self) -> bool {
+        match self {
+            Motion::Arc(_) => true,
+            Motion::Rapid | Motion::Linear | Motion::LatheCycle(_) => false,
+        }
+    }
+}
+
+/// Group 02: the plane of arcs (and of canned-cycle hole positions).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Plane {
+    /// G17: XY, normal Z.
+    XY,
+    /// G18: ZX, normal Y.
+    ZX,
+    /// G19: YZ, normal X.
+    YZ,
+}
+
+impl Plane {
+    /// The G code.
+    pub fn gcode(self) -> &'static str {
+        match self {
+            Plane::XY => "G17",
+            Plane::ZX => "G18",
+            Plane::YZ => "G19",
+        }
+    }
+    /// Axis indices (first, second, normal). CW/CCW are seen from the normal's
+    /// positive side, in the right-handed frame (first, second):
+    /// G17 (X, Y), G18 (Z, X), G19 (Y, Z).
+    pub fn axes(self) -> (usize, usize, usize) {
+        match self {
+            Plane::XY => (0, 1, 2),
+            Plane::ZX => (2, 0, 1),
+            Plane::YZ => (1, 2, 0),
+        }
+    }
+}
+
+/// Group 03 (mill): absolute or incremental.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Distance {
+    /// G90.
+    Absolute,
+    /// G91.
+    Incremental,
+}
+
+impl Distance {
+    /// The G code.
+    pub fn gcode(self) -> &'static str {
+        match self {
+            Distance::Absolute => "G90",
+            Distance::Incremental => "G91",
+        }
+    }
+}
+
+/// Group 05: what F means.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum FeedMode {
+    /// Feed per minute: mill G94, lathe G98.
+    PerMinute,
+    /// Feed per revolution: mill G95, lathe G99.
+    PerRevolution,
+}
+
+impl FeedMode {
+    /// The G code on this machine (the lathe's G98/G99 are the mill's return
+    /// levels).
+    pub fn gcode(self, machine: MachineKind) -> &'static str {
+        match (machine, self) {
+            (MachineKind::Mill, FeedMode::PerMinute) => "G94",
+            (MachineKind::Mill, FeedMode::PerRevolution) => "G95",
+            (MachineKind::Lathe, FeedMode::PerMinute) => "G98",
+            (MachineKind::Lathe, FeedMode::PerRevolution) => "G99",
+        }
+    }
+}
+
+/// Group 07: cutter compensation. offsetlab accepts only its cancel; cutter
+/// radius compensation (G41/G42) is refused with its reason until it is
+/// modelled.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CutterCompensation {
+    /// G40.
+    Cancel,
+}
+
+impl CutterCompensation {
+    /// The G code.
+    pub fn gcode(self) -> &'static str {
+        match self {
+            CutterCompensation::Cancel => "G40",
+        }
+    }
+}
+
+/// Group 08 (mill): tool length offset (seed 001).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum LengthOffset {
+    /// G43: the register value is added to Z.
+    Add,
+    /// G44: the register value is subtracted from Z.
+    Subtract,
+    /// G49: cancel.
+    Cancel,
+}
+
+impl LengthOffset {
+    /// The G code.
+    pub fn gcode(self) -> &'static str {
+        match self {
+            LengthOffset::Add => "G43",
+            LengthOffset::Subtract => "G44",
+            LengthOffset::Cancel => "G49",
+        }
+    }
+}
+
+/// Group 09 (mill): a canned cycle, or G80.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CannedCycle {
+    /// G80: canned cycle cancel.
+    Cancel,
+    /// G73–G89: a cycle starts (or another replaces it).
+    Cycle(Cycle),
+}
+
+impl CannedCycle {
+    /// The G code.
+    pub fn gcode(self) -> &'static str {
+        match self {
+            CannedCycle::Cancel => "G80",
+            CannedCycle::Cycle(c) => c.gcode(),
+        }
+    }
+}
+
+/// The mill's canned cycles (Fanuc/YASNAC M names).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Cycle {
+    /// G73: high-speed peck drilling.
+    HighSpeedPeck,
+    /// G74: left-hand (counter) tapping.
+    LeftHandTapping,
+    /// G76: fine boring.
+    FineBoring,
+    /// G81: drilling, spot drilling.
+    Drilling,
+    /// G82: drilling with a dwell, counter boring.
+    CounterBoring,
+    /// G83: peck drilling.
+    PeckDrilling,
+    /// G84: tapping.
+    Tapping,
+    /// G85: boring, feed out.
+    Boring,
+    /// G86: boring, spindle stop at the bottom.
+    BoringSpindleStop,
+    /// G87: back boring.
+    BackBoring,
+    /// G88: boring, manual retract.
+    BoringManualRetract,
+    /// G89: boring with a dwell, feed out.
+    BoringDwell,
+}
+
+impl Cycle {
+    /// The G code.
+    pub fn gcode(self) -> &'static str {
+        match self {
+            Cycle::HighSpeedPeck => "G73",
+            Cycle::LeftHandTapping => "G74",
+            Cycle::FineBoring => "G76",
+            Cycle::Drilling => "G81",
+            Cycle::CounterBoring => "G82",
+            Cycle::PeckDrilling => "G83",
+            Cycle::Tapping => "G84",
+            Cycle::Boring => "G85",
+            Cycle::BoringSpindleStop => "G86",
+            Cycle::BackBoring => "G87",
+            Cycle::BoringManualRetract => "G88",
+            Cycle::BoringDwell => "G89",
+        }
+    }
+}
+
+/// Group 10 (mill): where a canned cycle returns to after a hole.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ReturnLevel {
+    /// G98: the initial level.
+    Initial,
+    /// G99: the R level.
+    R,
+}
+
+impl ReturnLevel {
+    /// The G code.
+    pub fn gcode(self) -> &'static str {
+        match self {
+            ReturnLevel::Initial => "G98",
+            ReturnLevel::R => "G99",
+        }
+    }
+}
+
+/// Group 14: the work coordinate system.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[allow(missing_docs)]
+pub enum WorkSystem {
+    G54,
+    G55,
+    G56,
+    G57,
+    G58,
+    G59,
+}
+
+impl WorkSystem {
+    /// The G code.
+    pub fn gcode(self) -> &'static str {
+        match self {
+            WorkSystem::G54 => "G54",
+            WorkSystem::G55 => "G55",
+            WorkSystem::G56 => "G56",
+            WorkSystem::G57 => "G57",
+            WorkSystem::G58 => "G58",
+            WorkSystem::G59 => "G59",
+        }
+    }
+
+    /// Its row of the work offset table: 0 for G54 … 5 for G59.
+    pub fn index(self) -> usize {
+        match self {
+            WorkSystem::G54 => 0,
+            WorkSystem::G55 => 1,
+            WorkSystem::G56 => 2,
+            WorkSystem::G57 => 3,
+            WorkSystem::G58 => 4,
+            WorkSystem::G59 => 5,
+        }
+    }
+}
+
+/// Lathe group 02: constant surface speed control.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum SurfaceSpeed {
+    /// G96: S is a surface speed.
+    Constant,
+    /// G97: cancel; S is spindle revolutions per minute.
+    Cancel,
+}
+
+impl SurfaceSpeed {
+    /// The G code.
+    pub fn gcode(self) -> &'static str {
+        match self {
+            SurfaceSpeed::Constant => "G96",
+            SurfaceSpeed::Cancel => "G97",
+        }
+    }
+}
+
+/// Group 00: one-shot codes, in effect in their block only.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum NonModal {
+    /// G04: dwell.
+    Dwell,
+    /// G28: return to the reference position.
+    ReferenceReturn,
+    /// G45–G48 (mill): tool position offset (seeds 000 and 003).
+    PositionOffset(PositionOffset),
+    /// Coordinate system setting: G92 on the mill, G50 on the lathe.
+    SetCoordinates,
+}
+
+impl NonModal {
+    /// The G code on this machine.
+    pub fn gcode(self, machine: MachineKind) -> &'static str {
+        match (self, machine) {
+            (NonModal::Dwell, _) => "G04",
+            (NonModal::ReferenceReturn, _) => "G28",
+            (NonModal::PositionOffset(p), _) => p.gcode(),
+            (NonModal::SetCoordinates, MachineKind::Mill) => "G92",
+            (NonModal::SetCoordinates, MachineKind::Lathe) => "G50",
+        }
+    }
+}
+
+/// G45–G48: how a block's movements are changed by register D (seed 000's
+/// table).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PositionOffset {
+    /// G45: extended by the register value.
+    Extension,
+    /// G46: reduced by the register value.
+    Reduction,
+    /// G47: extended by twice the register value.
+    DoubleExtension,
+    /// G48: reduced by twice the register value.
+    DoubleReduction,
+}
+
+impl PositionOffset {
+    /// The G code.
+    pub fn gcode(self) -> &'static str {
+        match self {
+            PositionOffset::Extension => "G45",
+            PositionOffset::Reduction => "G46",
+            PositionOffset::DoubleExtension => "G47",
+            PositionOffset::DoubleReduction => "G48",
+        }
+    }
+}

@@ -1,0 +1,456 @@
+//! The G and M codes offsetlab knows: [`Code::of`] resolves a G code as
+//! written into the typed value of its modal group for the machine, once,
+//! in the parser; the machine, the offsets and the parser's context rules
+//! match those values (so a new code is a new variant the compiler leads to
+//! every place it must reach). For codes offsetlab recognises but does not
+//! model, the reason it says so (spec 2: an unsupported code is an error,
+//! never a silent skip).
+
+mod groups;
+mod mcodes;
+
+pub use groups::{
+    ArcDirection, CannedCycle, CutterCompensation, Cycle, Distance, FeedMode, LatheCycle,
+    LengthOffset, Motion, NonModal, Plane, PositionOffset, ReturnLevel, SurfaceSpeed, WorkSystem,
+};
+pub use mcodes::MCode;
+
+use crate::setup::{MachineKind, Units};
+
+/// A G-code modal group. Two codes of one group in a block is an error
+/// (spec 1). Numbers follow the Fanuc/YASNAC M tables where they exist.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Group {
+    /// 00: one-shot codes (G04, G28, G45–G48, G92 / lathe G50).
+    NonModal,
+    /// 01: interpolation (G00–G03; on the lathe also the G90/G92/G94 cycles).
+    Motion,
+    /// 02: plane selection.
+    Plane,
+    /// 03: absolute / incremental (mill).
+    Distance,
+    /// 05: feed per minute / per revolution.
+    FeedMode,
+    /// 06: inch / metric.
+    Units,
+    /// 07: cutter compensation (only the cancel G40 is accepted).
+    Cutter,
+    /// 08: tool length offset.
+    Length,
+    /// 09: canned cycles (mill).
+    Cycle,
+    /// 10: canned-cycle return level (mill).
+    Return,
+    /// 14: work coordinate systems.
+    Work,
+    /// Lathe 02: constant surface speed on/off.
+    SurfaceSpeed,
+}
+
+impl Group {
+    /// Index for per-group tables.
+    pub fn index(self) -> usize {
+        self as usize
+    }
+    /// Number of groups.
+    pub const COUNT: usize = 12;
+    /// Every group, in index order.
+    pub const ALL: [Group; Group::COUNT] = [
+        Group::NonModal,
+        Group::Motion,
+        Group::Plane,
+        Group::Distance,
+        Group::FeedMode,
+        Group::Units,
+        Group::Cutter,
+        Group::Length,
+        Group::Cycle,
+        Group::Return,
+        Group::Work,
+        Group::SurfaceSpeed,
+    ];
+    /// The group's name in the manuals.
+    pub fn label(self) -> &'static str {
+        match self {
+            Group::NonModal => "00 (one-shot)",
+            Group::Motion => "01 (interpolation)",
+            Group::Plane => "02 (plane)",
+            Group::Distance => "03 (absolute/incremental)",
+            Group::FeedMode => "05 (feed mode)",
+            Group::Units => "06 (inch/metric)",
+            Group::Cutter => "07 (cutter compensation)",
+            Group::Length => "08 (tool length offset)",
+            Group::Cycle => "09 (canned cycle)",
+            Group::Return => "10 (return level)",
+            Group::Work => "14 (work coordinates)",
+            Group::SurfaceSpeed => "02 (constant surface speed)",
+        }
+    }
+}
+
+/// A G code as written: `G05.1` is major 5, minor 1.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct GCode {
+    /// The integer part.
+    pub major: u16,
+    /// The tenths digit (0 for every code offsetlab models).
+    pub minor: u8,
+}
+
+impl GCode {
+    /// A plain integer code.
+    pub const fn new(major: u16) -> GCode {
+        GCode { major, minor: 0 }
+    }
+}
+
+impl std::fmt::Display for GCode {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if self.minor == 0 {
+            write!(f, "G{:02}", self.major)
+        } else {
+            write!(f, "G{:02}.{}", self.major, self.minor)
+        }
+    }
+}
+
+/// A G code resolved for the machine: the value of its modal group.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[allow(missing_docs)]
+pub enum Code {
+    NonModal(NonModal),
+    Motion(Motion),
+    Plane(Plane),
+    Distance(Distance),
+    FeedMode(FeedMode),
+    Units(Units),
+    CutterCompensation(CutterCompensation),
+    Length(LengthOffset),
+    Cycle(CannedCycle),
+    Return(ReturnLevel),
+    Work(WorkSystem),
+    SurfaceSpeed(SurfaceSpeed),
+}
+
+impl Code {
+    /// The code this machine models for `g`, or None (then [`g_group`] says
+    /// why). The one table from numbers to codes: the mill and the lathe
+    /// (G-code system A) read some numbers differently. A new code is a
+    /// line here and a variant of its group's type.
+    #[inline(always)]
+    pub fn of(machine: MachineKind, g: GCode) -> Option<Code> {
+        use ArcDirection::{Ccw, Cw};
+        use Code as C;
+        if g.minor != 0 {
+            return None;
+        }
+        Some(match machine {
+            MachineKind::Mill => match g.major {
+                0 => C::Motion(Motion::Rapid),
+                1 => C::Motion(Motion::Linear),
+                2 => C::Motion(Motion::Arc(Cw)),
+                3 => C::Motion(Motion::Arc(Ccw)),
+                4 => C::NonModal(NonModal::Dwell),
+                17 => C::Plane(Plane::XY),
+                18 => C::Plane(Plane::ZX),
+                19 => C::Plane(Plane::YZ),
+                20 => C::Units(Units::Inch),
+                21 => C::Units(Units::Mm),
+                28 => C::NonModal(NonModal::ReferenceReturn),
+                40 => C::CutterCompensation(CutterCompensation::Cancel),
+                43 => C::Length(LengthOffset::Add),
+                44 => C::Length(LengthOffset::Subtract),
+                45 => C::NonModal(NonModal::PositionOffset(PositionOffset::Extension)),
+                46 => C::NonModal(NonModal::PositionOffset(PositionOffset::Reduction)),
+                47 => C::NonModal(NonModal::PositionOffset(PositionOffset::DoubleExtension)),
+                48 => C::NonModal(NonModal::PositionOffset(PositionOffset::DoubleReduction)),
+                49 => C::Length(LengthOffset::Cancel),
+                54..=59 => C::Work(work_system(g.major)),
+                73 => C::Cycle(CannedCycle::Cycle(Cycle::HighSpeedPeck)),
+                74 => C::Cycle(CannedCycle::Cycle(Cycle::LeftHandTapping)),
+                76 => C::Cycle(CannedCycle::Cycle(Cycle::FineBoring)),
+                80 => C::Cycle(CannedCycle::Cancel),
+                81 => C::Cycle(CannedCycle::Cycle(Cycle::Drilling)),
+                82 => C::Cycle(CannedCycle::Cycle(Cycle::CounterBoring)),
+                83 => C::Cycle(CannedCycle::Cycle(Cycle::PeckDrilling)),
+                84 => C::Cycle(CannedCycle::Cycle(Cycle::Tapping)),
+                85 => C::Cycle(CannedCycle::Cycle(Cycle::Boring)),
+                86 => C::Cycle(CannedCycle::Cycle(Cycle::BoringSpindleStop)),
+                87 => C::Cycle(CannedCycle::Cycle(Cycle::BackBoring)),
+                88 => C::Cycle(CannedCycle::Cycle(Cycle::BoringManualRetract)),
+                89 => C::Cycle(CannedCycle::Cycle(Cycle::BoringDwell)),
+                90 => C::Distance(Distance::Absolute),
+                91 => C::Distance(Distance::Incremental),
+                92 => C::NonModal(NonModal::SetCoordinates),
+                94 => C::FeedMode(FeedMode::PerMinute),
+                95 => C::FeedMode(FeedMode::PerRevolution),
+                98 => C::Return(ReturnLevel::Initial),
+                99 => C::Return(ReturnLevel::R),
+                _ => return None,
+            },
+            MachineKind::Lathe => match g.major {
+                0 => C::Motion(Motion::Rapid),
+                1 => C::Motion(Motion::Linear),
+                2 => C::Motion(Motion::Arc(Cw)),
+                3 => C::Motion(Motion::Arc(Ccw)),
+                4 => C::NonModal(NonModal::Dwell),
+                18 => C::Plane(Plane::ZX),
+                20 => C::Units(Units::Inch),
+                21 => C::Units(Units::Mm),
+                28 => C::NonModal(NonModal::ReferenceReturn),
+                40 => C::CutterCompensation(CutterCompensation::Cancel),
+                50 => C::NonModal(NonModal::SetCoordinates),
+                54..=59 => C::Work(work_system(g.major)),
+                90 => C::Motion(Motion::LatheCycle(LatheCycle::Turning)),
+                92 => C::Motion(Motion::LatheCycle(LatheCycle::Threading)),
+                94 => C::Motion(Motion::LatheCycle(LatheCycle::Facing)),
+                96 => C::SurfaceSpeed(SurfaceSpeed::Constant),
+                97 => C::SurfaceSpeed(SurfaceSpeed::Cancel),
+                98 => C::FeedMode(FeedMode::PerMinute),
+                99 => C::FeedMode(FeedMode::PerRevolution),
+                _ => return None,
+            },
+        })
+    }
+
+    /// The code's modal group (two of a group in one block is an error).
+    #[inline(always)]
+    pub fn group(self) -> Group {
+        match self {
+            Code::NonModal(_) => Group::NonModal,
+            Code::Motion(_) => Group::Motion,
+            Code::Plane(_) => Group::Plane,
+            Code::Distance(_) => Group::Distance,
+            Code::FeedMode(_) => Group::FeedMode,
+            Code::Units(_) => Group::Units,
+            Code::CutterCompensation(_) => Group::Cutter,
+            Code::Length(_) => Group::Length,
+            Code::Cycle(_) => Group::Cycle,
+            Code::Return(_) => Group::Return,
+            Code::Work(_) => Group::Work,
+            Code::SurfaceSpeed(_) => Group::SurfaceSpeed,
+        }
+    }
+
+    /// The G code as the manuals write it on this machine.
+    pub fn gcode(self, machine: MachineKind) -> &'static str {
+        match self {
+            Code::NonModal(c) => c.gcode(machine),
+            Code::Motion(c) => c.gcode(),
+            Code::Plane(c) => c.gcode(),
+            Code::Distance(c) => c.gcode(),
+            Code::FeedMode(c) => c.gcode(machine),
+            Code::Units(c) => c.gcode(),
+            Code::CutterCompensation(c) => c.gcode(),
+            Code::Length(c) => c.gcode(),
+            Code::Cycle(c) => c.gcode(),
+            Code::Return(c) => c.gcode(),
+            Code::Work(c) => c.gcode(),
+            Code::SurfaceSpeed(c) => c.gcode(),
+        }
+    }
+}
+
+/// G54 … G59 from 54 … 59 (other numbers are not passed here).
+#[inline(always)]
+fn work_system(major: u16) -> WorkSystem {
+    match major {
+        54 => WorkSystem::G54,
+        55 => WorkSystem::G55,
+        56 => WorkSystem::G56,
+        57 => WorkSystem::G57,
+        58 => WorkSystem::G58,
+        _ => WorkSystem::G59,
+    }
+}
+
+/// The G codes of one block, one typed value per modal group: the parser
+/// resolved each (and refused a block with two of a group or an unknown
+/// code), so the machine reads them here.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Codes {
+    /// Per group (by [`Group::index`]), its code: keeping a code is one
+    /// store, which the parser does for every G word.
+    by_group: [Option<Code>; Group::COUNT],
+}
+
+/// The accessor of one group's value.
+macro_rules! group_value {
+    ($(#[$doc:meta])* $name:ident, $variant:ident, $group:ident, $ty:ty) => {
+        $(#[$doc])*
+        #[inline(always)]
+        pub fn $name(&self) -> Option<$ty> {
+            match self.by_group[Group::$group as usize] {
+                Some(Code::$variant(c)) => Some(c),
+                // `set` keeps each code under its own group.
+                _ => None,
+            }
+        }
+    };
+}
+
+impl Codes {
+    /// Keeps `code` as its group's value.
+    #[inline(always)]
+    pub(crate) fn set(&mut self, code: Code, group: Group) {
+        self.by_group[group.index()] = Some(code);
+    }
+
+    /// Every code of the block, in group order ([`Group::ALL`]).
+    pub fn each(&self) -> impl Iterator<Item = Code> + '_ {
+        self.by_group.iter().flatten().copied()
+    }
+
+    group_value!(
+        /// Group 00: G04, G28, G45–G48, G92 (lathe G50).
+        non_modal, NonModal, NonModal, NonModal
+    );
+    group_value!(
+        /// Group 01.
+        motion, Motion, Motion, Motion
+    );
+    group_value!(
+        /// Group 02.
+        plane, Plane, Plane, Plane
+    );
+    group_value!(
+        /// Group 03 (mill).
+        distance, Distance, Distance, Distance
+    );
+    group_value!(
+        /// Group 05.
+        feed_mode, FeedMode, FeedMode, FeedMode
+    );
+    group_value!(
+        /// Group 06.
+        units, Units, Units, Units
+    );
+    group_value!(
+        /// Group 07.
+        cutter, CutterCompensation, Cutter, CutterCompensation
+    );
+    group_value!(
+        /// Group 08 (mill).
+        length, Length, Length, LengthOffset
+    );
+    group_value!(
+        /// Group 09 (mill).
+        cycle, Cycle, Cycle, CannedCycle
+    );
+    group_value!(
+        /// Group 10 (mill).
+        return_level, Return, Return, ReturnLevel
+    );
+    group_value!(
+        /// Group 14.
+        work, Work, Work, WorkSystem
+    );
+    group_value!(
+        /// Lathe group 02.
+        surface_speed, SurfaceSpeed, SurfaceSpeed, SurfaceSpeed
+    );
+}
+
+/// The modal group of a G code this machine models, or why it does not.
+pub fn g_group(machine: MachineKind, g: GCode) -> Result<Group, String> {
+    if g.minor != 0 {
+        return Err(format!("{g} is not supported by offsetlab"));
+    }
+    Code::of(machine, g)
+        .map(Code::group)
+        .ok_or_else(|| unsupported_reason(machine, g))
+}
+
+fn unsupported_reason(machine: MachineKind, g: GCode) -> String {
+    let lathe = machine == MachineKind::Lathe;
+    let why = match g.major {
+        41 | 42 if lathe => "tool nose radius compensation is not modelled",
+        41 | 42 => {
+            "cutter radius compensation C is not modelled; offsetlab models tool position offset G45–G48 (seed 000)"
+        }
+        43 | 44 | 49 if lathe => "the lathe uses T-code offsets, not G43/G44/G49 (seed 004)",
+        45..=48 if lathe => "the lathe uses T-code offsets, not G45–G48 (seed 004)",
+        10 => "programmable data input is not supported; enter offsets in the offset table",
+        32..=34 => "thread cutting blocks are not supported",
+        50 | 51 if !lathe => "scaling is not supported",
+        53 => "machine coordinate positioning is not supported",
+        65..=67 => "macro calls are not supported",
+        68 | 69 => "coordinate rotation is not supported",
+        70..=76 if lathe => "multiple repetitive cycles (G70–G76) are not supported yet",
+        15 | 16 => "polar coordinates are not supported",
+        17 | 19 if lathe => "the lathe works in the ZX plane (G18) only",
+        61..=64 => "cutting modes (exact stop, tapping, continuous) are not modelled",
+        91 if lathe => "the lathe (G-code system A) has no G91; U and W are the incremental axes",
+        _ => "is not a G code offsetlab knows",
+    };
+    if why.starts_with("is not") {
+        format!("{g} {why} on the {}", machine.as_str())
+    } else {
+        format!("{g}: {why}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lathe_g90_is_a_cycle_not_absolute_mode() {
+        assert_eq!(
+            g_group(MachineKind::Lathe, GCode::new(90)),
+            Ok(Group::Motion)
+        );
+        assert_eq!(
+            g_group(MachineKind::Mill, GCode::new(90)),
+            Ok(Group::Distance)
+        );
+    }
+
+    #[test]
+    fn lathe_g90_is_a_turning_cycle_and_g92_sets_coordinates_on_the_mill() {
+        let g = GCode::new;
+        assert_eq!(
+            Code::of(MachineKind::Lathe, g(90)),
+            Some(Code::Motion(Motion::LatheCycle(LatheCycle::Turning)))
+        );
+        assert_eq!(
+            Code::of(MachineKind::Mill, g(90)),
+            Some(Code::Distance(Distance::Absolute))
+        );
+        assert_eq!(
+            Code::of(MachineKind::Mill, g(92)),
+            Some(Code::NonModal(NonModal::SetCoordinates))
+        );
+        assert_eq!(
+            Code::of(MachineKind::Lathe, g(99)),
+            Some(Code::FeedMode(FeedMode::PerRevolution))
+        );
+    }
+
+    #[test]
+    fn every_code_writes_back_the_number_it_was_read_from() {
+        for machine in [MachineKind::Mill, MachineKind::Lathe] {
+            for n in 0..=200 {
+                let g = GCode::new(n);
+                if let Some(code) = Code::of(machine, g) {
+                    assert_eq!(code.gcode(machine), g.to_string(), "{machine:?} {g}");
+                    assert_eq!(g_group(machine, g), Ok(code.group()));
+                    let mut codes = Codes::default();
+                    codes.set(code, code.group());
+                    assert_eq!(codes.each().collect::<Vec<_>>(), vec![code]);
+                }
+            }
+            assert_eq!(Code::of(machine, GCode { major: 1, minor: 5 }), None);
+        }
+    }
+
+    #[test]
+    fn unsupported_codes_say_why() {
+        let e = g_group(MachineKind::Mill, GCode::new(41)).unwrap_err();
+        assert!(e.contains("G45–G48"), "{e}");
+        let e = g_group(MachineKind::Mill, GCode::new(7)).unwrap_err();
+        assert!(e.contains("G07 is not a G code"), "{e}");
+        let e = g_group(MachineKind::Mill, GCode { major: 5, minor: 1 }).unwrap_err();
+        assert!(e.contains("G05.1"), "{e}");
+    }
+}
