@@ -1,4 +1,4 @@
-//! What a run reports (spec 6): per block the programmed and actual position,
+//! What a run reports (behaviour 6): per block the programmed and actual position,
 //! the modal state and the offsets with a sentence saying what they did; per
 //! move its kind and ends; events such as M codes and dwells.
 //!
@@ -43,7 +43,7 @@ pub struct BlockReport {
 }
 
 impl BlockReport {
-    /// One sentence saying what the offsets did in this block (spec 6).
+    /// One sentence saying what the offsets did in this block (behaviour 6.5).
     pub fn explanation(&self) -> String {
         if !self.notes.is_empty() {
             let mut s = self.notes.join("; ");
@@ -105,7 +105,7 @@ pub enum End {
         /// Line of the M02/M30.
         line: u32,
     },
-    /// Stopped at the first error (spec 2), at this line.
+    /// Stopped at the first error (behaviour 2.1), at this line.
     Error {
         /// Line of the error.
         line: u32,

@@ -1,6 +1,6 @@
 //! The setup document: everything a run depends on besides the program text —
 //! machine kind, offset registers, work offsets, start position, units and the
-//! settings that controls disagree on (spec 1, 2, 3.3, 5). It is read from
+//! settings that controls disagree on (behaviour 1, 2, 3.3, 5). It is read from
 //! JSON (`--setup FILE`, the page, share links), versioned from day one, and
 //! strict: unknown fields and out-of-range values are errors, not guesses.
 
@@ -15,11 +15,11 @@ use crate::diag::{Diagnostic, Span};
 pub const SETUP_VERSION: u32 = 1;
 /// Largest offset value, metric and inch alike (seed 001, table 3.4.1.2).
 pub const MAX_OFFSET_VALUE: f64 = 999.999;
-/// Largest dimension word: ±99999.999 mm (spec 1).
+/// Largest dimension word: ±99999.999 mm (behaviour 1.17).
 pub const MAX_DIMENSION_MM: f64 = 99_999.999;
-/// Largest dimension word: ±9999.9999 in (spec 1).
+/// Largest dimension word: ±9999.9999 in (behaviour 1.17).
 pub const MAX_DIMENSION_INCH: f64 = 9_999.999_9;
-/// Default number of offset registers (01–99, spec 1).
+/// Default number of offset registers (01–99, behaviour 1.17).
 pub const DEFAULT_TABLE_SIZE: u16 = 99;
 /// Largest table a setup may ask for.
 pub const MAX_TABLE_SIZE: u16 = 999;
@@ -64,7 +64,7 @@ impl Units {
             Units::Inch => 25.4,
         }
     }
-    /// The least input increment (spec 1): 0.001 mm or 0.0001 in.
+    /// The least input increment (behaviour 1.15): 0.001 mm or 0.0001 in.
     pub fn increment(self) -> f64 {
         match self {
             Units::Mm => 0.001,
@@ -101,7 +101,7 @@ impl Units {
     }
 }
 
-/// How a dimension word without a decimal point is read (spec 1).
+/// How a dimension word without a decimal point is read (behaviour 1.15).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum DecimalInput {
@@ -112,7 +112,7 @@ pub enum DecimalInput {
     Calculator,
 }
 
-/// What `G43 H…` does in a block with no Z word (spec 3.3).
+/// What `G43 H…` does in a block with no Z word (behaviour 3.3).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum LengthOffsetWithoutZ {
@@ -123,7 +123,7 @@ pub enum LengthOffsetWithoutZ {
     NextZ,
 }
 
-/// How the lathe offset table's X values are read (spec 5).
+/// How the lathe offset table's X values are read (behaviour 5).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum LatheXOffset {
@@ -134,7 +134,7 @@ pub enum LatheXOffset {
     Radius,
 }
 
-/// Mirror image switches (spec 2), written as a list of axis names.
+/// Mirror image switches (behaviour 2), written as a list of axis names.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Mirror {
     /// Reverse movements along X.
@@ -186,16 +186,16 @@ impl<'de> Deserialize<'de> for Mirror {
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Settings {
-    /// Dimension words without a decimal point (spec 1).
+    /// Dimension words without a decimal point (behaviour 1.15).
     #[serde(skip_serializing_if = "is_default")]
     pub decimal_input: DecimalInput,
     /// Optional block skip switch: when on, blocks starting with `/` are skipped.
     #[serde(skip_serializing_if = "is_default")]
     pub block_skip: bool,
-    /// `G43 H…` with no Z word (spec 3.3).
+    /// `G43 H…` with no Z word (behaviour 3.3).
     #[serde(skip_serializing_if = "is_default")]
     pub length_offset_without_z: LengthOffsetWithoutZ,
-    /// Lathe table X values: diameter or radius (spec 5).
+    /// Lathe table X values: diameter or radius (behaviour 5).
     #[serde(skip_serializing_if = "is_default")]
     pub lathe_x_offset: LatheXOffset,
     /// Mirror image switches (mill).
@@ -274,7 +274,7 @@ impl WorkOffsets {
     }
 }
 
-/// One mill register: geometry + wear; their sum is used (spec 1).
+/// One mill register: geometry + wear; their sum is used (behaviour 1.18).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct MillRegister {
     /// Geometry value.
@@ -340,7 +340,7 @@ impl<'de> Deserialize<'de> for MillRegister {
 }
 
 /// One lathe register: X (diameter or radius, see [`LatheXOffset`]) and Z,
-/// each geometry + wear (spec 5).
+/// each geometry + wear (behaviour 5).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct LatheRegister {

@@ -111,7 +111,7 @@ pub struct BlockView<'a> {
     /// Lathe: T-code offset.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub lathe_offset: Option<LatheView>,
-    /// What the offsets did (spec 6).
+    /// What the offsets did (behaviour 6.5).
     pub explanation: String,
     /// Index of the block's first move.
     pub first_move: u32,

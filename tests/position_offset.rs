@@ -98,7 +98,7 @@ fn behaviour4_5_g90_zero_movement_changes_nothing() {
     assert!(
         // The machine's own sentence, which still cites the rule by the
         // number it has in docs/behaviour.md.
-        explain(&r, 1).contains("not changed (spec 4.5)"),
+        explain(&r, 1).contains("not changed (behaviour 4.5)"),
         "{}",
         explain(&r, 1)
     );

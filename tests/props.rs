@@ -34,7 +34,7 @@ fn last_state(r: &Run) -> ([f64; 3], [f64; 3]) {
 }
 
 proptest! {
-    /// Spec 4.1/4.7: G45 then G46 with the same D on the same programmed
+    /// Behaviour 4.1/4.7: G45 then G46 with the same D on the same programmed
     /// moves brings the tool back onto the programmed path.
     #[test]
     fn g45_then_g46_on_the_same_moves_returns_to_the_programmed_path(
@@ -55,7 +55,7 @@ proptest! {
         }
     }
 
-    /// Spec 4.1: G47 is two G45 on a move split into two parts of the same
+    /// Behaviour 4.1: G47 is two G45 on a move split into two parts of the same
     /// direction.
     #[test]
     fn g47_equals_two_g45(total in amount(), cut in 0.0f64..1.0, v in register()) {
@@ -69,7 +69,7 @@ proptest! {
         prop_assert!((a[0] - b[0]).abs() < 1e-6, "{a:?} {b:?}");
     }
 
-    /// Spec 2 and seed 003: a mirrored program gives the mirrored path, tool
+    /// Behaviour 2.17 and seed 003: a mirrored program gives the mirrored path, tool
     /// position offset included.
     #[test]
     fn mirror_x_gives_the_mirrored_path(
@@ -94,7 +94,7 @@ proptest! {
         }
     }
 
-    /// Spec 2: actual = programmed + the reported vectors, after every block;
+    /// Behaviour 2.4: actual = programmed + the reported vectors, after every block;
     /// and the tool never jumps: each move starts where the last one ended.
     #[test]
     fn actual_minus_programmed_is_the_reported_vectors(

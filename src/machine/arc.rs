@@ -1,5 +1,5 @@
 //! Circle geometry of G02/G03 in the coordinates of the selected plane
-//! (spec 2): centre from I/J/K or from R, the radius check, the sweep, and the
+//! (behaviour 2.12, 2.13): centre from I/J/K or from R, the radius check, the sweep, and the
 //! tessellation used for drawing.
 
 use std::f64::consts::{PI, TAU};
@@ -82,7 +82,7 @@ fn sweep_between(start_angle: f64, end_angle: f64, ccw: bool, full: bool) -> f64
 
 /// The arc from `start` to `end` around `center` (I/J/K form). Start = end is
 /// a full circle. `tolerance` is the largest allowed difference between the
-/// start and end radii (spec 2: 0.01 mm / 0.0005 in).
+/// start and end radii (behaviour 2.13: 0.01 mm / 0.0005 in).
 pub fn from_center(
     start: P2,
     end: P2,
@@ -116,7 +116,7 @@ pub fn from_center(
 }
 
 /// The arc from `start` to `end` with radius `r` (R form): R > 0 is 180° or
-/// less, R < 0 more than 180° (spec 2). Start equal to end is
+/// less, R < 0 more than 180° (behaviour 2.12). Start equal to end is
 /// [`ArcError::NoChord`]: the centre would be undefined.
 pub fn from_radius(
     start: P2,

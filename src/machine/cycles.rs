@@ -1,5 +1,5 @@
 //! Canned cycles of the mill: G73, G74, G76, G81–G89 with G98/G99, R, Z, Q,
-//! P and K/L repeats; G80 cancels (spec 2, Fanuc/YASNAC M). Each cycle is
+//! P and K/L repeats; G80 cancels (behaviour 2.14–2.16, Fanuc/YASNAC M). Each cycle is
 //! reported as its moves: rapid to the hole, rapid to R, the drilling legs,
 //! the retract. The tool length offset applies to the Z levels.
 

@@ -1,4 +1,4 @@
-//! The lathe's block (spec 5): X as a diameter and Z, U/W incremental, G50,
+//! The lathe's block (behaviour 5): X as a diameter and Z, U/W incremental, G50,
 //! G00–G03 in the ZX plane and the G90/G92/G94 single cycles (G-code system
 //! A). The T-code tool position offset's rules and sentences are
 //! [`crate::offsets::lathe`]'s; this file moves the tool by them.
@@ -210,7 +210,7 @@ impl Machine {
         [a[0] - b[0], 0.0, a[2] - b[2]]
     }
 
-    /// The T word (spec 5, [`LatheState::command`]): returns true if the
+    /// The T word (behaviour 5, [`LatheState::command`]): returns true if the
     /// offset vector the machine should carry changed.
     fn t_code(&mut self, b: &Block, out: &mut Out) -> bool {
         let Some(t) = b.get(Address::T) else {

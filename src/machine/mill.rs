@@ -1,7 +1,7 @@
 //! The milling machine's block: linear and circular motion, G28, G92. The
 //! two mill offsets' rules and sentences are their families' —
-//! [`crate::offsets::length`] (G43/G44/G49, spec 3) and
-//! [`crate::offsets::position`] (G45–G48, spec 4); this file moves the tool
+//! [`crate::offsets::length`] (G43/G44/G49, behaviour 3) and
+//! [`crate::offsets::position`] (G45–G48, behaviour 4); this file moves the tool
 //! by them.
 
 use super::MoveKind;
@@ -118,7 +118,7 @@ impl Machine {
         }
     }
 
-    /// G43/G44/G49 and H (spec 3, [`LengthState::block`]). Returns the
+    /// G43/G44/G49 and H (behaviour 3, [`LengthState::block`]). Returns the
     /// state before the block.
     fn length_words(&mut self, b: &Block, out: &mut Out) -> Result<LengthState, Diagnostic> {
         let code = b.codes().length();
@@ -168,7 +168,7 @@ impl Machine {
                 self.state.length.vector = self.state.length.vector_after(false, true, setting);
                 self.length_note(old_length, None, out);
                 // Made in the G00/G01 mode; G02/G03 refuse a length change
-                // (spec 3.7) and the parser gives the mill no lathe cycle.
+                // (behaviour 3.7) and the parser gives the mill no lathe cycle.
                 let at_feed = match motion {
                     Motion::Linear => true,
                     Motion::Rapid | Motion::Arc(_) | Motion::LatheCycle(_) => false,
@@ -238,7 +238,7 @@ impl Machine {
         )
     }
 
-    /// Ends a G02/G03 move (spec 2; with G45–G48, spec 4.8): solves the
+    /// Ends a G02/G03 move (behaviour 2; with G45–G48, behaviour 4.8): solves the
     /// arc from R or I/J/K, updates the position and the vectors, notes what
     /// the length offset did and records the move. Kept out of line: inlined
     /// in [`Machine::mill_motion`], its locals made every straight move's
@@ -397,7 +397,7 @@ impl Machine {
         Ok(())
     }
 
-    /// A block with G45–G48 (spec 4, [`position::check_block`]).
+    /// A block with G45–G48 (behaviour 4, [`position::check_block`]).
     fn position_offset_block(
         &mut self,
         b: &Block,
@@ -410,7 +410,7 @@ impl Machine {
     }
 
     /// G92 X… Y… Z…: sets the programmed position; the G45–G48 vector on each
-    /// named axis is cancelled first (spec 4.7, seed 003).
+    /// named axis is cancelled first (behaviour 4.7, seed 003).
     fn g92(&mut self, b: &Block) -> Result<(), Diagnostic> {
         if !AXES.iter().any(|(a, _)| b.has(*a)) {
             return Err(self.error(
@@ -430,7 +430,7 @@ impl Machine {
 
     /// G28: to the intermediate point, then to the reference position on the
     /// named axes; the length and position vectors are cleared on the axes
-    /// that reach it, and G43/G44 applies again at the next Z move (spec 2).
+    /// that reach it, and G43/G44 applies again at the next Z move (behaviour 2.10).
     fn g28(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
         if !AXES.iter().any(|(a, _)| b.has(*a)) {
             return Err(self.error(
@@ -489,7 +489,7 @@ impl Machine {
         Ok(())
     }
 
-    /// Notes what the length offset did in this block (spec 3,
+    /// Notes what the length offset did in this block (behaviour 3,
     /// [`LengthState::note`]). `z_amount` is the programmed Z movement when
     /// the block moved along Z.
     #[inline]

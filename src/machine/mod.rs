@@ -1,4 +1,4 @@
-//! The interpreter: modal state, positions, motion and coordinates (spec 2).
+//! The interpreter: modal state, positions, motion and coordinates (behaviour 2).
 //!
 //! The machine tracks per axis the **programmed position** (what the program
 //! commands, in the current work coordinate system) and the offset vectors;
@@ -95,7 +95,7 @@ pub struct Machine {
 const AXES: [(Address, char); 3] = [(Address::X, 'X'), (Address::Y, 'Y'), (Address::Z, 'Z')];
 
 impl Machine {
-    /// A machine at the setup's start position, in its start state (spec 2).
+    /// A machine at the setup's start position, in its start state (behaviour 2.3).
     pub fn new(setup: Arc<Setup>) -> Machine {
         let unit = setup.units.mm();
         let origin = scale(setup.work_offsets.get(0).to_array(), unit);
@@ -181,7 +181,7 @@ impl Machine {
     }
 
     /// Runs one block. On error the block has no effect that matters: the
-    /// run stops there (spec 2).
+    /// run stops there (behaviour 2.1).
     pub(crate) fn execute(
         &mut self,
         block: &Block,
@@ -304,7 +304,7 @@ impl Machine {
 
     /// The programmed target of an axis word (value in mm): absolute or
     /// incremental, reversed about the mirror centre when mirror image is on
-    /// for the axis (spec 2).
+    /// for the axis (behaviour 2.17).
     fn target(&self, axis: usize, word_mm: f64, incremental: bool) -> f64 {
         let p = self.state.programmed[axis];
         if self.mirror[axis] {
@@ -323,7 +323,7 @@ impl Machine {
 
     /// Sets the programmed coordinate of `axis` to `value` without moving the
     /// tool (G92 / G50). With `clear_position` the axis's G45–G48 vector is
-    /// cancelled first (spec 4.7, seed 003).
+    /// cancelled first (behaviour 4.7, seed 003).
     fn set_coordinate(&mut self, axis: usize, value: f64, clear_position: bool) {
         let before = self.actual()[axis];
         if clear_position {
@@ -429,7 +429,7 @@ impl Machine {
         }
     }
 
-    /// G04: dwell P (ms) or X/U (s) (spec 2).
+    /// G04: dwell P (ms) or X/U (s) (behaviour 2.9).
     fn dwell(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
         let p = b.get(Address::P);
         let time_word = b.get(Address::X).or_else(|| b.get(Address::U));
@@ -463,7 +463,7 @@ impl Machine {
         Ok(())
     }
 
-    /// Builds the circle of an arc move for both paths (spec 2, 4.8).
+    /// Builds the circle of an arc move for both paths (behaviour 2.12, 4.8).
     fn arc_geometry(&self, b: &Block, req: &ArcRequest) -> Result<ArcInfo, Diagnostic> {
         let plane = self.state.modal.plane;
         let (ia, ib, _) = plane.axes();

@@ -1,5 +1,5 @@
 //! Modal state: the G codes that stay in effect until another code of their
-//! group replaces them (spec 2: mill start state G00 G17 G90 G21 G40 G49 G80
+//! group replaces them (behaviour 2.3: mill start state G00 G17 G90 G21 G40 G49 G80
 //! G54 G94).
 
 use serde::Serialize;
@@ -37,7 +37,7 @@ pub struct Modal {
 }
 
 impl Modal {
-    /// The start state (spec 2).
+    /// The start state (behaviour 2.3).
     pub fn start(machine: MachineKind, units: Units) -> Modal {
         Modal {
             motion: Motion::Rapid,

@@ -1,5 +1,5 @@
 //! What the machine produces: the state after a block, the moves and their
-//! arcs, and the events besides motion (spec 2). The report (`crate::report`)
+//! arcs, and the events besides motion (behaviour 2). The report (`crate::report`)
 //! collects these; the machine never reads the report.
 
 use serde::Serialize;
@@ -12,7 +12,7 @@ use crate::offsets::length::LengthState;
 use crate::offsets::position::PositionState;
 use crate::setup::{MachineKind, Units};
 
-/// What kind of motion a move is (spec 2).
+/// What kind of motion a move is (behaviour 2).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum MoveKind {
@@ -178,7 +178,7 @@ pub enum EventKind {
         /// The tool selected by T.
         tool: u32,
     },
-    /// Lathe: a new tool number in a T code indexes the turret (spec 5.6).
+    /// Lathe: a new tool number in a T code indexes the turret (behaviour 5.6).
     ToolIndex {
         /// The new tool number.
         tool: u32,

@@ -1,4 +1,4 @@
-//! Lathe T-code tool position offset (spec 5, seed 004).
+//! Lathe T-code tool position offset (behaviour 5, seed 004).
 //!
 //! `Tttoo` selects tool `tt` and offset `oo`; the offset vector is register
 //! `oo`'s X (a diameter value by default, or a radius value doubled on the
@@ -13,7 +13,7 @@ use crate::geometry::{Xyz, show, show_signed};
 use crate::setup::{LatheRegister, LatheXOffset, Units};
 use crate::syntax::codes::Motion;
 
-/// Lathe T-code offset state (spec 5).
+/// Lathe T-code offset state (behaviour 5).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct LatheState {
     /// Tool number (tt of Tttoo).
@@ -43,14 +43,14 @@ pub fn vector(reg: &LatheRegister, x_offset: LatheXOffset, unit_mm: f64) -> Xyz 
 /// What a T word did.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct TWord {
-    /// The new tool number, when it changed: the turret indexes (spec 5.6).
+    /// The new tool number, when it changed: the turret indexes (behaviour 5.6).
     pub indexed: Option<u32>,
     /// The offset vector the machine should carry changed.
     pub changed: bool,
 }
 
 impl LatheState {
-    /// A T word `t` (spec 5.1, 5.6): selects tool and offset, the offset's
+    /// A T word `t` (behaviour 5.1, 5.6): selects tool and offset, the offset's
     /// vector from `register` (the offset table's row of an offset number),
     /// `x_offset` and `unit_mm` (mm in one program unit); a new tool number
     /// is noted as a turret index.
@@ -67,7 +67,7 @@ impl LatheState {
         let indexed = (tool != old.tool).then_some(tool);
         if indexed.is_some() {
             notes.push(format!(
-                "tool {:02} → {tool:02}: the turret indexes (spec 5.6)",
+                "tool {:02} → {tool:02}: the turret indexes (behaviour 5.6)",
                 old.tool
             ));
         }
@@ -86,7 +86,7 @@ impl LatheState {
         }
     }
 
-    /// The vector at the end of a move (spec 5.2, 5.4): with a new T code
+    /// The vector at the end of a move (behaviour 5.2, 5.4): with a new T code
     /// (`t_changed`) the move lands on the new offset on both axes, so a new
     /// offset in a feed move changes the end point by the difference of the
     /// offsets and the straight move from the old to the new offset position
@@ -120,7 +120,7 @@ impl LatheState {
     }
 
     /// The sentence for the offset motion `d` of a T change with no move
-    /// (spec 5.3, 5.5).
+    /// (behaviour 5.3, 5.5).
     pub fn motion_note(&self, d: Xyz, at_feed: bool, units: Units) -> String {
         let rate = if at_feed {
             "at the cutting feed (G01)"
@@ -141,7 +141,7 @@ impl LatheState {
     }
 
     /// The sentence for a T change made with a move whose end point it
-    /// moves by `d` (spec 5.2, 5.4, 5.5).
+    /// moves by `d` (behaviour 5.2, 5.4, 5.5).
     pub fn move_note(&self, d: Xyz, at_feed: bool, units: Units) -> String {
         if self.offset == 0 {
             return format!(
@@ -163,7 +163,7 @@ impl LatheState {
 }
 
 /// Whether the offset motion of a T change with no move is made at feed
-/// (G01) rather than rapid (G00), in motion mode `motion` (spec 5.3, seed
+/// (G01) rather than rapid (G00), in motion mode `motion` (behaviour 5.3, seed
 /// 004); in G02/G03 or a turning cycle it cannot be made. `t` is where the
 /// T word is.
 pub fn offset_motion_at_feed(motion: Motion, t: Span) -> Result<bool, Diagnostic> {
@@ -186,14 +186,14 @@ mod tests {
     use super::*;
 
     #[test]
-    fn spec5_tttoo_splits_into_tool_and_offset() {
+    fn behaviour5_tttoo_splits_into_tool_and_offset() {
         assert_eq!(split(108), (1, 8));
         assert_eq!(split(216), (2, 16));
         assert_eq!(split(200), (2, 0));
     }
 
     #[test]
-    fn spec5_lathe_x_offset_radius_doubles_on_the_diameter_axis() {
+    fn behaviour5_lathe_x_offset_radius_doubles_on_the_diameter_axis() {
         let reg = LatheRegister {
             x: 0.3,
             z: -0.2,
@@ -216,7 +216,7 @@ mod tests {
     }
 
     #[test]
-    fn spec5_6_a_new_tool_number_indexes_the_turret() {
+    fn behaviour5_6_a_new_tool_number_indexes_the_turret() {
         let mut l = LatheState::default();
         let mut notes = Vec::new();
         let t = l.command(
@@ -233,7 +233,7 @@ mod tests {
                 changed: true
             }
         );
-        assert_eq!(notes, ["tool 00 → 01: the turret indexes (spec 5.6)"]);
+        assert_eq!(notes, ["tool 00 → 01: the turret indexes (behaviour 5.6)"]);
         assert_eq!(l.target, [0.4, 0.0, -0.2]);
         let t = l.command(
             100,
@@ -279,7 +279,7 @@ mod tests {
     }
 
     #[test]
-    fn spec5_3_a_t_change_alone_moves_at_the_motion_modes_rate() {
+    fn behaviour5_3_a_t_change_alone_moves_at_the_motion_modes_rate() {
         assert_eq!(
             offset_motion_at_feed(Motion::Rapid, Span::default()),
             Ok(false)

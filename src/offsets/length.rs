@@ -1,4 +1,4 @@
-//! Tool length offset, G43/G44/G49 (spec 3, seed 001).
+//! Tool length offset, G43/G44/G49 (behaviour 3, seed 001).
 //!
 //! The offset is a Z vector: `G43` adds, `G44` subtracts the value of
 //! register H; `G49` or `H00` cancel it. The machine keeps two numbers: the
@@ -13,7 +13,7 @@ use crate::geometry::{show, show_signed};
 use crate::setup::{LengthOffsetWithoutZ, Units};
 use crate::syntax::codes::{LengthOffset, Motion};
 
-/// Tool length offset state (spec 3).
+/// Tool length offset state (behaviour 3).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct LengthState {
     /// G43 (+1), G44 (-1) or G49 (0).
@@ -30,7 +30,7 @@ pub struct LengthState {
 }
 
 /// The sign a length-offset code gives the register value: G43 +1, G44 −1,
-/// G49 0 (spec 3.1).
+/// G49 0 (behaviour 3.1).
 pub fn sign(code: LengthOffset) -> i8 {
     match code {
         LengthOffset::Add => 1,
@@ -63,8 +63,8 @@ pub struct ZAfter {
 }
 
 impl LengthState {
-    /// Applies a block's G43/G44/G49 and H (spec 3.1): while G02/G03 is the
-    /// motion mode the offset may not change (spec 3.7, YASNAC J50M); G43
+    /// Applies a block's G43/G44/G49 and H (behaviour 3.1): while G02/G03 is the
+    /// motion mode the offset may not change (behaviour 3.7, YASNAC J50M); G43
     /// or G44 with H00 is warned about. `motion` is the mode the block runs
     /// in.
     pub fn block(
@@ -84,7 +84,7 @@ impl LengthState {
                 "length-offset-in-arc",
                 span,
                 format!(
-                    "the tool length offset cannot change while {} is active (spec 3.7): command G00 or G01 first",
+                    "the tool length offset cannot change while {} is active (behaviour 3.7): command G00 or G01 first",
                     motion.gcode()
                 ),
             ));
@@ -108,7 +108,7 @@ impl LengthState {
     }
 
     /// Applies the block's G43/G44/G49 (`code`) and H (`h`, with the value of
-    /// its register in mm). H00 reads 0 and so cancels (spec 3.1).
+    /// its register in mm). H00 reads 0 and so cancels (behaviour 3.1).
     pub fn command(&mut self, code: Option<LengthOffset>, h: Option<(u16, f64)>) {
         if let Some(c) = code {
             self.sign = sign(c);
@@ -145,7 +145,7 @@ impl LengthState {
         old.target != self.target || old.sign != self.sign || old.h != self.h
     }
 
-    /// The Z vector at the end of a block's move (spec 3.2–3.6): a Z word
+    /// The Z vector at the end of a block's move (behaviour 3.2–3.6): a Z word
     /// lands on the target; a block that `changed` the offset without a Z
     /// word moves Z to it at once with setting `move` (seed 001: G43 H… with
     /// no Z moves Z by the offset; a new H while G43/G44 is active moves Z
@@ -180,7 +180,7 @@ impl LengthState {
     }
 
     /// The sentence for what the length offset did in a block that made it
-    /// `self` from `old` (spec 3). `z_amount` is the programmed Z movement
+    /// `self` from `old` (behaviour 3). `z_amount` is the programmed Z movement
     /// when the block moved along Z.
     #[inline(never)]
     pub fn note(&self, old: &LengthState, z_amount: Option<f64>, z: ZAfter) -> String {
@@ -251,7 +251,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn spec3_1_g43_adds_g44_subtracts_g49_and_h00_cancel() {
+    fn behaviour3_1_g43_adds_g44_subtracts_g49_and_h00_cancel() {
         let mut l = LengthState::default();
         l.command(Some(LengthOffset::Add), Some((2, 15.0)));
         assert_eq!(l.target, 15.0);
@@ -294,7 +294,7 @@ mod tests {
     }
 
     #[test]
-    fn spec3_7_no_length_offset_change_in_arc_mode() {
+    fn behaviour3_7_no_length_offset_change_in_arc_mode() {
         let words = LengthWords {
             code: Some((LengthOffset::Add, Span::default())),
             h: Some((1, Span::default(), 10.0)),

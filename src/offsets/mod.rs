@@ -3,9 +3,9 @@
 //! and changed movement amounts, what a block holding the offset may hold,
 //! and what the report says it did.
 //!
-//! - [`length`]: tool length offset G43/G44/G49 (spec 3, seed 001);
-//! - [`position`]: tool position offset G45–G48 (spec 4, seeds 000, 003);
-//! - [`lathe`]: lathe T-code tool position offset (spec 5, seed 004).
+//! - [`length`]: tool length offset G43/G44/G49 (behaviour 3, seed 001);
+//! - [`position`]: tool position offset G45–G48 (behaviour 4, seeds 000, 003);
+//! - [`lathe`]: lathe T-code tool position offset (behaviour 5, seed 004).
 //!
 //! The next family (cutter radius compensation, G40–G42) is a sibling file.
 //! The machine owns positions and modal state and calls these; a family

@@ -1,4 +1,4 @@
-//! Tool position offset, G45–G48 (spec 4, seeds 000 and 003).
+//! Tool position offset, G45–G48 (behaviour 4, seeds 000 and 003).
 //!
 //! One-shot: only the block holding the code is changed. Each axis word's
 //! movement amount `m` becomes `m + k·s·v`, with `v` the signed value of
@@ -14,7 +14,7 @@ use crate::setup::{MachineKind, Units};
 use crate::syntax::codes::{Code, Cycle, Group, PositionOffset};
 use crate::syntax::{Address, Block};
 
-/// Tool position offset state (spec 4).
+/// Tool position offset state (behaviour 4).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct PositionState {
     /// Active (modal) D number.
@@ -28,21 +28,21 @@ pub struct PositionState {
 
 impl PositionState {
     /// A D word: register `d`, whose value (mm) is `value`, is the active
-    /// one (D is modal; spec 4).
+    /// one (D is modal; behaviour 4).
     pub fn select(&mut self, d: u16, value: f64) {
         self.d = d;
         self.value = value;
     }
 
     /// G92 on `axis`: the axis's vector is cancelled before the coordinate
-    /// is set (spec 4.7, seed 003: the offset is cancelled from the
+    /// is set (behaviour 4.7, seed 003: the offset is cancelled from the
     /// designated axes).
     pub fn cancel_for_coordinate_setting(&mut self, axis: usize) {
         self.vector[axis] = 0.0;
     }
 }
 
-/// The rules of a block holding G45–G48 before it moves (spec 4.9, 4.10,
+/// The rules of a block holding G45–G48 before it moves (behaviour 4.9, 4.10,
 /// seed 003): only G00–G03 and G90/G91 may share the block, no canned cycle
 /// may be active, and the block needs an axis word. `cycle` is the active
 /// canned cycle.
@@ -96,7 +96,7 @@ pub fn check_block(
             "position-offset-without-axis",
             b.code_span(Group::NonModal),
             format!(
-                "{} needs an axis word to extend or reduce (spec 4.9); for a move by the offset alone write X0 in G91 (seed 003)",
+                "{} needs an axis word to extend or reduce (behaviour 4.9); for a move by the offset alone write X0 in G91 (seed 003)",
                 code.gcode()
             ),
         ));
@@ -124,7 +124,7 @@ pub struct PositionChange {
 
 impl PositionChange {
     /// The change to each axis's movement `amount` (mm, as the machine
-    /// makes it) for the axes with a word (spec 4.1–4.6: every axis word's
+    /// makes it) for the axes with a word (behaviour 4.1–4.6: every axis word's
     /// amount is changed on its own), noting each.
     pub fn axes(&self, amount: Xyz, words: [bool; 3], notes: &mut Vec<String>) -> Xyz {
         let mut delta = [0.0; 3];
@@ -144,7 +144,7 @@ impl PositionChange {
     }
 
     /// The change to an arc's centre offset `offset` (mm, after mirror image)
-    /// along `axis` (spec 4.8: I/J/K are incremental amounts, changed like
+    /// along `axis` (behaviour 4.8: I/J/K are incremental amounts, changed like
     /// axis words), noted.
     pub fn center(&self, axis: usize, offset: f64, notes: &mut Vec<String>) -> f64 {
         let dc = change(self.code, offset, self.register, true, self.mirror[axis]);
@@ -158,7 +158,7 @@ impl PositionChange {
         dc
     }
 
-    /// The change to an arc's R (mm) (spec 4.8: R changed as a radius),
+    /// The change to an arc's R (mm) (behaviour 4.8: R changed as a radius),
     /// noted.
     pub fn radius(&self, r: f64, notes: &mut Vec<String>) -> f64 {
         let dr = radius_change(self.code, r, self.register);
@@ -175,14 +175,14 @@ impl PositionChange {
         show(mm, self.units)
     }
 
-    /// The sentence for one axis changed (spec 6's example: "G47: X move
+    /// The sentence for one axis changed (behaviour 6.5's example: "G47: X move
     /// 50.000 extended by 2 × D01 (6.000) to 62.000").
     fn axis_note(&self, axis: usize, m: f64, delta: f64) -> String {
         let g = name(self.code);
         let axis = ['X', 'Y', 'Z'][axis];
         if delta == 0.0 && !self.incremental && m.abs() <= 1e-9 {
             return format!(
-                "{g}: {axis} target is the current position, so {axis} is not changed (spec 4.5)"
+                "{g}: {axis} target is the current position, so {axis} is not changed (behaviour 4.5)"
             );
         }
         let verb = if factor(self.code) > 0.0 {
@@ -205,7 +205,7 @@ impl PositionChange {
         if m.abs() <= 1e-9 {
             s.push_str(" (a zero move goes by the offset alone, seed 003)");
         } else if (m + delta) * m < 0.0 {
-            s.push_str(" — the move reverses (spec 4.3)");
+            s.push_str(" — the move reverses (behaviour 4.3)");
         }
         s
     }
@@ -217,7 +217,7 @@ pub fn name(code: PositionOffset) -> String {
     format!("{} ({})", code.gcode(), meaning(code))
 }
 
-/// The factor k of spec 4.1: G45 +1 (extension), G46 −1 (reduction),
+/// The factor k of behaviour 4.1: G45 +1 (extension), G46 −1 (reduction),
 /// G47 +2 (double extension), G48 −2 (double reduction).
 pub fn factor(code: PositionOffset) -> f64 {
     match code {
@@ -238,12 +238,12 @@ pub fn meaning(code: PositionOffset) -> &'static str {
     }
 }
 
-/// The change to one axis's movement amount (spec 4.1–4.5).
+/// The change to one axis's movement amount (behaviour 4.1–4.5).
 ///
 /// `m` is the movement along the axis as the machine makes it (after mirror
 /// image), `incremental` says whether the block is G91, `mirrored` whether the
-/// axis is mirrored. A G90 zero movement changes nothing (spec 4.5,
-/// Mitsubishi M700); a G91 zero movement counts as positive (spec 4.4, seed
+/// axis is mirrored. A G90 zero movement changes nothing (behaviour 4.5,
+/// Mitsubishi M700); a G91 zero movement counts as positive (behaviour 4.4, seed
 /// 003: "It is meaningless to give a sign to 0"), and under mirror image the
 /// offset follows the mirrored direction (seed 003).
 pub fn change(code: PositionOffset, m: f64, v: f64, incremental: bool, mirrored: bool) -> f64 {
@@ -262,7 +262,7 @@ pub fn change(code: PositionOffset, m: f64, v: f64, incremental: bool, mirrored:
     factor(code) * s * v
 }
 
-/// The change to an arc's R word (spec 4.8): R is changed as a radius,
+/// The change to an arc's R word (behaviour 4.8): R is changed as a radius,
 /// `R + k·v·sign(R)`.
 pub fn radius_change(code: PositionOffset, r: f64, v: f64) -> f64 {
     factor(code) * v * r.signum()
@@ -276,7 +276,7 @@ mod tests {
     };
 
     #[test]
-    fn spec4_1_extension_and_reduction_along_the_movement() {
+    fn behaviour4_1_extension_and_reduction_along_the_movement() {
         assert_eq!(change(G45, 50.0, 6.0, true, false), 6.0);
         assert_eq!(change(G45, -50.0, 6.0, true, false), -6.0);
         assert_eq!(change(G46, 50.0, 6.0, true, false), -6.0);
@@ -285,37 +285,37 @@ mod tests {
     }
 
     #[test]
-    fn spec4_2_negative_register_swaps_extension_and_reduction() {
+    fn behaviour4_2_negative_register_swaps_extension_and_reduction() {
         // G91 G46 X30. D02 with register 02 = -4. moves X by +34.
         assert_eq!(30.0 + change(G46, 30.0, -4.0, true, false), 34.0);
     }
 
     #[test]
-    fn spec4_3_reduction_larger_than_the_movement_reverses_it() {
+    fn behaviour4_3_reduction_larger_than_the_movement_reverses_it() {
         // G91 G48 X8. D03 with register 03 = 6. moves X by -4.
         assert_eq!(8.0 + change(G48, 8.0, 6.0, true, false), -4.0);
     }
 
     #[test]
-    fn spec4_4_g91_zero_movement_is_positive() {
+    fn behaviour4_4_g91_zero_movement_is_positive() {
         assert_eq!(change(G45, 0.0, 5.0, true, false), 5.0);
         assert_eq!(change(G46, -0.0, 5.0, true, false), -5.0);
     }
 
     #[test]
-    fn spec4_5_g90_zero_movement_changes_nothing() {
+    fn behaviour4_5_g90_zero_movement_changes_nothing() {
         assert_eq!(change(G45, 0.0, 5.0, false, false), 0.0);
     }
 
     #[test]
-    fn spec4_8_radius_change() {
+    fn behaviour4_8_radius_change() {
         assert_eq!(radius_change(G45, 10.0, 2.0), 2.0);
         assert_eq!(radius_change(G45, -10.0, 2.0), -2.0);
         assert_eq!(radius_change(G46, 10.0, 2.0), -2.0);
     }
 
     #[test]
-    fn spec6_the_sentence_of_a_g47_axis() {
+    fn behaviour6_the_sentence_of_a_g47_axis() {
         let g47 = PositionChange {
             code: G47,
             d: 1,
@@ -334,7 +334,7 @@ mod tests {
     }
 
     #[test]
-    fn spec4_7_g92_cancels_the_vector_of_its_axes() {
+    fn behaviour4_7_g92_cancels_the_vector_of_its_axes() {
         let mut p = PositionState {
             d: 1,
             value: 6.0,

@@ -1,7 +1,7 @@
 //! The driver: pulls blocks from the streaming parser, runs them on the
 //! machine, and collects the report. Parse errors are reported for the whole
 //! program; execution stops at the first error, parse or run, the way a
-//! control stops at an alarm (spec 2).
+//! control stops at an alarm (behaviour 2.1).
 //!
 //! [`run_observed`] is the run: one loop over the blocks, which may keep
 //! [`Checkpoints`] beside the [`Run`] it makes. A run made again after an

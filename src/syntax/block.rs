@@ -37,11 +37,11 @@ pub enum Address {
 /// How a word's number is read.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum WordKind {
-    /// Always an integer, no decimal point (G M N O T D H S P L; spec 1).
+    /// Always an integer, no decimal point (G M N O T D H S P L; behaviour 1.13).
     Integer,
-    /// Feed rate: read in units with or without a decimal point (spec 1).
+    /// Feed rate: read in units with or without a decimal point (behaviour 1.14).
     Feed,
-    /// Dimension words X Y Z U W I J K R Q: decimal input applies (spec 1).
+    /// Dimension words X Y Z U W I J K R Q: decimal input applies (behaviour 1.15).
     Dimension,
 }
 

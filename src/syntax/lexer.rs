@@ -1,5 +1,5 @@
 //! Token-level grammar of a block over bytes: blanks, comments (nom) and a
-//! word's number (spec 1).
+//! word's number (behaviour 1).
 //!
 //! Tape controls ignore spaces anywhere in a word, so `X 1 2 . 5` is `X12.5`;
 //! the number grammar therefore runs on the word's characters with blanks

@@ -1,6 +1,6 @@
 //! The sentences of the parser's diagnostics: why a word is refused, why
 //! it clashes with the words before it, what an unexpected character is
-//! (spec 1). The codes go with them.
+//! (behaviour 1). The codes go with them.
 
 use super::*;
 
@@ -77,7 +77,7 @@ impl Blocks<'_> {
             Refusal::Dimension => {
                 let units = self.units;
                 let msg = format!(
-                    "{text} is outside ±{max:.*} {} (spec 1)",
+                    "{text} is outside ±{max:.*} {} (behaviour 1.17)",
                     units.decimals(),
                     units.as_str(),
                     max = units.max_dimension(),

@@ -1,4 +1,4 @@
-//! Program text → blocks of typed words, each with its span (spec 1).
+//! Program text → blocks of typed words, each with its span (behaviour 1).
 //!
 //! The grammar of one block (words, numbers, comments) is in [`lexer`], written
 //! with nom; this module splits the text into blocks, types every word, checks
@@ -188,12 +188,12 @@ struct RawWord {
     end: usize,
 }
 
-/// True for the characters that end a block (spec 1).
+/// True for the characters that end a block (behaviour 1.1).
 fn is_end(c: u8) -> bool {
     c == b'\n' || c == b'\r' || c == b';'
 }
 
-/// Why a word is refused (spec 1); [`Blocks::refusal_message`] says it.
+/// Why a word is refused (behaviour 1); [`Blocks::refusal_message`] says it.
 #[derive(Clone, Copy, Debug)]
 enum Refusal {
     /// A letter offsetlab does not read.
@@ -214,7 +214,7 @@ enum Refusal {
     Dimension,
 }
 
-/// Why the words before a word in its block exclude it (spec 1);
+/// Why the words before a word in its block exclude it (behaviour 1);
 /// [`Blocks::clash_message`] says it.
 #[derive(Clone, Debug)]
 enum Clash {
@@ -481,7 +481,7 @@ impl<'a> Blocks<'a> {
             return (i, false);
         }
         if bytes[i] == b'%' {
-            // Tape start before any block, tape end after (spec 1); the rest
+            // Tape start before any block, tape end after (behaviour 1.3); the rest
             // of the line is not read.
             self.tape = if self.tape == Tape::Before {
                 Tape::Reading
@@ -570,7 +570,7 @@ impl<'a> Blocks<'a> {
 
     /// Types a word of an address offsetlab reads with the context the
     /// parser has now (units, canned cycle): the word and how its number was
-    /// read, or why it is refused (spec 1). Both readings of a block type
+    /// read, or why it is refused (behaviour 1). Both readings of a block type
     /// words with this.
     #[inline(always)]
     fn read_word(
@@ -632,7 +632,7 @@ impl<'a> Blocks<'a> {
     }
 
     /// The value of a dimension word in the current units (decimal input,
-    /// spec 1).
+    /// behaviour 1).
     fn dimension(&self, n: Number) -> f64 {
         if n.point || self.options.decimal_input == DecimalInput::Calculator {
             n.value()

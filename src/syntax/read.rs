@@ -1,5 +1,5 @@
 //! Reading a block's words: in one pass where nothing is wrong and no G
-//! code changes how the words before it are read, else in two (spec 1 as
+//! code changes how the words before it are read, else in two (behaviour 1 as
 //! written: lex, then type and check each word). Both give the same blocks
 //! and diagnostics ([`super::Blocks::next_into`] chooses).
 
@@ -84,7 +84,7 @@ impl Blocks<'_> {
     /// noting the G codes that change how numbers are read), then types
     /// every word with the block's context and checks it against the words
     /// before it, reporting what is wrong with each. This is the reading of
-    /// spec 1 as written; [`Blocks::read_one_pass`] gives the same blocks
+    /// behaviour 1 as written; [`Blocks::read_one_pass`] gives the same blocks
     /// and diagnostics faster for the blocks it reads. Returns what
     /// [`Blocks::read_one_pass`] returns.
     pub(super) fn read_two_pass(

@@ -23,7 +23,7 @@ fn value(b: &Block, a: Address) -> f64 {
 }
 
 #[test]
-fn spec1_blocks_end_at_newline_or_semicolon() {
+fn behaviour1_1_blocks_end_at_newline_or_semicolon() {
     let prog = p("G00 X1.;G01 Y2.\r\nG00 Z3.\rX4.\nX5.");
     assert!(prog.diagnostics.is_empty(), "{:?}", prog.diagnostics);
     let lines: Vec<u32> = prog.blocks.iter().map(|b| b.span.line).collect();
@@ -34,7 +34,7 @@ fn spec1_blocks_end_at_newline_or_semicolon() {
 }
 
 #[test]
-fn spec1_tape_marks_program_numbers_sequence_numbers_and_comments() {
+fn behaviour1_3_tape_marks_program_numbers_sequence_numbers_and_comments() {
     let prog = p("%\nO1234 (PART 7)\nN10 G01 X1. (MOVE) Y2. F100.\n(ONLY A COMMENT)\n\n%\n");
     assert!(prog.diagnostics.is_empty(), "{:?}", prog.diagnostics);
     assert_eq!(prog.blocks.len(), 2);
@@ -45,14 +45,14 @@ fn spec1_tape_marks_program_numbers_sequence_numbers_and_comments() {
 }
 
 #[test]
-fn spec1_semicolon_inside_a_comment_does_not_end_the_block() {
+fn behaviour1_2_semicolon_inside_a_comment_does_not_end_the_block() {
     let prog = p("G00 X1. (A; B) Y2.");
     assert_eq!(prog.blocks.len(), 1);
     assert_eq!(value(&prog.blocks[0], Address::Y), 2.0);
 }
 
 #[test]
-fn spec1_spaces_inside_words_and_lower_case() {
+fn behaviour1_5_spaces_inside_words_and_lower_case() {
     let prog = p("g0 1 x 1 2 . 5 y-.5 f 100");
     assert!(prog.diagnostics.is_empty(), "{:?}", prog.diagnostics);
     let b = &prog.blocks[0];
@@ -63,7 +63,7 @@ fn spec1_spaces_inside_words_and_lower_case() {
 }
 
 #[test]
-fn spec1_block_skip_marks_the_block() {
+fn behaviour1_6_block_skip_marks_the_block() {
     let prog = p("/G00 X1.\n /2 G00 X2.\nG00 X3.");
     assert!(prog.diagnostics.is_empty(), "{:?}", prog.diagnostics);
     let skips: Vec<bool> = prog.blocks.iter().map(|b| b.skip).collect();
@@ -71,14 +71,14 @@ fn spec1_block_skip_marks_the_block() {
 }
 
 #[test]
-fn spec1_misplaced_block_skip_is_an_error() {
+fn behaviour1_6_misplaced_block_skip_is_an_error() {
     let prog = p("G00 /X1.");
     assert_eq!(codes(&prog), vec!["unexpected-character"]);
     assert_eq!(prog.diagnostics[0].column, 5);
 }
 
 #[test]
-fn spec1_same_address_twice_is_an_error() {
+fn behaviour1_10_same_address_twice_is_an_error() {
     let prog = p("G01 X10. X20.");
     assert_eq!(codes(&prog), vec!["duplicate-address"]);
     let d = &prog.diagnostics[0];
@@ -90,7 +90,7 @@ fn spec1_same_address_twice_is_an_error() {
 }
 
 #[test]
-fn spec1_two_g_codes_of_one_group_is_an_error() {
+fn behaviour1_11_two_g_codes_of_one_group_is_an_error() {
     let prog = p("G43 G44 Z1. H1\nG00 G01 X1.");
     assert_eq!(codes(&prog), vec!["modal-conflict", "modal-conflict"]);
     assert_eq!(prog.diagnostics[0].column, 5);
@@ -105,13 +105,13 @@ fn spec1_two_g_codes_of_one_group_is_an_error() {
 }
 
 #[test]
-fn spec4_9_two_position_offset_codes_in_one_block_is_an_error() {
+fn behaviour4_9_two_position_offset_codes_in_one_block_is_an_error() {
     let prog = p("G91 G45 G46 X10. D1");
     assert_eq!(codes(&prog), vec!["modal-conflict"]);
 }
 
 #[test]
-fn spec1_letter_without_number_is_an_error() {
+fn behaviour1_8_letter_without_number_is_an_error() {
     let prog = p("G01 X;\nG01 X Y1.");
     assert_eq!(codes(&prog), vec!["missing-number", "missing-number"]);
     assert_eq!(prog.diagnostics[0].column, 5);
@@ -119,7 +119,7 @@ fn spec1_letter_without_number_is_an_error() {
 }
 
 #[test]
-fn spec1_malformed_numbers_are_errors() {
+fn behaviour1_8_malformed_numbers_are_errors() {
     let prog = p("X1.2.3\nX--1\nX-\nX1-2");
     assert_eq!(
         codes(&prog),
@@ -138,7 +138,7 @@ fn spec1_malformed_numbers_are_errors() {
 }
 
 #[test]
-fn spec1_unknown_g_code_is_an_error() {
+fn behaviour1_12_unknown_g_code_is_an_error() {
     let prog = p("G07 X1.\nG41 D1 X1.\nG05.1 Q1.");
     assert_eq!(
         codes(&prog),
@@ -152,7 +152,7 @@ fn spec1_unknown_g_code_is_an_error() {
 }
 
 #[test]
-fn spec1_parsing_continues_after_an_error() {
+fn behaviour1_19_parsing_continues_after_an_error() {
     let prog = p("X1.2.3\nG01 X1. Y\nG00 X5.");
     assert_eq!(prog.blocks.len(), 3);
     assert!(prog.blocks[0].error && prog.blocks[1].error && !prog.blocks[2].error);
@@ -161,7 +161,7 @@ fn spec1_parsing_continues_after_an_error() {
 }
 
 #[test]
-fn spec1_decimal_input_increment_is_the_default() {
+fn behaviour1_15_decimal_input_increment_is_the_default() {
     let prog = p("X12345 Y1.5 Z0");
     let b = &prog.blocks[0];
     assert_eq!(value(b, Address::X), 12.345);
@@ -181,7 +181,7 @@ fn spec1_decimal_input_increment_is_the_default() {
 }
 
 #[test]
-fn spec1_decimal_input_increment_in_inch() {
+fn behaviour1_15_decimal_input_increment_in_inch() {
     let prog = p("G20\nX12345");
     assert_eq!(value(&prog.blocks[1], Address::X), 1.2345);
     let prog = p_with("X12345", |o| o.units = Units::Inch);
@@ -189,7 +189,7 @@ fn spec1_decimal_input_increment_in_inch() {
 }
 
 #[test]
-fn spec1_decimal_input_calculator() {
+fn behaviour1_15_decimal_input_calculator() {
     let prog = p_with("X12345 Y1.5", |o| {
         o.decimal_input = DecimalInput::Calculator
     });
@@ -199,7 +199,7 @@ fn spec1_decimal_input_calculator() {
 }
 
 #[test]
-fn spec1_integer_words_are_not_affected_by_decimal_input() {
+fn behaviour1_13_integer_words_are_not_affected_by_decimal_input() {
     let prog = p("N10 G04 P1000\nT0101 M06 D01 H02 S800 F100");
     assert!(prog.diagnostics.is_empty(), "{:?}", prog.diagnostics);
     let b = &prog.blocks[1];
@@ -213,13 +213,13 @@ fn spec1_integer_words_are_not_affected_by_decimal_input() {
 }
 
 #[test]
-fn spec1_integer_words_refuse_a_decimal_point() {
+fn behaviour1_13_integer_words_refuse_a_decimal_point() {
     let prog = p("G01 X1. D1.");
     assert_eq!(codes(&prog), vec!["decimal-point"]);
 }
 
 #[test]
-fn spec1_ranges() {
+fn behaviour1_17_ranges() {
     let prog = p("X99999.999\nX100000.\nY-100000.");
     assert_eq!(codes(&prog), vec!["out-of-range", "out-of-range"]);
     let prog = p("G20\nX9999.9999\nX10000.");
@@ -234,7 +234,7 @@ fn spec1_ranges() {
 }
 
 #[test]
-fn spec5_lathe_t_codes_are_checked_against_the_table() {
+fn behaviour5_lathe_t_codes_are_checked_against_the_table() {
     let lathe = |o: &mut ParseOptions| o.machine = MachineKind::Lathe;
     assert!(p_with("T0108", lathe).diagnostics.is_empty());
     assert_eq!(codes(&p_with("T10000", lathe)), vec!["out-of-range"]);
@@ -246,7 +246,7 @@ fn spec5_lathe_t_codes_are_checked_against_the_table() {
 }
 
 #[test]
-fn spec1_unclosed_comment_is_an_error() {
+fn behaviour1_2_unclosed_comment_is_an_error() {
     let prog = p("G00 X1. (OPEN\nG00 X2.");
     assert_eq!(codes(&prog), vec!["unclosed-comment"]);
     assert_eq!(prog.blocks.len(), 2);
@@ -254,7 +254,7 @@ fn spec1_unclosed_comment_is_an_error() {
 }
 
 #[test]
-fn spec1_characters_outside_words_are_errors() {
+fn behaviour1_9_characters_outside_words_are_errors() {
     let prog = p("#100=1.\nG00 X[1+2]\nG00 X1. @");
     assert_eq!(
         codes(&prog),
@@ -269,14 +269,14 @@ fn spec1_characters_outside_words_are_errors() {
 }
 
 #[test]
-fn spec1_unsupported_addresses_are_errors() {
+fn behaviour1_7_unsupported_addresses_are_errors() {
     let prog = p("G01 A90. X1.");
     assert_eq!(codes(&prog), vec!["unsupported-address"]);
     assert!(prog.diagnostics[0].message.contains("rotary"));
 }
 
 #[test]
-fn spec1_text_after_the_closing_percent_is_not_read() {
+fn behaviour1_3_text_after_the_closing_percent_is_not_read() {
     let prog = p("%\nG00 X1.\n%\nG00 X2.\n");
     assert_eq!(prog.blocks.len(), 1);
     assert_eq!(codes(&prog), vec!["text-after-tape-end"]);
@@ -286,14 +286,14 @@ fn spec1_text_after_the_closing_percent_is_not_read() {
 }
 
 #[test]
-fn spec1_k_in_a_canned_cycle_is_a_repeat_count() {
+fn behaviour1_16_k_in_a_canned_cycle_is_a_repeat_count() {
     let prog = p("G81 X1. Y1. Z-5. R1. K3 F100.\nG80\nG02 X1. K1");
     assert_eq!(value(&prog.blocks[0], Address::K), 3.0);
     assert_eq!(value(&prog.blocks[2], Address::K), 0.001);
 }
 
 #[test]
-fn spec1_lathe_uses_system_a_g_codes() {
+fn behaviour1_12_lathe_uses_system_a_g_codes() {
     let lathe = |o: &mut ParseOptions| o.machine = MachineKind::Lathe;
     let prog = p_with("G90 G00 X1.", lathe);
     assert_eq!(codes(&prog), vec!["modal-conflict"]);
@@ -303,7 +303,7 @@ fn spec1_lathe_uses_system_a_g_codes() {
 }
 
 #[test]
-fn spec1_word_spans() {
+fn behaviour1_20_word_spans() {
     let prog = p("N10 G01 X12.5");
     let x = prog.blocks[0].get(Address::X).unwrap();
     assert_eq!((x.span.start, x.span.end, x.span.line), (8, 13, 1));
@@ -311,7 +311,7 @@ fn spec1_word_spans() {
 }
 
 #[test]
-fn spec1_binary_junk_is_reported_not_fatal() {
+fn behaviour1_9_binary_junk_is_reported_not_fatal() {
     let text = "G00\u{0}\u{7}X1.\u{1b}[0m\nG00 X\u{FFFD}";
     let prog = p(text);
     assert!(!prog.diagnostics.is_empty());

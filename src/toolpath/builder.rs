@@ -46,7 +46,7 @@ impl<'a> PathBuilder<'a> {
 
     /// The toolpath of `run`, which `reuse` says what it took from the
     /// earlier run.
-    pub fn finish(mut self, run: &Run, reuse: &crate::Reuse) -> Toolpath {
+    pub fn finish(mut self, run: &Run, reuse: &crate::run::again::Reuse) -> Toolpath {
         if let (Some(earlier), Some(tail)) = (self.earlier, reuse.tail) {
             self.path.append_moves(
                 earlier,

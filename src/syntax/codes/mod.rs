@@ -3,7 +3,7 @@
 //! in the parser; the machine, the offsets and the parser's context rules
 //! match those values (so a new code is a new variant the compiler leads to
 //! every place it must reach). For codes offsetlab recognises but does not
-//! model, the reason it says so (spec 2: an unsupported code is an error,
+//! model, the reason it says so (behaviour 2: an unsupported code is an error,
 //! never a silent skip).
 
 mod groups;
@@ -18,7 +18,7 @@ pub use mcodes::MCode;
 use crate::setup::{MachineKind, Units};
 
 /// A G-code modal group. Two codes of one group in a block is an error
-/// (spec 1). Numbers follow the Fanuc/YASNAC M tables where they exist.
+/// (behaviour 1). Numbers follow the Fanuc/YASNAC M tables where they exist.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Group {
     /// 00: one-shot codes (G04, G28, G45–G48, G92 / lathe G50).
