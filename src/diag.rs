@@ -66,8 +66,8 @@ impl Span {
 /// Columns of many spans in one pass over the text: spans asked for in
 /// increasing order of their start cost the bytes between them, not a scan
 /// back to their line's start each (a megabyte-long line with a thousand
-/// diagnostics, or a line of 300,000 `;`-separated blocks, was quadratic:
-/// minutes for a 20 MB line). A span before the last one asked for falls
+/// diagnostics, or a line of many `;`-separated blocks, would be quadratic;
+/// `tests/cli_robustness.rs` runs such lines). A span before the last one asked for falls
 /// back to [`Span::columns`].
 pub struct Columns<'t> {
     text: &'t str,

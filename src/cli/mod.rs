@@ -320,8 +320,8 @@ impl Mapped {
 }
 
 /// `check`'s program, when it is a regular file of [`MAP_FROM_BYTES`] or
-/// more: mapped, not read (reading copied the 31 MB of a 1M-block program
-/// into memory of its own, a sixth of `check`'s time, `docs/performance.md`);
+/// more: mapped, not read (reading would copy a large program into memory
+/// of its own: target 6 of `docs/performance.md`, the 1M-block `check`);
 /// None for standard input and smaller files. The same refusals as
 /// [`read_text`].
 fn map_program(path: &str) -> Result<Option<Mapped>, Fatal> {
