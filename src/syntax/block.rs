@@ -251,7 +251,7 @@ impl Block {
     }
 
     /// Appends a word.
-    #[inline]
+    #[inline(always)]
     pub fn push(&mut self, word: Word) {
         self.addresses |= word.address.bit();
         let slot = &mut self.slots[word.address as usize];
