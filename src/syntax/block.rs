@@ -198,8 +198,13 @@ pub struct Block {
     /// one of a group), so the machine need not do it again.
     codes: Codes,
     /// Per G-code modal group, 1 + the index of the block's G word of that
-    /// group, or 0 (for the word's span and text).
-    groups: [u32; Group::COUNT],
+    /// group (for the word's span and text), or 0: none, or past the first
+    /// 65,534 words (then [`Block::group_word`] looks for it). Two bytes, not
+    /// four: the block is handed between threads in batches (the 1M-block
+    /// `check`, target 6 in docs/performance.md).
+    groups: [u16; Group::COUNT],
+    /// The machine the parser read the block for (what a G number means).
+    pub(super) machine: MachineKind,
     /// The groups of the block's G codes, a bit each (by [`Group::index`]).
     group_bits: u16,
 }
@@ -220,7 +225,7 @@ impl Block {
     #[inline(always)]
     pub(super) fn set_code(&mut self, code: Code, group: Group) {
         self.codes.set(code, group);
-        self.groups[group.index()] = self.words.len() as u32 + 1;
+        self.groups[group.index()] = u16::try_from(self.words.len() + 1).unwrap_or(0);
         self.group_bits |= 1 << group.index();
     }
 
@@ -245,8 +250,12 @@ impl Block {
     /// The G word of a modal group.
     pub fn group_word(&self, group: Group) -> Option<&Word> {
         match self.groups[group.index()] {
+            0 if self.holds_group(group) => self.words.iter().find(|w| {
+                w.address == Address::G
+                    && Code::of(self.machine, w.gcode()).is_some_and(|c| c.group() == group)
+            }),
             0 => None,
-            i => self.words.get(i as usize - 1),
+            i => self.words.get(usize::from(i) - 1),
         }
     }
 

@@ -497,6 +497,7 @@ impl<'a> Blocks<'a> {
         block.skip = false;
         block.clear();
         block.error = false;
+        block.machine = self.options.machine;
 
         if bytes[i] == b'/' {
             block.skip = true;

@@ -528,3 +528,30 @@ fn the_one_pass_reading_agrees_at_the_diagnostics_cap() {
         assert_eq!(fast, slow);
     }
 }
+
+#[test]
+fn behaviour1_11_a_g_code_past_the_first_65534_words_is_found_for_its_span_and_message() {
+    // M codes of distinct numbers are distinct groups, so all are admitted.
+    let mut text: String = (1000..71000).map(|m| format!("M{m} ")).collect();
+    let at = text.len();
+    text.push_str("G01 X1. G02");
+    let prog = p(&text);
+    let b = &prog.blocks[0];
+    assert!(b.words.len() > 70_000);
+    let g01 = b.group_word(codes::Group::Motion).expect("the G01 word");
+    assert_eq!((g01.span.start as usize, g01.value), (at, 1.0));
+    assert_eq!(b.code_span(codes::Group::Motion), g01.span);
+    // The clash names the first code of the group, as in a short block.
+    let clash = prog
+        .diagnostics
+        .iter()
+        .find(|d| d.code == "modal-conflict")
+        .unwrap();
+    let short = p("G01 X1. G02");
+    let expected = short
+        .diagnostics
+        .iter()
+        .find(|d| d.code == "modal-conflict")
+        .unwrap();
+    assert_eq!(clash.message, expected.message);
+}
