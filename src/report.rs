@@ -73,6 +73,21 @@ fn carried_sentence(s: &BlockState) -> String {
                     parts.push(format!("{name} {} (G45–G48)", f(v[i])));
                 }
             }
+            let c = s.cutter.vector;
+            if c != [0.0; 3] {
+                let axes: Vec<String> = ["X", "Y", "Z"]
+                    .iter()
+                    .zip(c)
+                    .filter(|(_, v)| *v != 0.0)
+                    .map(|(name, v)| format!("{name} {}", f(v)))
+                    .collect();
+                parts.push(format!(
+                    "{} ({} D{:02})",
+                    axes.join(" "),
+                    s.cutter.mode.gcode(),
+                    s.cutter.d
+                ));
+            }
         }
         MachineKind::Lathe => {
             let v = s.lathe.vector;

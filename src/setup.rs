@@ -258,6 +258,60 @@ impl GCodeSystem {
     }
 }
 
+/// Cutter compensation start-up and cancel type (behaviour 16.3, 16.10;
+/// Fanuc parameter SUP, No. 5003#0; Haas setting 43).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum CutterStartUp {
+    /// Type A: the start-up block ends perpendicular to the next block (a
+    /// cancel starts perpendicular to the block before).
+    A,
+    /// Type B: the start-up block's end is compensated as a corner too (the
+    /// intersection, or a vector perpendicular to each block).
+    B,
+}
+
+/// How cutter compensation goes round an outside corner in offset mode
+/// (behaviour 16.6, 16.7).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CutterOutsideCorner {
+    /// Fanuc: the intersection of the offset paths at 90° or more, the
+    /// extra vectors under 90°.
+    Vectors,
+    /// An arc of the compensation radius about the corner (Haas setting 58
+    /// = YASNAC, as offsetlab reads it).
+    Arc,
+}
+
+/// G40 (or D00) in a block with no move in the plane (behaviour 16.11).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CutterCancelWithoutMotion {
+    /// The tool moves back onto the programmed point in that block (Fanuc).
+    Move,
+    /// Nothing changes until the next move in the plane, which is the
+    /// cancel block (Haas).
+    NextMove,
+}
+
+/// The interference check of cutter compensation (behaviour 16.12; Fanuc
+/// parameter CNC, No. 5008#1).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CutterInterference {
+    /// An overcutting block stops the program with an alarm (PS0041).
+    #[default]
+    Alarm,
+    /// No check: the path is drawn as the control would cut it, with a
+    /// warning.
+    Off,
+}
+
+/// The most blocks without a move in the plane `cutter_blocks_without_motion`
+/// may name (a control reads at most 8 blocks in offset mode: Fanuc
+/// parameter No. 19625).
+pub const MAX_CUTTER_BLOCKS_WITHOUT_MOTION: u8 = 6;
+
 /// Settings where controls disagree; the seeds' behaviour is the default.
 /// A setting whose default depends on the control is an `Option` read
 /// through its accessor (`None`: the control's default).
@@ -295,6 +349,26 @@ pub struct Settings {
     /// [`Settings::gcode_system`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub gcode_system: Option<GCodeSystem>,
+    /// Cutter compensation start-up and cancel type (behaviour 16.3); read
+    /// it with [`Settings::cutter_start_up`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cutter_start_up: Option<CutterStartUp>,
+    /// Outside corners in offset mode (behaviour 16.7); read it with
+    /// [`Settings::cutter_outside_corner`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cutter_outside_corner: Option<CutterOutsideCorner>,
+    /// G40/D00 without a move in the plane (behaviour 16.11); read it with
+    /// [`Settings::cutter_cancel_without_motion`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cutter_cancel_without_motion: Option<CutterCancelWithoutMotion>,
+    /// How many blocks without a move in the plane the control reads past
+    /// to find the next move in offset mode (behaviour 16.9); read it with
+    /// [`Settings::cutter_blocks_without_motion`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cutter_blocks_without_motion: Option<u8>,
+    /// The interference check (behaviour 16.12).
+    #[serde(skip_serializing_if = "is_default")]
+    pub cutter_interference_check: CutterInterference,
 }
 
 impl Settings {
@@ -317,6 +391,54 @@ impl Settings {
         self.gcode_system.unwrap_or(match self.control {
             Control::Yasnac | Control::Fanuc | Control::Haas => GCodeSystem::A,
         })
+    }
+
+    /// Cutter compensation start-up and cancel: type A on every profile —
+    /// Fanuc's parameter SUP (No. 5003#0) is 0 as shipped, Haas's setting
+    /// 43 is A by default; no YASNAC manual the project has describes a
+    /// type B (our convention).
+    pub fn cutter_start_up(&self) -> CutterStartUp {
+        self.cutter_start_up.unwrap_or(match self.control {
+            Control::Yasnac | Control::Fanuc | Control::Haas => CutterStartUp::A,
+        })
+    }
+
+    /// Outside corners: Fanuc's intersection and extra vectors (0i-MF,
+    /// "Details of cutter compensation C", offset mode) on every profile;
+    /// Haas's setting 58 is FANUC by default. The Haas manual says
+    /// YASNAC-class controls go round outside corners otherwise (setting 58
+    /// = YASNAC): `arc` is offsetlab's reading of that, unconfirmed by a
+    /// YASNAC manual, so the YASNAC profile keeps the Fanuc rule (our
+    /// convention).
+    pub fn cutter_outside_corner(&self) -> CutterOutsideCorner {
+        self.cutter_outside_corner.unwrap_or(match self.control {
+            Control::Yasnac | Control::Fanuc | Control::Haas => CutterOutsideCorner::Vectors,
+        })
+    }
+
+    /// G40 without a move in the plane: Fanuc takes the vector off in that
+    /// block; Haas makes no change until the next X or Y move (Haas mill
+    /// operator's manual, "Entry and exit from cutter compensation"); the
+    /// YASNAC profile follows Fanuc (our convention).
+    pub fn cutter_cancel_without_motion(&self) -> CutterCancelWithoutMotion {
+        self.cutter_cancel_without_motion
+            .unwrap_or(match self.control {
+                Control::Yasnac | Control::Fanuc => CutterCancelWithoutMotion::Move,
+                Control::Haas => CutterCancelWithoutMotion::NextMove,
+            })
+    }
+
+    /// Blocks without a move in the plane read past in offset mode: 2 on
+    /// every profile. Fanuc reads a parameter's number of blocks N (No.
+    /// 19625 on the 0i-F, No. 6009 on the 15i) and finds the intersection
+    /// while no more than N − 2 of them make no move (15i-MA operator's
+    /// manual, 14.4.3); 2 is our reading of the common setting, and our
+    /// convention for YASNAC and Haas.
+    pub fn cutter_blocks_without_motion(&self) -> u8 {
+        self.cutter_blocks_without_motion
+            .unwrap_or(match self.control {
+                Control::Yasnac | Control::Fanuc | Control::Haas => 2,
+            })
     }
 }
 
@@ -714,6 +836,16 @@ impl Setup {
             out.push(setup_error(
                 "setup-range",
                 format!("settings.peck_retract = {d} must be 0 to {max}"),
+            ));
+        }
+        if let Some(n) = self.settings.cutter_blocks_without_motion
+            && n > MAX_CUTTER_BLOCKS_WITHOUT_MOTION
+        {
+            out.push(setup_error(
+                "setup-range",
+                format!(
+                    "settings.cutter_blocks_without_motion = {n} must be 0 to {MAX_CUTTER_BLOCKS_WITHOUT_MOTION}"
+                ),
             ));
         }
         if self.machine == MachineKind::Lathe && (self.settings.mirror.x || self.settings.mirror.y)

@@ -62,6 +62,23 @@ pub struct PositionView {
     pub vector: Pos,
 }
 
+/// Cutter radius compensation of a block (mill, behaviour 16).
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct CutterView {
+    /// G40, G41 or G42.
+    pub mode: &'static str,
+    /// The D number the radius was read from.
+    pub d: u16,
+    /// Value of register D (a negative value swaps the side).
+    pub radius: f64,
+    /// The block's role: `cancel` (cancel mode), `start_up`, `offset`
+    /// (offset mode) or `cancelling` (this block cancelled).
+    pub phase: &'static str,
+    /// The offset vector at the block's end: actual − programmed from the
+    /// compensation.
+    pub vector: Pos,
+}
+
 /// Lathe T-code offset of a block.
 #[derive(Clone, Copy, Debug, Serialize)]
 pub struct LatheView {
@@ -108,6 +125,9 @@ pub struct BlockView<'a> {
     /// Mill: tool position offset.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub position_offset: Option<PositionView>,
+    /// Mill: cutter radius compensation.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cutter: Option<CutterView>,
     /// Lathe: T-code offset.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub lathe_offset: Option<LatheView>,
@@ -153,7 +173,7 @@ fn block_view_at<'a>(b: &BlockReport, text: &'a str, columns: (u32, u32)) -> Blo
         units: u.as_str(),
         programmed: pos(s.programmed, u, m),
         actual: pos(s.actual, u, m),
-        modal: s.modal.codes(s.table()),
+        modal: s.modal_codes(),
         feed: s.feed,
         spindle: s.spindle,
         tool: if mill { s.tool } else { s.lathe.tool },
@@ -172,6 +192,13 @@ fn block_view_at<'a>(b: &BlockReport, text: &'a str, columns: (u32, u32)) -> Blo
             d: s.position.d,
             value: to_units(s.position.value, u),
             vector: pos(s.position.vector, u, m),
+        }),
+        cutter: mill.then(|| CutterView {
+            mode: s.cutter.mode.gcode(),
+            d: s.cutter.d,
+            radius: to_units(s.cutter.radius, u),
+            phase: s.cutter.phase.as_str(),
+            vector: pos(s.cutter.vector, u, m),
         }),
         lathe_offset: (!mill).then(|| LatheView {
             tool: s.lathe.tool,

@@ -281,9 +281,10 @@ impl Machine {
         if let Some(code) = b.codes().non_modal() {
             let what = match code {
                 NonModal::PositionOffset(_) => "G45–G48 change the block's move by an offset",
-                NonModal::Dwell | NonModal::ReferenceReturn | NonModal::SetCoordinates => {
-                    "the block makes no G01 move of its own"
-                }
+                NonModal::Dwell
+                | NonModal::ReferenceReturn
+                | NonModal::SetCoordinates
+                | NonModal::CornerArc => "the block makes no G01 move of its own",
             };
             return Err(self.error(
                 "corner-words",

@@ -79,7 +79,8 @@ impl Machine {
             Some(NonModal::ReferenceReturn) => return self.lathe_g28(b, out),
             // G04 was made above; G45–G48 are the mill's, refused by the
             // parser on the lathe (seed 004).
-            Some(NonModal::Dwell | NonModal::PositionOffset(_)) | None => {}
+            // G39 is not in the lathe's table.
+            Some(NonModal::Dwell | NonModal::PositionOffset(_) | NonModal::CornerArc) | None => {}
         }
         let t_changed = self.t_code(b, out);
         let motion = self.state.modal.motion;

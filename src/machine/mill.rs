@@ -33,7 +33,9 @@ const MOTION_WORDS: [Address; 10] = [
 
 impl Machine {
     /// A mill block. `ahead` gives the blocks after it to the rules that need
-    /// the next move: the chamfer and corner words `,C`/`,R` (`corner.rs`).
+    /// the next move: the chamfer and corner words `,C`/`,R` (`corner.rs`)
+    /// and cutter radius compensation (`cutter.rs`), which every block
+    /// passes through while G41/G42 is the mode or a vector is on.
     pub(super) fn mill_block(
         &mut self,
         b: &Block,
@@ -41,7 +43,13 @@ impl Machine {
         ahead: &mut dyn Ahead,
     ) -> Result<(), Diagnostic> {
         if b.holds_only(&MOTION_WORDS, &[Group::Motion]) {
+            if self.state.cutter.engaged() {
+                return self.cutter_block(b, out, ahead);
+            }
             return self.motion_block(b, out);
+        }
+        if self.state.cutter.engaged() || super::cutter::concerns(b) {
+            return self.cutter_block(b, out, ahead);
         }
         if b.holds_any(&CORNER_WORDS) {
             return self.corner_block(b, out, ahead);
@@ -106,6 +114,9 @@ impl Machine {
             Some(NonModal::PositionOffset(code)) => {
                 return self.position_offset_block(b, code, out);
             }
+            // The corner arc is cutter compensation's (`cutter.rs`), which
+            // runs the block's other words through here first.
+            Some(NonModal::CornerArc) => return Ok(()),
             None => {}
         }
         let old_length = self.length_words(b, out)?;

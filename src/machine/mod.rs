@@ -10,6 +10,7 @@
 
 pub mod arc;
 mod corner;
+mod cutter;
 mod cycles;
 mod lathe;
 mod mill;
@@ -20,11 +21,12 @@ pub use state::{ArcInfo, BlockState, EventKind, Move, MoveKind};
 
 use crate::diag::{Diagnostic, Span};
 use crate::geometry::{Xyz, add, scale, sub, to_units};
+use crate::offsets::cutter::CutterState;
 use crate::offsets::lathe::LatheState;
 use crate::offsets::length::LengthState;
 use crate::offsets::position::PositionState;
 use crate::setup::{MachineKind, Setup, Units};
-use crate::syntax::codes::{CutterCompensation, MCode, NonModal};
+use crate::syntax::codes::{MCode, NonModal};
 use crate::syntax::{Address, Block};
 use arc::{ArcError, Circle};
 use modal::{Modal, WorkSystem};
@@ -149,6 +151,7 @@ impl Machine {
             next_tool: 0,
             length: LengthState::default(),
             position: PositionState::default(),
+            cutter: CutterState::default(),
             lathe: LatheState::default(),
         };
         let mirror = if setup.machine == MachineKind::Mill {
@@ -325,7 +328,7 @@ impl Machine {
         let s = &self.state;
         let mut a = add(s.programmed, s.position.vector);
         a[2] += s.length.vector;
-        add(a, s.lathe.vector)
+        add(add(a, s.lathe.vector), s.cutter.vector)
     }
 
     fn mark(&self) -> Mark {
@@ -466,10 +469,11 @@ impl Machine {
         if let Some(work) = c.work() {
             self.select_work(work);
         }
-        match c.cutter() {
-            // G40, cutter compensation cancel: the state offsetlab models
-            // (the parser refuses G41/G42 with the reason).
-            Some(CutterCompensation::Cancel) | None => {}
+        // Group 07: the mode; what it does to the path is the cutter
+        // compensation's (`cutter.rs`, behaviour 16). The lathe's table has
+        // G40 alone.
+        if let Some(mode) = c.cutter() {
+            self.state.cutter.mode = mode;
         }
         if let Some(f) = b.value(Address::F) {
             self.state.feed = Some(f);

@@ -70,6 +70,7 @@ impl Modal {
             distance: (mill || table.lathe_distance_codes()).then_some(self.distance.gcode()),
             units: Code::Units(self.units).gcode(table),
             feed_mode: Code::FeedMode(self.feed_mode).gcode(table),
+            cutter: None,
             length: mill.then_some(self.length.gcode()),
             cycle: mill.then(|| self.cycle.map_or(CannedCycle::Cancel.gcode(), Cycle::gcode)),
             return_level: mill.then_some(self.return_level.gcode()),
@@ -93,6 +94,11 @@ pub struct ModalCodes {
     pub units: &'static str,
     /// Group 05.
     pub feed_mode: &'static str,
+    /// Group 07 (mill): G40, G41 or G42 (behaviour 16), filled from the
+    /// block's [`crate::offsets::cutter::CutterState`] by
+    /// [`crate::machine::BlockState::modal_codes`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cutter: Option<&'static str>,
     /// Group 08 (mill).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub length: Option<&'static str>,

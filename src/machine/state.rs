@@ -7,6 +7,7 @@ use serde::Serialize;
 use super::arc::Circle;
 use super::modal::{Modal, Plane};
 use crate::geometry::Xyz;
+use crate::offsets::cutter::CutterState;
 use crate::offsets::lathe::LatheState;
 use crate::offsets::length::LengthState;
 use crate::offsets::position::PositionState;
@@ -230,11 +231,23 @@ pub struct BlockState {
     pub length: LengthState,
     /// Tool position offset (mill).
     pub position: PositionState,
+    /// Cutter radius compensation (mill).
+    pub cutter: CutterState,
     /// T-code offset (lathe).
     pub lathe: LatheState,
 }
 
 impl BlockState {
+    /// The modal codes as the manuals write them, group 07 included on
+    /// the mill (its mode is the cutter compensation's state).
+    pub fn modal_codes(&self) -> super::modal::ModalCodes {
+        let mut codes = self.modal.codes(self.table());
+        if self.machine == MachineKind::Mill {
+            codes.cutter = Some(self.cutter.mode.gcode());
+        }
+        codes
+    }
+
     /// The table the block's codes are written back with.
     pub fn table(&self) -> CodeTable {
         CodeTable::new(self.machine, self.system)

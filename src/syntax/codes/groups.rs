@@ -137,13 +137,19 @@ impl FeedMode {
     }
 }
 
-/// Group 07: cutter compensation. offsetlab accepts only its cancel; cutter
-/// radius compensation (G41/G42) is refused with its reason until it is
-/// modelled.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+/// Group 07: cutter radius compensation C on the mill (behaviour 16); on
+/// the lathe only its cancel G40 (tool nose radius compensation is refused
+/// with its reason).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum CutterCompensation {
-    /// G40.
+    /// G40: cancel.
+    #[default]
     Cancel,
+    /// G41: the tool centre left of the path, seen along the direction of
+    /// travel from the positive side of the plane's normal.
+    Left,
+    /// G42: the tool centre right of the path.
+    Right,
 }
 
 impl CutterCompensation {
@@ -151,6 +157,8 @@ impl CutterCompensation {
     pub fn gcode(self) -> &'static str {
         match self {
             CutterCompensation::Cancel => "G40",
+            CutterCompensation::Left => "G41",
+            CutterCompensation::Right => "G42",
         }
     }
 }
@@ -332,6 +340,9 @@ pub enum NonModal {
     PositionOffset(PositionOffset),
     /// Coordinate system setting: G92 on the mill, G50 on the lathe.
     SetCoordinates,
+    /// G39 (mill): corner circular interpolation in cutter compensation
+    /// (behaviour 16).
+    CornerArc,
 }
 
 impl NonModal {
@@ -343,6 +354,7 @@ impl NonModal {
             (NonModal::PositionOffset(p), _) => p.gcode(),
             (NonModal::SetCoordinates, MachineKind::Mill) => "G92",
             (NonModal::SetCoordinates, MachineKind::Lathe) => "G50",
+            (NonModal::CornerArc, _) => "G39",
         }
     }
 }

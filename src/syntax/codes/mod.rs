@@ -33,7 +33,7 @@ pub enum Group {
     FeedMode,
     /// 06: inch / metric.
     Units,
-    /// 07: cutter compensation (only the cancel G40 is accepted).
+    /// 07: cutter compensation (G40–G42 on the mill, G40 on the lathe).
     Cutter,
     /// 08: tool length offset.
     Length,
@@ -232,7 +232,10 @@ impl Code {
                 20 => C::Units(Units::Inch),
                 21 => C::Units(Units::Mm),
                 28 => C::NonModal(NonModal::ReferenceReturn),
+                39 => C::NonModal(NonModal::CornerArc),
                 40 => C::CutterCompensation(CutterCompensation::Cancel),
+                41 => C::CutterCompensation(CutterCompensation::Left),
+                42 => C::CutterCompensation(CutterCompensation::Right),
                 43 => C::Length(LengthOffset::Add),
                 44 => C::Length(LengthOffset::Subtract),
                 45 => C::NonModal(NonModal::PositionOffset(PositionOffset::Extension)),
@@ -490,10 +493,8 @@ fn unsupported_reason(table: CodeTable, g: GCode) -> String {
     let lathe = machine == MachineKind::Lathe;
     let system_b_or_c = table.lathe_distance_codes();
     let why = match g.major {
-        41 | 42 if lathe => "tool nose radius compensation is not modelled",
-        41 | 42 => {
-            "cutter radius compensation C is not modelled; offsetlab models tool position offset G45–G48 (seed 000)"
-        }
+        41 | 42 => "tool nose radius compensation is not modelled",
+        39 if lathe => "corner circular interpolation is a mill code (cutter compensation)",
         43 | 44 | 49 if lathe => "the lathe uses T-code offsets, not G43/G44/G49 (seed 004)",
         45..=48 if lathe => "the lathe uses T-code offsets, not G45–G48 (seed 004)",
         10 => "programmable data input is not supported; enter offsets in the offset table",
@@ -584,8 +585,8 @@ mod tests {
 
     #[test]
     fn unsupported_codes_say_why() {
-        let e = g_group(CodeTable::MILL, GCode::new(41)).unwrap_err();
-        assert!(e.contains("G45–G48"), "{e}");
+        let e = g_group(CodeTable::LATHE, GCode::new(41)).unwrap_err();
+        assert!(e.contains("tool nose radius"), "{e}");
         let e = g_group(CodeTable::MILL, GCode::new(7)).unwrap_err();
         assert!(e.contains("G07 is not a G code"), "{e}");
         let e = g_group(CodeTable::MILL, GCode { major: 5, minor: 1 }).unwrap_err();

@@ -1,0 +1,671 @@
+//! The plane geometry of cutter radius compensation C (behaviour 16): a
+//! block's programmed path in the compensation plane, its offset path (a
+//! line moved sideways, or a circle about the same centre with the radius
+//! grown or shrunk), the intersection of two offset paths, and the points
+//! the tool centre passes through at the junction of two blocks — the
+//! *corner* — by the Fanuc rules: the intersection at an inside corner and
+//! at an outside corner of 90° or more, the extra vectors at an outside
+//! corner under 90°, the start-up and cancel types A and B, a change of
+//! side. Pure functions of points: no machine, no units.
+//!
+//! Offsets are signed: `o` > 0 puts the tool centre left of the path (G41
+//! with a positive register), `o` < 0 right of it (G42, or G41 with a
+//! negative register), seen from the positive side of the plane's normal.
+
+/// A point or a vector in the compensation plane: (first axis, second axis)
+/// of G17 (X, Y), G18 (Z, X) or G19 (Y, Z).
+pub type P2 = [f64; 2];
+
+/// Turns smaller than this (radians) are no corner: the two paths meet
+/// tangentially and the tool centre stands at the offset of the common
+/// point (the error of taking it so is below a micrometre for any radius a
+/// register holds).
+pub const TANGENT: f64 = 1e-6;
+
+/// How far (mm) two offset paths may miss each other and still be taken
+/// as touching (a tangent line and circle computed from rounded words).
+const TOUCH: f64 = 1e-7;
+
+fn add(a: P2, b: P2) -> P2 {
+    [a[0] + b[0], a[1] + b[1]]
+}
+
+fn sub(a: P2, b: P2) -> P2 {
+    [a[0] - b[0], a[1] - b[1]]
+}
+
+fn mul(a: P2, k: f64) -> P2 {
+    [a[0] * k, a[1] * k]
+}
+
+fn dot(a: P2, b: P2) -> f64 {
+    a[0] * b[0] + a[1] * b[1]
+}
+
+fn cross(a: P2, b: P2) -> f64 {
+    a[0] * b[1] - a[1] * b[0]
+}
+
+fn len(a: P2) -> f64 {
+    a[0].hypot(a[1])
+}
+
+/// The distance between two points.
+pub fn dist(a: P2, b: P2) -> f64 {
+    len(sub(a, b))
+}
+
+/// `a` scaled to length 1 (a zero vector stays zero).
+pub fn unit(a: P2) -> P2 {
+    let l = len(a);
+    if l > 0.0 { mul(a, 1.0 / l) } else { [0.0, 0.0] }
+}
+
+/// The unit vector 90° counter-clockwise from `t`: left of a path going
+/// along `t`.
+pub fn left(t: P2) -> P2 {
+    [-t[1], t[0]]
+}
+
+/// One block's programmed path in the compensation plane.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Path {
+    /// A straight move (G00, G01; also the direction of I/J/K in a G41/G42
+    /// block without a move, as a line from its point along that
+    /// direction).
+    Line {
+        /// Start point.
+        from: P2,
+        /// End point.
+        to: P2,
+    },
+    /// A G02/G03 arc.
+    Arc {
+        /// Start point.
+        from: P2,
+        /// End point (the start for a full circle).
+        to: P2,
+        /// Centre.
+        center: P2,
+        /// Counter-clockwise (G03 seen from the normal's positive side).
+        ccw: bool,
+    },
+}
+
+impl Path {
+    /// Where the path starts.
+    pub fn start(&self) -> P2 {
+        match *self {
+            Path::Line { from, .. } | Path::Arc { from, .. } => from,
+        }
+    }
+
+    /// Where the path ends.
+    pub fn end(&self) -> P2 {
+        match *self {
+            Path::Line { to, .. } | Path::Arc { to, .. } => to,
+        }
+    }
+
+    /// The unit direction of travel at `p`, a point of the path.
+    fn tangent_at(&self, p: P2) -> P2 {
+        match *self {
+            Path::Line { from, to } => unit(sub(to, from)),
+            Path::Arc { center, ccw, .. } => {
+                let r = unit(sub(p, center));
+                if ccw { left(r) } else { mul(left(r), -1.0) }
+            }
+        }
+    }
+
+    /// The direction of travel where the path starts.
+    pub fn start_tangent(&self) -> P2 {
+        self.tangent_at(self.start())
+    }
+
+    /// The direction of travel where the path ends.
+    pub fn end_tangent(&self) -> P2 {
+        self.tangent_at(self.end())
+    }
+
+    /// True for an arc.
+    pub fn is_arc(&self) -> bool {
+        matches!(self, Path::Arc { .. })
+    }
+
+    /// "line" or "arc", for the sentences.
+    pub fn noun(&self) -> &'static str {
+        if self.is_arc() { "arc" } else { "line" }
+    }
+
+    /// The radius of the offset circle of an arc: the programmed radius
+    /// less the offset where the tool is inside the arc (left of a G03),
+    /// plus it outside. Zero or less when the tool does not fit inside
+    /// (behaviour 16: interference, Fanuc PS0041/PS0038). None for a line.
+    pub fn offset_radius(&self, o: f64) -> Option<f64> {
+        match *self {
+            Path::Line { .. } => None,
+            Path::Arc {
+                from, center, ccw, ..
+            } => {
+                let r = dist(from, center);
+                Some(if ccw { r - o } else { r + o })
+            }
+        }
+    }
+
+    /// The offset path `o` to the left.
+    fn offset(&self, o: f64) -> Offset {
+        match *self {
+            Path::Line { from, to } => {
+                let t = unit(sub(to, from));
+                Offset::Line {
+                    point: add(from, mul(left(t), o)),
+                    dir: t,
+                }
+            }
+            Path::Arc { center, .. } => Offset::Circle {
+                center,
+                radius: self.offset_radius(o).unwrap_or(0.0).abs(),
+            },
+        }
+    }
+}
+
+/// An offset path as a whole line or circle (the intersection of two
+/// may lie on their extensions).
+#[derive(Clone, Copy, Debug)]
+enum Offset {
+    Line { point: P2, dir: P2 },
+    Circle { center: P2, radius: f64 },
+}
+
+/// The points where two offset paths meet (none, one or two).
+fn crossings(a: Offset, b: Offset) -> Vec<P2> {
+    match (a, b) {
+        (Offset::Line { point: p, dir: d }, Offset::Line { point: q, dir: e }) => {
+            let c = cross(d, e);
+            if c.abs() < 1e-12 {
+                return Vec::new();
+            }
+            let s = cross(sub(q, p), e) / c;
+            vec![add(p, mul(d, s))]
+        }
+        (Offset::Line { point, dir }, Offset::Circle { center, radius })
+        | (Offset::Circle { center, radius }, Offset::Line { point, dir }) => {
+            // The foot of the centre on the line, and half the chord.
+            let s = dot(sub(center, point), dir);
+            let foot = add(point, mul(dir, s));
+            let h = dist(foot, center);
+            if h > radius + TOUCH {
+                return Vec::new();
+            }
+            let half = (radius * radius - h * h).max(0.0).sqrt();
+            if half < TOUCH {
+                return vec![foot];
+            }
+            vec![add(foot, mul(dir, -half)), add(foot, mul(dir, half))]
+        }
+        (
+            Offset::Circle {
+                center: c1,
+                radius: r1,
+            },
+            Offset::Circle {
+                center: c2,
+                radius: r2,
+            },
+        ) => {
+            let d = dist(c1, c2);
+            if d < 1e-12 || d > r1 + r2 + TOUCH || d < (r1 - r2).abs() - TOUCH {
+                return Vec::new();
+            }
+            let a = (r1 * r1 - r2 * r2 + d * d) / (2.0 * d);
+            let h = (r1 * r1 - a * a).max(0.0).sqrt();
+            let u = unit(sub(c2, c1));
+            let m = add(c1, mul(u, a));
+            if h < TOUCH {
+                return vec![m];
+            }
+            vec![add(m, mul(left(u), h)), add(m, mul(left(u), -h))]
+        }
+    }
+}
+
+/// The crossing of two offset paths nearest to `near`.
+fn crossing_near(a: Offset, b: Offset, near: P2) -> Option<P2> {
+    crossings(a, b)
+        .into_iter()
+        .min_by(|p, q| dist(*p, near).total_cmp(&dist(*q, near)))
+}
+
+/// Start-up and cancel types (Fanuc parameter SUP, No. 5003#0).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Type {
+    /// Type A: the vector at the start-up block's end is perpendicular to
+    /// the next block (at a cancel: at the end of the block before the
+    /// cancel, perpendicular to it).
+    A,
+    /// Type B: the corner is compensated on both sides: the intersection,
+    /// or at an outside corner under 90° a vector perpendicular to each
+    /// block.
+    B,
+}
+
+/// What the tool does at an outside corner in offset mode.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Outside {
+    /// Fanuc: the intersection at 90° or more, the extra vectors under 90°.
+    Vectors,
+    /// An arc of the compensation radius about the corner (as G39 makes
+    /// one; Haas setting 58 = YASNAC).
+    Arc,
+}
+
+/// Which rule makes the corner between two blocks.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Rule {
+    /// Both blocks in offset mode.
+    Offset(Outside),
+    /// The first block starts compensation up.
+    StartUp(Type),
+    /// The second block cancels compensation.
+    Cancel(Type),
+    /// The corner is not known (no move in the plane follows within the
+    /// blocks the control reads, the program ends, a G39 or a return
+    /// follows): the vector is perpendicular to the first block at its end.
+    Perpendicular,
+}
+
+/// What kind of corner the tool went around, for the sentence.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// The paths meet tangentially (or go straight on).
+    Tangent,
+    /// An inside corner: the intersection of the offset paths.
+    Inside,
+    /// An outside corner of 90° or more: the intersection.
+    Obtuse,
+    /// An outside corner under 90°: the extra vectors (or, with type B at a
+    /// start-up or cancel, a vector perpendicular to each block).
+    Acute,
+    /// An outside corner gone around on an arc about it.
+    Rounded,
+    /// The vector perpendicular to the first block at its end.
+    Perpendicular,
+    /// Type A start-up: the vector perpendicular to the next block at its
+    /// start.
+    NextPerpendicular,
+    /// A change of side (G41↔G42): the intersection of the two offsets.
+    SideChange,
+    /// A change of side whose offsets do not meet: a vector on each side.
+    SideChangeApart,
+}
+
+/// One piece of the tool centre's way through a corner.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Step {
+    /// A straight move to this point.
+    Line(P2),
+    /// An arc about `center` to `to`.
+    Arc {
+        /// End point.
+        to: P2,
+        /// Centre (the corner).
+        center: P2,
+        /// Counter-clockwise.
+        ccw: bool,
+    },
+}
+
+impl Step {
+    /// Where the step ends.
+    pub fn end(&self) -> P2 {
+        match *self {
+            Step::Line(p) | Step::Arc { to: p, .. } => p,
+        }
+    }
+}
+
+/// The tool centre's way through the junction of two blocks: the first
+/// step ends the first block's own move (on its offset path), the others
+/// are moves the first block adds; the last ends where the second block's
+/// move starts.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Corner {
+    /// The steps, one to four.
+    pub steps: Vec<Step>,
+    /// What kind of corner it is.
+    pub kind: Kind,
+    /// The angle of the corner on the workpiece side (degrees, as the
+    /// manual's α: 180 on a straight or tangent path, under 180 outside,
+    /// over 180 inside).
+    pub alpha: f64,
+}
+
+impl Corner {
+    /// Where the tool centre stands after the corner.
+    pub fn end(&self) -> P2 {
+        self.steps.last().map_or([0.0, 0.0], Step::end)
+    }
+
+    fn points(kind: Kind, alpha: f64, points: &[P2]) -> Corner {
+        Corner {
+            steps: points.iter().map(|p| Step::Line(*p)).collect(),
+            kind,
+            alpha,
+        }
+    }
+}
+
+/// No intersection where the rule needs one (Fanuc PS0033).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct NoIntersection;
+
+/// The corner between `prev` and `next` (`next` starting where `prev`
+/// ends), `o1` the offset of `prev` and `o2` the offset `next` asks for
+/// (different signs: a change of side), by `rule` (behaviour 16.4–16.11).
+pub fn corner(
+    prev: &Path,
+    next: &Path,
+    o1: f64,
+    o2: f64,
+    rule: Rule,
+) -> Result<Corner, NoIntersection> {
+    let p = prev.end();
+    let q = next.start();
+    let t1 = prev.end_tangent();
+    let t2 = next.start_tangent();
+    let n1 = left(t1);
+    let n2 = left(t2);
+    let turn = cross(t1, t2).atan2(dot(t1, t2));
+    let o = o1;
+    let inside = o * turn > 0.0;
+    // The workpiece-side angle α of the manual's figures.
+    let alpha = if inside {
+        180.0 + turn.abs().to_degrees()
+    } else {
+        180.0 - turn.abs().to_degrees()
+    };
+    let end1 = add(p, mul(n1, o));
+    let start2 = add(q, mul(n2, o));
+    let near = mul(add(end1, start2), 0.5);
+    let meet = |o2: f64| crossing_near(prev.offset(o), next.offset(o2), near);
+    let tangent = turn.abs() < TANGENT;
+    match rule {
+        Rule::Perpendicular => Ok(Corner::points(Kind::Perpendicular, alpha, &[end1])),
+        Rule::StartUp(Type::A) => Ok(Corner::points(Kind::NextPerpendicular, alpha, &[start2])),
+        Rule::StartUp(Type::B) | Rule::Cancel(Type::B) => {
+            if tangent {
+                return Ok(Corner::points(Kind::Tangent, alpha, &[end1]));
+            }
+            if inside || turn.abs() <= std::f64::consts::FRAC_PI_2 {
+                let kind = if inside { Kind::Inside } else { Kind::Obtuse };
+                let x = meet(o).ok_or(NoIntersection)?;
+                return Ok(Corner::points(kind, alpha, &[x]));
+            }
+            Ok(Corner::points(Kind::Acute, alpha, &[end1, start2]))
+        }
+        Rule::Cancel(Type::A) => Ok(Corner::points(Kind::Perpendicular, alpha, &[end1])),
+        Rule::Offset(outside) => {
+            if o1 * o2 < 0.0 {
+                // A change of side: no inside or outside, the intersection
+                // of the two offsets, or a vector on each side.
+                let start2 = add(q, mul(n2, o2));
+                let near = mul(add(end1, start2), 0.5);
+                return Ok(
+                    match crossing_near(prev.offset(o1), next.offset(o2), near) {
+                        Some(x) => Corner::points(Kind::SideChange, alpha, &[x]),
+                        None => Corner::points(Kind::SideChangeApart, alpha, &[end1, start2]),
+                    },
+                );
+            }
+            if tangent {
+                return Ok(Corner::points(Kind::Tangent, alpha, &[end1]));
+            }
+            if inside {
+                let x = meet(o).ok_or(NoIntersection)?;
+                return Ok(Corner::points(Kind::Inside, alpha, &[x]));
+            }
+            if outside == Outside::Arc {
+                // About the corner, the way the tool side turns: clockwise
+                // with the tool on the left.
+                let mut steps = Vec::with_capacity(2);
+                if dist(end1, start2) > TOUCH {
+                    steps.push(Step::Line(end1));
+                    steps.push(Step::Arc {
+                        to: start2,
+                        center: p,
+                        ccw: o < 0.0,
+                    });
+                } else {
+                    steps.push(Step::Line(end1));
+                }
+                return Ok(Corner {
+                    steps,
+                    kind: Kind::Rounded,
+                    alpha,
+                });
+            }
+            if turn.abs() <= std::f64::consts::FRAC_PI_2
+                && let Some(x) = meet(o)
+            {
+                return Ok(Corner::points(Kind::Obtuse, alpha, &[x]));
+            }
+            // Under 90° (or offset arcs that do not meet): the vector of
+            // the first block at its end stretched by the radius along its
+            // direction, and the second block's pulled back along its own,
+            // so the tool stays the radius off the corner point.
+            let r = o.abs();
+            let v2 = add(end1, mul(t1, r));
+            let v3 = add(start2, mul(t2, -r));
+            let mut points = Vec::with_capacity(4);
+            if prev.is_arc() {
+                points.push(end1);
+            }
+            points.push(v2);
+            points.push(v3);
+            if next.is_arc() {
+                points.push(start2);
+            }
+            Ok(Corner::points(Kind::Acute, alpha, &points))
+        }
+    }
+}
+
+/// True when a straight block's offset path runs against its programmed
+/// direction (Fanuc's interference criterion: directions 90° to 270°
+/// apart).
+pub fn line_reverses(programmed: (P2, P2), actual: (P2, P2)) -> bool {
+    let d = sub(programmed.1, programmed.0);
+    let a = sub(actual.1, actual.0);
+    len(d) > 0.0 && len(a) > 0.0 && dot(d, a) < 0.0
+}
+
+/// The signed sweep (radians, counter-clockwise positive) from `from` to
+/// `to` about `center` in the direction `ccw`; a whole turn when they
+/// coincide.
+pub fn sweep(from: P2, to: P2, center: P2, ccw: bool) -> f64 {
+    use std::f64::consts::TAU;
+    let a0 = (from[1] - center[1]).atan2(from[0] - center[0]);
+    let a1 = (to[1] - center[1]).atan2(to[0] - center[0]);
+    if dist(from, to) < 1e-9 {
+        return if ccw { TAU } else { -TAU };
+    }
+    if ccw {
+        (a1 - a0).rem_euclid(TAU)
+    } else {
+        -(a0 - a1).rem_euclid(TAU)
+    }
+}
+
+/// True when an arc block's offset path interferes (Fanuc's criteria): the
+/// tool does not fit inside the arc (the offset radius is zero or less, the
+/// tool centre would run the other way round), or the offset arc's sweep
+/// differs from the programmed one by more than 180° (its ends crossed
+/// over).
+pub fn arc_interferes(programmed_sweep: f64, offset_sweep: f64, offset_radius: f64) -> bool {
+    offset_radius <= 0.0 || (programmed_sweep - offset_sweep).abs() > std::f64::consts::PI
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn close(a: P2, b: P2) -> bool {
+        dist(a, b) < 1e-9
+    }
+
+    #[track_caller]
+    fn points(c: &Corner, want: &[P2]) {
+        let got: Vec<P2> = c.steps.iter().map(Step::end).collect();
+        assert_eq!(got.len(), want.len(), "{c:?}");
+        for (g, w) in got.iter().zip(want) {
+            assert!(close(*g, *w), "got {got:?}, want {want:?}");
+        }
+    }
+
+    const X: Path = Path::Line {
+        from: [0.0, 0.0],
+        to: [50.0, 0.0],
+    };
+
+    #[test]
+    fn behaviour16_5_inside_corner_is_the_intersection_of_the_offset_lines() {
+        // +X to (50,0) then +Y, G41 r 5: left of +X is +Y, left of +Y is
+        // -X; the offset lines y = 5 and x = 45 meet at (45, 5).
+        let up = Path::Line {
+            from: [50.0, 0.0],
+            to: [50.0, 30.0],
+        };
+        let c = corner(&X, &up, 5.0, 5.0, Rule::Offset(Outside::Vectors)).unwrap();
+        assert_eq!(c.kind, Kind::Inside);
+        assert!((c.alpha - 270.0).abs() < 1e-9);
+        points(&c, &[[45.0, 5.0]]);
+    }
+
+    #[test]
+    fn behaviour16_6_outside_obtuse_corner_is_the_intersection() {
+        // +X then a turn of 45° to the right, G41 r 5: the offset lines
+        // y = 5 and the line through (50,0) + 5·(√½, √½) along (√½, -√½)
+        // meet at x = 50 + 5·tan(22.5°) = 52.0711, y = 5 (α = 135°).
+        let s = std::f64::consts::FRAC_1_SQRT_2;
+        let down = Path::Line {
+            from: [50.0, 0.0],
+            to: [50.0 + 10.0 * s, -10.0 * s],
+        };
+        let c = corner(&X, &down, 5.0, 5.0, Rule::Offset(Outside::Vectors)).unwrap();
+        assert_eq!(c.kind, Kind::Obtuse);
+        assert!((c.alpha - 135.0).abs() < 1e-9);
+        let t = (std::f64::consts::PI / 8.0).tan();
+        points(&c, &[[50.0 + 5.0 * t, 5.0]]);
+    }
+
+    #[test]
+    fn behaviour16_7_outside_acute_corner_takes_the_extra_vectors() {
+        // +X then back at 135° to the right (α = 45°), G41 r 5: the first
+        // vector (0,5) stretched by 5 along +X ends at (55, 5); the second,
+        // left of (-√½,-√½) = (√½,-√½)·5, pulled back by 5 along
+        // (-√½,-√½): (50 + 5√½ + 5√½, -5√½ + 5√½) = (57.071, 0).
+        let s = std::f64::consts::FRAC_1_SQRT_2;
+        let back = Path::Line {
+            from: [50.0, 0.0],
+            to: [50.0 - 10.0 * s, -10.0 * s],
+        };
+        let c = corner(&X, &back, 5.0, 5.0, Rule::Offset(Outside::Vectors)).unwrap();
+        assert_eq!(c.kind, Kind::Acute);
+        assert!((c.alpha - 45.0).abs() < 1e-9);
+        points(&c, &[[55.0, 5.0], [50.0 + 10.0 * s, 0.0]]);
+    }
+
+    #[test]
+    fn behaviour16_3_start_up_type_a_is_perpendicular_to_the_next_block() {
+        let up = Path::Line {
+            from: [50.0, 0.0],
+            to: [50.0, 30.0],
+        };
+        let c = corner(&X, &up, 5.0, 5.0, Rule::StartUp(Type::A)).unwrap();
+        points(&c, &[[45.0, 0.0]]);
+        // Type B at the same inside corner: the intersection (45, 5).
+        let c = corner(&X, &up, 5.0, 5.0, Rule::StartUp(Type::B)).unwrap();
+        points(&c, &[[45.0, 5.0]]);
+    }
+
+    #[test]
+    fn behaviour16_8_change_of_side_meets_at_the_intersection_or_apart() {
+        // G41 along +X, then G42 along +Y: y = 5 and x = 55 meet at (55, 5).
+        let up = Path::Line {
+            from: [50.0, 0.0],
+            to: [50.0, 30.0],
+        };
+        let c = corner(&X, &up, 5.0, -5.0, Rule::Offset(Outside::Vectors)).unwrap();
+        assert_eq!(c.kind, Kind::SideChange);
+        points(&c, &[[55.0, 5.0]]);
+        // Straight on: y = 5 and y = -5 never meet: (50, 5) then (50, -5).
+        let on = Path::Line {
+            from: [50.0, 0.0],
+            to: [80.0, 0.0],
+        };
+        let c = corner(&X, &on, 5.0, -5.0, Rule::Offset(Outside::Vectors)).unwrap();
+        assert_eq!(c.kind, Kind::SideChangeApart);
+        points(&c, &[[50.0, 5.0], [50.0, -5.0]]);
+    }
+
+    #[test]
+    fn line_then_tangent_arc_meets_at_the_common_offset_point() {
+        // +X to (50,0), then G03 about (50,20): tangent; G41 r 5 puts the
+        // tool inside the arc (radius 15) at (50, 5).
+        let arc = Path::Arc {
+            from: [50.0, 0.0],
+            to: [70.0, 20.0],
+            center: [50.0, 20.0],
+            ccw: true,
+        };
+        let c = corner(&X, &arc, 5.0, 5.0, Rule::Offset(Outside::Vectors)).unwrap();
+        assert_eq!(c.kind, Kind::Tangent);
+        points(&c, &[[50.0, 5.0]]);
+        assert_eq!(arc.offset_radius(5.0), Some(15.0));
+        assert_eq!(arc.offset_radius(-5.0), Some(25.0));
+    }
+
+    #[test]
+    fn behaviour16_12_inside_corner_without_intersection_is_an_error() {
+        // +X to (50,0), then a G03 of radius 2 about (48,0) turning left
+        // (up at its start): G41 r 5 is inside both. The offset line is
+        // y = 5, the offset circle has radius |2 - 5| = 3 about (48, 0):
+        // 5 from the centre, 3 of radius, no intersection (PS0033).
+        let arc = Path::Arc {
+            from: [50.0, 0.0],
+            to: [46.0, 0.0],
+            center: [48.0, 0.0],
+            ccw: true,
+        };
+        assert_eq!(
+            corner(&X, &arc, 5.0, 5.0, Rule::Offset(Outside::Vectors)),
+            Err(NoIntersection)
+        );
+        // With r 1 the circle (radius 1) and y = 1 touch at (48, 1).
+        let c = corner(&X, &arc, 1.0, 1.0, Rule::Offset(Outside::Vectors)).unwrap();
+        assert_eq!(c.kind, Kind::Inside);
+        points(&c, &[[48.0, 1.0]]);
+    }
+
+    #[test]
+    fn interference_criteria() {
+        assert!(line_reverses(
+            ([0.0, 0.0], [10.0, 0.0]),
+            ([12.0, 5.0], [8.0, 5.0])
+        ));
+        assert!(!line_reverses(
+            ([0.0, 0.0], [10.0, 0.0]),
+            ([2.0, 5.0], [8.0, 5.0])
+        ));
+        assert!(arc_interferes(1.0, 1.0, -0.5));
+        assert!(arc_interferes(0.5, 6.0, 3.0));
+        assert!(!arc_interferes(1.0, 1.2, 3.0));
+        let s = sweep([1.0, 0.0], [0.0, 1.0], [0.0, 0.0], true);
+        assert!((s - std::f64::consts::FRAC_PI_2).abs() < 1e-12);
+        let s = sweep([1.0, 0.0], [0.0, 1.0], [0.0, 0.0], false);
+        assert!((s + 1.5 * std::f64::consts::PI).abs() < 1e-12);
+    }
+}
