@@ -39,7 +39,6 @@ enum Next {
         path: Path,
         /// The offset it asks for (0: it cancels).
         offset: f64,
-        line: u32,
     },
     /// The corner is not known: the vector ends perpendicular to the block.
     Unknown(Why),
@@ -128,6 +127,8 @@ impl Machine {
         let limit = usize::from(self.setup.settings.cutter_blocks_without_motion());
         let mut probe = self.clone();
         probe.reading_ahead = true;
+        // The copy wants programmed moves: no vector to solve arcs with.
+        probe.state.cutter.vector = [0.0; 3];
         probe.corner_cut = false;
         probe.corner_end = None;
         probe.moves_left = usize::MAX;
@@ -162,9 +163,8 @@ impl Machine {
             let mode = probe.state.cutter.mode;
             let radius = probe.cutter_radius();
             let offset = probe.cutter_offset(mode, radius);
-            let line = next.span.line;
             if let Some(path) = scratch.moves.iter().find_map(|m| self.move_path(m, shift)) {
-                return Next::Move { path, offset, line };
+                return Next::Move { path, offset };
             }
             if matches!(
                 codes.cutter(),
@@ -177,7 +177,7 @@ impl Machine {
                     from: at,
                     to: [at[0] + d[0], at[1] + d[1]],
                 };
-                return Next::Move { path, offset, line };
+                return Next::Move { path, offset };
             }
             let was_on = before.mode != CutterCompensation::Cancel && radius_before != 0.0;
             if offset == 0.0
@@ -319,7 +319,22 @@ impl Machine {
         let start = self.mark();
         let moves_before = out.moves.len();
         let g28 = b.codes().non_modal() == Some(NonModal::ReferenceReturn);
-        self.mill_general(b, out)?;
+        // The block runs with the compensation's vector off, so that its
+        // arcs are solved on the programmed circle (carried by the other
+        // offsets), then its moves are carried by the vector as it stood;
+        // the corner moves their ends below.
+        let saved = before.vector;
+        self.state.cutter.vector = [0.0; 3];
+        let ran = self.mill_general(b, out);
+        self.state.cutter.vector = saved;
+        for m in &mut out.moves[moves_before..] {
+            m.from = add3(m.from, saved);
+            m.to = add3(m.to, saved);
+            if let Some(a) = &mut m.arc {
+                a.center = add3(a.center, saved);
+            }
+        }
+        ran?;
         let mode = self.state.cutter.mode;
         let radius = self.cutter_radius();
         self.state.cutter.d = self.state.position.d;
