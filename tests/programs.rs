@@ -151,6 +151,79 @@ fn contour_with_g45_to_g48_and_a_quarter_circle() {
 }
 
 #[test]
+fn plate_and_pocket_with_cutter_compensation_c() {
+    // Behaviour 16: D01 = 5 round the plate with G41 (climb, outside),
+    // D02 = 4 inside the pocket; H03 = 100 lifts the actual Z by 100.
+    let f = load("cutter");
+    // N50: start-up type A from (-20, -20) to (0, -10), the next move
+    // +Y: 5 left of +Y, (-5, -10).
+    at(&f.n(50).actual, -5.0, Some(-10.0), 97.0);
+    // N70: R10 clockwise about (10, 40), tangent both ends: the tool runs
+    // outside it on radius 15, from (-5, 40) to (10, 55).
+    let b = f.n(70);
+    let arc = f.run.moves[b.first_move as usize].arc.unwrap();
+    assert!((arc.radius - 15.0).abs() < 1e-9);
+    common::same(arc.center, [10.0, 40.0, 97.0]);
+    at(&b.actual, 10.0, Some(55.0), 97.0);
+    // N80: a right turn of atan(5/30) = 9.46° at (60, 50): the offset
+    // lines meet 5·tan(4.73°) = 0.414 past it on y = 55.
+    let turn = (5.0f64 / 30.0).atan();
+    at(
+        &f.n(80).actual,
+        60.0 + 5.0 * (turn / 2.0).tan(),
+        Some(55.0),
+        97.0,
+    );
+    // N90: at (90, 45) the path turns 114.2° to the right (α = 65.8°):
+    // the extra vectors, t1 = (30, -5)/30.414, t2 = (-10, -15)/18.028:
+    // (90, 45) + 5·left(t1) + 5·t1, then (90, 45) + 5·left(t2) - 5·t2.
+    let b = f.n(90);
+    let unit = |x: f64, y: f64| [x / x.hypot(y), y / x.hypot(y)];
+    let (t1, t2) = (unit(30.0, -5.0), unit(-10.0, -15.0));
+    let moves = &f.run.moves[b.first_move as usize..(b.first_move + b.move_count) as usize];
+    assert_eq!(moves.len(), 2);
+    common::same(
+        moves[0].to,
+        [
+            90.0 - 5.0 * t1[1] + 5.0 * t1[0],
+            45.0 + 5.0 * t1[0] + 5.0 * t1[1],
+            97.0,
+        ],
+    );
+    common::same(
+        moves[1].to,
+        [
+            90.0 - 5.0 * t2[1] - 5.0 * t2[0],
+            45.0 + 5.0 * t2[0] - 5.0 * t2[1],
+            97.0,
+        ],
+    );
+    // N120 G39: about (80, 10) from (85, 10) clockwise to 5 left of the
+    // next move, (80, 10) + 5·(0.316, -0.949).
+    let b = f.n(120);
+    let m = &f.run.moves[b.first_move as usize];
+    assert_eq!(m.kind, MoveKind::ArcCw);
+    let n = unit(10.0, -30.0);
+    at(&b.actual, 80.0 + 5.0 * n[0], Some(10.0 + 5.0 * n[1]), 97.0);
+    // N150, N160: the notch's inside corners, 5 in from both walls.
+    at(&f.n(150).actual, 30.0, Some(3.0), 97.0);
+    at(&f.n(160).actual, 25.0, Some(3.0), 97.0);
+    // N180 before the cancel: perpendicular, (0, -5); N190 on the path.
+    at(&f.n(180).actual, 0.0, Some(-5.0), 97.0);
+    at(&f.n(190).actual, -20.0, Some(-20.0), 97.0);
+    // N230: start-up to 4 left of the circle's start (its tangent +Y):
+    // (48, 25); N240 the full circle on radius 12 - 4 = 8.
+    at(&f.n(230).actual, 48.0, Some(25.0), 98.0);
+    let b = f.n(240);
+    let arc = f.run.moves[b.first_move as usize].arc.unwrap();
+    assert!((arc.radius - 8.0).abs() < 1e-9);
+    assert!((arc.sweep - std::f64::consts::TAU).abs() < 1e-9);
+    at(&f.n(250).actual, 40.0, Some(25.0), 98.0);
+    assert_eq!(f.n(250).cutter.unwrap().phase, "cancelling");
+    insta::assert_snapshot!(f.digest());
+}
+
+#[test]
 fn lathe_shaft_with_t_offsets_g50_and_a_taper_correction() {
     let f = load("lathe_taper");
     at(&f.n(15).actual, 200.4, None, 149.8);

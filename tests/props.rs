@@ -94,7 +94,7 @@ proptest! {
         }
     }
 
-    /// Behaviour 2.4: actual = programmed + the reported vectors, after every block;
+    /// Behaviour 2.4, 16.13: actual = programmed + the reported vectors, after every block;
     /// and the tool never jumps: each move starts where the last one ended.
     #[test]
     fn actual_minus_programmed_is_the_reported_vectors(
@@ -117,6 +117,9 @@ proptest! {
                 *w += v;
             }
             want[2] += st.length.vector;
+            for (w, v) in want.iter_mut().zip(st.cutter.vector) {
+                *w += v;
+            }
             same(st.actual, want);
         }
         for w in r.moves.windows(2) {
@@ -235,6 +238,9 @@ fn mill_block() -> impl Strategy<Value = String> {
         amount().prop_map(|z| format!("G90 G00 G43 Z{} H02", mm(z))),
         Just("G91 G28 Z0".to_string()),
         Just("G90 G00 Z20.\nG98 G81 X5. Y5. Z-3. R2. F100.\nG80".to_string()),
+        // Cutter compensation (behaviour 16): its vector is reported too.
+        prop_oneof![Just("G41 D01"), Just("G42 D01"), Just("G40"), Just("G39")]
+            .prop_map(String::from),
     ]
 }
 

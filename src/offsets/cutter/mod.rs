@@ -204,14 +204,17 @@ pub fn corner_note(w: &Words, corner: &Corner, prev: &Path, next: &Path, o2: f64
             angle(corner.alpha),
             offsets(prev, next)
         ),
-        Kind::Acute => format!(
-            "{name}: outside corner ({}, under 90°): the tool goes {} past the corner along this block, across, and onto the next block's offset path {} before its start ({} moves; the manual's extra vectors keep it {} off the corner point)",
-            angle(corner.alpha),
-            w.r(),
-            w.r(),
-            corner.steps.len() - 1,
-            w.r()
-        ),
+        Kind::Acute => {
+            let more = corner.steps.len() - 1;
+            format!(
+                "{name}: outside corner ({}, under 90°): the tool goes {} past the corner along this block, across, and onto the next block's offset path {} before its start ({more} more move{}: the manual's extra vectors keep it {} off the corner point)",
+                angle(corner.alpha),
+                w.r(),
+                w.r(),
+                if more == 1 { "" } else { "s" },
+                w.r()
+            )
+        }
         Kind::Rounded => format!(
             "{name}: outside corner ({}): the tool goes round it on an arc of radius {} (setting cutter_outside_corner = arc)",
             angle(corner.alpha),
