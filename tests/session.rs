@@ -549,3 +549,31 @@ fn a_long_run_reports_growing_fractions_and_the_same_result() {
     assert_eq!(with["summary"], without["summary"]);
     assert_eq!(with["summary"]["blocks"], 220_000);
 }
+
+#[test]
+fn behaviour16_13_the_cutter_is_drawn_round_the_tool_while_g41_is_on() {
+    // D01 = 5 round a square with G41: at block 2 (offset mode) the scene
+    // has the cutter, radius 5 in the XY view, and the frame draws its
+    // circle (5 mm at the frame's scale) round the tool marker; after G40
+    // there is none.
+    let mut s = Session::new();
+    let text =
+        "G00 X-20. Y-20.\nG01 G41 D01 X0 Y0 F100.\nY40.\nX60.\nY0\nX0\nG40 X-20. Y-20.\nM30\n";
+    run(&mut s, text, Some(r#"{"offsets":{"01":5.0}}"#));
+    s.set_step(2);
+    let cutter = s.scene().cutter.expect("a cutter at a G41 block");
+    assert_eq!(cutter.radius, 5.0);
+    assert_eq!(cutter.plane, render::Plane::Xy);
+    assert_eq!(s.scene().marker.unwrap()[0], [-5.0, 45.0, 0.0]);
+    let mut svg = SvgSurface::new();
+    let frame = render::draw_scene(&mut svg, s.toolpath(), s.scene(), 640.0, 480.0);
+    let r = format!("{:.2}", 5.0 * frame.transform.scale);
+    let r = r.trim_end_matches('0').trim_end_matches('.');
+    let drawn = svg.finish(640.0, 480.0);
+    assert!(
+        drawn.contains(&format!("r=\"{r}\"")),
+        "no circle of radius {r}"
+    );
+    s.set_step(6);
+    assert_eq!(s.scene().cutter, None);
+}

@@ -401,7 +401,7 @@ fn draw_scene_as(
         scene::draw_arrows(surface, &frame, toolpath, split);
     }
     if let Some(marker) = scene.marker {
-        scene::draw_marker(surface, &frame, marker);
+        scene::draw_marker(surface, &frame, marker, scene.cutter);
     }
     draw_scale_bar(surface, &frame, toolpath);
     draw_legend(surface, &frame, toolpath);

@@ -21,6 +21,16 @@ const MIN_ARROW_PX: f64 = 2.5;
 /// At most this many arrows are drawn (a huge program would bury its path).
 const MAX_ARROWS: usize = 20_000;
 
+/// The cutter G41/G42 offsets the tool by: its radius (the toolpath's
+/// units) and the view plane of the plane it compensates in.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Cutter {
+    /// |register D| in the toolpath's units.
+    pub radius: f64,
+    /// The view of the compensation plane (G17 XY, G18 XZ, G19 YZ).
+    pub plane: Plane,
+}
+
 /// The view state of a session.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Scene {
@@ -36,6 +46,9 @@ pub struct Scene {
     /// Where the tool is after the current block: actual and programmed
     /// position (x, y, z in the toolpath's units).
     pub marker: Option<[[f64; 3]; 2]>,
+    /// The cutter of cutter radius compensation at the current block
+    /// (behaviour 16.13), drawn round the tool marker in its plane.
+    pub cutter: Option<Cutter>,
     /// Colours.
     pub theme: &'static Theme,
 }
@@ -48,6 +61,7 @@ impl Default for Scene {
             pan: [0.0, 0.0],
             step: None,
             marker: None,
+            cutter: None,
             theme: &LIGHT,
         }
     }
@@ -245,14 +259,31 @@ pub fn tool_symbol(s: &mut impl Surface, t: &Theme, (x, y): (f64, f64)) {
 }
 
 /// The tool marker at the current block's actual end point, and a ring at
-/// its programmed end point.
-pub fn draw_marker(s: &mut impl Surface, f: &Frame, [actual, programmed]: [[f64; 3]; 2]) {
+/// its programmed end point; with cutter radius compensation, the cutter's
+/// circle round the marker when the view is its plane.
+pub fn draw_marker(
+    s: &mut impl Surface,
+    f: &Frame,
+    [actual, programmed]: [[f64; 3]; 2],
+    cutter: Option<Cutter>,
+) {
     let screen = |q: &[f64; 3]| {
         let (u, v) = f.plane.project(q);
         f.transform.to_screen(u, v)
     };
     let (a, p) = (screen(&actual), screen(&programmed));
     s.begin_group("tool");
+    if let Some(c) = cutter.filter(|c| c.plane == f.plane) {
+        let r = c.radius * f.transform.scale;
+        if r.is_finite() && r > 0.5 && a.0.is_finite() && a.1.is_finite() {
+            let edge = Stroke {
+                color: f.theme.tool,
+                width: 1.5,
+                dash: &[],
+            };
+            s.circle(a.0, a.1, r, None, Some(&edge));
+        }
+    }
     if p.0.is_finite() && p.1.is_finite() {
         let ring = Stroke {
             color: f.theme.label,

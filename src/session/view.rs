@@ -7,6 +7,7 @@ use std::hash::{DefaultHasher, Hash, Hasher};
 
 use serde::{Deserialize, Serialize};
 
+use crate::offsets::cutter::Phase;
 use crate::render::scene::{self, Scene};
 use crate::render::{Frame, Plane, Theme};
 use crate::report::{BlockReport, Run};
@@ -149,15 +150,31 @@ impl View {
     /// The tool at the end of the current block: where its last move
     /// drawn ends or, before any move, where the block leaves it.
     fn update_marker(&mut self, run: &Showing<'_>) {
-        self.scene.marker = self.scene.step.and_then(|step| {
+        let k = 1.0 / run.run.units.mm();
+        let report = self.scene.step.and_then(|step| run.report(step));
+        self.scene.marker = self.scene.step.and_then(|_| {
             let drawn = self.scene.drawn_moves(run.toolpath);
             scene::tool_position(run.toolpath, drawn).or_else(|| {
-                let b = run.report(step)?;
-                let k = 1.0 / run.run.units.mm();
+                let b = report.as_ref()?;
                 Some([
                     b.state.actual.map(|v| v * k),
                     b.state.programmed.map(|v| v * k),
                 ])
+            })
+        });
+        // The cutter's circle while G41/G42 is the mode or its vector is on
+        // (behaviour 16.13).
+        self.scene.cutter = report.and_then(|b| {
+            let c = b.state.cutter;
+            let on = c.mode != crate::syntax::codes::CutterCompensation::Cancel
+                || matches!(c.phase, Phase::StartUp | Phase::Offset);
+            (b.state.machine == MachineKind::Mill && on && c.radius != 0.0).then(|| scene::Cutter {
+                radius: c.radius.abs() * k,
+                plane: match b.state.modal.plane {
+                    crate::machine::modal::Plane::XY => Plane::Xy,
+                    crate::machine::modal::Plane::ZX => Plane::Xz,
+                    crate::machine::modal::Plane::YZ => Plane::Yz,
+                },
             })
         });
     }

@@ -61,6 +61,17 @@ export function stateRows(b) {
     rows.push(['Tool position (D)', d, 'position']);
     rows.push(['Offset distance from the programmed end point', vector(p.vector, u), 'vector']);
   }
+  if (b.cutter) {
+    // Cutter radius compensation C (behaviour 16): the mode, D and its
+    // radius, the block's role and the offset vector at its end.
+    const c = b.cutter;
+    const role = {
+      cancel: 'cancel mode', start_up: 'start-up', offset: 'offset mode', cancelling: 'cancel (this block)',
+    }[c.phase] ?? c.phase;
+    const d = c.d > 0 ? `D${two(c.d)} = ${fmt(c.radius, u)}` : 'D00 (none)';
+    rows.push(['Cutter radius (G41/G42)', `${c.mode} · ${d} · ${role}`, 'cutter']);
+    rows.push(['Cutter offset vector', vector(c.vector, u), 'cutter-vector']);
+  }
   if (b.lathe_offset) {
     const t = b.lathe_offset;
     const reg = t.offset > 0
