@@ -1,0 +1,823 @@
+//! Coordinates and positioning (behaviour 13): the codes that say where a
+//! program's coordinates lie — G52 local coordinates, G54.1/G154 additional
+//! work systems, G92.1 preset, G53 machine coordinates — and, on the mill,
+//! the codes that transform what the words say — G51.1 mirror image, G51
+//! scaling, G68 rotation, G16 polar coordinates, G90.1/G91.1 arc centres —
+//! with the rotary axis words A, B, C, reported and not drawn. The
+//! geometry is [`super::frame`]'s; this file keeps the state and says what
+//! each block did.
+
+use super::frame::{self, Rotation, Scaling};
+use super::modal::{Distance, WorkSystem};
+use super::{AXES, Machine, Out};
+use crate::diag::Diagnostic;
+use crate::geometry::{Xyz, add, scale, show, sub};
+use crate::setup::{ExtendedWork, MachineKind, RotationAngle};
+use crate::syntax::codes::{
+    ArcCenter, Group, MAX_ADDITIONAL_WORK, MAX_HAAS_WORK, MirrorMode, NonModal, PolarMode,
+    RotationMode, ScalingMode, WorkCode,
+};
+use crate::syntax::{Address, Block, Word};
+
+/// The rotary axis words, in the order of [`super::BlockState::rotary`].
+const ROTARY: [Address; 3] = [Address::A, Address::B, Address::C];
+
+impl Machine {
+    // ----- where the coordinates lie --------------------------------------
+
+    /// The machine position of the zero of work system `work` (mm): its
+    /// row of the setup, machine zero when the setup leaves it out (behaviour
+    /// 13.3).
+    pub(super) fn work_zero(&self, work: WorkSystem) -> Xyz {
+        let unit = self.setup.units.mm();
+        let p = match work.index() {
+            Some(i) => self.setup.work_offsets.get(i),
+            None => match work {
+                WorkSystem::Additional(n) | WorkSystem::Haas(n) => self
+                    .setup
+                    .extended_work_offsets
+                    .get(&u16::from(n))
+                    .copied()
+                    .unwrap_or_default(),
+                _ => Default::default(),
+            },
+        };
+        scale(p.to_array(), unit)
+    }
+
+    /// The zero of the current coordinate system from its three parts: the
+    /// work system, the G92/G50 shift and the G52 local offset.
+    fn zero_now(&self) -> Xyz {
+        let c = &self.state.coords;
+        add(add(self.work_zero(self.state.modal.work), c.shift), c.local)
+    }
+
+    /// Moves the zero of the current coordinate system to `zero` (machine
+    /// coordinates) without moving the tool: its coordinates change.
+    pub(super) fn move_zero(&mut self, zero: Xyz) {
+        let delta = sub(self.state.coords.zero, zero);
+        self.state.programmed = add(self.state.programmed, delta);
+        if self.setup.machine == MachineKind::Lathe {
+            self.state.programmed[1] = 0.0;
+        }
+        self.state.coords.zero = zero;
+    }
+
+    /// G54–G59, G54.1 Pn, G154 Pn (behaviour 2.7, 13.3): the tool stays; its
+    /// coordinates change to the new system, whose zero carries the G92
+    /// shift and the G52 local offset along.
+    pub(super) fn select_work(&mut self, work: WorkSystem) {
+        self.state.modal.work = work;
+        let zero = self.zero_now();
+        self.move_zero(zero);
+    }
+
+    /// A group 14 code (behaviour 13.3): which system it names, with the
+    /// block's P for the additional ones, as setting
+    /// `extended_work_offsets` (7.21) says the control writes them.
+    pub(super) fn work_code(
+        &mut self,
+        b: &Block,
+        code: WorkCode,
+        out: &mut Out,
+    ) -> Result<(), Diagnostic> {
+        let setting = self.setup.settings.extended_work_offsets();
+        let span = b.code_span(Group::Work);
+        let p = b.get(Address::P);
+        let numbered = |max: u8, written: &str| -> Result<u8, Diagnostic> {
+            let Some(p) = p else {
+                return Err(self.error(
+                    "work-offset-number",
+                    span,
+                    format!("{written} needs P, the number of the work system (P1 to P{max})"),
+                ));
+            };
+            let n = p.int();
+            if n == 0 || n > u32::from(max) {
+                return Err(self.error(
+                    "work-offset-number",
+                    p.span,
+                    format!("{written} P{n}: the work systems are P1 to P{max}"),
+                ));
+            }
+            Ok(n as u8)
+        };
+        let foreign = |written: &str, native: &str| {
+            self.error(
+                "work-offset-code",
+                span,
+                format!(
+                    "{written} is not this control's code for additional work systems (setting extended_work_offsets = {}): write {native}",
+                    setting.as_str()
+                ),
+            )
+        };
+        let work = match (code, setting) {
+            (WorkCode::Standard(w), _) if p.is_none() => w,
+            (WorkCode::Standard(WorkSystem::G54), ExtendedWork::G54_1) => {
+                WorkSystem::Additional(numbered(MAX_ADDITIONAL_WORK, "G54 P")?)
+            }
+            (WorkCode::Standard(w), _) => {
+                return Err(self.error(
+                    "work-offset-number",
+                    p.map_or(span, |p| p.span),
+                    format!(
+                        "{} takes no P (Fanuc reads G54 Pn as G54.1 Pn; setting extended_work_offsets = {})",
+                        w.gcode(),
+                        setting.as_str()
+                    ),
+                ));
+            }
+            (WorkCode::Additional, ExtendedWork::G54_1) => {
+                WorkSystem::Additional(numbered(MAX_ADDITIONAL_WORK, "G54.1")?)
+            }
+            (WorkCode::Haas, ExtendedWork::G154) => {
+                WorkSystem::Haas(numbered(MAX_HAAS_WORK, "G154")?)
+            }
+            (WorkCode::Additional, ExtendedWork::G154) => return Err(foreign("G54.1", "G154 Pn")),
+            (WorkCode::Haas, ExtendedWork::G54_1) => return Err(foreign("G154", "G54.1 Pn")),
+        };
+        if let Some(p) = p.filter(|_| work.index().is_none()) {
+            self.p_is_the_work_systems(b, p)?;
+        }
+        self.refuse_in_transforms(b, span, work.gcode())?;
+        self.select_work(work);
+        if work.index().is_none() {
+            let z = self.state.coords.zero;
+            let set = self
+                .setup
+                .extended_work_offsets
+                .contains_key(&u16::from(match work {
+                    WorkSystem::Additional(n) | WorkSystem::Haas(n) => n,
+                    _ => 0,
+                }));
+            out.notes.push(format!(
+                "{}: zero at machine {}{}",
+                work.gcode(),
+                self.show_point(self.work_zero(work)),
+                if set {
+                    String::new()
+                } else {
+                    " (the setup leaves it out: machine zero)".to_string()
+                }
+            ));
+            let _ = z;
+        }
+        Ok(())
+    }
+
+    /// Refuses a block where the P of G54.1/G154 would be read by another
+    /// code too (a dwell, a canned cycle, G51's magnification).
+    fn p_is_the_work_systems(&self, b: &Block, p: &Word) -> Result<(), Diagnostic> {
+        let c = b.codes();
+        let other = if c.non_modal() == Some(NonModal::Dwell) {
+            Some("G04")
+        } else if c.scaling() == Some(ScalingMode::Start) {
+            Some("G51")
+        } else if c.cycle().is_some() || self.state.modal.cycle.is_some() {
+            Some("the canned cycle")
+        } else {
+            None
+        };
+        match other {
+            Some(other) => Err(self.error(
+                "p-conflict",
+                p.span,
+                format!("P numbers the work system here and is read by {other} too: write them in separate blocks"),
+            )),
+            None => Ok(()),
+        }
+    }
+
+    /// The codes Fanuc forbids while scaling, rotation or programmable mirror
+    /// image is on: reference returns (G27–G30) and the coordinate system codes
+    /// (G52–G59, G92) (behaviour 13.13).
+    pub(super) fn refuse_in_transforms(
+        &self,
+        b: &Block,
+        span: crate::diag::Span,
+        gcode: &str,
+    ) -> Result<(), Diagnostic> {
+        let t = &self.state.modal.transforms;
+        if t.is_identity() {
+            return Ok(());
+        }
+        let active: Vec<&str> = [
+            (t.mirror != [None; 3], "G51.1"),
+            (t.scaling.is_some(), "G51"),
+            (t.rotation.is_some(), "G68"),
+        ]
+        .iter()
+        .filter(|(on, _)| *on)
+        .map(|(_, g)| *g)
+        .collect();
+        let _ = b;
+        Err(self.error(
+            "code-in-transform",
+            span,
+            format!(
+                "{gcode} cannot be given while {} is on (Fanuc: reference returns and coordinate system codes only after the mirror image, scaling and rotation are cancelled)",
+                active.join(", ")
+            ),
+        ))
+    }
+
+    /// G52 (behaviour 13.2): the local coordinate system's zero at the
+    /// position the words give in the work system, on the named axes; `G52 X0
+    /// Y0` cancels it there. The tool does not move.
+    pub(super) fn g52(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+        let span = b.code_span(Group::NonModal);
+        self.refuse_in_transforms(b, span, "G52")?;
+        let lathe = self.setup.machine == MachineKind::Lathe;
+        for a in [Address::U, Address::W] {
+            if let Some(w) = b.get(a).filter(|_| lathe) {
+                return Err(self.error(
+                    "g52-words",
+                    w.span,
+                    "G52 takes the local zero as X and Z in the work system, not U or W",
+                ));
+            }
+        }
+        let mut named = false;
+        for (axis, (a, _)) in AXES.iter().enumerate() {
+            if let Some(v) = b.value(*a) {
+                named = true;
+                self.state.coords.local[axis] = self.mm(v);
+            }
+        }
+        if !named {
+            return Err(self.error(
+                "g52-without-axis",
+                span,
+                "G52 needs the axes of the local zero (G52 X0 Y0 cancels it)",
+            ));
+        }
+        if lathe {
+            self.state.coords.local[1] = 0.0;
+        }
+        let zero = self.zero_now();
+        self.move_zero(zero);
+        let local = self.state.coords.local;
+        out.notes.push(if local == [0.0; 3] {
+            format!(
+                "G52: no local offset: coordinates are {}'s again",
+                self.state.modal.work.gcode()
+            )
+        } else {
+            format!(
+                "G52: local zero at {} of {} (machine {})",
+                self.show_point(local),
+                self.state.modal.work.gcode(),
+                self.show_point(self.state.coords.zero)
+            )
+        });
+        Ok(())
+    }
+
+    /// G92.1 (mill, behaviour 13.4): the G92 shift of the named axes undone,
+    /// each word 0 (Fanuc's workpiece coordinate system preset, `G92.1 X0`).
+    pub(super) fn g92_1(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+        let span = b.code_span(Group::NonModal);
+        self.refuse_in_transforms(b, span, "G92.1")?;
+        let mut named = Vec::new();
+        for (axis, (a, letter)) in AXES.iter().enumerate() {
+            let Some(w) = b.get(*a) else { continue };
+            if w.value != 0.0 {
+                return Err(self.error(
+                    "g92-1-value",
+                    w.span,
+                    format!("G92.1 presets the axes it names: write {letter}0 (Fanuc: G92.1 IP 0)"),
+                ));
+            }
+            self.state.coords.shift[axis] = 0.0;
+            named.push(letter.to_string());
+        }
+        if named.is_empty() {
+            return Err(self.error(
+                "g92-1-without-axis",
+                span,
+                "G92.1 needs the axes whose G92 shift it undoes, each 0 (G92.1 X0 Y0 Z0)",
+            ));
+        }
+        let zero = self.zero_now();
+        self.move_zero(zero);
+        out.notes.push(format!(
+            "G92.1: the G92 shift on {} is undone; zero at machine {}",
+            named.join(", "),
+            self.show_point(self.state.coords.zero)
+        ));
+        Ok(())
+    }
+
+    /// G53 (behaviour 13.1): the named axes go at rapid to the machine
+    /// coordinates the words give, whatever G52, G54–G59 and G92 say. On Z
+    /// the length vector is off in this block and comes back at the next Z
+    /// move; the G45–G48 vector stays (Fanuc: the machine moves by the
+    /// offsets left on). On the lathe the T vector is off on the named axes
+    /// until each moves again. Returns false for a G53 in G91, which Fanuc
+    /// ignores: the block then runs as it would without G53.
+    pub(super) fn g53(&mut self, b: &Block, out: &mut Out) -> Result<bool, Diagnostic> {
+        let span = b.code_span(Group::NonModal);
+        let lathe = self.setup.machine == MachineKind::Lathe;
+        if self.state.modal.distance == Distance::Incremental && !lathe {
+            out.warnings.push(Diagnostic::warning(
+                "g53-incremental",
+                span,
+                "G53 in G91 is ignored (Fanuc: G53 takes absolute machine coordinates only): the words move incrementally as the block's motion mode says",
+            ));
+            out.notes
+                .push("G53 in G91 is ignored: the block moves as it would without it".into());
+            return Ok(false);
+        }
+        self.refuse_in_transforms(b, span, "G53")?;
+        let letters = if lathe {
+            [(0, Address::X), (2, Address::Z)].as_slice()
+        } else {
+            [(0, Address::X), (1, Address::Y), (2, Address::Z)].as_slice()
+        };
+        if lathe {
+            for a in [Address::U, Address::W] {
+                if let Some(w) = b.get(a) {
+                    return Err(self.error(
+                        "g53-words",
+                        w.span,
+                        "G53 takes absolute machine coordinates: X and Z, not U or W",
+                    ));
+                }
+            }
+        }
+        let old_length = if lathe {
+            self.state.length
+        } else {
+            self.length_words(b, out)?
+        };
+        let start = self.mark();
+        let mut named = [false; 3];
+        for &(axis, a) in letters {
+            if let Some(v) = b.value(a) {
+                named[axis] = true;
+                self.state.programmed[axis] = self.mm(v) - self.state.coords.zero[axis];
+                if lathe {
+                    self.state.lathe.vector[axis] = 0.0;
+                }
+            }
+        }
+        let changed = self.state.length.changed_since(&old_length);
+        let suspended = !lathe && named[2] && self.state.length.target != 0.0;
+        if !lathe {
+            self.state.length.vector = if named[2] {
+                0.0
+            } else {
+                let setting = self.setup.settings.length_offset_without_z;
+                self.state.length.vector_after(false, changed, setting)
+            };
+        }
+        if !named.iter().any(|n| *n) && !changed {
+            out.notes
+                .push("G53 without axis words: no axis moves".to_string());
+            return Ok(true);
+        }
+        self.emit(out, start, super::MoveKind::Rapid, false, None);
+        let machine = add(self.actual(), self.state.coords.zero);
+        let axes: Vec<String> = letters
+            .iter()
+            .filter(|(axis, _)| named[*axis])
+            .map(|&(axis, a)| format!("{}{}", a.letter(), show(machine[axis], self.units())))
+            .collect();
+        let mut note = format!("G53: to machine {}", axes.join(" "));
+        if suspended {
+            note.push_str(&format!(
+                " with the length offset off on Z; {} H{:02} applies again at the next Z move",
+                self.state.length.mode().gcode(),
+                self.state.length.h
+            ));
+        }
+        if lathe && self.state.lathe.target != [0.0; 3] {
+            note.push_str("; the T offset applies again at each axis's next move");
+        }
+        if !lathe && self.state.position.vector != [0.0; 3] {
+            note.push_str("; the G45–G48 vector is carried");
+        }
+        out.notes.push(note);
+        if changed && !named[2] {
+            self.length_note(old_length, None, out);
+        }
+        Ok(true)
+    }
+
+    // ----- the mill's transformations -------------------------------------
+
+    /// The tool's point in the program's own coordinates: where the words
+    /// of the blocks so far put it before mirror image, scaling and
+    /// rotation, with the mirror image switches (setting 7.5) undone.
+    pub(super) fn program_point(&self) -> Xyz {
+        if !self.state.modal.transforms.is_identity() {
+            return self.command;
+        }
+        let p = self.state.programmed;
+        std::array::from_fn(|i| {
+            if self.mirror[i] {
+                2.0 * (self.mirror_center[i] - self.state.coords.zero[i]) - p[i]
+            } else {
+                p[i]
+            }
+        })
+    }
+
+    /// Notes whether every word reads plainly (no transformation, no polar
+    /// coordinates, no absolute arc centres): the motion's fast path asks.
+    pub(super) fn note_frame(&mut self) {
+        let m = &self.state.modal;
+        self.plain_words = m.transforms.is_identity()
+            && m.polar == PolarMode::Cancel
+            && m.arc_center != Some(ArcCenter::Absolute);
+    }
+
+    /// The programmed end point (work coordinates) of the axis words of `b`
+    /// for the axes in `axes`, through polar coordinates (G16), the
+    /// transformations (G51.1, G51, G68) and the mirror image switches, and
+    /// the program point after the block (behaviour 13.7). Absolute words
+    /// send the whole program point through the transformations; a block of
+    /// incremental words moves by the transformed movement (Fanuc: the
+    /// centre of rotation of an incremental move made before the first
+    /// absolute one is the tool's place when G68 was given).
+    pub(super) fn program_targets(&self, b: &Block, axes: [bool; 3], incremental: bool) -> (Xyz, Xyz) {
+        let p0 = self.program_point();
+        let mut cmd = p0;
+        let mut named = [false; 3];
+        let mut absolute = [false; 3];
+        let polar = self.state.modal.polar == PolarMode::Start;
+        let (ia, ib, _) = self.state.modal.plane.axes();
+        let word = |i: usize| b.get(AXES[i].0).filter(|_| axes[i]);
+        for i in 0..3 {
+            let Some(w) = word(i) else { continue };
+            if polar && (i == ia || i == ib) {
+                continue;
+            }
+            named[i] = true;
+            absolute[i] = !incremental;
+            let v = self.mm(w.value);
+            cmd[i] = if incremental { p0[i] + v } else { v };
+        }
+        if polar && (word(ia).is_some() || word(ib).is_some()) {
+            let radius = word(ia).map(|w| self.mm(w.value));
+            let angle = word(ib).map(|w| self.unitless(w));
+            let q = frame::polar_point([p0[ia], p0[ib]], radius, angle, incremental);
+            cmd[ia] = q[0];
+            cmd[ib] = q[1];
+            for i in [ia, ib] {
+                named[i] = true;
+                absolute[i] = true;
+            }
+        }
+        let t = &self.state.modal.transforms;
+        let p = self.state.programmed;
+        let mut target = p;
+        if t.is_identity() {
+            for i in 0..3 {
+                if named[i] {
+                    target[i] = if absolute[i] {
+                        self.target(i, cmd[i], false)
+                    } else {
+                        self.target(i, cmd[i] - p0[i], true)
+                    };
+                }
+            }
+        } else if absolute.iter().any(|a| *a) {
+            let w = t.point(cmd);
+            for i in 0..3 {
+                target[i] = self.target(i, w[i], false);
+            }
+        } else {
+            let d = t.vector(sub(cmd, p0));
+            for i in 0..3 {
+                target[i] = self.target(i, d[i], true);
+            }
+        }
+        (target, cmd)
+    }
+
+    /// An angle or a magnification word (behaviour 13.9–13.11).
+    pub(super) fn unitless(&self, w: &Word) -> f64 {
+        frame::unitless(w, self.units(), self.setup.settings.decimal_input)
+    }
+
+    /// The group 11, 16, 17, 22 codes and G90.1/G91.1 of a mill block
+    /// (behaviour 13.8–13.12). Returns true when the block's axis words were
+    /// theirs (a centre, a mirror axis): the block then moves by none of
+    /// them.
+    pub(super) fn transform_codes(&mut self, b: &Block, out: &mut Out) -> Result<bool, Diagnostic> {
+        let c = b.codes();
+        let (mirror, scaling, rotation, polar, arc) =
+            (c.mirror(), c.scaling(), c.rotation(), c.polar(), c.arc_center());
+        if mirror.is_none()
+            && scaling.is_none()
+            && rotation.is_none()
+            && polar.is_none()
+            && arc.is_none()
+        {
+            return Ok(false);
+        }
+        let mut t = self.state.modal.transforms;
+        let was_identity = t.is_identity();
+        let p0 = self.program_point();
+        let words: [Option<f64>; 3] = AXES.map(|(a, _)| b.value(a).map(|v| self.mm(v)));
+        let order = |code: &str, on: &str, span| {
+            self.error(
+                "transform-order",
+                span,
+                format!(
+                    "{code} cannot be given while {on} is on (Fanuc: mirror image, then scaling, then rotation; cancel them in the reverse order)"
+                ),
+            )
+        };
+        let mut consumed = false;
+        if let Some(m) = mirror {
+            let span = b.code_span(Group::Mirror);
+            if t.rotation.is_some() {
+                return Err(order(m.gcode(), "G68", span));
+            }
+            if t.scaling.is_some() {
+                return Err(order(m.gcode(), "G51", span));
+            }
+            consumed = true;
+            let any = words.iter().any(Option::is_some);
+            match m {
+                MirrorMode::Start if !any => {
+                    return Err(self.error(
+                        "mirror-without-axis",
+                        span,
+                        "G51.1 needs the axes to mirror and the coordinate each is mirrored about (G51.1 X50.)",
+                    ));
+                }
+                MirrorMode::Start => {
+                    for (axis, w) in words.iter().enumerate() {
+                        if let Some(v) = w {
+                            t.mirror[axis] = Some(*v);
+                        }
+                    }
+                }
+                MirrorMode::Cancel if !any => t.mirror = [None; 3],
+                MirrorMode::Cancel => {
+                    for (axis, w) in words.iter().enumerate() {
+                        if w.is_some() {
+                            t.mirror[axis] = None;
+                        }
+                    }
+                }
+            }
+        }
+        if let Some(s) = scaling {
+            let span = b.code_span(Group::Scaling);
+            if t.rotation.is_some() {
+                return Err(order(s.gcode(), "G68", span));
+            }
+            match s {
+                ScalingMode::Start => {
+                    consumed = true;
+                    let center: Xyz = std::array::from_fn(|i| words[i].unwrap_or(p0[i]));
+                    let factors = self.scaling_factors(b, span)?;
+                    t.scaling = Some(Scaling {
+                        center: t.mirrored(center),
+                        factors,
+                    });
+                }
+                ScalingMode::Cancel => t.scaling = None,
+            }
+        }
+        if let Some(r) = rotation {
+            let span = b.code_span(Group::Rotation);
+            match r {
+                RotationMode::Start => {
+                    consumed = true;
+                    let plane = self.state.modal.plane;
+                    let (ia, ib, n) = plane.axes();
+                    if let Some(w) = b.get(AXES[n].0) {
+                        return Err(self.error(
+                            "rotation-words",
+                            w.span,
+                            format!(
+                                "G68 in {} takes the centre on {} and {}; {} is not one of them",
+                                plane.gcode(),
+                                AXES[ia].1,
+                                AXES[ib].1,
+                                AXES[n].1
+                            ),
+                        ));
+                    }
+                    let Some(rw) = b.get(Address::R) else {
+                        return Err(self.error(
+                            "rotation-angle",
+                            span,
+                            "G68 needs R, the angle of rotation in degrees (the control's default-angle parameter is not modelled)",
+                        ));
+                    };
+                    let mut degrees = self.unitless(rw);
+                    let incremental_r = self.setup.settings.rotation_angle
+                        == RotationAngle::DistanceMode
+                        && self.state.modal.distance == Distance::Incremental;
+                    if incremental_r && let Some(old) = t.rotation {
+                        degrees += old.degrees;
+                    }
+                    let mut center = p0;
+                    for i in [ia, ib] {
+                        if let Some(v) = words[i] {
+                            center[i] = v;
+                        }
+                    }
+                    t.rotation = Some(Rotation {
+                        plane,
+                        center: t.before_rotation(center),
+                        degrees,
+                    });
+                }
+                RotationMode::Cancel => t.rotation = None,
+            }
+        }
+        if let Some(p) = polar {
+            self.state.modal.polar = p;
+        }
+        if let Some(a) = arc {
+            self.state.modal.arc_center = Some(a);
+            if !self.arc_center_warned {
+                self.arc_center_warned = true;
+                out.warnings.push(Diagnostic::warning(
+                    "arc-center-mode",
+                    b.code_span(Group::ArcCenter),
+                    format!(
+                        "{} is not in the Fanuc, Haas or YASNAC manuals (their I, J, K are always measured from the arc's start, as G91.1 says); offsetlab reads it as Mach3 and LinuxCNC do",
+                        a.gcode()
+                    ),
+                ));
+            }
+        }
+        if was_identity && !t.is_identity() {
+            self.command = p0;
+        }
+        let before = self.state.modal.transforms;
+        self.state.modal.transforms = t;
+        self.note_frame();
+        self.transform_notes(before, polar, arc, out);
+        Ok(consumed)
+    }
+
+    /// G51's magnifications (behaviour 13.9): P for every axis, in
+    /// thousandths (P1500 is ×1.5), or I, J, K each for its axis (an axis
+    /// left out keeps ×1); a negative one mirrors its axis.
+    fn scaling_factors(&self, b: &Block, span: crate::diag::Span) -> Result<Xyz, Diagnostic> {
+        let ijk = [Address::I, Address::J, Address::K].map(|a| b.get(a));
+        let factors = match (b.get(Address::P), ijk.iter().any(Option::is_some)) {
+            (Some(p), false) => [f64::from(p.int()) * 0.001; 3],
+            (None, true) => ijk.map(|w| w.map_or(1.0, |w| self.unitless(w))),
+            (Some(p), true) => {
+                return Err(self.error(
+                    "scaling-factor",
+                    p.span,
+                    "G51 takes P (every axis) or I, J, K (each axis), not both",
+                ));
+            }
+            (None, false) => {
+                return Err(self.error(
+                    "scaling-factor",
+                    span,
+                    "G51 needs P (every axis, in thousandths: P2000 is ×2) or I, J, K (each axis); the control's default-magnification parameter is not modelled",
+                ));
+            }
+        };
+        if factors.contains(&0.0) {
+            return Err(self.error(
+                "scaling-factor",
+                span,
+                "a scaling magnification of 0 would send every point to the centre",
+            ));
+        }
+        Ok(factors)
+    }
+
+    /// The sentences of a block that changed the transformations.
+    fn transform_notes(
+        &self,
+        before: frame::Transforms,
+        polar: Option<PolarMode>,
+        arc: Option<ArcCenter>,
+        out: &mut Out,
+    ) {
+        let t = self.state.modal.transforms;
+        let u = self.units();
+        if t.mirror != before.mirror {
+            let on: Vec<String> = (0..3)
+                .filter_map(|i| t.mirror[i].map(|m| format!("{} about {}{}", AXES[i].1, AXES[i].1, show(m, u))))
+                .collect();
+            out.notes.push(if on.is_empty() {
+                "G50.1: programmable mirror image off".to_string()
+            } else {
+                format!(
+                    "G51.1: mirror image of {}: arcs turn the other way when one axis of their plane is mirrored",
+                    on.join(", ")
+                )
+            });
+        }
+        if t.scaling != before.scaling {
+            out.notes.push(match t.scaling {
+                Some(s) => format!(
+                    "G51: scaling ×{} about {} (the offsets are not scaled)",
+                    factors_text(s.factors),
+                    self.show_point(s.center)
+                ),
+                None => "G50: scaling off".to_string(),
+            });
+        }
+        if t.rotation != before.rotation {
+            out.notes.push(match t.rotation {
+                Some(r) => {
+                    let (a, bb, _) = r.plane.axes();
+                    format!(
+                        "G68: coordinates rotated {:.3}° about {}{} {}{} ({})",
+                        r.degrees,
+                        AXES[a].1,
+                        show(r.center[a], u),
+                        AXES[bb].1,
+                        show(r.center[bb], u),
+                        r.plane.gcode()
+                    )
+                }
+                None => "G69: rotation off".to_string(),
+            });
+        }
+        match polar {
+            Some(PolarMode::Start) => {
+                let (a, bb, _) = self.state.modal.plane.axes();
+                out.notes.push(format!(
+                    "G16: polar coordinates: {} is the radius, {} the angle in degrees ({})",
+                    AXES[a].1,
+                    AXES[bb].1,
+                    self.state.modal.plane.gcode()
+                ));
+            }
+            Some(PolarMode::Cancel) => out.notes.push("G15: Cartesian coordinates".into()),
+            None => {}
+        }
+        match arc {
+            Some(ArcCenter::Absolute) => out
+                .notes
+                .push("G90.1: I, J, K are the coordinates of an arc's centre".into()),
+            Some(ArcCenter::Incremental) => out
+                .notes
+                .push("G91.1: I, J, K measure an arc's centre from its start".into()),
+            None => {}
+        }
+    }
+
+    /// A rotary axis word A, B or C (behaviour 13.14): its position is kept
+    /// and reported (degrees; G91 adds to it, `absolute` blocks such as G92
+    /// and G53 set it), never drawn; the first of a program gets a warning.
+    pub(super) fn rotary_words(&mut self, b: &Block, absolute: bool, out: &mut Out) {
+        for (i, a) in ROTARY.iter().enumerate() {
+            let Some(w) = b.get(*a) else { continue };
+            let v = self.unitless(w);
+            let incremental = !absolute && self.state.modal.distance == Distance::Incremental;
+            let now = match (self.state.rotary[i], incremental) {
+                (Some(p), true) => p + v,
+                (None, true) | (_, false) => v,
+            };
+            self.state.rotary[i] = Some(now);
+            if !self.rotary_warned {
+                self.rotary_warned = true;
+                out.warnings.push(Diagnostic::warning(
+                    "rotary-axis",
+                    w.span,
+                    format!(
+                        "rotary axis {} is reported, not drawn: the drawing shows X, Y and Z",
+                        a.letter()
+                    ),
+                ));
+            }
+            out.notes.push(format!(
+                "rotary axis {} at {:.3}° (reported, not drawn)",
+                a.letter(),
+                now
+            ));
+        }
+    }
+
+    /// A point (mm) as `X… Y… Z…` in the block's units (a lathe point
+    /// without Y).
+    pub(super) fn show_point(&self, p: Xyz) -> String {
+        let u = self.units();
+        if self.setup.machine == MachineKind::Lathe {
+            format!("X{} Z{}", show(p[0], u), show(p[2], u))
+        } else {
+            format!("X{} Y{} Z{}", show(p[0], u), show(p[1], u), show(p[2], u))
+        }
+    }
+}
+
+/// Scaling magnifications as a sentence writes them: one number when they
+/// agree.
+fn factors_text(f: Xyz) -> String {
+    if f[0] == f[1] && f[1] == f[2] {
+        format!("{:.3}", f[0])
+    } else {
+        format!("X{:.3} Y{:.3} Z{:.3}", f[0], f[1], f[2])
+    }
+}
