@@ -140,28 +140,20 @@ impl Machine {
         if let Some(p) = p.filter(|_| work.index().is_none()) {
             self.p_is_the_work_systems(b, p)?;
         }
-        self.refuse_in_transforms(b, span, work.gcode())?;
+        self.refuse_in_transforms(span, work.gcode())?;
         self.select_work(work);
-        if work.index().is_none() {
-            let z = self.state.coords.zero;
-            let set = self
-                .setup
-                .extended_work_offsets
-                .contains_key(&u16::from(match work {
-                    WorkSystem::Additional(n) | WorkSystem::Haas(n) => n,
-                    _ => 0,
-                }));
+        if let WorkSystem::Additional(n) | WorkSystem::Haas(n) = work {
+            let set = self.setup.extended_work_offsets.contains_key(&u16::from(n));
             out.notes.push(format!(
                 "{}: zero at machine {}{}",
                 work.gcode(),
                 self.show_point(self.work_zero(work)),
                 if set {
-                    String::new()
+                    ""
                 } else {
-                    " (the setup leaves it out: machine zero)".to_string()
+                    " (the setup leaves it out: machine zero)"
                 }
             ));
-            let _ = z;
         }
         Ok(())
     }
@@ -194,7 +186,6 @@ impl Machine {
     /// (G52–G59, G92) (behaviour 13.13).
     pub(super) fn refuse_in_transforms(
         &self,
-        b: &Block,
         span: crate::diag::Span,
         gcode: &str,
     ) -> Result<(), Diagnostic> {
@@ -211,7 +202,6 @@ impl Machine {
         .filter(|(on, _)| *on)
         .map(|(_, g)| *g)
         .collect();
-        let _ = b;
         Err(self.error(
             "code-in-transform",
             span,
@@ -227,7 +217,7 @@ impl Machine {
     /// Y0` cancels it there. The tool does not move.
     pub(super) fn g52(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
         let span = b.code_span(Group::NonModal);
-        self.refuse_in_transforms(b, span, "G52")?;
+        self.refuse_in_transforms(span, "G52")?;
         let lathe = self.setup.machine == MachineKind::Lathe;
         for a in [Address::U, Address::W] {
             if let Some(w) = b.get(a).filter(|_| lathe) {
@@ -278,7 +268,7 @@ impl Machine {
     /// each word 0 (Fanuc's workpiece coordinate system preset, `G92.1 X0`).
     pub(super) fn g92_1(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
         let span = b.code_span(Group::NonModal);
-        self.refuse_in_transforms(b, span, "G92.1")?;
+        self.refuse_in_transforms(span, "G92.1")?;
         let mut named = Vec::new();
         for (axis, (a, letter)) in AXES.iter().enumerate() {
             let Some(w) = b.get(*a) else { continue };
@@ -329,7 +319,7 @@ impl Machine {
                 .push("G53 in G91 is ignored: the block moves as it would without it".into());
             return Ok(false);
         }
-        self.refuse_in_transforms(b, span, "G53")?;
+        self.refuse_in_transforms(span, "G53")?;
         let letters = if lathe {
             [(0, Address::X), (2, Address::Z)].as_slice()
         } else {
@@ -441,7 +431,12 @@ impl Machine {
     /// incremental words moves by the transformed movement (Fanuc: the
     /// centre of rotation of an incremental move made before the first
     /// absolute one is the tool's place when G68 was given).
-    pub(super) fn program_targets(&self, b: &Block, axes: [bool; 3], incremental: bool) -> (Xyz, Xyz) {
+    pub(super) fn program_targets(
+        &self,
+        b: &Block,
+        axes: [bool; 3],
+        incremental: bool,
+    ) -> (Xyz, Xyz) {
         let p0 = self.program_point();
         let mut cmd = p0;
         let mut named = [false; 3];
@@ -497,6 +492,204 @@ impl Machine {
         (target, cmd)
     }
 
+    /// The sentence of a block whose words polar coordinates or the
+    /// transformations sent elsewhere than they read: which did, the words,
+    /// and the programmed point they give (behaviour 13.7).
+    pub(super) fn frame_sentence(&self, b: &Block, axes: [bool; 3], target: Xyz) -> Option<String> {
+        let m = &self.state.modal;
+        let t = &m.transforms;
+        let polar = m.polar == PolarMode::Start;
+        let mut by = Vec::new();
+        if polar {
+            by.push("G16");
+        }
+        if t.mirror != [None; 3] {
+            by.push("G51.1");
+        }
+        if t.scaling.is_some() {
+            by.push("G51");
+        }
+        if t.rotation.is_some() {
+            by.push("G68");
+        }
+        if by.is_empty() {
+            return None;
+        }
+        let (_, angle_axis, _) = m.plane.axes();
+        let u = self.units();
+        let words: Vec<String> = (0..3)
+            .filter_map(|i| {
+                let w = b.get(AXES[i].0).filter(|_| axes[i])?;
+                Some(if polar && i == angle_axis {
+                    format!("{}{:.3}°", AXES[i].1, self.unitless(w))
+                } else {
+                    format!("{}{}", AXES[i].1, show(self.mm(w.value), u))
+                })
+            })
+            .collect();
+        if words.is_empty() {
+            return None;
+        }
+        Some(format!(
+            "{}: {} goes to {}",
+            by.join(", "),
+            words.join(" "),
+            self.show_point(target)
+        ))
+    }
+
+    /// A canned cycle's hole position through polar coordinates and the
+    /// transformations (behaviour 13.7): the plane's two axis words are
+    /// read as a move's would be; the drilling axis's levels are not
+    /// transformed (our convention). A rotation of a plane that holds the
+    /// drilling axis is refused.
+    pub(super) fn hole_position(
+        &mut self,
+        b: &Block,
+        incremental: bool,
+        out: &mut Out,
+    ) -> Result<(), Diagnostic> {
+        let plane = self.state.modal.plane;
+        let (ia, ib, _) = plane.axes();
+        if let Some(r) = self.state.modal.transforms.rotation
+            && r.plane != plane
+        {
+            return Err(self.error(
+                "rotation-plane",
+                b.span,
+                format!(
+                    "a canned cycle in {} while G68 rotates the {} plane: its drilling axis would be rotated",
+                    plane.gcode(),
+                    r.plane.gcode()
+                ),
+            ));
+        }
+        let mut axes = [false; 3];
+        axes[ia] = true;
+        axes[ib] = true;
+        let (t, cmd) = self.program_targets(b, axes, incremental);
+        if let Some(note) = self.frame_sentence(b, axes, t) {
+            out.notes.push(note);
+        }
+        self.state.programmed[ia] = t[ia];
+        self.state.programmed[ib] = t[ib];
+        self.command = cmd;
+        Ok(())
+    }
+
+    /// After a hole: the program point's drilling axis follows the level the
+    /// tool came back to (the levels are not transformed).
+    pub(super) fn hole_done(&mut self, n: usize) {
+        let t = self.state.modal.transforms;
+        let z = self.state.programmed[n];
+        self.command[n] = if t.is_identity() {
+            z
+        } else {
+            t.axis_inverse(n, z)
+        };
+    }
+
+    /// What polar coordinates and the transformations do to an arc
+    /// (behaviour 13.8–13.11): true when it turns the other way. A rotation
+    /// of another plane is the control's alarm (Fanuc PS0144: the arc's and
+    /// the rotation's planes must be one), and so is a centre word in polar
+    /// coordinates (an arc there takes R).
+    pub(super) fn framed_arc(&self, b: &Block) -> Result<bool, Diagnostic> {
+        let m = &self.state.modal;
+        if let Some(r) = m.transforms.rotation
+            && r.plane != m.plane
+        {
+            return Err(self.error(
+                "rotation-plane",
+                b.span,
+                format!(
+                    "an arc in {} while G68 rotates the {} plane (Fanuc alarm PS0144: the planes must be one)",
+                    m.plane.gcode(),
+                    r.plane.gcode()
+                ),
+            ));
+        }
+        if m.polar == PolarMode::Start
+            && let Some(w) = [Address::I, Address::J, Address::K]
+                .iter()
+                .find_map(|a| b.get(*a))
+        {
+            return Err(self.error(
+                "polar-arc-center",
+                w.span,
+                "in polar coordinates (G16) an arc takes its radius R, not centre words (Fanuc)",
+            ));
+        }
+        Ok(m.transforms.reverses(m.plane))
+    }
+
+    /// The centre of an arc whose words polar coordinates, the
+    /// transformations or G90.1 read (behaviour 13.8–13.12), as the offset
+    /// from the arc's programmed start (mm, work coordinates): I, J, K from
+    /// the start in G91.1 (the manuals' only way), the centre's coordinates
+    /// in G90.1; through the transformations and the mirror image switches,
+    /// with G45–G48's change of each word (behaviour 4.8). A centre word of
+    /// another plane is passed over with a warning (behaviour 2.13).
+    pub(super) fn framed_centres(
+        &self,
+        b: &Block,
+        words: [Option<f64>; 3],
+        change: Option<crate::offsets::position::PositionChange>,
+        req: &mut super::ArcRequest,
+        out: &mut Out,
+    ) -> Result<(), Diagnostic> {
+        let m = &self.state.modal;
+        let (ia, ib, _) = m.plane.axes();
+        let in_plane = |i: usize| i == ia || i == ib;
+        let centre_addr = [Address::I, Address::J, Address::K];
+        for (i, w) in words.iter().enumerate() {
+            if w.is_some() && !in_plane(i) {
+                out.warnings.push(Diagnostic::warning(
+                    "arc-center-word",
+                    self.word_span(b, centre_addr[i]),
+                    format!(
+                        "{} is not a centre word of the {} plane and is ignored",
+                        centre_addr[i].letter(),
+                        m.plane.gcode()
+                    ),
+                ));
+            }
+        }
+        let plane_word = |i: usize| words[i].map(|v| self.mm(v));
+        let t = &m.transforms;
+        let offsets: Xyz = if m.arc_center == Some(ArcCenter::Absolute) {
+            let (Some(a), Some(c)) = (plane_word(ia), plane_word(ib)) else {
+                return Err(self.error(
+                    "arc-without-center",
+                    b.span,
+                    format!(
+                        "in G90.1 an arc's centre is the point its two centre words of {} give: write both",
+                        m.plane.gcode()
+                    ),
+                ));
+            };
+            let mut centre = self.program_point();
+            centre[ia] = a;
+            centre[ib] = c;
+            let w = t.point(centre);
+            std::array::from_fn(|i| self.target(i, w[i], false) - self.state.programmed[i])
+        } else {
+            let mut v = [0.0; 3];
+            for i in [ia, ib] {
+                v[i] = plane_word(i).unwrap_or(0.0);
+            }
+            let d = t.vector(v);
+            std::array::from_fn(|i| if self.mirror[i] { -d[i] } else { d[i] })
+        };
+        for i in [ia, ib] {
+            req.center[i] = offsets[i];
+            if let (Some(c), Some(_)) = (change, words[i]) {
+                req.center_change[i] = c.center(i, offsets[i], &mut out.notes);
+            }
+        }
+        Ok(())
+    }
+
     /// An angle or a magnification word (behaviour 13.9–13.11).
     pub(super) fn unitless(&self, w: &Word) -> f64 {
         frame::unitless(w, self.units(), self.setup.settings.decimal_input)
@@ -508,8 +701,13 @@ impl Machine {
     /// them.
     pub(super) fn transform_codes(&mut self, b: &Block, out: &mut Out) -> Result<bool, Diagnostic> {
         let c = b.codes();
-        let (mirror, scaling, rotation, polar, arc) =
-            (c.mirror(), c.scaling(), c.rotation(), c.polar(), c.arc_center());
+        let (mirror, scaling, rotation, polar, arc) = (
+            c.mirror(),
+            c.scaling(),
+            c.rotation(),
+            c.polar(),
+            c.arc_center(),
+        );
         if mirror.is_none()
             && scaling.is_none()
             && rotation.is_none()
@@ -706,7 +904,9 @@ impl Machine {
         let u = self.units();
         if t.mirror != before.mirror {
             let on: Vec<String> = (0..3)
-                .filter_map(|i| t.mirror[i].map(|m| format!("{} about {}{}", AXES[i].1, AXES[i].1, show(m, u))))
+                .filter_map(|i| {
+                    t.mirror[i].map(|m| format!("{} about {}{}", AXES[i].1, AXES[i].1, show(m, u)))
+                })
                 .collect();
             out.notes.push(if on.is_empty() {
                 "G50.1: programmable mirror image off".to_string()

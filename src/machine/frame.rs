@@ -14,6 +14,21 @@ use crate::geometry::Xyz;
 use crate::setup::{DecimalInput, Units};
 use crate::syntax::Word;
 
+/// Where the current coordinate system lies on the machine (behaviour 13.1–13.4):
+/// its zero, and the parts beyond the work system's row that make it.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Coordinates {
+    /// The zero of the current coordinate system in machine coordinates
+    /// (mm): the work system's zero plus the G92/G50 shift plus the G52 local
+    /// offset.
+    pub zero: Xyz,
+    /// The G92 (lathe G50) shift, kept across G54–G59 changes.
+    pub shift: Xyz,
+    /// The G52 local offset: where the local zero lies in the work system,
+    /// the same in every work system.
+    pub local: Xyz,
+}
+
 /// G51 scaling (mill): a centre and a factor per axis (P gives all three
 /// one factor; a negative factor of I/J/K mirrors that axis).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -109,8 +124,25 @@ impl Transforms {
     /// The factor along `axis` of the mirror image and scaling stages (−1
     /// for a mirrored axis): which way G45–G48 extend a movement along it.
     pub fn axis_factor(&self, axis: usize) -> f64 {
-        let m = if self.mirror[axis].is_some() { -1.0 } else { 1.0 };
+        let m = if self.mirror[axis].is_some() {
+            -1.0
+        } else {
+            1.0
+        };
         m * self.scaling.map_or(1.0, |s| s.factors[axis])
+    }
+
+    /// The program coordinate of `axis` whose mirror image and scaling give
+    /// `v` (an axis no rotation turns).
+    pub fn axis_inverse(&self, axis: usize, v: f64) -> f64 {
+        let mut p = v;
+        if let Some(s) = self.scaling {
+            p = s.center[axis] + (p - s.center[axis]) / s.factors[axis];
+        }
+        match self.mirror[axis] {
+            Some(m) => 2.0 * m - p,
+            None => p,
+        }
     }
 
     /// True when an arc in `plane` turns the other way: the mirror image and
@@ -222,7 +254,10 @@ mod tests {
             ..Transforms::default()
         };
         let p = t.point([20.0, 10.0, -5.0]);
-        assert!(near(p, [10.0 + 10.0 * 3f64.sqrt() / 2.0, 15.0, -5.0]), "{p:?}");
+        assert!(
+            near(p, [10.0 + 10.0 * 3f64.sqrt() / 2.0, 15.0, -5.0]),
+            "{p:?}"
+        );
         // A movement of (10, 0) turns by 30°: (8.660254, 5).
         assert!(near(
             t.vector([10.0, 0.0, 0.0]),
@@ -278,7 +313,8 @@ mod tests {
 
     #[test]
     fn polar_points() {
-        let close = |a: [f64; 2], b: [f64; 2]| (a[0] - b[0]).abs() < 1e-9 && (a[1] - b[1]).abs() < 1e-9;
+        let close =
+            |a: [f64; 2], b: [f64; 2]| (a[0] - b[0]).abs() < 1e-9 && (a[1] - b[1]).abs() < 1e-9;
         let r3 = 3f64.sqrt();
         // G90 X100. Y30.: 100 from the zero at 30°.
         assert!(close(
@@ -296,6 +332,9 @@ mod tests {
             [20.0, 10.0]
         ));
         // G90 X50. alone from (0, 10): the angle of the current point, 90°.
-        assert!(close(polar_point([0.0, 10.0], Some(50.0), None, false), [0.0, 50.0]));
+        assert!(close(
+            polar_point([0.0, 10.0], Some(50.0), None, false),
+            [0.0, 50.0]
+        ));
     }
 }

@@ -4,12 +4,13 @@
 
 use serde::Serialize;
 
+use super::frame::Transforms;
 use crate::setup::{MachineKind, Units};
 pub use crate::syntax::codes::{
-    ArcDirection, Cycle, Distance, FeedMode, LatheCycle, LengthOffset, Motion, Plane, ReturnLevel,
-    SurfaceSpeed, WorkSystem,
+    ArcCenter, ArcDirection, Cycle, Distance, FeedMode, LatheCycle, LengthOffset, Motion, Plane,
+    PolarMode, ReturnLevel, SurfaceSpeed, WorkSystem,
 };
-use crate::syntax::codes::{CannedCycle, Code, CodeTable};
+use crate::syntax::codes::{CannedCycle, Code, CodeTable, MirrorMode, RotationMode, ScalingMode};
 
 /// All modal codes a block report shows.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -34,6 +35,14 @@ pub struct Modal {
     pub work: WorkSystem,
     /// Lathe group 02: constant surface speed (G96) or G97.
     pub surface_speed: SurfaceSpeed,
+    /// Groups 11, 16 and 22 (mill) with their data: scaling, rotation and
+    /// programmable mirror image (behaviour 13.8–13.10).
+    pub transforms: Transforms,
+    /// Group 17 (mill): polar coordinates (behaviour 13.11).
+    pub polar: PolarMode,
+    /// G90.1/G91.1 (mill), None until the program writes one (behaviour
+    /// 13.12).
+    pub arc_center: Option<ArcCenter>,
 }
 
 impl Modal {
@@ -56,6 +65,9 @@ impl Modal {
             return_level: ReturnLevel::Initial,
             work: WorkSystem::G54,
             surface_speed: SurfaceSpeed::Cancel,
+            transforms: Transforms::default(),
+            polar: PolarMode::Cancel,
+            arc_center: None,
         }
     }
 
@@ -75,6 +87,21 @@ impl Modal {
             return_level: mill.then_some(self.return_level.gcode()),
             work: self.work.gcode(),
             surface_speed: (!mill).then_some(self.surface_speed.gcode()),
+            scaling: mill.then_some(match self.transforms.scaling {
+                Some(_) => ScalingMode::Start.gcode(),
+                None => ScalingMode::Cancel.gcode(),
+            }),
+            rotation: mill.then_some(match self.transforms.rotation {
+                Some(_) => RotationMode::Start.gcode(),
+                None => RotationMode::Cancel.gcode(),
+            }),
+            polar: mill.then_some(self.polar.gcode()),
+            mirror: mill.then_some(if self.transforms.mirror == [None; 3] {
+                MirrorMode::Cancel.gcode()
+            } else {
+                MirrorMode::Start.gcode()
+            }),
+            arc_center: self.arc_center.filter(|_| mill).map(ArcCenter::gcode),
         }
     }
 }
@@ -107,4 +134,19 @@ pub struct ModalCodes {
     /// Lathe group 02.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub surface_speed: Option<&'static str>,
+    /// Group 11 (mill): G51 or G50.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub scaling: Option<&'static str>,
+    /// Group 16 (mill): G68 or G69.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rotation: Option<&'static str>,
+    /// Group 17 (mill): G16 or G15.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub polar: Option<&'static str>,
+    /// Group 22 (mill): G51.1 or G50.1.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mirror: Option<&'static str>,
+    /// G90.1 or G91.1 (mill), once the program writes one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub arc_center: Option<&'static str>,
 }

@@ -40,7 +40,10 @@ impl Machine {
 
     /// Reference position `n` in machine coordinates (mm).
     fn reference_point(&self, n: u8) -> Xyz {
-        scale(self.setup.reference_point(n).to_array(), self.setup.units.mm())
+        scale(
+            self.setup.reference_point(n).to_array(),
+            self.setup.units.mm(),
+        )
     }
 
     /// Which axes a G28/G30 block without axis words returns (setting
@@ -88,7 +91,7 @@ impl Machine {
     ) -> Result<(), Diagnostic> {
         let span = b.code_span(Group::NonModal);
         let gcode = code.gcode(MachineKind::Mill);
-        self.refuse_in_transforms(b, span, gcode)?;
+        self.refuse_in_transforms(span, gcode)?;
         let n = self.reference_number(b, code)?;
         let mut named = AXES.map(|(a, _)| b.has(a));
         let rotary = [Address::A, Address::B, Address::C].map(|a| b.has(a));
@@ -224,7 +227,7 @@ impl Machine {
         let span = b.code_span(Group::NonModal);
         let lathe = self.setup.machine == MachineKind::Lathe;
         if !lathe {
-            self.refuse_in_transforms(b, span, "G27")?;
+            self.refuse_in_transforms(span, "G27")?;
         }
         let old_length = if lathe {
             self.state.length

@@ -586,7 +586,12 @@ impl<'a> Blocks<'a> {
             | Code::Length(_)
             | Code::Return(_)
             | Code::Work(_)
-            | Code::SurfaceSpeed(_) => {}
+            | Code::SurfaceSpeed(_)
+            | Code::Scaling(_)
+            | Code::Rotation(_)
+            | Code::Polar(_)
+            | Code::Mirror(_)
+            | Code::ArcCenter(_) => {}
         }
     }
 

@@ -10,8 +10,10 @@ mod groups;
 mod mcodes;
 
 pub use groups::{
-    ArcDirection, CannedCycle, CutterCompensation, Cycle, Distance, FeedMode, LatheCycle,
-    LengthOffset, Motion, NonModal, Plane, PositionOffset, ReturnLevel, SurfaceSpeed, WorkSystem,
+    ArcCenter, ArcDirection, CannedCycle, CutterCompensation, Cycle, Distance, FeedMode,
+    LatheCycle, LengthOffset, MAX_ADDITIONAL_WORK, MAX_HAAS_WORK, MirrorMode, Motion, NonModal,
+    Plane, PolarMode, PositionOffset, ReturnLevel, RotationMode, ScalingMode, SurfaceSpeed,
+    WorkCode, WorkSystem,
 };
 pub use mcodes::MCode;
 
@@ -45,6 +47,16 @@ pub enum Group {
     Work,
     /// Lathe 02: constant surface speed on/off.
     SurfaceSpeed,
+    /// 11 (mill): scaling G50/G51.
+    Scaling,
+    /// 16 (mill): coordinate system rotation G68/G69.
+    Rotation,
+    /// 17 (mill): polar coordinate command G15/G16.
+    Polar,
+    /// 22 (mill): programmable mirror image G50.1/G51.1.
+    Mirror,
+    /// Arc centre mode G90.1/G91.1 (Mach3 and LinuxCNC; no Fanuc group).
+    ArcCenter,
 }
 
 impl Group {
@@ -53,7 +65,7 @@ impl Group {
         self as usize
     }
     /// Number of groups.
-    pub const COUNT: usize = 12;
+    pub const COUNT: usize = 17;
     /// Every group, in index order.
     pub const ALL: [Group; Group::COUNT] = [
         Group::NonModal,
@@ -68,6 +80,11 @@ impl Group {
         Group::Return,
         Group::Work,
         Group::SurfaceSpeed,
+        Group::Scaling,
+        Group::Rotation,
+        Group::Polar,
+        Group::Mirror,
+        Group::ArcCenter,
     ];
     /// The group's name in the manuals.
     pub fn label(self) -> &'static str {
@@ -84,6 +101,11 @@ impl Group {
             Group::Return => "10 (return level)",
             Group::Work => "14 (work coordinates)",
             Group::SurfaceSpeed => "02 (constant surface speed)",
+            Group::Scaling => "11 (scaling)",
+            Group::Rotation => "16 (coordinate rotation)",
+            Group::Polar => "17 (polar coordinates)",
+            Group::Mirror => "22 (programmable mirror image)",
+            Group::ArcCenter => "arc centre mode",
         }
     }
 }
@@ -201,8 +223,13 @@ pub enum Code {
     Length(LengthOffset),
     Cycle(CannedCycle),
     Return(ReturnLevel),
-    Work(WorkSystem),
+    Work(WorkCode),
     SurfaceSpeed(SurfaceSpeed),
+    Scaling(ScalingMode),
+    Rotation(RotationMode),
+    Polar(PolarMode),
+    Mirror(MirrorMode),
+    ArcCenter(ArcCenter),
 }
 
 impl Code {
@@ -217,7 +244,7 @@ impl Code {
         use ArcDirection::{Ccw, Cw};
         use Code as C;
         if g.minor != 0 {
-            return None;
+            return decimal_code(table.machine(), g);
         }
         Some(match table.machine() {
             MachineKind::Mill => match g.major {
@@ -226,12 +253,16 @@ impl Code {
                 2 => C::Motion(Motion::Arc(Cw)),
                 3 => C::Motion(Motion::Arc(Ccw)),
                 4 => C::NonModal(NonModal::Dwell),
+                15 => C::Polar(PolarMode::Cancel),
+                16 => C::Polar(PolarMode::Start),
                 17 => C::Plane(Plane::XY),
                 18 => C::Plane(Plane::ZX),
                 19 => C::Plane(Plane::YZ),
                 20 => C::Units(Units::Inch),
                 21 => C::Units(Units::Mm),
+                27 => C::NonModal(NonModal::ReferenceCheck),
                 28 => C::NonModal(NonModal::ReferenceReturn),
+                30 => C::NonModal(NonModal::OtherReference),
                 40 => C::CutterCompensation(CutterCompensation::Cancel),
                 43 => C::Length(LengthOffset::Add),
                 44 => C::Length(LengthOffset::Subtract),
@@ -240,7 +271,13 @@ impl Code {
                 47 => C::NonModal(NonModal::PositionOffset(PositionOffset::DoubleExtension)),
                 48 => C::NonModal(NonModal::PositionOffset(PositionOffset::DoubleReduction)),
                 49 => C::Length(LengthOffset::Cancel),
-                54..=59 => C::Work(work_system(g.major)),
+                50 => C::Scaling(ScalingMode::Cancel),
+                51 => C::Scaling(ScalingMode::Start),
+                52 => C::NonModal(NonModal::LocalCoordinates),
+                53 => C::NonModal(NonModal::MachineCoordinates),
+                54..=59 => C::Work(WorkCode::Standard(work_system(g.major))),
+                68 => C::Rotation(RotationMode::Start),
+                69 => C::Rotation(RotationMode::Cancel),
                 73 => C::Cycle(CannedCycle::Cycle(Cycle::HighSpeedPeck)),
                 74 => C::Cycle(CannedCycle::Cycle(Cycle::LeftHandTapping)),
                 76 => C::Cycle(CannedCycle::Cycle(Cycle::FineBoring)),
@@ -261,6 +298,7 @@ impl Code {
                 95 => C::FeedMode(FeedMode::PerRevolution),
                 98 => C::Return(ReturnLevel::Initial),
                 99 => C::Return(ReturnLevel::R),
+                154 => C::Work(WorkCode::Haas),
                 _ => return None,
             },
             MachineKind::Lathe => return lathe_code(table.system(), g.major),
@@ -283,6 +321,11 @@ impl Code {
             Code::Return(_) => Group::Return,
             Code::Work(_) => Group::Work,
             Code::SurfaceSpeed(_) => Group::SurfaceSpeed,
+            Code::Scaling(_) => Group::Scaling,
+            Code::Rotation(_) => Group::Rotation,
+            Code::Polar(_) => Group::Polar,
+            Code::Mirror(_) => Group::Mirror,
+            Code::ArcCenter(_) => Group::ArcCenter,
         }
     }
 
@@ -324,6 +367,11 @@ impl Code {
             Code::Return(c) => c.gcode(),
             Code::Work(c) => c.gcode(),
             Code::SurfaceSpeed(c) => c.gcode(),
+            Code::Scaling(c) => c.gcode(),
+            Code::Rotation(c) => c.gcode(),
+            Code::Polar(c) => c.gcode(),
+            Code::Mirror(c) => c.gcode(),
+            Code::ArcCenter(c) => c.gcode(),
         }
     }
 }
@@ -344,9 +392,14 @@ fn lathe_code(system: GCodeSystem, major: u16) -> Option<Code> {
         3 => return Some(C::Motion(Motion::Arc(Ccw))),
         4 => return Some(C::NonModal(NonModal::Dwell)),
         18 => return Some(C::Plane(Plane::ZX)),
+        27 => return Some(C::NonModal(NonModal::ReferenceCheck)),
         28 => return Some(C::NonModal(NonModal::ReferenceReturn)),
+        30 => return Some(C::NonModal(NonModal::OtherReference)),
         40 => return Some(C::CutterCompensation(CutterCompensation::Cancel)),
-        54..=59 => return Some(C::Work(work_system(major))),
+        52 => return Some(C::NonModal(NonModal::LocalCoordinates)),
+        53 => return Some(C::NonModal(NonModal::MachineCoordinates)),
+        54..=59 => return Some(C::Work(WorkCode::Standard(work_system(major)))),
+        154 => return Some(C::Work(WorkCode::Haas)),
         96 => return Some(C::SurfaceSpeed(SurfaceSpeed::Constant)),
         97 => return Some(C::SurfaceSpeed(SurfaceSpeed::Cancel)),
         _ => {}
@@ -375,6 +428,24 @@ fn lathe_code(system: GCodeSystem, major: u16) -> Option<Code> {
     })
 }
 
+/// The codes written with a decimal (behaviour 13): out of line, as few
+/// blocks have one.
+#[inline(never)]
+fn decimal_code(machine: MachineKind, g: GCode) -> Option<Code> {
+    use Code as C;
+    let lathe = machine == MachineKind::Lathe;
+    Some(match (g.major, g.minor) {
+        (54, 1) => C::Work(WorkCode::Additional),
+        _ if lathe => return None,
+        (50, 1) => C::Mirror(MirrorMode::Cancel),
+        (51, 1) => C::Mirror(MirrorMode::Start),
+        (90, 1) => C::ArcCenter(ArcCenter::Absolute),
+        (91, 1) => C::ArcCenter(ArcCenter::Incremental),
+        (92, 1) => C::NonModal(NonModal::PresetCoordinates),
+        _ => return None,
+    })
+}
+
 /// G54 … G59 from 54 … 59 (other numbers are not passed here).
 #[inline(always)]
 fn work_system(major: u16) -> WorkSystem {
@@ -391,11 +462,39 @@ fn work_system(major: u16) -> WorkSystem {
 /// The G codes of one block, one typed value per modal group: the parser
 /// resolved each (and refused a block with two of a group or an unknown
 /// code), so the machine reads them here.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy)]
 pub struct Codes {
-    /// Per group (by [`Group::index`]), its code: keeping a code is one
-    /// store, which the parser does for every G word.
-    by_group: [Option<Code>; Group::COUNT],
+    /// The groups the block holds a code of, a bit each (by
+    /// [`Group::index`]).
+    held: u32,
+    /// Per group, its code; only the groups of `held` count. A block
+    /// emptied for reuse clears `held` alone: clearing every group's code
+    /// cost each block as many stores as there are groups (the `check`
+    /// instruction count in docs/performance.md).
+    by_group: [Code; Group::COUNT],
+}
+
+impl Default for Codes {
+    fn default() -> Self {
+        Codes {
+            held: 0,
+            by_group: [Code::Plane(Plane::XY); Group::COUNT],
+        }
+    }
+}
+
+impl PartialEq for Codes {
+    fn eq(&self, other: &Self) -> bool {
+        self.each().eq(other.each())
+    }
+}
+
+impl Eq for Codes {}
+
+impl std::fmt::Debug for Codes {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_list().entries(self.each()).finish()
+    }
 }
 
 /// The accessor of one group's value.
@@ -404,8 +503,11 @@ macro_rules! group_value {
         $(#[$doc])*
         #[inline(always)]
         pub fn $name(&self) -> Option<$ty> {
+            if self.held & 1 << Group::$group as u32 == 0 {
+                return None;
+            }
             match self.by_group[Group::$group as usize] {
-                Some(Code::$variant(c)) => Some(c),
+                Code::$variant(c) => Some(c),
                 // `set` keeps each code under its own group.
                 _ => None,
             }
@@ -417,12 +519,21 @@ impl Codes {
     /// Keeps `code` as its group's value.
     #[inline(always)]
     pub(crate) fn set(&mut self, code: Code, group: Group) {
-        self.by_group[group.index()] = Some(code);
+        self.by_group[group.index()] = code;
+        self.held |= 1 << group.index();
+    }
+
+    /// Forgets every code (a block emptied for reuse).
+    #[inline(always)]
+    pub(crate) fn clear(&mut self) {
+        self.held = 0;
     }
 
     /// Every code of the block, in group order ([`Group::ALL`]).
     pub fn each(&self) -> impl Iterator<Item = Code> + '_ {
-        self.by_group.iter().flatten().copied()
+        (0..Group::COUNT)
+            .filter(|&i| self.held & 1 << i != 0)
+            .map(|i| self.by_group[i])
     }
 
     group_value!(
@@ -467,25 +578,45 @@ impl Codes {
     );
     group_value!(
         /// Group 14.
-        work, Work, Work, WorkSystem
+        work, Work, Work, WorkCode
     );
     group_value!(
         /// Lathe group 02.
         surface_speed, SurfaceSpeed, SurfaceSpeed, SurfaceSpeed
     );
+    group_value!(
+        /// Group 11 (mill).
+        scaling, Scaling, Scaling, ScalingMode
+    );
+    group_value!(
+        /// Group 16 (mill).
+        rotation, Rotation, Rotation, RotationMode
+    );
+    group_value!(
+        /// Group 17 (mill).
+        polar, Polar, Polar, PolarMode
+    );
+    group_value!(
+        /// Group 22 (mill).
+        mirror, Mirror, Mirror, MirrorMode
+    );
+    group_value!(
+        /// G90.1/G91.1 (mill).
+        arc_center, ArcCenter, ArcCenter, ArcCenter
+    );
 }
 
 /// The modal group of a G code this table models, or why it does not.
 pub fn g_group(table: CodeTable, g: GCode) -> Result<Group, String> {
-    if g.minor != 0 {
-        return Err(format!("{g} is not supported by offsetlab"));
-    }
     Code::of(table, g)
         .map(Code::group)
         .ok_or_else(|| unsupported_reason(table, g))
 }
 
 fn unsupported_reason(table: CodeTable, g: GCode) -> String {
+    if g.minor != 0 {
+        return format!("{g} is not supported by offsetlab");
+    }
     let machine = table.machine();
     let lathe = machine == MachineKind::Lathe;
     let system_b_or_c = table.lathe_distance_codes();
@@ -501,12 +632,11 @@ fn unsupported_reason(table: CodeTable, g: GCode) -> String {
         50 if lathe && system_b_or_c => {
             "in G-code system B and C the coordinate system is set with G92 (setting gcode_system)"
         }
-        50 | 51 if !lathe => "scaling is not supported",
-        53 => "machine coordinate positioning is not supported",
+        51 if lathe => "scaling is the mill's (the lathe's G50 sets the coordinate system)",
         65..=67 => "macro calls are not supported",
-        68 | 69 => "coordinate rotation is not supported",
+        68 | 69 if lathe => "coordinate rotation is the mill's in offsetlab",
         70..=76 if lathe => "multiple repetitive cycles (G70–G76) are not supported yet",
-        15 | 16 => "polar coordinates are not supported",
+        15 | 16 if lathe => "polar coordinates are the mill's in offsetlab",
         17 | 19 if lathe => "the lathe works in the ZX plane (G18) only",
         61..=64 => "cutting modes (exact stop, tapping, continuous) are not modelled",
         91 if lathe => {
@@ -590,5 +720,22 @@ mod tests {
         assert!(e.contains("G07 is not a G code"), "{e}");
         let e = g_group(CodeTable::MILL, GCode { major: 5, minor: 1 }).unwrap_err();
         assert!(e.contains("G05.1"), "{e}");
+    }
+
+    #[test]
+    fn decimal_codes_write_back_what_was_read() {
+        for (major, minor, mill_only) in [
+            (50, 1, true),
+            (51, 1, true),
+            (54, 1, false),
+            (90, 1, true),
+            (91, 1, true),
+            (92, 1, true),
+        ] {
+            let g = GCode { major, minor };
+            let code = Code::of(CodeTable::MILL, g).unwrap();
+            assert_eq!(code.gcode(CodeTable::MILL), g.to_string());
+            assert_eq!(Code::of(CodeTable::LATHE, g).is_none(), mill_only, "{g}");
+        }
     }
 }
