@@ -164,6 +164,8 @@ impl Machine {
         let c = b.codes();
         let other = if c.non_modal() == Some(NonModal::Dwell) {
             Some("G04")
+        } else if c.non_modal() == Some(NonModal::OtherReference) {
+            Some("G30")
         } else if c.scaling() == Some(ScalingMode::Start) {
             Some("G51")
         } else if c.cycle().is_some() || self.state.modal.cycle.is_some() {
@@ -354,6 +356,14 @@ impl Machine {
         }
         let changed = self.state.length.changed_since(&old_length);
         let suspended = !lathe && named[2] && self.state.length.target != 0.0;
+        if !named.iter().any(|n| *n) {
+            out.notes
+                .push("G53 without axis words: no axis moves by it".to_string());
+            if !lathe {
+                self.length_only_motion(out, old_length)?;
+            }
+            return Ok(true);
+        }
         if !lathe {
             self.state.length.vector = if named[2] {
                 0.0
@@ -361,11 +371,6 @@ impl Machine {
                 let setting = self.setup.settings.length_offset_without_z;
                 self.state.length.vector_after(false, changed, setting)
             };
-        }
-        if !named.iter().any(|n| *n) && !changed {
-            out.notes
-                .push("G53 without axis words: no axis moves".to_string());
-            return Ok(true);
         }
         self.emit(out, start, super::MoveKind::Rapid, false, None);
         let machine = add(self.actual(), self.state.coords.zero);

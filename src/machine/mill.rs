@@ -233,7 +233,12 @@ impl Machine {
                 d,
                 register,
                 incremental,
-                mirror: self.mirror,
+                // The offset follows the movement as the mirror image
+                // switches and the transformations turn it (behaviour 4.14,
+                // 13.7).
+                mirror: std::array::from_fn(|i| {
+                    self.mirror[i] != (self.state.modal.transforms.axis_factor(i) < 0.0)
+                }),
                 units: self.units(),
             };
             delta = change.axes(amount, words.map(|w| w.is_some()), &mut out.notes);
@@ -276,7 +281,7 @@ impl Machine {
     /// A block that changes the length offset and moves no axis by its
     /// words: Z travels the change as offset motion (behaviour 3.3), or
     /// nothing moves.
-    fn length_only_motion(
+    pub(super) fn length_only_motion(
         &mut self,
         out: &mut Out,
         old_length: LengthState,
