@@ -21,8 +21,9 @@ use offsetlab::{
 };
 use proptest::prelude::*;
 
-const FIXTURES: [&str; 5] = [
+const FIXTURES: [&str; 6] = [
     "contour_g45",
+    "coordinates",
     "g54_g28",
     "inch_plate",
     "lathe_taper",

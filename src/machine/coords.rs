@@ -837,9 +837,12 @@ impl Machine {
                 RotationMode::Cancel => t.rotation = None,
             }
         }
+        // A sentence only for a mode the block changes.
+        let polar = polar.filter(|p| *p != self.state.modal.polar);
         if let Some(p) = polar {
             self.state.modal.polar = p;
         }
+        let arc = arc.filter(|a| Some(*a) != self.state.modal.arc_center);
         if let Some(a) = arc {
             self.state.modal.arc_center = Some(a);
             if !self.arc_center_warned {
