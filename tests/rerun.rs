@@ -21,9 +21,10 @@ use offsetlab::{
 };
 use proptest::prelude::*;
 
-const FIXTURES: [&str; 6] = [
+const FIXTURES: [&str; 7] = [
     "contour_g45",
     "coordinates",
+    "corners",
     "g54_g28",
     "inch_plate",
     "lathe_taper",
