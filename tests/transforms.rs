@@ -374,6 +374,14 @@ fn behaviour13_14_rotary_words_are_reported_not_drawn() {
     assert_eq!(w[0].0, "rotary-axis");
     assert!(w[0].1.starts_with("rotary axis A is reported, not drawn"));
     assert!(explain(&r, 1).contains("rotary axis A at 135.000°"));
+    // G28 returns the rotary axes it names, to 0° (our convention); a Haas
+    // G28 without axis words returns every axis, the rotary ones too.
+    let r = run("G00 A90. B10.\nG91 G28 X0 A0", &mill(&[]));
+    assert_eq!(r.blocks[1].state.rotary, [Some(0.0), Some(10.0), None]);
+    let mut haas = mill(&[]);
+    haas.settings.control = offsetlab::setup::Control::Haas;
+    let r = run("G00 A90. B10.\nG28", &haas);
+    assert_eq!(r.blocks[1].state.rotary, [Some(0.0), Some(0.0), None]);
     // The lathe refuses them (its C is the chamfer word of some controls).
     assert_eq!(errors("G00 A10.", &lathe(&[])), vec!["unsupported-word"]);
 }

@@ -18,6 +18,7 @@ mod mill;
 pub mod modal;
 mod reference;
 pub mod state;
+mod transform;
 
 pub use state::{ArcInfo, BlockState, EventKind, Move, MoveKind};
 

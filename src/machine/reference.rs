@@ -94,10 +94,14 @@ impl Machine {
         self.refuse_in_transforms(span, gcode)?;
         let n = self.reference_number(b, code)?;
         let mut named = AXES.map(|(a, _)| b.has(a));
-        let rotary = [Address::A, Address::B, Address::C].map(|a| b.has(a));
+        let mut rotary = [Address::A, Address::B, Address::C].map(|a| b.has(a));
         if !named.iter().any(|n| *n) && !rotary.iter().any(|n| *n) {
             match self.axes_without_words(span, gcode, [true; 3], out) {
-                Some(all) => named = all,
+                Some(all) => {
+                    named = all;
+                    // Every axis: the rotary axes the program has named too.
+                    rotary = self.state.rotary.map(|r| r.is_some());
+                }
                 None => {
                     self.length_words(b, out)?;
                     return Ok(());
@@ -134,8 +138,7 @@ impl Machine {
             }
         }
         for (i, r) in rotary.iter().enumerate() {
-            let home = *r || (named == [true; 3] && self.state.rotary[i].is_some());
-            if home {
+            if *r {
                 // Our convention: a rotary axis's reference position is 0°.
                 self.state.rotary[i] = Some(0.0);
             }
