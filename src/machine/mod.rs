@@ -13,6 +13,8 @@ mod cycles;
 mod lathe;
 mod mill;
 pub mod modal;
+mod modes;
+mod pocket;
 pub mod state;
 
 pub use state::{ArcInfo, BlockState, EventKind, Move, MoveKind};
@@ -81,6 +83,9 @@ pub struct Machine {
     cycle: cycles::CycleData,
     turning: lathe::TurningData,
     feed_warned: bool,
+    /// A mode is in effect that every block must be checked against (G93,
+    /// behaviour 14.8): no block takes the mill's fast path for plain moves.
+    special: bool,
     index: u32,
     line: u32,
     span: Span,
@@ -132,6 +137,7 @@ impl Machine {
             cycle: cycles::CycleData::default(),
             turning: lathe::TurningData::default(),
             feed_warned: false,
+            special: false,
             index: 0,
             line: 0,
             span: Span::default(),
@@ -171,7 +177,8 @@ impl Machine {
                     m.mirror_center,
                     m.cycle,
                     m.turning,
-                    m.feed_warned
+                    m.feed_warned,
+                    m.special
                 )
             )
         }
@@ -294,6 +301,51 @@ impl Machine {
             to,
             programmed_from: from.prog,
             programmed_to: prog,
+            arc,
+        });
+    }
+
+    /// Records a generated move whose actual path is not the programmed one
+    /// plus the offset vectors (a pocket's circles inside the contour,
+    /// behaviour 14.12; a corner, behaviour 14.14): both ends given. Like
+    /// [`Machine::emit`] it stops at the move budget and warns of a feed
+    /// move before any F; a straight move that goes nowhere is not recorded.
+    /// Out of line: ordinary moves take `emit`.
+    #[inline(never)]
+    pub(crate) fn push_move(
+        &mut self,
+        out: &mut Out,
+        kind: MoveKind,
+        from: Mark,
+        to: Mark,
+        arc: Option<ArcInfo>,
+    ) {
+        if arc.is_none() && from.act == to.act && from.prog == to.prog {
+            return;
+        }
+        if out.moves.len() >= self.moves_left {
+            self.overflow = true;
+            return;
+        }
+        let feed = kind != MoveKind::Rapid;
+        if feed && self.state.feed.is_none() && !self.feed_warned {
+            self.feed_warned = true;
+            out.warnings.push(Diagnostic::warning(
+                "missing-feed",
+                self.span,
+                "feed move before any F word: a control would stop here with an alarm",
+            ));
+        }
+        out.moves.push(Move {
+            kind,
+            at_feed: feed,
+            block: self.index,
+            line: self.line,
+            units: self.units(),
+            from: from.act,
+            to: to.act,
+            programmed_from: from.prog,
+            programmed_to: to.prog,
             arc,
         });
     }

@@ -306,6 +306,9 @@ pub struct Blocks<'a> {
     units: Units,
     /// A mill canned cycle is active (K is then a repeat count).
     in_cycle: bool,
+    /// The block holds G05.1, whose Q is a whole number (behaviour 14.4);
+    /// set afresh for every block.
+    whole_q: bool,
     tape: Tape,
     warned_integer: bool,
     diagnostics: Vec<Diagnostic>,
@@ -326,6 +329,7 @@ impl<'a> Blocks<'a> {
             units: options.units,
             options,
             in_cycle: false,
+            whole_q: false,
             tape: Tape::Before,
             warned_integer: false,
             diagnostics: Vec::new(),
@@ -514,12 +518,14 @@ impl<'a> Blocks<'a> {
         // the context the block started with, the way the two-pass reading
         // (its specification) reads it.
         let context = (self.units, self.in_cycle);
+        self.whole_q = false;
         let read = match self.one_pass {
             true => self.read_one_pass(i, line, counts, block),
             false => None,
         };
         let (end, mut last) = read.unwrap_or_else(|| {
             (self.units, self.in_cycle) = context;
+            self.whole_q = false;
             block.clear();
             self.read_two_pass(i, line, counts, block)
         });
@@ -537,14 +543,40 @@ impl<'a> Blocks<'a> {
     /// increment) and mill canned cycles (K is then a repeat count), from
     /// a G word's number as lexed (written without a point or sign).
     fn note_context(&mut self, n: Number) {
-        if n.frac_digits != 0 || n.negative {
+        if n.negative {
             return;
+        }
+        if n.frac_digits != 0 {
+            return self.note_decimal_context(n);
         }
         let Ok(major) = u16::try_from(n.mantissa) else {
             return;
         };
         if let Some(code) = Code::of(self.options.machine, GCode::new(major)) {
             self.note_code(code);
+        }
+    }
+
+    /// [`Blocks::note_context`] for a G code written with a decimal: G05.1's
+    /// Q is a whole number (Q1/Q0, behaviour 14.4). Out of line: few G codes
+    /// have a decimal.
+    #[inline(never)]
+    fn note_decimal_context(&mut self, n: Number) {
+        let (Ok(major), Ok(scaled)) = (
+            u16::try_from(n.mantissa / 10),
+            u8::try_from(n.mantissa % 10),
+        ) else {
+            return;
+        };
+        if n.frac_digits != 1 {
+            return;
+        }
+        let g = GCode {
+            major,
+            minor: scaled,
+        };
+        if Code::of(self.options.machine, g) == Some(Code::NonModal(codes::NonModal::AiContour)) {
+            self.whole_q = true;
         }
     }
 
@@ -565,7 +597,9 @@ impl<'a> Blocks<'a> {
             | Code::Length(_)
             | Code::Return(_)
             | Code::Work(_)
-            | Code::SurfaceSpeed(_) => {}
+            | Code::SurfaceSpeed(_)
+            | Code::CuttingMode(_)
+            | Code::Polar(_) => {}
         }
     }
 
@@ -580,10 +614,10 @@ impl<'a> Blocks<'a> {
         n: Number,
         span: Span,
     ) -> Result<(Word, WordKind), Refusal> {
-        let kind = if address == Address::K && self.in_cycle {
-            WordKind::Integer
-        } else {
-            address.kind()
+        let kind = match address {
+            Address::K if self.in_cycle => WordKind::Integer,
+            Address::Q if self.whole_q => WordKind::Integer,
+            _ => address.kind(),
         };
         let value = match kind {
             WordKind::Integer if address == Address::G => {

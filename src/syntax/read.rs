@@ -55,10 +55,11 @@ impl Blocks<'_> {
             let (word_end, next, number) = lexer::number(bytes, i + 1);
             let number = number.ok()?;
             if address == Address::G && counts {
-                let before = (self.units, self.in_cycle);
+                let before = (self.units, self.in_cycle, self.whole_q);
                 self.note_context(number);
                 if (read_dimension && self.units != before.0)
                     || (read_k && self.in_cycle != before.1)
+                    || (self.whole_q != before.2 && block.holds(Address::Q))
                 {
                     return None;
                 }

@@ -10,8 +10,9 @@ mod groups;
 mod mcodes;
 
 pub use groups::{
-    ArcDirection, CannedCycle, CutterCompensation, Cycle, Distance, FeedMode, LatheCycle,
-    LengthOffset, Motion, NonModal, Plane, PositionOffset, ReturnLevel, SurfaceSpeed, WorkSystem,
+    ArcDirection, CannedCycle, CutterCompensation, CuttingMode, Cycle, Distance, FeedMode,
+    LatheCycle, LengthOffset, Motion, NonModal, Plane, Polar, PolarSpelling, PositionOffset,
+    ReturnLevel, SurfaceSpeed, WorkSystem,
 };
 pub use mcodes::MCode;
 
@@ -37,14 +38,18 @@ pub enum Group {
     Cutter,
     /// 08: tool length offset.
     Length,
-    /// 09: canned cycles (mill).
+    /// 09: canned cycles (mill); the lathe has its G80 (Fanuc T group 10).
     Cycle,
     /// 10: canned-cycle return level (mill).
     Return,
     /// 14: work coordinate systems.
     Work,
-    /// Lathe 02: constant surface speed on/off.
+    /// Constant surface speed on/off (lathe 02, Fanuc M 13).
     SurfaceSpeed,
+    /// 15 (mill): exact stop, corner override, tapping and cutting modes.
+    CuttingMode,
+    /// 21 (lathe): polar coordinate interpolation.
+    Polar,
 }
 
 impl Group {
@@ -53,7 +58,7 @@ impl Group {
         self as usize
     }
     /// Number of groups.
-    pub const COUNT: usize = 12;
+    pub const COUNT: usize = 14;
     /// Every group, in index order.
     pub const ALL: [Group; Group::COUNT] = [
         Group::NonModal,
@@ -68,6 +73,8 @@ impl Group {
         Group::Return,
         Group::Work,
         Group::SurfaceSpeed,
+        Group::CuttingMode,
+        Group::Polar,
     ];
     /// The group's name in the manuals.
     pub fn label(self) -> &'static str {
@@ -83,7 +90,9 @@ impl Group {
             Group::Cycle => "09 (canned cycle)",
             Group::Return => "10 (return level)",
             Group::Work => "14 (work coordinates)",
-            Group::SurfaceSpeed => "02 (constant surface speed)",
+            Group::SurfaceSpeed => "02/13 (constant surface speed)",
+            Group::CuttingMode => "15 (cutting mode)",
+            Group::Polar => "21 (polar coordinate interpolation)",
         }
     }
 }
@@ -130,6 +139,8 @@ pub enum Code {
     Return(ReturnLevel),
     Work(WorkSystem),
     SurfaceSpeed(SurfaceSpeed),
+    CuttingMode(CuttingMode),
+    Polar(Polar),
 }
 
 impl Code {
@@ -142,7 +153,7 @@ impl Code {
         use ArcDirection::{Ccw, Cw};
         use Code as C;
         if g.minor != 0 {
-            return None;
+            return Code::of_decimal(machine, g);
         }
         Some(match machine {
             MachineKind::Mill => match g.major {
@@ -151,12 +162,17 @@ impl Code {
                 2 => C::Motion(Motion::Arc(Cw)),
                 3 => C::Motion(Motion::Arc(Ccw)),
                 4 => C::NonModal(NonModal::Dwell),
+                8 => C::NonModal(NonModal::LookAhead),
+                9 => C::NonModal(NonModal::ExactStop),
+                12 => C::NonModal(NonModal::CirclePocket(Cw)),
+                13 => C::NonModal(NonModal::CirclePocket(Ccw)),
                 17 => C::Plane(Plane::XY),
                 18 => C::Plane(Plane::ZX),
                 19 => C::Plane(Plane::YZ),
                 20 => C::Units(Units::Inch),
                 21 => C::Units(Units::Mm),
                 28 => C::NonModal(NonModal::ReferenceReturn),
+                31 => C::NonModal(NonModal::Skip),
                 40 => C::CutterCompensation(CutterCompensation::Cancel),
                 43 => C::Length(LengthOffset::Add),
                 44 => C::Length(LengthOffset::Subtract),
@@ -166,6 +182,10 @@ impl Code {
                 48 => C::NonModal(NonModal::PositionOffset(PositionOffset::DoubleReduction)),
                 49 => C::Length(LengthOffset::Cancel),
                 54..=59 => C::Work(work_system(g.major)),
+                61 => C::CuttingMode(CuttingMode::ExactStop),
+                62 => C::CuttingMode(CuttingMode::CornerOverride),
+                63 => C::CuttingMode(CuttingMode::Tapping),
+                64 => C::CuttingMode(CuttingMode::Cutting),
                 73 => C::Cycle(CannedCycle::Cycle(Cycle::HighSpeedPeck)),
                 74 => C::Cycle(CannedCycle::Cycle(Cycle::LeftHandTapping)),
                 76 => C::Cycle(CannedCycle::Cycle(Cycle::FineBoring)),
@@ -182,10 +202,14 @@ impl Code {
                 90 => C::Distance(Distance::Absolute),
                 91 => C::Distance(Distance::Incremental),
                 92 => C::NonModal(NonModal::SetCoordinates),
+                93 => C::FeedMode(FeedMode::InverseTime),
                 94 => C::FeedMode(FeedMode::PerMinute),
                 95 => C::FeedMode(FeedMode::PerRevolution),
+                96 => C::SurfaceSpeed(SurfaceSpeed::Constant),
+                97 => C::SurfaceSpeed(SurfaceSpeed::Cancel),
                 98 => C::Return(ReturnLevel::Initial),
                 99 => C::Return(ReturnLevel::R),
+                187 => C::NonModal(NonModal::Smoothness),
                 _ => return None,
             },
             MachineKind::Lathe => match g.major {
@@ -198,9 +222,13 @@ impl Code {
                 20 => C::Units(Units::Inch),
                 21 => C::Units(Units::Mm),
                 28 => C::NonModal(NonModal::ReferenceReturn),
+                31 => C::NonModal(NonModal::Skip),
                 40 => C::CutterCompensation(CutterCompensation::Cancel),
                 50 => C::NonModal(NonModal::SetCoordinates),
                 54..=59 => C::Work(work_system(g.major)),
+                // The lathe's canned cycle cancel (Fanuc T group 10): its
+                // drilling cycles are refused (behaviour 14.9).
+                80 => C::Cycle(CannedCycle::Cancel),
                 90 => C::Motion(Motion::LatheCycle(LatheCycle::Turning)),
                 92 => C::Motion(Motion::LatheCycle(LatheCycle::Threading)),
                 94 => C::Motion(Motion::LatheCycle(LatheCycle::Facing)),
@@ -208,8 +236,24 @@ impl Code {
                 97 => C::SurfaceSpeed(SurfaceSpeed::Cancel),
                 98 => C::FeedMode(FeedMode::PerMinute),
                 99 => C::FeedMode(FeedMode::PerRevolution),
+                112 => C::Polar(Polar::On(PolarSpelling::Haas)),
+                113 => C::Polar(Polar::Off(PolarSpelling::Haas)),
                 _ => return None,
             },
+        })
+    }
+
+    /// [`Code::of`] for a code written with a decimal (`G05.1`): out of line,
+    /// as nearly every G code is a whole number (the parser's dispatch).
+    #[inline(never)]
+    fn of_decimal(machine: MachineKind, g: GCode) -> Option<Code> {
+        use Code as C;
+        Some(match (machine, g.major, g.minor) {
+            (MachineKind::Mill, 5, 1) => C::NonModal(NonModal::AiContour),
+            (_, 7, 1) => C::NonModal(NonModal::Cylindrical),
+            (MachineKind::Lathe, 12, 1) => C::Polar(Polar::On(PolarSpelling::Fanuc)),
+            (MachineKind::Lathe, 13, 1) => C::Polar(Polar::Off(PolarSpelling::Fanuc)),
+            _ => return None,
         })
     }
 
@@ -229,6 +273,8 @@ impl Code {
             Code::Return(_) => Group::Return,
             Code::Work(_) => Group::Work,
             Code::SurfaceSpeed(_) => Group::SurfaceSpeed,
+            Code::CuttingMode(_) => Group::CuttingMode,
+            Code::Polar(_) => Group::Polar,
         }
     }
 
@@ -247,6 +293,8 @@ impl Code {
             Code::Return(c) => c.gcode(),
             Code::Work(c) => c.gcode(),
             Code::SurfaceSpeed(c) => c.gcode(),
+            Code::CuttingMode(c) => c.gcode(),
+            Code::Polar(c) => c.gcode(),
         }
     }
 }
@@ -346,16 +394,21 @@ impl Codes {
         work, Work, Work, WorkSystem
     );
     group_value!(
-        /// Lathe group 02.
+        /// Lathe group 02, mill group 13.
         surface_speed, SurfaceSpeed, SurfaceSpeed, SurfaceSpeed
+    );
+    group_value!(
+        /// Mill group 15.
+        cutting_mode, CuttingMode, CuttingMode, CuttingMode
+    );
+    group_value!(
+        /// Lathe group 21.
+        polar, Polar, Polar, Polar
     );
 }
 
 /// The modal group of a G code this machine models, or why it does not.
 pub fn g_group(machine: MachineKind, g: GCode) -> Result<Group, String> {
-    if g.minor != 0 {
-        return Err(format!("{g} is not supported by offsetlab"));
-    }
     Code::of(machine, g)
         .map(Code::group)
         .ok_or_else(|| unsupported_reason(machine, g))
@@ -363,6 +416,26 @@ pub fn g_group(machine: MachineKind, g: GCode) -> Result<Group, String> {
 
 fn unsupported_reason(machine: MachineKind, g: GCode) -> String {
     let lathe = machine == MachineKind::Lathe;
+    if g.minor != 0 {
+        let why = match (g.major, g.minor) {
+            (12 | 13, 1) => {
+                "polar coordinate interpolation is modelled on the lathe only (with X and C)"
+            }
+            (5, 1) => "AI contour control is a mill code (G05.1 Q1/Q0)",
+            (61, 1) => {
+                "no Fanuc, Haas or YASNAC control has G61.1 (it is Mitsubishi's high-accuracy control and LinuxCNC's exact path); use G61 for exact stop mode"
+            }
+            (31, _) => {
+                "the multi-step and high-speed skip codes are not modelled; G31 (with P1–P4) is"
+            }
+            _ => "is not a G code offsetlab knows",
+        };
+        return if why.starts_with("is not") {
+            format!("{g} {why} on the {}", machine.as_str())
+        } else {
+            format!("{g}: {why}")
+        };
+    }
     let why = match g.major {
         41 | 42 if lathe => "tool nose radius compensation is not modelled",
         41 | 42 => {
@@ -379,7 +452,14 @@ fn unsupported_reason(machine: MachineKind, g: GCode) -> String {
         70..=76 if lathe => "multiple repetitive cycles (G70–G76) are not supported yet",
         15 | 16 => "polar coordinates are not supported",
         17 | 19 if lathe => "the lathe works in the ZX plane (G18) only",
-        61..=64 => "cutting modes (exact stop, tapping, continuous) are not modelled",
+        61..=64 | 9 | 8 | 93 | 187 if lathe => "this cutting-mode or feed code is a mill code",
+        12 | 13 if lathe => {
+            "circular pocket milling is a mill code; polar coordinate interpolation is G12.1/G13.1 (Haas G112/G113)"
+        }
+        81..=89 if lathe => {
+            "the lathe's drilling canned cycles (live tooling) are not modelled; G80 cancels them"
+        }
+        112 | 113 => "polar coordinate interpolation is modelled on the lathe only",
         91 if lathe => "the lathe (G-code system A) has no G91; U and W are the incremental axes",
         _ => "is not a G code offsetlab knows",
     };
@@ -430,8 +510,9 @@ mod tests {
     #[test]
     fn every_code_writes_back_the_number_it_was_read_from() {
         for machine in [MachineKind::Mill, MachineKind::Lathe] {
-            for n in 0..=200 {
-                let g = GCode::new(n);
+            let decimals =
+                (0..=200).flat_map(|n| (1..=9).map(move |m| GCode { major: n, minor: m }));
+            for g in (0..=200).map(GCode::new).chain(decimals) {
                 if let Some(code) = Code::of(machine, g) {
                     assert_eq!(code.gcode(machine), g.to_string(), "{machine:?} {g}");
                     assert_eq!(g_group(machine, g), Ok(code.group()));
@@ -441,6 +522,10 @@ mod tests {
                 }
             }
             assert_eq!(Code::of(machine, GCode { major: 1, minor: 5 }), None);
+            assert_eq!(
+                g_group(machine, GCode { major: 7, minor: 1 }),
+                Ok(Group::NonModal)
+            );
         }
     }
 
@@ -450,7 +535,21 @@ mod tests {
         assert!(e.contains("G45–G48"), "{e}");
         let e = g_group(MachineKind::Mill, GCode::new(7)).unwrap_err();
         assert!(e.contains("G07 is not a G code"), "{e}");
-        let e = g_group(MachineKind::Mill, GCode { major: 5, minor: 1 }).unwrap_err();
+        let e = g_group(
+            MachineKind::Mill,
+            GCode {
+                major: 61,
+                minor: 1,
+            },
+        )
+        .unwrap_err();
+        assert!(
+            e.contains("G61.1") && e.contains("G61 for exact stop"),
+            "{e}"
+        );
+        let e = g_group(MachineKind::Lathe, GCode { major: 5, minor: 1 }).unwrap_err();
         assert!(e.contains("G05.1"), "{e}");
+        let e = g_group(MachineKind::Lathe, GCode::new(83)).unwrap_err();
+        assert!(e.contains("drilling canned cycles"), "{e}");
     }
 }
