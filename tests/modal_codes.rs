@@ -7,7 +7,11 @@ mod common;
 use common::*;
 use offsetlab::{MachineKind, MoveKind, run};
 
-fn modal(r: &offsetlab::report::Run, i: usize, m: MachineKind) -> offsetlab::machine::modal::ModalCodes {
+fn modal(
+    r: &offsetlab::report::Run,
+    i: usize,
+    m: MachineKind,
+) -> offsetlab::machine::modal::ModalCodes {
     r.blocks[i].state.modal.codes(m)
 }
 
@@ -56,7 +60,11 @@ fn behaviour14_2_cutting_modes_and_exact_stop_change_no_path() {
             Some("G64")
         ]
     );
-    assert!(explain(&r, 0).starts_with("G61 exact stop mode"), "{}", explain(&r, 0));
+    assert!(
+        explain(&r, 0).starts_with("G61 exact stop mode"),
+        "{}",
+        explain(&r, 0)
+    );
     assert!(explain(&r, 2).starts_with("G62 automatic corner override"));
     assert!(explain(&r, 3).starts_with("G63 tapping mode"));
     assert!(explain(&r, 4).starts_with("G64 cutting mode"));
@@ -84,7 +92,11 @@ fn behaviour14_3_mode_codes_of_group_00_stand_alone() {
         let r = run(text, &mill(&[]));
         let e = r.diagnostics.iter().find(|d| d.is_error()).unwrap();
         assert_eq!(e.code, "mode-words", "{text}");
-        assert!(e.message.contains(&format!("{letter} is not read")), "{text}: {}", e.message);
+        assert!(
+            e.message.contains(&format!("{letter} is not read")),
+            "{text}: {}",
+            e.message
+        );
     }
     // Other modal codes, M, S and F may share the block.
     let r = ok("G90 G17 G05.1 Q1 M08 S1000", &mill(&[]));
@@ -111,7 +123,10 @@ fn behaviour14_4_g05_1_switches_ai_contour_control_with_a_whole_q() {
     assert_eq!(errors("G05.1", &mill(&[])), vec!["mode-words"]);
     assert_eq!(errors("G05.1 Q1.", &mill(&[])), vec!["decimal-point"]);
     let r = ok("G83 X0 Z-5. R1. Q2500 F100.", &mill(&[]));
-    assert_eq!(r.diagnostics[0].code, "integer-dimension", "Q of G83 is a dimension");
+    assert_eq!(
+        r.diagnostics[0].code, "integer-dimension",
+        "Q of G83 is a dimension"
+    );
 }
 
 #[test]
@@ -129,7 +144,10 @@ fn behaviour14_5_g08_switches_look_ahead() {
 fn behaviour14_6_g187_sets_the_haas_smoothness() {
     let r = ok("G187 P1\nG187 P3\nG187", &mill(&[]));
     let m = |i| modal(&r, i, MachineKind::Mill).smoothness;
-    assert_eq!([m(0), m(1), m(2)], [Some("G187 P1"), Some("G187 P3"), Some("G187")]);
+    assert_eq!(
+        [m(0), m(1), m(2)],
+        [Some("G187 P1"), Some("G187 P3"), Some("G187")]
+    );
     assert!(explain(&r, 0).starts_with("G187 P1 smoothness rough"));
     assert!(explain(&r, 2).contains("Setting 191"));
     assert_eq!(errors("G187 P4", &mill(&[])), vec!["mode-words"]);
@@ -194,7 +212,10 @@ fn behaviour14_8_feed_modes_and_surface_speed_on_the_mill() {
         errors("G93 G01 X1. F1.\nX2.", &mill(&[])),
         vec!["inverse-time-feed"]
     );
-    assert_eq!(errors("G93 G01 X1. F0", &mill(&[])), vec!["inverse-time-feed"]);
+    assert_eq!(
+        errors("G93 G01 X1. F0", &mill(&[])),
+        vec!["inverse-time-feed"]
+    );
     // Rapids need none; back in G94 F is modal again.
     ok("G93\nG00 X5.\nG94 G01 X6. F100.\nX7.", &mill(&[]));
 }

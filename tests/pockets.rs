@@ -12,14 +12,22 @@ use std::f64::consts::PI;
 #[track_caller]
 fn arc(m: &Move, radius: f64, programmed_radius: f64, centre: [f64; 3], sweep: f64) {
     let a = m.arc.expect("an arc");
-    assert!((a.radius - radius).abs() < 1e-9, "radius {} want {radius}", a.radius);
+    assert!(
+        (a.radius - radius).abs() < 1e-9,
+        "radius {} want {radius}",
+        a.radius
+    );
     assert!(
         (a.programmed_radius - programmed_radius).abs() < 1e-9,
         "programmed radius {} want {programmed_radius}",
         a.programmed_radius
     );
     same(a.center, centre);
-    assert!((a.sweep - sweep).abs() < 1e-9, "sweep {} want {sweep}", a.sweep);
+    assert!(
+        (a.sweep - sweep).abs() < 1e-9,
+        "sweep {} want {sweep}",
+        a.sweep
+    );
 }
 
 #[test]
@@ -101,7 +109,11 @@ fn behaviour14_12_i_alone_cuts_one_circle_and_k_need_not_be_a_whole_number_of_st
         .collect();
     assert_eq!(circles, vec![5.0, 8.0, 11.0, 12.0]);
     // D00 is the tool centreline: both paths are the same.
-    assert!(r.moves.iter().all(|m| m.from == m.programmed_from && m.to == m.programmed_to));
+    assert!(
+        r.moves
+            .iter()
+            .all(|m| m.from == m.programmed_from && m.to == m.programmed_to)
+    );
 }
 
 #[test]
@@ -116,7 +128,11 @@ fn behaviour14_12_l_repeats_the_pass_and_in_g91_z_steps_down_each_time() {
         arc(&r.moves[4 * k + 2], 4.0, 6.0, [0.0, 0.0, z], -2.0 * PI);
     }
     same(programmed(&r, 0), [0.0, 0.0, -3.0]);
-    assert!(explain(&r, 0).ends_with("3 passes (L3)."), "{}", explain(&r, 0));
+    assert!(
+        explain(&r, 0).ends_with("3 passes (L3)."),
+        "{}",
+        explain(&r, 0)
+    );
     // In G90 the depth is the same on every pass: the second pass has no
     // move down (4 + 3 moves), its lead-in starts at the centre at Z-1.
     let r = ok("G12 Z-1. I6. L2 F100.", &mill(&[]));
@@ -129,7 +145,11 @@ fn behaviour14_12_l_repeats_the_pass_and_in_g91_z_steps_down_each_time() {
 fn behaviour14_12_the_offsets_and_mirror_image_carry_the_pocket() {
     // G43 H02 = 50: the actual Z is 50 above the programmed one throughout.
     let r = ok("G43 Z10. H02\nG12 Z-5. I4. F100.", &mill(&[(2, 50.0)]));
-    assert!(r.moves[1..].iter().all(|m| (m.to[2] - m.programmed_to[2] - 50.0).abs() < 1e-9));
+    assert!(
+        r.moves[1..]
+            .iter()
+            .all(|m| (m.to[2] - m.programmed_to[2] - 50.0).abs() < 1e-9)
+    );
     same(actual(&r, 1), [0.0, 0.0, 45.0]);
     // Mirror image of X: the lead-in goes to -X and G12 turns the other way.
     let mut s = mill(&[]);

@@ -315,12 +315,35 @@ fn work_system(major: u16) -> WorkSystem {
 /// The G codes of one block, one typed value per modal group: the parser
 /// resolved each (and refused a block with two of a group or an unknown
 /// code), so the machine reads them here.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug)]
 pub struct Codes {
-    /// Per group (by [`Group::index`]), its code: keeping a code is one
-    /// store, which the parser does for every G word.
-    by_group: [Option<Code>; Group::COUNT],
+    /// The groups that hold a code, a bit each (by [`Group::index`]):
+    /// emptying the block for the next is this one store, whatever the
+    /// values left behind (the `check` instruction count in
+    /// docs/performance.md: clearing an array of `Option<Code>` cost two
+    /// dozen instructions a block).
+    present: u16,
+    /// Per group, its code, valid where `present` has the group's bit:
+    /// keeping a code is one store, which the parser does for every G word.
+    by_group: [Code; Group::COUNT],
 }
+
+impl Default for Codes {
+    fn default() -> Self {
+        Codes {
+            present: 0,
+            by_group: [Code::Motion(Motion::Rapid); Group::COUNT],
+        }
+    }
+}
+
+impl PartialEq for Codes {
+    fn eq(&self, other: &Codes) -> bool {
+        self.present == other.present && self.each().eq(other.each())
+    }
+}
+
+impl Eq for Codes {}
 
 /// The accessor of one group's value.
 macro_rules! group_value {
@@ -328,8 +351,11 @@ macro_rules! group_value {
         $(#[$doc])*
         #[inline(always)]
         pub fn $name(&self) -> Option<$ty> {
+            if self.present & 1 << Group::$group as usize == 0 {
+                return None;
+            }
             match self.by_group[Group::$group as usize] {
-                Some(Code::$variant(c)) => Some(c),
+                Code::$variant(c) => Some(c),
                 // `set` keeps each code under its own group.
                 _ => None,
             }
@@ -341,12 +367,23 @@ impl Codes {
     /// Keeps `code` as its group's value.
     #[inline(always)]
     pub(crate) fn set(&mut self, code: Code, group: Group) {
-        self.by_group[group.index()] = Some(code);
+        self.by_group[group.index()] = code;
+        self.present |= 1 << group.index();
+    }
+
+    /// Forgets every code (the values stay, unread).
+    #[inline(always)]
+    pub(crate) fn clear(&mut self) {
+        self.present = 0;
     }
 
     /// Every code of the block, in group order ([`Group::ALL`]).
     pub fn each(&self) -> impl Iterator<Item = Code> + '_ {
-        self.by_group.iter().flatten().copied()
+        self.by_group
+            .iter()
+            .enumerate()
+            .filter(|(i, _)| self.present & 1 << i != 0)
+            .map(|(_, c)| *c)
     }
 
     group_value!(
