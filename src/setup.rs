@@ -232,6 +232,16 @@ pub enum SameGroupCodes {
     LastWins,
 }
 
+/// What G12/G13 mean on the mill (behaviour 7.19, 14.13).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CirclePocket {
+    /// Haas circular pocket milling: I, K, Q, L, D, Z, F.
+    Haas,
+    /// Not a code of the control: an alarm.
+    Alarm,
+}
+
 /// The lathe's G-code system (behaviour 7.18): which numbers the single
 /// cycles, coordinate setting, feed modes and inch/metric have.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -295,6 +305,10 @@ pub struct Settings {
     /// [`Settings::gcode_system`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub gcode_system: Option<GCodeSystem>,
+    /// G12/G13 on the mill (behaviour 7.19); read it with
+    /// [`Settings::circle_pocket`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub circle_pocket: Option<CirclePocket>,
 }
 
 impl Settings {
@@ -307,6 +321,17 @@ impl Settings {
         self.same_group_codes.unwrap_or(match self.control {
             Control::Yasnac => SameGroupCodes::Error,
             Control::Fanuc | Control::Haas => SameGroupCodes::LastWins,
+        })
+    }
+
+    /// G12/G13 on the mill: Haas mills cut a circular pocket (Haas mill
+    /// operator's manual, "G12 Circular Pocket Milling CW / G13 … CCW");
+    /// neither the Fanuc 0i-MF G-code list nor the YASNAC seeds' manual has
+    /// them on the mill, where the control alarms.
+    pub fn circle_pocket(&self) -> CirclePocket {
+        self.circle_pocket.unwrap_or(match self.control {
+            Control::Haas => CirclePocket::Haas,
+            Control::Yasnac | Control::Fanuc => CirclePocket::Alarm,
         })
     }
 

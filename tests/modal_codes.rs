@@ -230,3 +230,68 @@ fn behaviour14_9_the_lathe_reads_g80() {
     assert_eq!(modal(&r, 2, MachineKind::Lathe).motion, "G90");
     assert_eq!(r.moves.len(), 1 + 4 + 4);
 }
+
+#[test]
+fn behaviour14_6_g187_e_is_the_corner_tolerance() {
+    let r = ok("G187 P2 E0.05", &mill(&[]));
+    let s = explain(&r, 0);
+    assert!(
+        s.starts_with("G187 P2 smoothness medium; E0.050: the control may round each corner"),
+        "{s}"
+    );
+    let st = r.blocks[0].state.modal.smoothness.unwrap();
+    assert_eq!(st.corner, Some(0.05));
+    assert_eq!(errors("G187 P1 E-0.1", &mill(&[])), vec!["mode-words"]);
+    // E elsewhere stays refused.
+    assert_eq!(
+        errors("G01 X1. E0.1 F10.", &mill(&[])),
+        vec!["unsupported-word"]
+    );
+}
+
+#[test]
+fn behaviour14_10_g07_1_cylindrical_interpolation_is_reported_not_drawn() {
+    // Lathe: G07.1 C20. turns it on; in the mode a C word is an angle, 30° on
+    // a radius of 20 is 20 × π/6 = 10.472 mm of surface; Z is drawn.
+    let text = "G07.1 C20.\nG01 Z-5. C30. F0.1\nG07.1 C0\nG01 C10.";
+    let r = run(text, &lathe(&[]));
+    assert_eq!(modal(&r, 0, MachineKind::Lathe).cylindrical, Some("G07.1"));
+    assert!(
+        explain(&r, 0)
+            .starts_with("G07.1 cylindrical interpolation on, about a cylinder of radius 20.000")
+    );
+    assert_eq!(
+        explain(&r, 1),
+        "C30° on the cylinder of radius 20.000 (10.472 along its surface from 0°, G07.1): not drawn."
+    );
+    same(r.moves[0].to, [0.0, 0.0, -5.0]);
+    assert_eq!(modal(&r, 2, MachineKind::Lathe).cylindrical, None);
+    // Out of the mode, C is refused again.
+    let e: Vec<_> = r.diagnostics.iter().filter(|d| d.is_error()).collect();
+    assert_eq!((e.len(), e[0].code, e[0].line), (1, "unsupported-word", 4));
+    // The mill's rotary word may be A, B or C; one of them, not negative.
+    ok("G07.1 A30.\nG01 X5. A90. F100.\nG07.1 A0", &mill(&[]));
+    assert_eq!(errors("G07.1", &mill(&[])), vec!["mode-words"]);
+    assert_eq!(errors("G07.1 A-3.", &mill(&[])), vec!["mode-words"]);
+    assert_eq!(errors("G07.1 C20. X5.", &lathe(&[])), vec!["mode-words"]);
+}
+
+#[test]
+fn behaviour14_11_polar_interpolation_is_kept_and_its_moves_refused() {
+    for (on, off) in [("G12.1", "G13.1"), ("G112", "G113")] {
+        let text = format!("{on}\n{off}\nG01 X10. F0.1");
+        let r = ok(&text, &lathe(&[]));
+        assert_eq!(modal(&r, 0, MachineKind::Lathe).polar, Some(on));
+        assert!(explain(&r, 0).starts_with(&format!("{on} polar coordinate interpolation on")));
+        assert_eq!(modal(&r, 1, MachineKind::Lathe).polar, Some(off));
+        let r = run(&format!("{on}\nG01 X20. C5. F0.1"), &lathe(&[]));
+        let e = r.diagnostics.iter().find(|d| d.is_error()).unwrap();
+        assert_eq!(e.code, "polar-interpolation");
+        assert!(e.message.contains(off), "{}", e.message);
+    }
+    // The start state is G13.1; the mill refuses the codes with the reason.
+    let r = ok("G00 X1.", &lathe(&[]));
+    assert_eq!(modal(&r, 0, MachineKind::Lathe).polar, Some("G13.1"));
+    let r = run("G12.1", &mill(&[]));
+    assert!(r.diagnostics[0].message.contains("lathe only"));
+}

@@ -5,9 +5,16 @@
 
 mod common;
 use common::*;
-use offsetlab::setup::Mirror;
+use offsetlab::setup::{CirclePocket, Control, Mirror};
 use offsetlab::{Move, MoveKind, run};
 use std::f64::consts::PI;
+
+/// A Haas mill with registers `(number, value)`.
+fn haas(registers: &[(u16, f64)]) -> offsetlab::Setup {
+    let mut s = mill(registers);
+    s.settings.control = Control::Haas;
+    s
+}
 
 #[track_caller]
 fn arc(m: &Move, radius: f64, programmed_radius: f64, centre: [f64; 3], sweep: f64) {
@@ -36,7 +43,7 @@ fn behaviour14_12_the_haas_example_i_k_q_cuts_circles_from_i_out_to_k() {
     // with D01 = 0.125 (a 1/4 in end mill) about X1. Y2.: the contour's
     // circles have radii 0.25, 0.5, 0.75, 1.0 and the tool centre runs 0.125
     // inside each, on 0.125, 0.375, 0.625, 0.875.
-    let mut s = mill(&[(1, 0.125)]);
+    let mut s = haas(&[(1, 0.125)]);
     s.units = offsetlab::Units::Inch;
     let text = "G00 X1. Y2.\nG13 I0.25 K1.0 Q0.25 D01 Z-0.1 F10.";
     let r = ok(text, &s);
@@ -88,7 +95,7 @@ fn behaviour14_12_i_alone_cuts_one_circle_and_k_need_not_be_a_whole_number_of_st
     // G12 I10. with D01 = 3 from the centre (0, 0), X and Y given in the
     // block: a rapid to (20, 10), lead-in CW to (27, 10), the circle of
     // radius 7 CW, lead-out back. CW: the sweeps are negative.
-    let r = ok("G12 X20. Y10. I10. D01 F200.", &mill(&[(1, 3.0)]));
+    let r = ok("G12 X20. Y10. I10. D01 F200.", &haas(&[(1, 3.0)]));
     assert_eq!(r.moves.len(), 4);
     assert_eq!(r.moves[0].kind, MoveKind::Rapid);
     same(r.moves[0].to, [20.0, 10.0, 0.0]);
@@ -99,7 +106,7 @@ fn behaviour14_12_i_alone_cuts_one_circle_and_k_need_not_be_a_whole_number_of_st
     arc(&r.moves[2], 7.0, 10.0, [20.0, 10.0, 0.0], -2.0 * PI);
     arc(&r.moves[3], 3.5, 5.0, [23.5, 10.0, 0.0], -PI);
     // K0.. I5 K12 Q3 gives 5, 8, 11, 12: the last step is 1.
-    let r = ok("G13 I5. K12. Q3. F100.", &mill(&[]));
+    let r = ok("G13 I5. K12. Q3. F100.", &haas(&[]));
     let circles: Vec<f64> = r
         .moves
         .iter()
@@ -120,7 +127,7 @@ fn behaviour14_12_i_alone_cuts_one_circle_and_k_need_not_be_a_whole_number_of_st
 fn behaviour14_12_l_repeats_the_pass_and_in_g91_z_steps_down_each_time() {
     // G91 Z-1. L3 from Z0: passes at Z-1, -2, -3, each a feed down, lead-in,
     // circle, lead-out (4 moves), ending at the centre at Z-3.
-    let r = ok("G12 G91 Z-1. I6. L3 D01 F100.", &mill(&[(1, 2.0)]));
+    let r = ok("G12 G91 Z-1. I6. L3 D01 F100.", &haas(&[(1, 2.0)]));
     assert_eq!(r.moves.len(), 12);
     for (k, z) in [-1.0, -2.0, -3.0].into_iter().enumerate() {
         assert_eq!(r.moves[4 * k].kind, MoveKind::Feed);
@@ -135,7 +142,7 @@ fn behaviour14_12_l_repeats_the_pass_and_in_g91_z_steps_down_each_time() {
     );
     // In G90 the depth is the same on every pass: the second pass has no
     // move down (4 + 3 moves), its lead-in starts at the centre at Z-1.
-    let r = ok("G12 Z-1. I6. L2 F100.", &mill(&[]));
+    let r = ok("G12 Z-1. I6. L2 F100.", &haas(&[]));
     assert_eq!(r.moves.len(), 7);
     same(r.moves[4].from, [0.0, 0.0, -1.0]);
     assert!(r.moves[4].arc.is_some());
@@ -144,7 +151,7 @@ fn behaviour14_12_l_repeats_the_pass_and_in_g91_z_steps_down_each_time() {
 #[test]
 fn behaviour14_12_the_offsets_and_mirror_image_carry_the_pocket() {
     // G43 H02 = 50: the actual Z is 50 above the programmed one throughout.
-    let r = ok("G43 Z10. H02\nG12 Z-5. I4. F100.", &mill(&[(2, 50.0)]));
+    let r = ok("G43 Z10. H02\nG12 Z-5. I4. F100.", &haas(&[(2, 50.0)]));
     assert!(
         r.moves[1..]
             .iter()
@@ -152,7 +159,7 @@ fn behaviour14_12_the_offsets_and_mirror_image_carry_the_pocket() {
     );
     same(actual(&r, 1), [0.0, 0.0, 45.0]);
     // Mirror image of X: the lead-in goes to -X and G12 turns the other way.
-    let mut s = mill(&[]);
+    let mut s = haas(&[]);
     s.settings.mirror = Mirror { x: true, y: false };
     let r = ok("G12 I4. F100.", &s);
     same(r.moves[0].to, [-4.0, 0.0, 0.0]);
@@ -165,14 +172,14 @@ fn behaviour14_12_a_pocket_is_bounded_by_the_move_budget() {
         max_moves: 100,
         ..offsetlab::RunOptions::default()
     };
-    let r = offsetlab::run_with("G12 I1. K9000. Q0.001 L9999 F100.", &mill(&[]), options);
+    let r = offsetlab::run_with("G12 I1. K9000. Q0.001 L9999 F100.", &haas(&[]), options);
     assert_eq!(r.diagnostics.last().unwrap().code, "too-many-moves");
     assert!(r.moves.len() <= 100);
 }
 
 #[test]
 fn behaviour14_13_pocket_words_are_checked_as_haas_does() {
-    let s = mill(&[(1, 3.0)]);
+    let s = haas(&[(1, 3.0)]);
     for (text, why) in [
         ("G12 F100.", "needs I"),
         ("G12 I3. D01 F100.", "greater than the tool radius"),
@@ -191,4 +198,27 @@ fn behaviour14_13_pocket_words_are_checked_as_haas_does() {
         assert_eq!(e.code, "pocket-words", "{text}");
         assert!(e.message.contains(why), "{text}: {}", e.message);
     }
+}
+
+#[test]
+fn behaviour14_13_fanuc_and_yasnac_mills_alarm_on_g12_and_g13() {
+    for control in [Control::Yasnac, Control::Fanuc] {
+        let mut s = mill(&[]);
+        s.settings.control = control;
+        let r = run("G12 I5. F100.", &s);
+        let e = &r.diagnostics[0];
+        assert_eq!(e.code, "unsupported-g-code");
+        assert!(
+            e.message.contains("circular pocket milling on a Haas mill"),
+            "{}",
+            e.message
+        );
+        // The setting models the pocket on them too.
+        s.settings.circle_pocket = Some(CirclePocket::Haas);
+        ok("G12 I5. F100.", &s);
+    }
+    // And a Haas profile may refuse it.
+    let mut s = haas(&[]);
+    s.settings.circle_pocket = Some(CirclePocket::Alarm);
+    assert_eq!(errors("G13 I5. F100.", &s), vec!["unsupported-g-code"]);
 }

@@ -25,6 +25,7 @@ pub(crate) struct TurningData {
 
 impl Machine {
     pub(super) fn lathe_block(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+        self.refuse_polar_moves(b)?;
         self.refuse_unmodelled(b)?;
         for w in &b.words {
             if matches!(w.address, Address::Y | Address::J | Address::D | Address::H) {

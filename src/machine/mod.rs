@@ -244,7 +244,11 @@ impl Machine {
             return Ok(());
         }
         let lathe = self.setup.machine == MachineKind::Lathe;
-        let Some(w) = b.words.iter().find(|w| UNMODELLED.contains(&w.address)) else {
+        let Some(w) = b
+            .words
+            .iter()
+            .find(|w| UNMODELLED.contains(&w.address) && !self.models_word(b, w.address))
+        else {
             return Ok(());
         };
         let letter = w.address.letter();
@@ -255,6 +259,26 @@ impl Machine {
             _ => "chamfering and corner rounding (,C and ,R) are not modelled yet",
         };
         Err(self.error("unsupported-word", w.span, format!("{letter}: {why}")))
+    }
+
+    /// True for a word of [`Machine::refuse_unmodelled`]'s list that this
+    /// block models: G187's E (behaviour 14.6), the rotary word of G07.1 and
+    /// of the blocks in its mode (behaviour 14.10).
+    fn models_word(&self, b: &Block, a: Address) -> bool {
+        use crate::syntax::codes::NonModal;
+        let code = b.codes().non_modal();
+        match a {
+            Address::E => code == Some(NonModal::Smoothness),
+            Address::A | Address::B | Address::C => {
+                let rotary: &[Address] = match self.setup.machine {
+                    MachineKind::Mill => &[Address::A, Address::B, Address::C],
+                    MachineKind::Lathe => &[Address::C],
+                };
+                (code == Some(NonModal::Cylindrical) && rotary.contains(&a))
+                    || self.state.modal.cylinder.is_some_and(|(axis, _)| axis == a)
+            }
+            _ => false,
+        }
     }
 
     // ----- small helpers -------------------------------------------------

@@ -5,6 +5,7 @@
 use serde::Serialize;
 
 use crate::setup::{MachineKind, Units};
+use crate::syntax::Address;
 pub use crate::syntax::codes::{
     ArcDirection, CuttingMode, Cycle, Distance, FeedMode, LatheCycle, LengthOffset, Motion, Plane,
     Polar, PolarSpelling, ReturnLevel, SurfaceSpeed, WorkSystem,
@@ -42,9 +43,9 @@ pub struct Modal {
     pub look_ahead: bool,
     /// Mill: Haas G187 smoothness, once a G187 was given (behaviour 14.6).
     pub smoothness: Option<Smoothness>,
-    /// G07.1: cylindrical interpolation on, with the cylinder's radius (mm)
-    /// (behaviour 14.10).
-    pub cylinder: Option<f64>,
+    /// G07.1: cylindrical interpolation on, with its rotary axis and the
+    /// cylinder's radius (mm) (behaviour 14.10).
+    pub cylinder: Option<(Address, f64)>,
     /// Lathe group 21: polar coordinate interpolation (behaviour 14.11).
     pub polar: Polar,
 }

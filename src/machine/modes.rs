@@ -14,7 +14,7 @@ use crate::syntax::{Address, Block, Word};
 
 /// The words that move the tool or shape a move: a block of G05.1, G08 or
 /// G187 may hold none of them but its own (behaviour 14.3).
-const SHAPING_WORDS: [Address; 13] = [
+const SHAPING_WORDS: [Address; 17] = [
     Address::X,
     Address::Y,
     Address::Z,
@@ -28,6 +28,10 @@ const SHAPING_WORDS: [Address; 13] = [
     Address::Q,
     Address::L,
     Address::D,
+    Address::E,
+    Address::A,
+    Address::B,
+    Address::C,
 ];
 
 impl Machine {
@@ -67,10 +71,10 @@ impl Machine {
             Some(NonModal::AiContour) => self.ai_contour(b, out)?,
             Some(NonModal::LookAhead) => self.look_ahead(b, out)?,
             Some(NonModal::Smoothness) => self.smoothness(b, out)?,
+            Some(NonModal::Cylindrical) => self.cylindrical(b, out)?,
             Some(
                 NonModal::Dwell
                 | NonModal::Skip
-                | NonModal::Cylindrical
                 | NonModal::CirclePocket(_)
                 | NonModal::ReferenceReturn
                 | NonModal::PositionOffset(_)
@@ -78,6 +82,20 @@ impl Machine {
             )
             | None => {}
         }
+        if let Some(polar) = c.polar()
+            && polar != before.polar
+        {
+            self.state.modal.polar = polar;
+            out.notes.push(if polar.is_on() {
+                format!(
+                    "{} polar coordinate interpolation on: X and the C axis make a plane of the face (Fanuc G12.1, Haas G112); offsetlab keeps the mode and refuses the moves in it, as its lathe view is the ZX plane",
+                    polar.gcode()
+                )
+            } else {
+                format!("{} polar coordinate interpolation off", polar.gcode())
+            });
+        }
+        self.cylinder_word(b, out);
         self.special = self.state.modal.feed_mode == FeedMode::InverseTime;
         Ok(())
     }
@@ -159,7 +177,7 @@ impl Machine {
 
     /// G187 P1–P3 E…: Haas smoothness (behaviour 14.6).
     fn smoothness(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
-        self.mode_word(b, &[Address::P], "G187", "P1–P3 and E")?;
+        self.mode_word(b, &[Address::P, Address::E], "G187", "P1–P3 and E")?;
         let level = match b.get(Address::P) {
             Some(w) if (1..=3).contains(&w.int()) => w.int() as u8,
             Some(w) => {
@@ -194,10 +212,134 @@ impl Machine {
         Ok(())
     }
 
-    /// G187's E word: how far a corner may be rounded (mm), none until the
-    /// parser reads E.
-    fn smoothness_corner(&self, _b: &Block) -> Result<Option<f64>, Diagnostic> {
-        Ok(None)
+    /// G187's E word: how far a corner may be rounded (mm), not negative.
+    fn smoothness_corner(&self, b: &Block) -> Result<Option<f64>, Diagnostic> {
+        match b.get(Address::E) {
+            Some(e) if e.value < 0.0 => Err(self.error(
+                "mode-words",
+                e.span,
+                "G187 E, the corner tolerance, is not negative",
+            )),
+            Some(e) => Ok(Some(self.mm(e.value))),
+            None => Ok(None),
+        }
+    }
+
+    /// G07.1 with the rotary axis word whose value is the cylinder's radius
+    /// (0 cancels) (behaviour 14.10, Fanuc "Cylindrical interpolation").
+    fn cylindrical(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+        let rotary: &[Address] = match self.setup.machine {
+            MachineKind::Mill => &[Address::A, Address::B, Address::C],
+            MachineKind::Lathe => &[Address::C],
+        };
+        let words: Vec<&Word> = b
+            .words
+            .iter()
+            .filter(|w| rotary.contains(&w.address))
+            .collect();
+        self.mode_word(
+            b,
+            rotary,
+            "G07.1",
+            "the rotary axis word and the cylinder's radius",
+        )?;
+        let [w] = words[..] else {
+            return Err(self.error(
+                "mode-words",
+                b.code_span(Group::NonModal),
+                if self.setup.machine == MachineKind::Lathe {
+                    "G07.1 needs C, the cylinder's radius (C0 cancels)"
+                } else {
+                    "G07.1 needs one rotary axis word (A, B or C), the cylinder's radius (0 cancels)"
+                },
+            ));
+        };
+        let letter = w.address.letter();
+        if w.value < 0.0 {
+            return Err(self.error(
+                "mode-words",
+                w.span,
+                format!("G07.1 {letter}: the cylinder's radius is not negative"),
+            ));
+        }
+        if w.value == 0.0 {
+            self.state.modal.cylinder = None;
+            out.notes
+                .push(format!("G07.1 {letter}0 cylindrical interpolation off"));
+            return Ok(());
+        }
+        let r = self.mm(w.value);
+        self.state.modal.cylinder = Some((w.address, r));
+        let u = self.units();
+        let d = u.decimals();
+        out.notes.push(format!(
+            "G07.1 cylindrical interpolation on, about a cylinder of radius {:.d$}: the {letter} axis turns the work by the angle of each {letter} word (degrees), a length of radius × angle along its surface; offsetlab reports those moves and does not draw them (the drawing shows the other axes only)",
+            crate::geometry::to_units(r, u)
+        ));
+        Ok(())
+    }
+
+    /// In G07.1's mode, a block's rotary word: reported, not drawn
+    /// (behaviour 14.10).
+    fn cylinder_word(&self, b: &Block, out: &mut Out) {
+        let Some((axis, r)) = self.state.modal.cylinder else {
+            return;
+        };
+        if b.codes().non_modal() == Some(NonModal::Cylindrical) {
+            return;
+        }
+        if let Some(w) = b.get(axis) {
+            let u = self.units();
+            let d = u.decimals();
+            out.notes.push(format!(
+                "{}{}° on the cylinder of radius {:.d$} ({:.d$} along its surface from 0°, G07.1): not drawn",
+                axis.letter(),
+                w.value,
+                crate::geometry::to_units(r, u),
+                crate::geometry::to_units(r * w.value.to_radians(), u)
+            ));
+        }
+    }
+
+    /// On the lathe, a block that moves in polar coordinate interpolation
+    /// (or with G12.1 itself) is refused: the mode is kept, its geometry is
+    /// not drawn (behaviour 14.11).
+    pub(super) fn refuse_polar_moves(&self, b: &Block) -> Result<(), Diagnostic> {
+        let on = match b.codes().polar() {
+            Some(p) => p.is_on(),
+            None => self.state.modal.polar.is_on(),
+        };
+        if !on {
+            return Ok(());
+        }
+        const MOVING: [Address; 10] = [
+            Address::X,
+            Address::U,
+            Address::Z,
+            Address::W,
+            Address::C,
+            Address::Y,
+            Address::I,
+            Address::J,
+            Address::K,
+            Address::R,
+        ];
+        match b.words.iter().find(|w| MOVING.contains(&w.address)) {
+            Some(w) => Err(self.error(
+                "polar-interpolation",
+                w.span,
+                format!(
+                    "{}: moves in polar coordinate interpolation ({}) are not modelled yet: the face contour of X and C has no place in the lathe's ZX view; cancel it with {}",
+                    w.address.letter(),
+                    self.state.modal.polar.gcode(),
+                    match self.state.modal.polar {
+                        crate::syntax::codes::Polar::On(crate::syntax::codes::PolarSpelling::Haas) => "G113",
+                        _ => "G13.1",
+                    }
+                ),
+            )),
+            None => Ok(()),
+        }
     }
 
     /// G93 in effect: a feed block without F is refused (behaviour 14.8,

@@ -12,6 +12,7 @@ use super::modal::{ArcDirection, Distance, Plane};
 use super::{ArcInfo, Machine, Mark, MoveKind, Out};
 use crate::diag::Diagnostic;
 use crate::geometry::{Xyz, to_units};
+use crate::setup::CirclePocket;
 use crate::syntax::codes::Group;
 use crate::syntax::{Address, Block};
 
@@ -67,6 +68,16 @@ impl Machine {
             ArcDirection::Cw => "G12",
             ArcDirection::Ccw => "G13",
         };
+        if self.setup.settings.circle_pocket() == CirclePocket::Alarm {
+            return Err(self.error(
+                "unsupported-g-code",
+                code,
+                format!(
+                    "{name} is circular pocket milling on a Haas mill; the {} control has no {name} on the mill and alarms (setting circle_pocket: haas models it)",
+                    self.setup.settings.control.name()
+                ),
+            ));
+        }
         if self.state.modal.plane != Plane::XY {
             return Err(self.error(
                 "pocket-words",
