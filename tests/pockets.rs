@@ -222,3 +222,18 @@ fn behaviour14_13_fanuc_and_yasnac_mills_alarm_on_g12_and_g13() {
     s.settings.circle_pocket = Some(CirclePocket::Alarm);
     assert_eq!(errors("G13 I5. F100.", &s), vec!["unsupported-g-code"]);
 }
+
+#[test]
+fn behaviour14_12_the_haas_modes_fixture_runs_to_its_end_as_computed_by_hand() {
+    let (text, setup) = fixture("haas_modes");
+    let r = ok(&text, &setup);
+    assert!(r.diagnostics.is_empty(), "{:?}", r.diagnostics);
+    // N45: back at the centre at Z-2, the length vector +3 on the actual Z.
+    let state = |line: u32| r.blocks.iter().find(|b| b.span.line == line).unwrap().state;
+    same(state(11).programmed, [20.0, 10.0, -2.0]);
+    same(state(11).actual, [20.0, 10.0, 1.0]);
+    // N50: two passes down by 1 from Z-2: Z-4.
+    same(state(12).programmed, [20.0, 10.0, -4.0]);
+    // N45 makes a feed down, lead-in, 3 circles, 2 steps, lead-out: 8 moves.
+    assert_eq!(r.moves.iter().filter(|m| m.line == 11).count(), 8);
+}
