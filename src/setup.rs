@@ -232,7 +232,7 @@ pub enum SameGroupCodes {
     LastWins,
 }
 
-/// What G12/G13 mean on the mill (behaviour 7.19, 14.13).
+/// What G12/G13 mean on the mill (behaviour 7.20, 14.13).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum CirclePocket {
@@ -305,7 +305,7 @@ pub struct Settings {
     /// [`Settings::gcode_system`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub gcode_system: Option<GCodeSystem>,
-    /// G12/G13 on the mill (behaviour 7.19); read it with
+    /// G12/G13 on the mill (behaviour 7.20); read it with
     /// [`Settings::circle_pocket`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub circle_pocket: Option<CirclePocket>,
