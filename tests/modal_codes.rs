@@ -295,3 +295,11 @@ fn behaviour14_11_polar_interpolation_is_kept_and_its_moves_refused() {
     let r = run("G12.1", &mill(&[]));
     assert!(r.diagnostics[0].message.contains("lathe only"));
 }
+
+#[test]
+fn behaviour14_2_a_cutting_mode_takes_no_p_or_q() {
+    let r = run("G64 P5", &mill(&[]));
+    let e = r.diagnostics.iter().find(|d| d.is_error()).unwrap();
+    assert_eq!(e.code, "mode-words");
+    assert!(e.message.contains("LinuxCNC"), "{}", e.message);
+}

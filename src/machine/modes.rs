@@ -47,6 +47,19 @@ impl Machine {
         let c = b.codes();
         let mill = self.setup.machine == MachineKind::Mill;
         if let Some(mode) = c.cutting_mode()
+            && let Some(w) = b.get(Address::P).or_else(|| b.get(Address::Q))
+        {
+            return Err(self.error(
+                "mode-words",
+                w.span,
+                format!(
+                    "{} takes no {} (a path tolerance G64 P… is LinuxCNC's, not a Fanuc, Haas or YASNAC word)",
+                    mode.gcode(),
+                    w.address.letter()
+                ),
+            ));
+        }
+        if let Some(mode) = c.cutting_mode()
             && mode != before.cutting_mode
         {
             self.state.modal.cutting_mode = mode;
