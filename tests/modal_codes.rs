@@ -104,7 +104,7 @@ fn behaviour14_3_mode_codes_of_group_00_stand_alone() {
 }
 
 #[test]
-fn behaviour14_4_g05_1_switches_ai_contour_control_with_a_whole_q() {
+fn behaviour14_4_g05_1_switches_ai_contour_control_with_q1_or_q0() {
     // Q1 is a whole number here (no integer-dimension warning, not 0.001).
     let text = "G05.1 Q1\nG01 X5. F100.\nG05.1 Q0";
     let r = ok(text, &mill(&[]));
@@ -121,7 +121,13 @@ fn behaviour14_4_g05_1_switches_ai_contour_control_with_a_whole_q() {
     // Anything but Q0/Q1, or no Q, is refused; elsewhere Q stays a dimension.
     assert_eq!(errors("G05.1 Q2", &mill(&[])), vec!["mode-words"]);
     assert_eq!(errors("G05.1", &mill(&[])), vec!["mode-words"]);
-    assert_eq!(errors("G05.1 Q1.", &mill(&[])), vec!["decimal-point"]);
+    // With a point Q1. is 1 too; in calculator input Q1 is 1.
+    let r = ok("G05.1 Q1.", &mill(&[]));
+    assert_eq!(modal(&r, 0, MachineKind::Mill).ai_contour, Some("G05.1 Q1"));
+    let mut s = mill(&[]);
+    s.settings.decimal_input = offsetlab::setup::DecimalInput::Calculator;
+    let r = ok("G05.1 Q1", &s);
+    assert_eq!(modal(&r, 0, MachineKind::Mill).ai_contour, Some("G05.1 Q1"));
     let r = ok("G83 X0 Z-5. R1. Q2500 F100.", &mill(&[]));
     assert_eq!(
         r.diagnostics[0].code, "integer-dimension",

@@ -140,11 +140,24 @@ impl Machine {
     }
 
     /// The value of a switch word that must be 0 or 1 (G05.1 Q, G08 P).
+    /// G05.1's Q is read as a dimension: without a point, `Q1` is its number
+    /// as written only in calculator input, else that many least increments
+    /// (behaviour 14.4).
     fn switch(&self, b: &Block, a: Address, code: &str) -> Result<bool, Diagnostic> {
-        let on_off = |w: &Word| match w.int() {
-            0 => Some(false),
-            1 => Some(true),
-            _ => None,
+        let increments = a == Address::Q
+            && self.setup.settings.decimal_input == crate::setup::DecimalInput::Increment;
+        let scale = 10f64.powi(self.units().decimals() as i32);
+        let on_off = |w: &Word| {
+            let v = if increments && !w.point {
+                w.value * scale
+            } else {
+                w.value
+            };
+            match v {
+                v if (v - 0.0).abs() < 1e-9 => Some(false),
+                v if (v - 1.0).abs() < 1e-9 => Some(true),
+                _ => None,
+            }
         };
         match b.get(a) {
             Some(w) => on_off(w).ok_or_else(|| {

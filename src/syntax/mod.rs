@@ -326,8 +326,9 @@ pub struct Blocks<'a> {
     units: Units,
     /// A mill canned cycle is active (K is then a repeat count).
     in_cycle: bool,
-    /// The block holds G05.1, whose Q is a whole number (behaviour 14.4);
-    /// set afresh for every block.
+    /// The block read in two passes holds G05.1, whose Q (Q1/Q0) is no
+    /// dimension to warn about (behaviour 14.4); set afresh by each two-pass
+    /// reading (the one-pass reading leaves a block with a warning due to it).
     whole_q: bool,
     tape: Tape,
     warned_integer: bool,
@@ -539,14 +540,12 @@ impl<'a> Blocks<'a> {
         // the context the block started with, the way the two-pass reading
         // (its specification) reads it.
         let context = (self.units, self.in_cycle);
-        self.whole_q = false;
         let read = match self.one_pass {
             true => self.read_one_pass(i, line, counts, block),
             false => None,
         };
         let (end, mut last) = read.unwrap_or_else(|| {
             (self.units, self.in_cycle) = context;
-            self.whole_q = false;
             block.clear();
             self.read_two_pass(i, line, counts, block)
         });
@@ -579,8 +578,8 @@ impl<'a> Blocks<'a> {
     }
 
     /// [`Blocks::note_context`] for a G code written with a decimal: G05.1's
-    /// Q is a whole number (Q1/Q0, behaviour 14.4). Out of line: few G codes
-    /// have a decimal.
+    /// Q is a switch (Q1/Q0, behaviour 14.4), no dimension to warn about.
+    /// Out of line: few G codes have a decimal.
     #[inline(never)]
     fn note_decimal_context(&mut self, n: Number) {
         let (Ok(major), Ok(scaled)) = (
@@ -637,7 +636,6 @@ impl<'a> Blocks<'a> {
     ) -> Result<(Word, WordKind), Refusal> {
         let kind = match address {
             Address::K if self.in_cycle => WordKind::Integer,
-            Address::Q if self.whole_q => WordKind::Integer,
             _ => address.kind(),
         };
         let value = match kind {
@@ -720,6 +718,7 @@ impl<'a> Blocks<'a> {
         match read {
             Ok((word, kind)) => {
                 if kind == WordKind::Dimension
+                    && !(word.address == Address::Q && self.whole_q)
                     && let Ok(n) = w.number
                     && self.integer_warning_due(n)
                 {

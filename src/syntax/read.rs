@@ -58,11 +58,10 @@ impl Blocks<'_> {
             let (word_end, next, number) = lexer::number(bytes, i + 1);
             let number = number.ok()?;
             if address == Address::G && counts {
-                let before = (self.units, self.in_cycle, self.whole_q);
+                let before = (self.units, self.in_cycle);
                 self.note_context(number);
                 if (read_dimension && self.units != before.0)
                     || (read_k && self.in_cycle != before.1)
-                    || (self.whole_q != before.2 && block.holds(Address::Q))
                 {
                     return None;
                 }
@@ -105,6 +104,7 @@ impl Blocks<'_> {
         let n = bytes.len();
         let mut last = i;
         self.raw.clear();
+        self.whole_q = false;
 
         // Lex: comments, words, and anything else as an error. Words are
         // typed once the whole block is lexed, because a G code anywhere in
