@@ -21,8 +21,9 @@ use offsetlab::{
 };
 use proptest::prelude::*;
 
-const FIXTURES: [&str; 6] = [
+const FIXTURES: [&str; 7] = [
     "contour_g45",
+    "corners",
     "g54_g28",
     "haas_modes",
     "inch_plate",

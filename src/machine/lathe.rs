@@ -4,7 +4,7 @@
 //! [`crate::offsets::lathe`]'s; this file moves the tool by them.
 
 use super::modal::{ArcDirection, Distance, LatheCycle, Motion};
-use super::{ArcRequest, Machine, Mark, Out};
+use super::{Ahead, ArcRequest, Machine, Mark, Out};
 use super::{EventKind, MoveKind};
 use crate::diag::Diagnostic;
 use crate::geometry::Xyz;
@@ -24,7 +24,15 @@ pub(crate) struct TurningData {
 }
 
 impl Machine {
-    pub(super) fn lathe_block(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+    /// A lathe block. `_ahead` gives the blocks after it to the rules that
+    /// need the next move (none yet: the chamfer words and tool nose radius
+    /// compensation are refused until they are modelled).
+    pub(super) fn lathe_block(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+        _ahead: &mut dyn Ahead,
+    ) -> Result<(), Diagnostic> {
         self.refuse_polar_moves(b)?;
         self.refuse_unmodelled(b)?;
         for w in &b.words {
