@@ -309,3 +309,18 @@ fn behaviour14_2_a_cutting_mode_takes_no_p_or_q() {
     assert_eq!(e.code, "mode-words");
     assert!(e.message.contains("LinuxCNC"), "{}", e.message);
 }
+
+#[test]
+fn behaviour14_14_g09_may_share_a_corner_block_and_g31_may_not() {
+    // G09 G01 X50. ,C5. then Y40.: the chamfer is cut as without G09.
+    let r = ok("G01 F100.\nG09 G01 X50. ,C5.\nY40.", &mill(&[]));
+    assert!(
+        r.moves
+            .iter()
+            .any(|m| { (m.to[0] - 50.0).abs() < 1e-9 && (m.to[1] - 5.0).abs() < 1e-9 })
+    );
+    assert_eq!(
+        errors("G01 F100.\nG31 X50. ,C5.\nY40.", &mill(&[])),
+        vec!["corner-words"]
+    );
+}
