@@ -235,6 +235,16 @@ pub enum SameGroupCodes {
     LastWins,
 }
 
+/// What G12/G13 mean on the mill (behaviour 7.20, 14.13).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CirclePocket {
+    /// Haas circular pocket milling: I, K, Q, L, D, Z, F.
+    Haas,
+    /// Not a code of the control: an alarm.
+    Alarm,
+}
+
 /// The lathe's G-code system (behaviour 7.18): which numbers the single
 /// cycles, coordinate setting, feed modes and inch/metric have.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -261,7 +271,7 @@ impl GCodeSystem {
     }
 }
 
-/// What G28 or G30 without an axis word returns (behaviour 13.5, 7.20).
+/// What G28 or G30 without an axis word returns (behaviour 13.5, 7.21).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum ReturnWithoutAxes {
@@ -273,7 +283,7 @@ pub enum ReturnWithoutAxes {
 }
 
 /// How a program names the additional work coordinate systems (behaviour
-/// 13.3, 7.21).
+/// 13.3, 7.22).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub enum ExtendedWork {
     /// `G54.1 P1`–`P48`, or `G54 P1`–`P48` (Fanuc).
@@ -343,11 +353,15 @@ pub struct Settings {
     /// [`Settings::gcode_system`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub gcode_system: Option<GCodeSystem>,
-    /// G28/G30 without an axis word (behaviour 7.20); read it with
+    /// G12/G13 on the mill (behaviour 7.20); read it with
+    /// [`Settings::circle_pocket`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub circle_pocket: Option<CirclePocket>,
+    /// G28/G30 without an axis word (behaviour 7.21); read it with
     /// [`Settings::reference_return_without_axes`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub reference_return_without_axes: Option<ReturnWithoutAxes>,
-    /// G54.1 Pn or G154 Pn (behaviour 7.21); read it with
+    /// G54.1 Pn or G154 Pn (behaviour 7.22); read it with
     /// [`Settings::extended_work_offsets`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub extended_work_offsets: Option<ExtendedWork>,
@@ -366,6 +380,17 @@ impl Settings {
         self.same_group_codes.unwrap_or(match self.control {
             Control::Yasnac => SameGroupCodes::Error,
             Control::Fanuc | Control::Haas => SameGroupCodes::LastWins,
+        })
+    }
+
+    /// G12/G13 on the mill: Haas mills cut a circular pocket (Haas mill
+    /// operator's manual, "G12 Circular Pocket Milling CW / G13 … CCW");
+    /// neither the Fanuc 0i-MF G-code list nor the YASNAC seeds' manual has
+    /// them on the mill, where the control alarms.
+    pub fn circle_pocket(&self) -> CirclePocket {
+        self.circle_pocket.unwrap_or(match self.control {
+            Control::Haas => CirclePocket::Haas,
+            Control::Yasnac | Control::Fanuc => CirclePocket::Alarm,
         })
     }
 

@@ -424,7 +424,7 @@ fn behaviour13_1_the_json_of_a_block_has_machine_coordinates_and_transforms() {
     assert!(v["rotary"].get("b").is_none());
     assert_eq!(v["modal"]["rotation"], "G68");
     assert_eq!(v["modal"]["scaling"], "G50");
-    assert_eq!(v["modal"]["polar"], "G15");
+    assert_eq!(v["modal"]["polar_coordinates"], "G15");
     assert_eq!(v["modal"]["mirror"], "G50.1");
     assert!(v["modal"].get("arc_center").is_none());
     // X1 rotated 90° about the origin is Y1; the local zero adds X1 in

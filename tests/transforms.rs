@@ -250,7 +250,7 @@ fn behaviour13_11_a_bolt_circle_in_polar_coordinates() {
     same(programmed(&r, 3), [-25.0, 25.0 * R3, 10.0]);
     same(programmed(&r, 4), [-25.0, -25.0 * R3, 10.0]);
     let b = at_line(&r, text, 4);
-    assert_eq!(b.modal.polar, Some("G16"));
+    assert_eq!(b.modal.polar_coordinates, Some("G16"));
     assert!(
         b.explanation
             .contains("G16: Y120.000° goes to X-25.000 Y43.301"),

@@ -70,7 +70,7 @@ impl Machine {
 
     /// A group 14 code (behaviour 13.3): which system it names, with the
     /// block's P for the additional ones, as setting
-    /// `extended_work_offsets` (7.21) says the control writes them.
+    /// `extended_work_offsets` (7.22) says the control writes them.
     pub(super) fn work_code(
         &mut self,
         b: &Block,
@@ -372,7 +372,11 @@ impl Machine {
     /// and G53 set it), never drawn; the first of a program gets a warning.
     pub(super) fn rotary_words(&mut self, b: &Block, absolute: bool, out: &mut Out) {
         for (i, a) in ROTARY.iter().enumerate() {
-            let Some(w) = b.get(*a) else { continue };
+            // G07.1's rotary word is its cylinder's radius, and in its mode
+            // the word moves on the cylinder (behaviour 14.10).
+            let Some(w) = b.get(*a).filter(|_| !self.models_word(b, *a)) else {
+                continue;
+            };
             let v = self.unitless(w);
             let incremental = !absolute && self.state.modal.distance == Distance::Incremental;
             let now = match (self.state.rotary[i], incremental) {

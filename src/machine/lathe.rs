@@ -33,6 +33,7 @@ impl Machine {
         out: &mut Out,
         _ahead: &mut dyn Ahead,
     ) -> Result<(), Diagnostic> {
+        self.refuse_polar_moves(b)?;
         self.refuse_unmodelled(b)?;
         for w in &b.words {
             if matches!(w.address, Address::Y | Address::J | Address::D | Address::H) {
@@ -49,7 +50,9 @@ impl Machine {
                 ));
             }
         }
+        let before = self.state.modal;
         self.common_words(b, out)?;
+        self.mode_codes(b, out, before)?;
         self.work_words(b, out)?;
         let c = b.codes();
         if c.non_modal() == Some(NonModal::Dwell) {
@@ -91,6 +94,7 @@ impl Machine {
                 "a T code goes in a block of its own or with a move, not with G27, G30, G52 or G53",
             ));
         }
+        let mut skip = false;
         match c.non_modal() {
             Some(NonModal::SetCoordinates) => return self.g50(b),
             Some(code @ (NonModal::ReferenceReturn | NonModal::OtherReference)) => {
@@ -103,12 +107,31 @@ impl Machine {
                 return Ok(());
             }
             Some(NonModal::PresetCoordinates) => return self.g92_1(b, out),
-            // G04 was made above; G45–G48 are the mill's, refused by the
-            // parser on the lathe (seed 004).
-            Some(NonModal::Dwell | NonModal::PositionOffset(_)) | None => {}
+            // G31 moves as G01 whatever the mode (behaviour 14.7).
+            Some(NonModal::Skip) => {
+                self.skip_note(b, out)?;
+                skip = true;
+            }
+            // G04 was made above; G45–G48, G09, G05.1, G08, G187 and the
+            // pockets are the mill's, refused by the parser on the lathe.
+            Some(
+                NonModal::Dwell
+                | NonModal::PositionOffset(_)
+                | NonModal::ExactStop
+                | NonModal::AiContour
+                | NonModal::LookAhead
+                | NonModal::Smoothness
+                | NonModal::Cylindrical
+                | NonModal::CirclePocket(_),
+            )
+            | None => {}
         }
         let t_changed = self.t_code(b, out);
-        let motion = self.state.modal.motion;
+        let motion = if skip {
+            Motion::Linear
+        } else {
+            self.state.modal.motion
+        };
         let any_axis = [Address::X, Address::U, Address::Z, Address::W]
             .iter()
             .any(|a| b.has(*a));

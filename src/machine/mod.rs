@@ -16,6 +16,8 @@ pub mod frame;
 mod lathe;
 mod mill;
 pub mod modal;
+mod modes;
+mod pocket;
 mod reference;
 pub mod state;
 mod transform;
@@ -110,6 +112,9 @@ pub struct Machine {
     cycle: cycles::CycleData,
     turning: lathe::TurningData,
     feed_warned: bool,
+    /// A mode is in effect that every block must be checked against (G93,
+    /// behaviour 14.8): no block takes the mill's fast path for plain moves.
+    special: bool,
     index: u32,
     line: u32,
     span: Span,
@@ -182,6 +187,7 @@ impl Machine {
             cycle: cycles::CycleData::default(),
             turning: lathe::TurningData::default(),
             feed_warned: false,
+            special: false,
             index: 0,
             line: 0,
             span: Span::default(),
@@ -227,6 +233,7 @@ impl Machine {
                     m.cycle,
                     m.turning,
                     m.feed_warned,
+                    m.special,
                     m.corner_cut,
                     m.corner
                 )
@@ -300,7 +307,8 @@ impl Machine {
         }
         let lathe = self.setup.machine == MachineKind::Lathe;
         // The mill cuts the corner words (`corner.rs`) and reports its
-        // rotary axes, not drawn (behaviour 13.14).
+        // rotary axes, not drawn (behaviour 13.14); section 14 models G187's
+        // E and the rotary word of G07.1 (`models_word`).
         let modelled = |a: Address| {
             !lathe
                 && matches!(
@@ -308,11 +316,11 @@ impl Machine {
                     Address::CommaC | Address::CommaR | Address::A | Address::B | Address::C
                 )
         };
-        let Some(w) = b
-            .words
-            .iter()
-            .find(|w| UNMODELLED.contains(&w.address) && !modelled(w.address))
-        else {
+        let Some(w) = b.words.iter().find(|w| {
+            UNMODELLED.contains(&w.address)
+                && !modelled(w.address)
+                && !self.models_word(b, w.address)
+        }) else {
             return Ok(());
         };
         let letter = w.address.letter();
@@ -323,6 +331,26 @@ impl Machine {
             _ => "chamfering and corner rounding (,C and ,R) are not modelled yet",
         };
         Err(self.error("unsupported-word", w.span, format!("{letter}: {why}")))
+    }
+
+    /// True for a word of [`Machine::refuse_unmodelled`]'s list that this
+    /// block models: G187's E (behaviour 14.6), the rotary word of G07.1 and
+    /// of the blocks in its mode (behaviour 14.10).
+    fn models_word(&self, b: &Block, a: Address) -> bool {
+        use crate::syntax::codes::NonModal;
+        let code = b.codes().non_modal();
+        match a {
+            Address::E => code == Some(NonModal::Smoothness),
+            Address::A | Address::B | Address::C => {
+                let rotary: &[Address] = match self.setup.machine {
+                    MachineKind::Mill => &[Address::A, Address::B, Address::C],
+                    MachineKind::Lathe => &[Address::C],
+                };
+                (code == Some(NonModal::Cylindrical) && rotary.contains(&a))
+                    || self.state.modal.cylinder.is_some_and(|(axis, _)| axis == a)
+            }
+            _ => false,
+        }
     }
 
     // ----- small helpers -------------------------------------------------
@@ -401,6 +429,51 @@ impl Machine {
             to,
             programmed_from: from.prog,
             programmed_to: prog,
+            arc,
+        });
+    }
+
+    /// Records a generated move whose actual path is not the programmed one
+    /// plus the offset vectors (a pocket's circles inside the contour,
+    /// behaviour 14.12; a corner, behaviour 14.14): both ends given. Like
+    /// [`Machine::emit`] it stops at the move budget and warns of a feed
+    /// move before any F; a straight move that goes nowhere is not recorded.
+    /// Out of line: ordinary moves take `emit`.
+    #[inline(never)]
+    pub(crate) fn push_move(
+        &mut self,
+        out: &mut Out,
+        kind: MoveKind,
+        from: Mark,
+        to: Mark,
+        arc: Option<ArcInfo>,
+    ) {
+        if arc.is_none() && from.act == to.act && from.prog == to.prog {
+            return;
+        }
+        if out.moves.len() >= self.moves_left {
+            self.overflow = true;
+            return;
+        }
+        let feed = kind != MoveKind::Rapid;
+        if feed && self.state.feed.is_none() && !self.feed_warned {
+            self.feed_warned = true;
+            out.warnings.push(Diagnostic::warning(
+                "missing-feed",
+                self.span,
+                "feed move before any F word: a control would stop here with an alarm",
+            ));
+        }
+        out.moves.push(Move {
+            kind,
+            at_feed: feed,
+            block: self.index,
+            line: self.line,
+            units: self.units(),
+            from: from.act,
+            to: to.act,
+            programmed_from: from.prog,
+            programmed_to: to.prog,
             arc,
         });
     }

@@ -2,7 +2,7 @@
 //! the first reference position and G30 P2–P4 to the second, third or
 //! fourth, each through an intermediate point; G27 checks that the words
 //! reach the first. The reference positions are machine coordinates from the
-//! setup (setting 7.11, 7.22).
+//! setup (setting 7.11).
 
 use super::modal::Distance;
 use super::{AXES, Machine, MoveKind, Out};
@@ -47,7 +47,7 @@ impl Machine {
     }
 
     /// Which axes a G28/G30 block without axis words returns (setting
-    /// `reference_return_without_axes`, 7.20), or None when none move.
+    /// `reference_return_without_axes`, 7.21), or None when none move.
     fn axes_without_words(
         &self,
         span: Span,

@@ -69,7 +69,7 @@ impl Machine {
     pub(super) fn note_frame(&mut self) {
         let m = &self.state.modal;
         self.plain_words = m.transforms.is_identity()
-            && m.polar == PolarMode::Cancel
+            && m.polar_coordinates == PolarMode::Cancel
             && m.arc_center != Some(ArcCenter::Absolute);
     }
 
@@ -91,7 +91,7 @@ impl Machine {
         let mut cmd = p0;
         let mut named = [false; 3];
         let mut absolute = [false; 3];
-        let polar = self.state.modal.polar == PolarMode::Start;
+        let polar = self.state.modal.polar_coordinates == PolarMode::Start;
         let (ia, ib, _) = self.state.modal.plane.axes();
         let word = |i: usize| b.get(AXES[i].0).filter(|_| axes[i]);
         for i in 0..3 {
@@ -148,7 +148,7 @@ impl Machine {
     pub(super) fn frame_sentence(&self, b: &Block, axes: [bool; 3], target: Xyz) -> Option<String> {
         let m = &self.state.modal;
         let t = &m.transforms;
-        let polar = m.polar == PolarMode::Start;
+        let polar = m.polar_coordinates == PolarMode::Start;
         let mut by = Vec::new();
         if polar {
             by.push("G16");
@@ -259,7 +259,7 @@ impl Machine {
                 ),
             ));
         }
-        if m.polar == PolarMode::Start
+        if m.polar_coordinates == PolarMode::Start
             && let Some(w) = [Address::I, Address::J, Address::K]
                 .iter()
                 .find_map(|a| b.get(*a))
@@ -355,7 +355,7 @@ impl Machine {
             c.mirror(),
             c.scaling(),
             c.rotation(),
-            c.polar(),
+            c.polar_coordinates(),
             c.arc_center(),
         );
         if mirror.is_none()
@@ -483,9 +483,9 @@ impl Machine {
             }
         }
         // A sentence only for a mode the block changes.
-        let polar = polar.filter(|p| *p != self.state.modal.polar);
+        let polar = polar.filter(|p| *p != self.state.modal.polar_coordinates);
         if let Some(p) = polar {
-            self.state.modal.polar = p;
+            self.state.modal.polar_coordinates = p;
         }
         let arc = arc.filter(|a| Some(*a) != self.state.modal.arc_center);
         if let Some(a) = arc {

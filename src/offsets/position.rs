@@ -64,9 +64,11 @@ pub fn check_block(
             | Code::Return(_)
             | Code::Work(_)
             | Code::SurfaceSpeed(_)
+            | Code::CuttingMode(_)
+            | Code::Polar(_)
             | Code::Scaling(_)
             | Code::Rotation(_)
-            | Code::Polar(_)
+            | Code::PolarCoordinates(_)
             | Code::Mirror(_)
             | Code::ArcCenter(_) => false,
         };

@@ -39,6 +39,11 @@ const CHOICES = [
     help: 'Lathe G-code table. A on every control (Fanuc B and C by parameter): G90/G92/G94 cycles, G50 coordinates. B: G77/G78/G79 cycles, G92 coordinates, G94/G95 feed. C: as B with G20/G21/G24 cycles.',
   },
   {
+    id: 'circle_pocket', label: 'G12/G13 (mill)', machine: 'mill', controlDefault: true,
+    options: [['haas', 'a circular pocket (Haas)'], ['alarm', 'an alarm']],
+    help: 'G12/G13 on the mill: Haas cuts a circular pocket (I, K, Q, L, D, Z); Fanuc and YASNAC mills have no such code and alarm.',
+  },
+  {
     id: 'reference_return_without_axes', label: 'G28/G30 without axes', controlDefault: true,
     options: [['all_axes', 'every axis returns'], ['no_axis', 'no axis moves']],
     help: 'G28 or G30 with no axis word: Haas returns every axis; Fanuc returns only the axes named, so none (YASNAC as Fanuc), and offsetlab warns.',
