@@ -29,6 +29,31 @@ pub(super) fn concerns(b: &Block) -> bool {
     b.codes().cutter().is_some() || b.codes().non_modal() == Some(NonModal::CornerArc)
 }
 
+/// The codes that position on a point given apart from the work
+/// coordinates, which cancel the compensation for their block (behaviour
+/// 16.18): G27, G28, G30 and G53.
+fn returns(code: NonModal) -> bool {
+    match code {
+        NonModal::ReferenceReturn
+        | NonModal::OtherReference
+        | NonModal::ReferenceCheck
+        | NonModal::MachineCoordinates => true,
+        NonModal::Dwell
+        | NonModal::ExactStop
+        | NonModal::Skip
+        | NonModal::AiContour
+        | NonModal::LookAhead
+        | NonModal::Smoothness
+        | NonModal::Cylindrical
+        | NonModal::CirclePocket(_)
+        | NonModal::PositionOffset(_)
+        | NonModal::SetCoordinates
+        | NonModal::LocalCoordinates
+        | NonModal::PresetCoordinates
+        | NonModal::CornerArc => false,
+    }
+}
+
 /// What follows the running block, as read ahead (behaviour 16.9).
 #[derive(Clone, Copy, Debug)]
 enum Next {
@@ -66,12 +91,14 @@ impl Machine {
     /// register's sign and mirror image (an odd number of mirrored plane
     /// axes turns G41 into G42, behaviour 16.15) included.
     fn cutter_offset(&self, mode: CutterCompensation, radius: f64) -> f64 {
-        let (ia, ib, _) = self.state.modal.plane.axes();
-        let flip = if self.mirror[ia] != self.mirror[ib] {
-            -1.0
-        } else {
-            1.0
-        };
+        let plane = self.state.modal.plane;
+        let (ia, ib, _) = plane.axes();
+        // The setting's mirror image and the programmable one (G51.1, or
+        // G51 with a negative factor) each reverse the turn of a plane with
+        // one mirrored axis (behaviour 13.8, 13.9).
+        let reversed =
+            (self.mirror[ia] != self.mirror[ib]) != self.state.modal.transforms.reverses(plane);
+        let flip = if reversed { -1.0 } else { 1.0 };
         crc::side(mode) * radius * flip
     }
 
@@ -143,7 +170,7 @@ impl Machine {
             let codes = next.codes();
             match codes.non_modal() {
                 Some(NonModal::CornerArc) => return Next::Unknown(Why::CornerArc),
-                Some(NonModal::ReferenceReturn) if self.names_plane_axis(next) => {
+                Some(code) if returns(code) && self.names_plane_axis(next) => {
                     return Next::Unknown(Why::Return);
                 }
                 _ => {}
@@ -159,7 +186,7 @@ impl Machine {
                 Ok(flow) => flow,
                 Err(_) => return Next::Unknown(Why::Error),
             };
-            let shift = sub3(probe.origin, self.origin);
+            let shift = sub3(probe.state.coords.zero, self.state.coords.zero);
             let mode = probe.state.cutter.mode;
             let radius = probe.cutter_radius();
             let offset = probe.cutter_offset(mode, radius);
@@ -307,8 +334,20 @@ impl Machine {
     }
 
     /// A mill block while cutter compensation is engaged, or one that
-    /// asks for it (behaviour 16).
+    /// asks for it (behaviour 16). While it stays engaged no block takes
+    /// the fast path (`special`).
     pub(super) fn cutter_block(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+        ahead: &mut dyn Ahead,
+    ) -> Result<(), Diagnostic> {
+        let done = self.compensate(b, out, ahead);
+        self.update_special();
+        done
+    }
+
+    fn compensate(
         &mut self,
         b: &Block,
         out: &mut Out,
@@ -318,7 +357,7 @@ impl Machine {
         let before = self.state.cutter;
         let start = self.mark();
         let moves_before = out.moves.len();
-        let g28 = b.codes().non_modal() == Some(NonModal::ReferenceReturn);
+        let g28 = b.codes().non_modal().is_some_and(returns);
         // The block runs with the compensation's vector off, so that its
         // arcs are solved on the programmed circle (carried by the other
         // offsets), then its moves are carried by the vector as it stood;
@@ -976,9 +1015,10 @@ impl Machine {
         Ok(())
     }
 
-    /// G28 naming an axis of the plane in offset mode (behaviour 16.18):
-    /// the vector comes off on the way to the intermediate point, and the
-    /// next move in the plane starts compensation up again.
+    /// G27, G28, G30 or G53 naming an axis of the plane in offset mode
+    /// (behaviour 16.18): the vector comes off on the way to the
+    /// intermediate point (G53: to its point), and the next move in the
+    /// plane starts compensation up again.
     fn cutter_return(
         &mut self,
         out: &mut Out,
@@ -995,7 +1035,7 @@ impl Machine {
         }
         self.state.cutter.phase = Phase::Cancel;
         out.notes.push(format!(
-            "{}: the compensation is cancelled on the way to the intermediate point and starts up again at the next move in the plane",
+            "{}: the compensation is cancelled for this return (on the way to its first point) and starts up again at the next move in the plane",
             self.state.cutter.mode.gcode()
         ));
         Ok(())

@@ -63,7 +63,14 @@ pub fn check_block(
             | Code::Cycle(_)
             | Code::Return(_)
             | Code::Work(_)
-            | Code::SurfaceSpeed(_) => false,
+            | Code::SurfaceSpeed(_)
+            | Code::CuttingMode(_)
+            | Code::Polar(_)
+            | Code::Scaling(_)
+            | Code::Rotation(_)
+            | Code::PolarCoordinates(_)
+            | Code::Mirror(_)
+            | Code::ArcCenter(_) => false,
         };
         if !allowed {
             return Err(Diagnostic::error(

@@ -270,7 +270,7 @@ pub struct Block {
     /// The table the parser read the block's G numbers with.
     pub(super) table: CodeTable,
     /// The groups of the block's G codes, a bit each (by [`Group::index`]).
-    group_bits: u16,
+    group_bits: u32,
 }
 
 impl Block {
@@ -279,7 +279,7 @@ impl Block {
         self.words.clear();
         self.slots = [0; Address::COUNT];
         self.addresses = 0;
-        self.codes = Codes::default();
+        self.codes.clear();
         self.groups = [0; Group::COUNT];
         self.group_bits = 0;
     }

@@ -39,6 +39,26 @@ const CHOICES = [
     help: 'Lathe G-code table. A on every control (Fanuc B and C by parameter): G90/G92/G94 cycles, G50 coordinates. B: G77/G78/G79 cycles, G92 coordinates, G94/G95 feed. C: as B with G20/G21/G24 cycles.',
   },
   {
+    id: 'circle_pocket', label: 'G12/G13 (mill)', machine: 'mill', controlDefault: true,
+    options: [['haas', 'a circular pocket (Haas)'], ['alarm', 'an alarm']],
+    help: 'G12/G13 on the mill: Haas cuts a circular pocket (I, K, Q, L, D, Z); Fanuc and YASNAC mills have no such code and alarm.',
+  },
+  {
+    id: 'reference_return_without_axes', label: 'G28/G30 without axes', controlDefault: true,
+    options: [['all_axes', 'every axis returns'], ['no_axis', 'no axis moves']],
+    help: 'G28 or G30 with no axis word: Haas returns every axis; Fanuc returns only the axes named, so none (YASNAC as Fanuc), and offsetlab warns.',
+  },
+  {
+    id: 'extended_work_offsets', label: 'Additional work offsets', controlDefault: true,
+    options: [['g54_1', 'G54.1 P1–P48 (Fanuc)'], ['g154', 'G154 P1–P99 (Haas)']],
+    help: 'How a program names the additional work systems: Fanuc G54.1 Pn or G54 Pn, Haas G154 Pn (YASNAC as Fanuc). Their zero points are the setup document’s extended_work_offsets.',
+  },
+  {
+    id: 'rotation_angle', label: 'G68 R in G91', machine: 'mill',
+    options: [['absolute', 'the angle itself'], ['distance_mode', 'added in G91']],
+    help: 'G68 R… is the angle whatever G90/G91 say (Fanuc RIN = 0), or in G91 it adds to the rotation in force (RIN = 1).',
+  },
+  {
     id: 'decimal_input', label: 'Decimal input', options: [['increment', 'increment'], ['calculator', 'calculator']],
     help: 'A dimension without a point: X12345 is 12.345 mm (increment, Fanuc/YASNAC) or 12345 mm (calculator).',
   },
@@ -207,7 +227,7 @@ export function initSettings({ getSetup, change, replace }) {
   works.className = 'works';
   const summary = document.createElement('summary');
   summary.textContent = 'Work offsets G54–G59';
-  works.append(summary, line('Zero point of each work coordinate system in machine coordinates; G54 is active at start.', 'works'));
+  works.append(summary, line('Zero point of each work coordinate system as a machine position; G54 is active at start. The additional systems (extended_work_offsets) and the second to fourth reference positions are set in the document below.', 'works'));
   for (const def of POINTS.slice(1)) works.append(pointField(def));
   parts.push(works);
   ctx.form.replaceChildren(...parts);
