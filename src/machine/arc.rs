@@ -115,6 +115,37 @@ pub fn from_center(
     })
 }
 
+/// The centre of the R arc from `start` to `end` (`d` apart, more than 0;
+/// |R| at least `d` / 2), and its distance from the chord.
+#[inline]
+fn radius_center(start: P2, end: P2, d: f64, r: f64, ccw: bool) -> (P2, f64) {
+    let half = d / 2.0;
+    let radius = r.abs();
+    let h = (radius * radius - half * half).max(0.0).sqrt();
+    let mid = [(start[0] + end[0]) / 2.0, (start[1] + end[1]) / 2.0];
+    // Left normal of the chord, in the plane's right-handed frame.
+    let left = [-(end[1] - start[1]) / d, (end[0] - start[0]) / d];
+    // Counter-clockwise arcs of 180° or less turn about a centre on the left of
+    // the chord; clockwise ones about a centre on the right; R < 0 swaps.
+    let side = if ccw == (r > 0.0) { 1.0 } else { -1.0 };
+    (
+        [mid[0] + side * h * left[0], mid[1] + side * h * left[1]],
+        h,
+    )
+}
+
+/// The centre [`from_radius`] finds, without the angles (cutter
+/// compensation reads the next block's arc ahead at every block); None
+/// where it is an error.
+pub fn center_of_radius(start: P2, end: P2, r: f64, ccw: bool, tolerance: f64) -> Option<P2> {
+    let d = dist(start, end);
+    let radius = r.abs();
+    if d < SAME_POINT || radius < d / 2.0 - tolerance || radius < SAME_POINT {
+        return None;
+    }
+    Some(radius_center(start, end, d, r, ccw).0)
+}
+
 /// The arc from `start` to `end` with radius `r` (R form): R > 0 is 180° or
 /// less, R < 0 more than 180° (behaviour 2.12). Start equal to end is
 /// [`ArcError::NoChord`]: the centre would be undefined.
@@ -137,14 +168,7 @@ pub fn from_radius(
             half_chord: half,
         });
     }
-    let h = (radius * radius - half * half).max(0.0).sqrt();
-    let mid = [(start[0] + end[0]) / 2.0, (start[1] + end[1]) / 2.0];
-    // Left normal of the chord, in the plane's right-handed frame.
-    let left = [-(end[1] - start[1]) / d, (end[0] - start[0]) / d];
-    // Counter-clockwise arcs of 180° or less turn about a centre on the left of
-    // the chord; clockwise ones about a centre on the right; R < 0 swaps.
-    let side = if ccw == (r > 0.0) { 1.0 } else { -1.0 };
-    let center = [mid[0] + side * h * left[0], mid[1] + side * h * left[1]];
+    let (center, h) = radius_center(start, end, d, r, ccw);
     let a0 = angle(center, start);
     let mut sweep = sweep_between(a0, angle(center, end), ccw, false);
     if h == 0.0 {

@@ -10,6 +10,8 @@
 //! path drawn up to it.
 
 use super::arc::{self, P2};
+use super::mill::MOTION_WORDS;
+use super::modal::FeedMode;
 use super::{Ahead, ArcInfo, Machine, Mark, Move, MoveKind, NoneAhead, Out};
 use crate::diag::Diagnostic;
 use crate::geometry::{Xyz, show};
@@ -20,7 +22,7 @@ use crate::offsets::cutter::{self as crc, Phase, Words};
 use crate::setup::{
     CutterCancelWithoutMotion, CutterInterference, CutterOutsideCorner, CutterStartUp,
 };
-use crate::syntax::codes::{CannedCycle, CutterCompensation, Motion, NonModal};
+use crate::syntax::codes::{CannedCycle, CutterCompensation, Group, Motion, NonModal};
 use crate::syntax::{Address, Block};
 
 /// True when a block asks for the compensation while it is not engaged:
@@ -150,16 +152,32 @@ impl Machine {
     /// blocks after this one run on a copy of the machine, as the machine
     /// will run them, until one moves in the plane, past at most
     /// `cutter_blocks_without_motion` blocks that do not.
-    fn cutter_next(&self, ahead: &mut dyn Ahead) -> Next {
+    fn cutter_next(&self, ahead: &mut dyn Ahead, out: &mut Out) -> Next {
+        let mut scratch = out.scratch.take().unwrap_or_default();
+        scratch.quiet = true;
+        let next = self.read_next(ahead, &mut scratch);
+        out.scratch = Some(scratch);
+        next
+    }
+
+    fn read_next(&self, ahead: &mut dyn Ahead, scratch: &mut Out) -> Next {
+        if let Some(next) = ahead.peek(0)
+            && let Some(path) = self.plain_next_path(next)
+        {
+            // A plain move reads the register this block read.
+            let offset = self.cutter_offset(self.state.cutter.mode, self.state.cutter.radius);
+            return Next::Move { path, offset };
+        }
         let limit = usize::from(self.setup.settings.cutter_blocks_without_motion());
         let mut probe = self.clone();
         probe.reading_ahead = true;
-        // The copy wants programmed moves: no vector to solve arcs with.
+        // The copy wants programmed moves: no vector to solve arcs with,
+        // and plain moves take the fast path.
         probe.state.cutter.vector = [0.0; 3];
         probe.corner_cut = false;
         probe.corner_end = None;
         probe.moves_left = usize::MAX;
-        let mut scratch = Out::default();
+        probe.update_special();
         for k in 0..=limit {
             let Some(next) = ahead.peek(k) else {
                 return Next::Unknown(Why::End);
@@ -182,7 +200,7 @@ impl Machine {
             let radius_before = probe.cutter_radius();
             scratch.clear();
             let index = self.index.saturating_add(1 + k as u32);
-            let flow = match probe.execute(next, index, &mut scratch, &mut NoneAhead) {
+            let flow = match probe.execute(next, index, scratch, &mut NoneAhead) {
                 Ok(flow) => flow,
                 Err(_) => return Next::Unknown(Why::Error),
             };
@@ -219,6 +237,79 @@ impl Machine {
             }
         }
         Next::Unknown(Why::TooFar(limit))
+    }
+
+    /// The programmed path of the next block when it is a plain move
+    /// (motion words alone, no transformation, no canned cycle): what the
+    /// machine would make of its words, worked out here without running it
+    /// on a copy (the copy costs as much as the block: the 1M-block check
+    /// with G41, docs/performance.md). None when it is not such a block, or
+    /// makes no move in the plane, or its arc needs the machine's checks:
+    /// the copy reads it then.
+    fn plain_next_path(&self, b: &Block) -> Option<Path> {
+        if b.error
+            || !self.plain_words
+            || self.state.modal.cycle.is_some()
+            || !b.holds_only(&MOTION_WORDS, &[Group::Motion])
+        {
+            return None;
+        }
+        let motion = b.codes().motion().unwrap_or(self.state.modal.motion);
+        let (ia, ib, _) = self.state.modal.plane.axes();
+        let incremental = self.state.modal.distance == super::modal::Distance::Incremental;
+        let axes = [Address::X, Address::Y, Address::Z];
+        let mut to = self.state.programmed;
+        for axis in [ia, ib] {
+            if let Some(v) = b.value(axes[axis]) {
+                to[axis] = self.target(axis, self.mm(v), incremental);
+            }
+        }
+        let from = self.in_plane(self.state.programmed);
+        let to = self.in_plane(to);
+        match motion {
+            Motion::Rapid | Motion::Linear => {
+                (geo::dist(from, to) > 1e-9).then_some(Path::Line { from, to })
+            }
+            Motion::Arc(direction) => {
+                let ccw = (direction == super::modal::ArcDirection::Ccw)
+                    != (self.mirror[ia] != self.mirror[ib]);
+                if let Some(r) = b.value(Address::R) {
+                    if geo::dist(from, to) < 1e-9 {
+                        return None;
+                    }
+                    let center =
+                        arc::center_of_radius(from, to, self.mm(r), ccw, self.arc_tolerance())?;
+                    return Some(Path::Arc {
+                        from,
+                        to,
+                        center,
+                        ccw,
+                    });
+                }
+                let centre_words = [Address::I, Address::J, Address::K];
+                let (ci, cj) = (b.value(centre_words[ia]), b.value(centre_words[ib]));
+                if ci.is_none() && cj.is_none() {
+                    return None;
+                }
+                let sign = |i: usize| if self.mirror[i] { -1.0 } else { 1.0 };
+                let center = [
+                    from[0] + self.mm(ci.unwrap_or(0.0)) * sign(ia),
+                    from[1] + self.mm(cj.unwrap_or(0.0)) * sign(ib),
+                ];
+                let r0 = geo::dist(from, center);
+                let r1 = geo::dist(to, center);
+                if r0 < 1e-9 || (r0 - r1).abs() > self.arc_tolerance() {
+                    return None;
+                }
+                Some(Path::Arc {
+                    from,
+                    to,
+                    center,
+                    ccw,
+                })
+            }
+            Motion::LatheCycle(_) => None,
+        }
     }
 
     /// True when a block names an axis of the plane.
@@ -364,7 +455,13 @@ impl Machine {
         // the corner moves their ends below.
         let saved = before.vector;
         self.state.cutter.vector = [0.0; 3];
-        let ran = self.mill_general(b, out);
+        let ran = if b.holds_only(&MOTION_WORDS, &[Group::Motion])
+            && self.state.modal.feed_mode != FeedMode::InverseTime
+        {
+            self.motion_block(b, out)
+        } else {
+            self.mill_general(b, out)
+        };
         self.state.cutter.vector = saved;
         for m in &mut out.moves[moves_before..] {
             m.from = add3(m.from, saved);
@@ -375,7 +472,18 @@ impl Machine {
         }
         ran?;
         let mode = self.state.cutter.mode;
-        let radius = self.cutter_radius();
+        // The register is read when the block runs (behaviour 4.12); a block
+        // without D or a group 07 code reads the one the block before read,
+        // whose value the run cannot have changed.
+        let radius = if self.state.cutter.d != self.state.position.d
+            || b.holds(Address::D)
+            || b.codes().cutter().is_some()
+            || b.codes().units().is_some()
+        {
+            self.cutter_radius()
+        } else {
+            self.state.cutter.radius
+        };
         self.state.cutter.d = self.state.position.d;
         self.state.cutter.radius = radius;
         let o = self.cutter_offset(mode, radius);
@@ -389,7 +497,7 @@ impl Machine {
             // Fanuc ignores the compensation in canned cycles (the vector
             // is off: `cutter_checks`).
             self.state.cutter.phase = Phase::Cancel;
-            out.notes.push(format!(
+            out.note(|| format!(
                 "{}: cutter compensation is ignored in a canned cycle (its holes are drilled where programmed)",
                 mode.gcode()
             ));
@@ -398,10 +506,8 @@ impl Machine {
         if g28 && engaged && self.names_plane_axis(b) {
             return self.cutter_return(out, moves_before, before);
         }
-        let made: Vec<usize> = (moves_before..out.moves.len()).collect();
-        let own = made
-            .iter()
-            .find_map(|&i| self.move_path(&out.moves[i], [0.0; 3]).map(|p| (i, p)));
+        let own = (moves_before..out.moves.len())
+            .find_map(|i| self.move_path(&out.moves[i], [0.0; 3]).map(|p| (i, p)));
         let words = Words {
             mode,
             d: self.state.position.d,
@@ -417,11 +523,13 @@ impl Machine {
                 if let Some(code) = b.codes().cutter()
                     && code != CutterCompensation::Cancel
                 {
-                    out.notes.push(format!(
-                        "{} with D{:02} = 0: no radius, no compensation until a D with a value",
-                        code.gcode(),
-                        self.state.position.d
-                    ));
+                    out.note(|| {
+                        format!(
+                            "{} with D{:02} = 0: no radius, no compensation until a D with a value",
+                            code.gcode(),
+                            self.state.position.d
+                        )
+                    });
                 }
                 return Ok(());
             }
@@ -447,10 +555,12 @@ impl Machine {
                 return self.direction_vector(out, d, words, "start-up");
             }
             if b.codes().cutter().is_some() || before.mode == CutterCompensation::Cancel {
-                out.notes.push(format!(
-                    "{}: compensation starts up with the next move in the plane",
-                    words.name()
-                ));
+                out.note(|| {
+                    format!(
+                        "{}: compensation starts up with the next move in the plane",
+                        words.name()
+                    )
+                });
             }
             return Ok(());
         }
@@ -468,10 +578,12 @@ impl Machine {
             return self.direction_vector(out, d, words, "offset mode");
         }
         if before.radius != radius || before.mode != mode {
-            out.notes.push(format!(
-                "{}: no move in the plane here; the next move ends on the new offset",
-                words.name()
-            ));
+            out.note(|| {
+                format!(
+                    "{}: no move in the plane here; the next move ends on the new offset",
+                    words.name()
+                )
+            });
         }
         Ok(())
     }
@@ -503,7 +615,7 @@ impl Machine {
             CutterStartUp::B => Type::B,
         };
         let o = words.offset;
-        let next = self.cutter_next(ahead);
+        let next = self.cutter_next(ahead, out);
         let (rule, next_path) = match next {
             Next::Move { path: n, .. } => (Rule::StartUp(t), Some(n)),
             Next::Unknown(why) => {
@@ -513,13 +625,7 @@ impl Machine {
         };
         let next_for_corner = next_path.unwrap_or(path);
         let corner = self.corner_or_alarm(b, &path, &next_for_corner, o, o, rule)?;
-        out.notes.push(crc::start_up_note(
-            &words,
-            t,
-            &corner,
-            &path,
-            next_path.as_ref(),
-        ));
+        out.note(|| crc::start_up_note(&words, t, &corner, &path, next_path.as_ref()));
         self.apply_corner(b, out, i, &corner, false)
     }
 
@@ -543,37 +649,35 @@ impl Machine {
             CutterOutsideCorner::Vectors => Outside::Vectors,
             CutterOutsideCorner::Arc => Outside::Arc,
         };
-        let next = self.cutter_next(ahead);
-        let note;
-        let corner = match next {
-            Next::Move {
-                path: n, offset, ..
-            } if offset == 0.0 => {
+        let next = self.cutter_next(ahead, out);
+        let (corner, next_path, o2, cancels) = match next {
+            Next::Move { path: n, offset } if offset == 0.0 => {
                 let c = self.corner_or_alarm(b, &path, &n, o, o, Rule::Cancel(t))?;
-                note = crc::before_cancel_note(&words, t, &c, &path, &n);
-                c
+                (c, n, o, true)
             }
-            Next::Move {
-                path: n, offset, ..
-            } => {
+            Next::Move { path: n, offset } => {
                 // The corner is made with this block's radius on both
                 // sides: a new D counts from the next block's end
                 // (behaviour 16.8).
                 let o2 = o.abs() * offset.signum();
                 let c = self.corner_or_alarm(b, &path, &n, o, o2, Rule::Offset(outside))?;
-                note = crc::corner_note(&words, &c, &path, &n, o2);
-                c
+                (c, n, o2, false)
             }
             Next::Unknown(why) => {
                 self.look_ahead_note(b, out, why);
                 let c = self.corner_or_alarm(b, &path, &path, o, o, Rule::Perpendicular)?;
-                note = crc::corner_note(&words, &c, &path, &path, o);
-                c
+                (c, path, o, false)
             }
         };
-        out.notes.push(note);
+        out.note(|| {
+            if cancels {
+                crc::before_cancel_note(&words, t, &corner, &path, &next_path)
+            } else {
+                crc::corner_note(&words, &corner, &path, &next_path, o2)
+            }
+        });
         if before.radius != self.state.cutter.radius {
-            out.notes.push(format!(
+            out.note(|| format!(
                 "the radius changed from {} to {}: this block starts on the old offset and ends on the new one",
                 show(before.radius.abs(), self.units()),
                 show(self.state.cutter.radius.abs(), self.units())
@@ -630,7 +734,7 @@ impl Machine {
                 msg
             }
         };
-        out.notes.push(text);
+        out.note(|| text);
     }
 
     /// Makes move `i` of the block end at the corner's first point and adds
@@ -645,7 +749,7 @@ impl Machine {
         check: bool,
     ) -> Result<(), Diagnostic> {
         let p1 = self.in_plane(self.state.programmed);
-        let Some(first) = corner.steps.first() else {
+        let Some(first) = corner.steps().first() else {
             return Ok(());
         };
         let e = first.end();
@@ -655,7 +759,7 @@ impl Machine {
             Motion::Rapid => MoveKind::Rapid,
             Motion::Linear | Motion::Arc(_) | Motion::LatheCycle(_) => MoveKind::Feed,
         };
-        for step in &corner.steps[1..] {
+        for step in &corner.steps()[1..] {
             let from = self.mark();
             let e = step.end();
             self.set_cutter_vector([e[0] - p1[0], e[1] - p1[1]]);
@@ -787,8 +891,7 @@ impl Machine {
                             "interference: {what}; with the check off (setting cutter_interference_check) the tool cuts into the part here"
                         ),
                     ));
-                    out.notes
-                        .push(format!("interference: {what} (check off: overcut)"));
+                    out.note(|| format!("interference: {what} (check off: overcut)"));
                 }
             }
         }
@@ -873,7 +976,7 @@ impl Machine {
         let o = words.offset;
         let dir = match self.ijk_direction(b) {
             Some(d) => d,
-            None => match self.cutter_next(ahead) {
+            None => match self.cutter_next(ahead, out) {
                 Next::Move { path, .. } => path.start_tangent(),
                 Next::Unknown(_) => {
                     return Err(self.error(
@@ -894,7 +997,7 @@ impl Machine {
         } else {
             MoveKind::ArcCw
         };
-        out.notes.push(format!(
+        out.note(|| format!(
             "G39: an arc of radius {} about the corner {} turns the tool {} to {} of the next move ({:.1}°)",
             show(o.abs(), self.units()),
             self.corner_name(p),
@@ -935,7 +1038,7 @@ impl Machine {
         self.set_cutter_vector([n[0] * o, n[1] * o]);
         let at_feed = self.state.modal.motion == Motion::Linear;
         self.emit(out, from, MoveKind::Offset, at_feed, None);
-        out.notes.push(format!(
+        out.note(|| format!(
             "{} ({what}) with I/J/K: the tool centre goes {} {} of the direction they give, perpendicular to it",
             words.name(),
             show(o.abs(), self.units()),
@@ -973,7 +1076,7 @@ impl Machine {
             let end = self.set_cutter_vector([0.0, 0.0]);
             out.moves[i].to = end;
             self.state.cutter.phase = Phase::Cancelling;
-            out.notes.push(format!(
+            out.note(|| format!(
                 "{code} cancel: the tool leaves the offset path and ends on the programmed point {}",
                 self.corner_name(self.in_plane(self.state.programmed))
             ));
@@ -996,7 +1099,7 @@ impl Machine {
             }
             let (ia, ib, _) = self.state.modal.plane.axes();
             let names = ['X', 'Y', 'Z'];
-            out.notes.push(format!(
+            out.note(|| format!(
                 "{code} without a move in the plane: the tool moves back by the vector {}{} {}{} onto the programmed point in this block",
                 names[ia],
                 crate::geometry::show_signed(-v[ia], self.units()),
@@ -1008,7 +1111,7 @@ impl Machine {
         // Haas: the vector stays until the next move in the plane.
         self.state.cutter.phase = Phase::Offset;
         if here {
-            out.notes.push(format!(
+            out.note(|| format!(
                 "{code} without a move in the plane: the vector stays until the next move in the plane cancels it (setting cutter_cancel_without_motion = next_move)"
             ));
         }
@@ -1034,7 +1137,7 @@ impl Machine {
             m.to = sub3(m.to, v);
         }
         self.state.cutter.phase = Phase::Cancel;
-        out.notes.push(format!(
+        out.note(|| format!(
             "{}: the compensation is cancelled for this return (on the way to its first point) and starts up again at the next move in the plane",
             self.state.cutter.mode.gcode()
         ));

@@ -18,7 +18,7 @@ use crate::syntax::codes::{CannedCycle, Group, NonModal, PositionOffset};
 
 /// The words of a block that only moves: sequence number, G codes of group
 /// 01, axes, arc centre and radius, feed ([`Machine::motion_block`]).
-const MOTION_WORDS: [Address; 10] = [
+pub(super) const MOTION_WORDS: [Address; 10] = [
     Address::N,
     Address::G,
     Address::X,
@@ -181,7 +181,7 @@ impl Machine {
     /// apply (its other G codes, M, S, T, D, H words, U/W): the feed, the
     /// motion mode, then the move (those steps cost much of the machine's
     /// share of the `check` instruction count in docs/performance.md).
-    fn motion_block(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+    pub(super) fn motion_block(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
         if let Some(f) = b.value(Address::F) {
             self.state.feed = Some(f);
         }

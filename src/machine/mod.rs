@@ -73,9 +73,32 @@ pub(crate) struct Out {
     pub events: Vec<EventKind>,
     pub notes: Vec<String>,
     pub warnings: Vec<Diagnostic>,
+    /// The run keeps no block reports (`check`): the notes no one reads are
+    /// not written where writing them costs (cutter compensation's sentence
+    /// at every block).
+    pub quiet: bool,
+    /// A second `Out` lent to a machine copy reading ahead, kept from block
+    /// to block (cutter compensation reads ahead at every block).
+    pub(crate) scratch: Option<Box<Out>>,
 }
 
 impl Out {
+    /// An `Out` for a run that keeps block reports or not.
+    pub fn for_reports(keep_blocks: bool) -> Out {
+        Out {
+            quiet: !keep_blocks,
+            ..Out::default()
+        }
+    }
+
+    /// Adds the note `f` writes, unless the run keeps no reports.
+    #[inline]
+    pub fn note(&mut self, f: impl FnOnce() -> String) {
+        if !self.quiet {
+            self.notes.push(f());
+        }
+    }
+
     pub fn clear(&mut self) {
         self.moves.clear();
         self.events.clear();
@@ -212,8 +235,10 @@ impl Machine {
     /// Sets `special` from the modes that keep blocks off the mill's fast
     /// path: inverse time feed (G93) and cutter compensation while engaged.
     fn update_special(&mut self) {
+        // A copy reading ahead for the compensation runs plain moves by the
+        // fast path: it wants their programmed moves only.
         self.special = self.state.modal.feed_mode == modal::FeedMode::InverseTime
-            || self.state.cutter.engaged();
+            || (self.state.cutter.engaged() && !self.reading_ahead);
     }
 
     /// The setup this machine runs with.

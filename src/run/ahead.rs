@@ -13,21 +13,29 @@
 //! again after an edit resumes only at a checkpoint whose horizon is before
 //! the edit (`again.rs`).
 
+use std::collections::VecDeque;
+
 use crate::machine::Ahead;
 use crate::syntax::{Block, Blocks, Resume};
 
 /// Blocks read ahead for one running block, kept while it runs (the
-/// machine may ask for the same block twice).
+/// machine may ask for the same block twice) and, read from the run's own
+/// text, for the blocks after it: when the next block runs, the ones read
+/// past it still follow it (cutter compensation reads ahead at every block:
+/// each block is then read once more, not once more per block before it).
 #[derive(Default)]
 pub(super) struct Reader<'t> {
     /// The run's block these were read for (its index), if any.
     for_index: Option<u32>,
-    /// The blocks that run after it, in order (skipped blocks left out).
-    blocks: Vec<Block>,
+    /// The blocks that run after it, in order (skipped blocks left out);
+    /// in a batch of the two-thread run, the ones after the batch.
+    blocks: VecDeque<Block>,
     /// The parser reading them, once a block asked.
     side: Option<Blocks<'t>>,
     /// The side parser read to the program's end.
     done: bool,
+    /// They were read by a parser forked from the run's (not from a batch).
+    forked: bool,
     /// The furthest byte any look-ahead of the run has read.
     pub(super) horizon: usize,
     /// Blocks marked `/` are not run (block skip switch on): they are not
@@ -56,14 +64,23 @@ impl<'t> Reader<'t> {
         }
     }
 
-    /// Forgets what was read ahead for another block than `index`.
-    fn for_block(&mut self, index: u32) {
-        if self.for_index != Some(index) {
-            self.for_index = Some(index);
-            self.blocks.clear();
-            self.side = None;
-            self.done = false;
+    /// Forgets what was read ahead for another block than `index`, but
+    /// for the block right after the one it was read for, reading the run's
+    /// own text: that block is the first read, and the others follow it.
+    fn for_block(&mut self, index: u32, forked: bool) {
+        if self.for_index == Some(index) {
+            return;
         }
+        let next = self.for_index.and_then(|i| i.checked_add(1)) == Some(index);
+        self.for_index = Some(index);
+        if next && forked && self.forked && !self.blocks.is_empty() {
+            self.blocks.pop_front();
+            return;
+        }
+        self.blocks.clear();
+        self.side = None;
+        self.done = false;
+        self.forked = forked;
     }
 }
 
@@ -92,29 +109,19 @@ pub(super) struct Peek<'r, 't> {
 }
 
 impl Peek<'_, '_> {
-    /// Reads one more block that runs; false at the program's end.
+    /// Reads one more block that runs past what the reader holds (past
+    /// the batch in the two-thread run); false at the program's end.
     fn read_one(&mut self) -> bool {
         let r = &mut *self.reader;
         let block_skip = r.block_skip;
         if r.done {
             return false;
         }
-        // Blocks of a batch first (the two-thread run), then the text.
-        if let From::Read { blocks, then } = &self.from {
-            let seen = r.blocks.len();
-            let mut taken = 0;
-            for b in blocks.iter() {
-                if b.skip && block_skip {
-                    continue;
-                }
-                if taken == seen {
-                    r.blocks.push(b.clone());
-                    return true;
-                }
-                taken += 1;
-            }
-            if r.side.is_none() {
-                match then {
+        if r.side.is_none() {
+            match &self.from {
+                From::Parser(parser) => r.side = Some(parser.fork()),
+                // After a batch: the text from the place after its last block.
+                From::Read { then, .. } => match then {
                     Some((text, options, at)) => {
                         r.side = Some(Blocks::resume(text, *options, *at));
                     }
@@ -122,16 +129,11 @@ impl Peek<'_, '_> {
                         r.done = true;
                         return false;
                     }
-                }
+                },
             }
         }
-        let side = match (&mut r.side, &self.from) {
-            (Some(side), _) => side,
-            (None, From::Parser(parser)) => r.side.insert(parser.fork()),
-            (None, From::Read { .. }) => {
-                r.done = true;
-                return false;
-            }
+        let Some(side) = r.side.as_mut() else {
+            return false;
         };
         let mut block = Block::default();
         loop {
@@ -142,16 +144,34 @@ impl Peek<'_, '_> {
             }
             r.horizon = r.horizon.max(side.offset());
             if !(block.skip && block_skip) {
-                r.blocks.push(block);
+                r.blocks.push_back(block);
                 return true;
             }
         }
     }
 }
 
-impl Ahead for Peek<'_, '_> {
+impl<'r> Ahead for Peek<'r, '_> {
     fn peek(&mut self, k: usize) -> Option<&Block> {
-        self.reader.for_block(self.index);
+        let batch: Option<&'r [Block]> = match &self.from {
+            From::Parser(_) => None,
+            From::Read { blocks, .. } => Some(blocks),
+        };
+        self.reader.for_block(self.index, batch.is_none());
+        // The blocks of a batch (the two-thread run) are lent as they are.
+        let mut k = k;
+        if let Some(batch) = batch {
+            let block_skip = self.reader.block_skip;
+            let mut runs = batch.iter().filter(|b| !(b.skip && block_skip));
+            let mut count = 0;
+            for b in runs.by_ref() {
+                if count == k {
+                    return Some(b);
+                }
+                count += 1;
+            }
+            k -= count;
+        }
         while self.reader.blocks.len() <= k {
             if !self.read_one() {
                 return None;

@@ -153,7 +153,7 @@ impl<'t> Runner<'t> {
             ahead: ahead::Reader::new(setup.settings.block_skip),
             machine,
             block: Block::default(),
-            out: Out::default(),
+            out: Out::for_reports(options.keep_blocks),
             options,
             block_skip: setup.settings.block_skip,
             index: 0,

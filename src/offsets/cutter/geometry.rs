@@ -47,7 +47,9 @@ fn cross(a: P2, b: P2) -> f64 {
 }
 
 fn len(a: P2) -> f64 {
-    a[0].hypot(a[1])
+    // Not `hypot`: its care for overflow costs more than the corner at
+    // every block, and lengths here are within 10⁹ mm (behaviour 2.23).
+    (a[0] * a[0] + a[1] * a[1]).sqrt()
 }
 
 /// The distance between two points.
@@ -154,16 +156,14 @@ impl Path {
         }
     }
 
-    /// The offset path `o` to the left.
-    fn offset(&self, o: f64) -> Offset {
+    /// The offset path `o` to the left; `t` is the path's direction where
+    /// it is offset (a line's only one).
+    fn offset(&self, o: f64, t: P2) -> Offset {
         match *self {
-            Path::Line { from, to } => {
-                let t = unit(sub(to, from));
-                Offset::Line {
-                    point: add(from, mul(left(t), o)),
-                    dir: t,
-                }
-            }
+            Path::Line { from, .. } => Offset::Line {
+                point: add(from, mul(left(t), o)),
+                dir: t,
+            },
             Path::Arc { center, .. } => Offset::Circle {
                 center,
                 radius: self.offset_radius(o).unwrap_or(0.0).abs(),
@@ -180,16 +180,38 @@ enum Offset {
     Circle { center: P2, radius: f64 },
 }
 
+/// Up to two points (no allocation: a corner is made at every block).
+#[derive(Clone, Copy, Debug, Default)]
+struct Points {
+    p: [P2; 2],
+    n: usize,
+}
+
+impl Points {
+    fn of(points: &[P2]) -> Points {
+        let mut out = Points::default();
+        for (slot, p) in out.p.iter_mut().zip(points) {
+            *slot = *p;
+        }
+        out.n = points.len().min(2);
+        out
+    }
+
+    fn iter(&self) -> impl Iterator<Item = P2> + '_ {
+        self.p[..self.n].iter().copied()
+    }
+}
+
 /// The points where two offset paths meet (none, one or two).
-fn crossings(a: Offset, b: Offset) -> Vec<P2> {
+fn crossings(a: Offset, b: Offset) -> Points {
     match (a, b) {
         (Offset::Line { point: p, dir: d }, Offset::Line { point: q, dir: e }) => {
             let c = cross(d, e);
             if c.abs() < 1e-12 {
-                return Vec::new();
+                return Points::default();
             }
             let s = cross(sub(q, p), e) / c;
-            vec![add(p, mul(d, s))]
+            Points::of(&[add(p, mul(d, s))])
         }
         (Offset::Line { point, dir }, Offset::Circle { center, radius })
         | (Offset::Circle { center, radius }, Offset::Line { point, dir }) => {
@@ -198,13 +220,13 @@ fn crossings(a: Offset, b: Offset) -> Vec<P2> {
             let foot = add(point, mul(dir, s));
             let h = dist(foot, center);
             if h > radius + TOUCH {
-                return Vec::new();
+                return Points::default();
             }
             let half = (radius * radius - h * h).max(0.0).sqrt();
             if half < TOUCH {
-                return vec![foot];
+                return Points::of(&[foot]);
             }
-            vec![add(foot, mul(dir, -half)), add(foot, mul(dir, half))]
+            Points::of(&[add(foot, mul(dir, -half)), add(foot, mul(dir, half))])
         }
         (
             Offset::Circle {
@@ -218,16 +240,16 @@ fn crossings(a: Offset, b: Offset) -> Vec<P2> {
         ) => {
             let d = dist(c1, c2);
             if d < 1e-12 || d > r1 + r2 + TOUCH || d < (r1 - r2).abs() - TOUCH {
-                return Vec::new();
+                return Points::default();
             }
             let a = (r1 * r1 - r2 * r2 + d * d) / (2.0 * d);
             let h = (r1 * r1 - a * a).max(0.0).sqrt();
             let u = unit(sub(c2, c1));
             let m = add(c1, mul(u, a));
             if h < TOUCH {
-                return vec![m];
+                return Points::of(&[m]);
             }
-            vec![add(m, mul(left(u), h)), add(m, mul(left(u), -h))]
+            Points::of(&[add(m, mul(left(u), h)), add(m, mul(left(u), -h))])
         }
     }
 }
@@ -235,7 +257,7 @@ fn crossings(a: Offset, b: Offset) -> Vec<P2> {
 /// The crossing of two offset paths nearest to `near`.
 fn crossing_near(a: Offset, b: Offset, near: P2) -> Option<P2> {
     crossings(a, b)
-        .into_iter()
+        .iter()
         .min_by(|p, q| dist(*p, near).total_cmp(&dist(*q, near)))
 }
 
@@ -331,30 +353,58 @@ impl Step {
 /// step ends the first block's own move (on its offset path), the others
 /// are moves the first block adds; the last ends where the second block's
 /// move starts.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Corner {
-    /// The steps, one to four.
-    pub steps: Vec<Step>,
+    /// The steps (no allocation: a corner is made at every block).
+    steps: [Step; 4],
+    /// How many of them there are, one to four.
+    count: u8,
     /// What kind of corner it is.
     pub kind: Kind,
-    /// The angle of the corner on the workpiece side (degrees, as the
-    /// manual's α: 180 on a straight or tangent path, under 180 outside,
-    /// over 180 inside).
-    pub alpha: f64,
+    /// The sine and cosine of the path's turn and whether it turns toward
+    /// the tool: the corner's angle is worked out when a sentence asks.
+    turn: (f64, f64, bool),
 }
 
 impl Corner {
-    /// Where the tool centre stands after the corner.
-    pub fn end(&self) -> P2 {
-        self.steps.last().map_or([0.0, 0.0], Step::end)
+    /// The steps, one to four.
+    pub fn steps(&self) -> &[Step] {
+        &self.steps[..usize::from(self.count)]
     }
 
-    fn points(kind: Kind, alpha: f64, points: &[P2]) -> Corner {
-        Corner {
-            steps: points.iter().map(|p| Step::Line(*p)).collect(),
-            kind,
-            alpha,
+    /// The angle of the corner on the workpiece side (degrees, as the
+    /// manual's α: 180 on a straight or tangent path, under 180 outside,
+    /// over 180 inside).
+    pub fn alpha(&self) -> f64 {
+        let (sin, cos, inside) = self.turn;
+        let turn = sin.atan2(cos).abs().to_degrees();
+        if inside { 180.0 + turn } else { 180.0 - turn }
+    }
+
+    /// Where the tool centre stands after the corner.
+    pub fn end(&self) -> P2 {
+        self.steps().last().map_or([0.0, 0.0], Step::end)
+    }
+
+    fn new(kind: Kind, turn: (f64, f64, bool), steps: &[Step]) -> Corner {
+        let mut all = [Step::Line([0.0, 0.0]); 4];
+        for (slot, s) in all.iter_mut().zip(steps) {
+            *slot = *s;
         }
+        Corner {
+            steps: all,
+            count: steps.len().min(4) as u8,
+            kind,
+            turn,
+        }
+    }
+
+    fn points(kind: Kind, alpha: (f64, f64, bool), points: &[P2]) -> Corner {
+        let mut steps = [Step::Line([0.0, 0.0]); 4];
+        for (slot, p) in steps.iter_mut().zip(points) {
+            *slot = Step::Line(*p);
+        }
+        Corner::new(kind, alpha, &steps[..points.len().min(4)])
     }
 }
 
@@ -378,20 +428,20 @@ pub fn corner(
     let t2 = next.start_tangent();
     let n1 = left(t1);
     let n2 = left(t2);
-    let turn = cross(t1, t2).atan2(dot(t1, t2));
+    // The path turns by the angle whose sine and cosine these are (no
+    // `atan2` at every block: the corner's angle is worked out only for a
+    // sentence).
+    let (sin, cos) = (cross(t1, t2), dot(t1, t2));
     let o = o1;
-    let inside = o * turn > 0.0;
-    // The workpiece-side angle α of the manual's figures.
-    let alpha = if inside {
-        180.0 + turn.abs().to_degrees()
-    } else {
-        180.0 - turn.abs().to_degrees()
-    };
+    let inside = o * sin > 0.0;
+    let alpha = (sin, cos, inside);
     let end1 = add(p, mul(n1, o));
     let start2 = add(q, mul(n2, o));
     let near = mul(add(end1, start2), 0.5);
-    let meet = |o2: f64| crossing_near(prev.offset(o), next.offset(o2), near);
-    let tangent = turn.abs() < TANGENT;
+    let meet = |o2: f64| crossing_near(prev.offset(o, t1), next.offset(o2, t2), near);
+    let tangent = cos > 0.0 && sin.abs() < TANGENT;
+    // 90° of turn or less: an obtuse corner (α of 90° or more).
+    let obtuse = cos >= 0.0;
     match rule {
         Rule::Perpendicular => Ok(Corner::points(Kind::Perpendicular, alpha, &[end1])),
         Rule::StartUp(Type::A) => Ok(Corner::points(Kind::NextPerpendicular, alpha, &[start2])),
@@ -399,7 +449,7 @@ pub fn corner(
             if tangent {
                 return Ok(Corner::points(Kind::Tangent, alpha, &[end1]));
             }
-            if inside || turn.abs() <= std::f64::consts::FRAC_PI_2 {
+            if inside || obtuse {
                 let kind = if inside { Kind::Inside } else { Kind::Obtuse };
                 let x = meet(o).ok_or(NoIntersection)?;
                 return Ok(Corner::points(kind, alpha, &[x]));
@@ -414,7 +464,7 @@ pub fn corner(
                 let start2 = add(q, mul(n2, o2));
                 let near = mul(add(end1, start2), 0.5);
                 return Ok(
-                    match crossing_near(prev.offset(o1), next.offset(o2), near) {
+                    match crossing_near(prev.offset(o1, t1), next.offset(o2, t2), near) {
                         Some(x) => Corner::points(Kind::SideChange, alpha, &[x]),
                         None => Corner::points(Kind::SideChangeApart, alpha, &[end1, start2]),
                     },
@@ -430,26 +480,16 @@ pub fn corner(
             if outside == Outside::Arc {
                 // About the corner, the way the tool side turns: clockwise
                 // with the tool on the left.
-                let mut steps = Vec::with_capacity(2);
-                if dist(end1, start2) > TOUCH {
-                    steps.push(Step::Line(end1));
-                    steps.push(Step::Arc {
-                        to: start2,
-                        center: p,
-                        ccw: o < 0.0,
-                    });
-                } else {
-                    steps.push(Step::Line(end1));
-                }
-                return Ok(Corner {
-                    steps,
-                    kind: Kind::Rounded,
-                    alpha,
-                });
+                let arc = Step::Arc {
+                    to: start2,
+                    center: p,
+                    ccw: o < 0.0,
+                };
+                let steps = [Step::Line(end1), arc];
+                let n = if dist(end1, start2) > TOUCH { 2 } else { 1 };
+                return Ok(Corner::new(Kind::Rounded, alpha, &steps[..n]));
             }
-            if turn.abs() <= std::f64::consts::FRAC_PI_2
-                && let Some(x) = meet(o)
-            {
+            if obtuse && let Some(x) = meet(o) {
                 return Ok(Corner::points(Kind::Obtuse, alpha, &[x]));
             }
             // Under 90° (or offset arcs that do not meet): the vector of
@@ -459,16 +499,10 @@ pub fn corner(
             let r = o.abs();
             let v2 = add(end1, mul(t1, r));
             let v3 = add(start2, mul(t2, -r));
-            let mut points = Vec::with_capacity(4);
-            if prev.is_arc() {
-                points.push(end1);
-            }
-            points.push(v2);
-            points.push(v3);
-            if next.is_arc() {
-                points.push(start2);
-            }
-            Ok(Corner::points(Kind::Acute, alpha, &points))
+            let all = [end1, v2, v3, start2];
+            let first = if prev.is_arc() { 0 } else { 1 };
+            let last = if next.is_arc() { 4 } else { 3 };
+            Ok(Corner::points(Kind::Acute, alpha, &all[first..last]))
         }
     }
 }
@@ -518,7 +552,7 @@ mod tests {
 
     #[track_caller]
     fn points(c: &Corner, want: &[P2]) {
-        let got: Vec<P2> = c.steps.iter().map(Step::end).collect();
+        let got: Vec<P2> = c.steps().iter().map(Step::end).collect();
         assert_eq!(got.len(), want.len(), "{c:?}");
         for (g, w) in got.iter().zip(want) {
             assert!(close(*g, *w), "got {got:?}, want {want:?}");
@@ -540,7 +574,7 @@ mod tests {
         };
         let c = corner(&X, &up, 5.0, 5.0, Rule::Offset(Outside::Vectors)).unwrap();
         assert_eq!(c.kind, Kind::Inside);
-        assert!((c.alpha - 270.0).abs() < 1e-9);
+        assert!((c.alpha() - 270.0).abs() < 1e-9);
         points(&c, &[[45.0, 5.0]]);
     }
 
@@ -556,7 +590,7 @@ mod tests {
         };
         let c = corner(&X, &down, 5.0, 5.0, Rule::Offset(Outside::Vectors)).unwrap();
         assert_eq!(c.kind, Kind::Obtuse);
-        assert!((c.alpha - 135.0).abs() < 1e-9);
+        assert!((c.alpha() - 135.0).abs() < 1e-9);
         let t = (std::f64::consts::PI / 8.0).tan();
         points(&c, &[[50.0 + 5.0 * t, 5.0]]);
     }
@@ -574,7 +608,7 @@ mod tests {
         };
         let c = corner(&X, &back, 5.0, 5.0, Rule::Offset(Outside::Vectors)).unwrap();
         assert_eq!(c.kind, Kind::Acute);
-        assert!((c.alpha - 45.0).abs() < 1e-9);
+        assert!((c.alpha() - 45.0).abs() < 1e-9);
         points(&c, &[[55.0, 5.0], [50.0 + 10.0 * s, 0.0]]);
     }
 

@@ -174,11 +174,11 @@ pub fn start_up_note(
             "{name} start-up (type B): the tool centre goes to the intersection of {}, {} of both (corner {})",
             offsets(prev, next),
             w.side_of(),
-            angle(corner.alpha)
+            angle(corner.alpha())
         ),
         (Type::B, _) => format!(
             "{name} start-up (type B): outside corner of {} (under 90°): the tool centre goes {} of this block's end, then {} of the next block's start",
-            angle(corner.alpha),
+            angle(corner.alpha()),
             w.side_of(),
             w.side_of()
         ),
@@ -196,19 +196,19 @@ pub fn corner_note(w: &Words, corner: &Corner, prev: &Path, next: &Path, o2: f64
         ),
         Kind::Inside => format!(
             "{name}: inside corner ({}): the tool stops at the intersection of {}",
-            angle(corner.alpha),
+            angle(corner.alpha()),
             offsets(prev, next)
         ),
         Kind::Obtuse => format!(
             "{name}: outside corner ({}): the tool goes to the intersection of {}",
-            angle(corner.alpha),
+            angle(corner.alpha()),
             offsets(prev, next)
         ),
         Kind::Acute => {
-            let more = corner.steps.len() - 1;
+            let more = corner.steps().len() - 1;
             format!(
                 "{name}: outside corner ({}, under 90°): the tool goes {} past the corner along this block, across, and onto the next block's offset path {} before its start ({more} more move{}: the manual's extra vectors keep it {} off the corner point)",
-                angle(corner.alpha),
+                angle(corner.alpha()),
                 w.r(),
                 w.r(),
                 if more == 1 { "" } else { "s" },
@@ -217,7 +217,7 @@ pub fn corner_note(w: &Words, corner: &Corner, prev: &Path, next: &Path, o2: f64
         }
         Kind::Rounded => format!(
             "{name}: outside corner ({}): the tool goes round it on an arc of radius {} (setting cutter_outside_corner = arc)",
-            angle(corner.alpha),
+            angle(corner.alpha()),
             w.r()
         ),
         Kind::SideChange => format!(
@@ -251,11 +251,11 @@ pub fn before_cancel_note(w: &Words, t: Type, corner: &Corner, prev: &Path, next
         (Type::B, Kind::Inside | Kind::Obtuse) => format!(
             "{name}: the next block cancels (type B): the tool ends at the intersection of {} (corner {})",
             offsets(prev, next),
-            angle(corner.alpha)
+            angle(corner.alpha())
         ),
         (Type::B, _) => format!(
             "{name}: the next block cancels (type B): outside corner of {} (under 90°): the tool ends {} of this block's end, then goes {} of the next block's start",
-            angle(corner.alpha),
+            angle(corner.alpha()),
             w.side_of(),
             w.side_of()
         ),
