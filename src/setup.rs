@@ -232,6 +232,18 @@ pub enum SameGroupCodes {
     LastWins,
 }
 
+/// A decimal point in the P word of a dwell (G04, and the dwell at the
+/// bottom of a canned cycle) (behaviour 1.23, 7.20).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum DwellPDecimalPoint {
+    /// P is a whole number of milliseconds; `P3.` is an error (Fanuc,
+    /// YASNAC: a decimal point is not allowed in P).
+    Error,
+    /// `P3.` is 3 seconds and `P3` 3 milliseconds (Haas G04).
+    Seconds,
+}
+
 /// The lathe's G-code system (behaviour 7.18): which numbers the single
 /// cycles, coordinate setting, feed modes and inch/metric have.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -295,6 +307,10 @@ pub struct Settings {
     /// [`Settings::gcode_system`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub gcode_system: Option<GCodeSystem>,
+    /// A decimal point in a dwell's P (behaviour 7.20); read it with
+    /// [`Settings::dwell_p_decimal_point`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dwell_p_decimal_point: Option<DwellPDecimalPoint>,
 }
 
 impl Settings {
@@ -316,6 +332,19 @@ impl Settings {
     pub fn gcode_system(&self) -> GCodeSystem {
         self.gcode_system.unwrap_or(match self.control {
             Control::Yasnac | Control::Fanuc | Control::Haas => GCodeSystem::A,
+        })
+    }
+
+    /// A decimal point in a dwell's P: Fanuc allows none in P (0i-MF/TF
+    /// operator's manuals, "Dwell (G04)": X takes a decimal point, P does
+    /// not; alarm PS0007, illegal use of decimal point), nor does YASNAC,
+    /// whose P is a whole number of milliseconds; Haas reads P with a point
+    /// as seconds and without one as milliseconds (mill and lathe operator's
+    /// manuals, G04), and its canned cycles' P the same way.
+    pub fn dwell_p_decimal_point(&self) -> DwellPDecimalPoint {
+        self.dwell_p_decimal_point.unwrap_or(match self.control {
+            Control::Yasnac | Control::Fanuc => DwellPDecimalPoint::Error,
+            Control::Haas => DwellPDecimalPoint::Seconds,
         })
     }
 }

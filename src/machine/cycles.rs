@@ -75,8 +75,8 @@ impl Machine {
             }
             self.cycle.q = Some(v.abs());
         }
-        if let Some(p) = b.value(Address::P) {
-            self.cycle.p = p;
+        if let Some(p) = b.get(Address::P) {
+            self.cycle.p = super::milliseconds(p);
         }
         let drills = [ia, ib, n].iter().any(|&i| b.has(AXES[i].0)) || b.has(Address::R);
         if !drills {

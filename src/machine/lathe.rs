@@ -41,6 +41,8 @@ impl Machine {
                 ));
             }
         }
+        self.refuse_calls(b)?;
+        self.refuse_unused(b, self.lathe_path(b))?;
         self.common_words(b, out);
         let c = b.codes();
         if c.non_modal() == Some(NonModal::Dwell) {

@@ -49,6 +49,8 @@ impl Machine {
                 ));
             }
         }
+        self.refuse_calls(b)?;
+        self.refuse_unused(b, self.mill_path(b))?;
         self.common_words(b, out);
         let c = b.codes();
         if let Some(t) = b.get(Address::T) {
@@ -104,6 +106,9 @@ impl Machine {
     /// motion mode, then the move (those steps cost much of the machine's
     /// share of the `check` instruction count in docs/performance.md).
     fn motion_block(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+        if b.holds_any(&[Address::I, Address::J, Address::K, Address::R]) {
+            self.refuse_unused_motion_words(b)?;
+        }
         if let Some(f) = b.value(Address::F) {
             self.state.feed = Some(f);
         }
@@ -405,7 +410,8 @@ impl Machine {
         code: PositionOffset,
         out: &mut Out,
     ) -> Result<(), Diagnostic> {
-        position::check_block(b, code, self.setup.machine, self.state.modal.cycle)?;
+        let arc = self.state.modal.motion.is_arc();
+        position::check_block(b, code, self.setup.machine, self.state.modal.cycle, arc)?;
         let old_length = self.length_words(b, out)?;
         self.mill_motion(b, out, old_length, Some(code))
     }

@@ -14,6 +14,7 @@ mod lathe;
 mod mill;
 pub mod modal;
 pub mod state;
+mod words;
 
 pub use state::{ArcInfo, BlockState, EventKind, Move, MoveKind};
 
@@ -451,10 +452,12 @@ impl Machine {
                 }
                 MCode::CoolantMist | MCode::CoolantFlood => EventKind::CoolantOn { m: m.number() },
                 MCode::CoolantOff => EventKind::CoolantOff,
-                // Subprograms are carried through until they are modelled.
+                // The calls never get here: `refuse_calls` stops their block
+                // first (behaviour 2.18).
                 MCode::LocalSubprogramCall
                 | MCode::SubprogramCall
                 | MCode::SubprogramReturn
+                | MCode::ExternalSubprogramCall
                 | MCode::Other(_) => EventKind::Auxiliary { m: m.number() },
             };
             self.event(out, kind);
@@ -473,7 +476,7 @@ impl Machine {
                     "G04 takes the dwell time once: P in milliseconds or X in seconds",
                 ));
             }
-            (Some(p), None) => p.value / 1000.0,
+            (Some(p), None) => milliseconds(p) / 1000.0,
             (None, Some(t)) => {
                 if t.value < 0.0 {
                     return Err(self.error("dwell-words", t.span, "a dwell time is not negative"));
@@ -596,6 +599,13 @@ impl Machine {
             diameter_x: lathe,
         })
     }
+}
+
+/// A dwell's P in milliseconds: as written, or, written with a decimal
+/// point (the parser takes one only with setting `dwell_p_decimal_point =
+/// seconds`, Haas), in seconds (behaviour 1.23).
+pub(crate) fn milliseconds(p: &crate::syntax::Word) -> f64 {
+    if p.point { p.value * 1000.0 } else { p.value }
 }
 
 /// What an arc block asks for, after offsets changed its words.

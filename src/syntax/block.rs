@@ -73,9 +73,9 @@ impl Address {
         ]
     };
 
-    /// The address for a byte of program text, a letter of either case, if
-    /// offsetlab reads it: one load from a table (the parser's dispatch on a
-    /// word's letter).
+    /// The address for a byte of program text, a letter of either case (or
+    /// `:`, the program number), if offsetlab reads it: one load from a
+    /// table (the parser's dispatch on a word's letter).
     #[inline]
     pub fn from_byte(c: u8) -> Option<Address> {
         const BY_BYTE: [Option<Address>; 256] = {
@@ -85,6 +85,8 @@ impl Address {
                 table[c] = Address::from_letter((c as u8).to_ascii_uppercase());
                 c += 1;
             }
+            // `:` is the program number address in ISO code (behaviour 1.4).
+            table[b':' as usize] = Some(Address::O);
             table
         };
         BY_BYTE[usize::from(c)]
@@ -364,6 +366,17 @@ impl Block {
     pub fn holds_any(&self, addresses: &[Address]) -> bool {
         let words = addresses.iter().fold(0, |bits, a| bits | a.bit());
         self.addresses & words != 0
+    }
+
+    /// The first word whose address is not one of `allowed`, if any: a
+    /// cheap test first, then a look at the words.
+    #[inline]
+    pub fn first_outside(&self, allowed: &[Address]) -> Option<&Word> {
+        let mask = allowed.iter().fold(0, |bits, a| bits | a.bit());
+        if self.addresses & !mask == 0 {
+            return None;
+        }
+        self.words.iter().find(|w| mask & w.address.bit() == 0)
     }
 
     /// True if every word of the block has one of these addresses and every

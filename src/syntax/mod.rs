@@ -13,12 +13,15 @@ mod block;
 pub mod codes;
 mod lexer;
 mod messages;
+mod program;
 mod read;
 
 pub use block::{Address, Block, Word, WordKind};
 
 use crate::diag::{Diagnostic, Span};
-use crate::setup::{DecimalInput, GCodeSystem, MachineKind, SameGroupCodes, Setup, Units};
+use crate::setup::{
+    DecimalInput, DwellPDecimalPoint, GCodeSystem, MachineKind, SameGroupCodes, Setup, Units,
+};
 use codes::{Code, CodeTable, GCode, Group, MCode, g_group};
 use lexer::{Number, NumberError};
 
@@ -69,6 +72,8 @@ pub struct ParseOptions {
     pub system: GCodeSystem,
     /// Two G codes of one modal group in a block (behaviour 1.11, 7.17).
     pub same_group: SameGroupCodes,
+    /// A decimal point in a dwell's P (behaviour 1.23, 7.20).
+    pub dwell_p: DwellPDecimalPoint,
 }
 
 impl ParseOptions {
@@ -95,6 +100,7 @@ impl From<&Setup> for ParseOptions {
             block_skip: s.settings.block_skip,
             system: s.settings.gcode_system(),
             same_group: s.settings.same_group_codes(),
+            dwell_p: s.settings.dwell_p_decimal_point(),
         }
     }
 }
@@ -151,6 +157,7 @@ pub struct Resume {
     in_cycle: bool,
     tape: Tape,
     warned_integer: bool,
+    programs: program::Programs,
 }
 
 impl Resume {
@@ -168,13 +175,19 @@ impl Resume {
     /// does: the same G20/G21 and canned-cycle context, tape state and
     /// warnings given (the place in the text aside).
     pub fn same_course(&self, other: &Resume) -> bool {
-        (self.units, self.in_cycle, self.tape, self.warned_integer)
-            == (
-                other.units,
-                other.in_cycle,
-                other.tape,
-                other.warned_integer,
-            )
+        (
+            self.units,
+            self.in_cycle,
+            self.tape,
+            self.warned_integer,
+            self.programs,
+        ) == (
+            other.units,
+            other.in_cycle,
+            other.tape,
+            other.warned_integer,
+            other.programs,
+        )
     }
 
     /// The same state `bytes` further on and `lines` lines further down
@@ -328,6 +341,11 @@ pub struct Blocks<'a> {
     in_cycle: bool,
     tape: Tape,
     warned_integer: bool,
+    /// Which program of the file the parser is in (behaviour 1.21, 1.22).
+    programs: program::Programs,
+    /// A program header read in the current block besides an O word: a
+    /// `<NAME>` or a malformed number (behaviour 1.4, 1.21).
+    header: Option<Span>,
     diagnostics: Vec<Diagnostic>,
     dropped: usize,
     raw: Vec<RawWord>,
@@ -341,7 +359,8 @@ impl<'a> Blocks<'a> {
     pub fn new(text: &'a str, options: ParseOptions) -> Blocks<'a> {
         Blocks {
             text,
-            pos: 0,
+            // A UTF-8 byte order mark is an encoding mark, not text (behaviour 1.9).
+            pos: if text.starts_with('\u{feff}') { 3 } else { 0 },
             line: 1,
             units: options.units,
             table: options.table(),
@@ -349,6 +368,8 @@ impl<'a> Blocks<'a> {
             in_cycle: false,
             tape: Tape::Before,
             warned_integer: false,
+            programs: program::Programs::default(),
+            header: None,
             diagnostics: Vec::new(),
             dropped: 0,
             raw: Vec::with_capacity(16),
@@ -365,6 +386,7 @@ impl<'a> Blocks<'a> {
             in_cycle: self.in_cycle,
             tape: self.tape,
             warned_integer: self.warned_integer,
+            programs: self.programs,
         }
     }
 
@@ -378,6 +400,7 @@ impl<'a> Blocks<'a> {
             in_cycle: at.in_cycle,
             tape: at.tape,
             warned_integer: at.warned_integer,
+            programs: at.programs,
             ..Blocks::new(text, options)
         }
     }
@@ -455,23 +478,34 @@ impl<'a> Blocks<'a> {
     /// program. Blank and comment-only lines yield nothing.
     pub fn next_into(&mut self, block: &mut Block) -> bool {
         let bytes = self.text.as_bytes();
-        while self.pos < bytes.len() && self.tape != Tape::Ended {
-            let line = self.line;
-            let (end, found) = self.parse_block(self.pos, line, block);
-            self.pos = match bytes.get(end) {
-                None => end,
-                Some(b'\r') if bytes.get(end + 1) == Some(&b'\n') => {
-                    self.line += 1;
-                    end + 2
+        loop {
+            while self.pos < bytes.len() && self.tape != Tape::Ended {
+                let line = self.line;
+                let (end, found) = self.parse_block(self.pos, line, block);
+                self.pos = match bytes.get(end) {
+                    None => end,
+                    Some(b'\r') if bytes.get(end + 1) == Some(&b'\n') => {
+                        self.line += 1;
+                        end + 2
+                    }
+                    Some(b'\n' | b'\r') => {
+                        self.line += 1;
+                        end + 1
+                    }
+                    Some(_) => end + 1,
+                };
+                if found {
+                    // A later program of the file is read for its
+                    // diagnostics and not run (behaviour 1.21).
+                    self.programs.block = true;
+                    if !self.programs.later {
+                        return true;
+                    }
                 }
-                Some(b'\n' | b'\r') => {
-                    self.line += 1;
-                    end + 1
-                }
-                Some(_) => end + 1,
-            };
-            if found {
-                return true;
+            }
+            // After the closing %, another program may follow (behaviour 1.3).
+            if self.tape != Tape::Ended || !self.program_after_tape_end() {
+                break;
             }
         }
         if self.tape == Tape::Ended {
@@ -542,7 +576,7 @@ impl<'a> Blocks<'a> {
         let (end, mut last) = read.unwrap_or_else(|| {
             (self.units, self.in_cycle) = context;
             block.clear();
-            self.read_two_pass(i, line, counts, block)
+            self.read_two_pass(start, i, line, counts, block)
         });
         while last > first && matches!(bytes[last - 1], b' ' | b'\t') {
             last -= 1;
@@ -550,6 +584,9 @@ impl<'a> Blocks<'a> {
         block.span = Span::new(first, last, line);
         if self.tape == Tape::Before {
             self.tape = Tape::Reading;
+        }
+        if block.holds(Address::O) || self.header.is_some() {
+            self.program_header(block);
         }
         (end, !block.words.is_empty() || block.error)
     }
@@ -615,7 +652,7 @@ impl<'a> Blocks<'a> {
             }
             WordKind::Integer => {
                 if n.point {
-                    return Err(Refusal::DecimalPoint);
+                    return self.dwell_seconds(address, n, span);
                 }
                 let limit = integer_limit(self.options, address, self.in_cycle);
                 if n.negative && n.mantissa != 0 || n.mantissa > limit {

@@ -4,6 +4,7 @@
 //! and diagnostics ([`super::Blocks::next_into`] chooses).
 
 use super::messages::unexpected_message;
+use super::program::Lead;
 use super::*;
 
 impl Blocks<'_> {
@@ -82,7 +83,8 @@ impl Blocks<'_> {
         Some((i, last))
     }
 
-    /// Reads the words of a block from `i` (after any `/`) in two passes:
+    /// Reads the words of a block from `i` (after any `/`; the block starts
+    /// at `start`) in two passes:
     /// lexes the whole block (reporting comment and character errors, and
     /// noting the G codes that change how numbers are read), then types
     /// every word with the block's context and checks it against the words
@@ -95,6 +97,7 @@ impl Blocks<'_> {
     #[inline(never)]
     pub(super) fn read_two_pass(
         &mut self,
+        start: usize,
         mut i: usize,
         line: u32,
         counts: bool,
@@ -102,8 +105,21 @@ impl Blocks<'_> {
     ) -> (usize, usize) {
         let bytes = self.text.as_bytes();
         let n = bytes.len();
-        let mut last = i;
+        let mark = self.mark();
+        self.header = None;
         self.raw.clear();
+        i = lexer::skip_blanks(bytes, i);
+        let mut last = i;
+
+        // What a block may start with besides words: a program header, or
+        // a line of another dialect (behaviour 1.4, 1.21, 1.22).
+        if let Some(b'O' | b'o' | b':' | b'<' | b'$') = bytes.get(i) {
+            match self.block_lead(i, line, block) {
+                Lead::Words => {}
+                Lead::Name(after) => (i, last) = (after, after),
+                Lead::Refused(end) => (i, last) = (end, end),
+            }
+        }
 
         // Lex: comments, words, and anything else as an error. Words are
         // typed once the whole block is lexed, because a G code anywhere in
@@ -115,9 +131,13 @@ impl Blocks<'_> {
                 break;
             }
             let c = bytes[i];
-            if c.is_ascii_alphabetic() {
+            if c.is_ascii_alphabetic() || c == b':' {
                 let (word_end, _, number) = lexer::number(bytes, i + 1);
-                let letter = c.to_ascii_uppercase();
+                // `:` is the program number address in ISO code (behaviour 1.4).
+                let letter = match c {
+                    b':' => b'O',
+                    _ => c.to_ascii_uppercase(),
+                };
                 if letter == b'G'
                     && counts
                     && let Ok(number) = number
@@ -164,7 +184,7 @@ impl Blocks<'_> {
                 let mut j = i + 1;
                 while j < n
                     && !bytes[j].is_ascii_alphabetic()
-                    && bytes[j] != b'('
+                    && !matches!(bytes[j], b'(' | b':')
                     && !is_end(bytes[j])
                 {
                     j += 1;
@@ -204,6 +224,13 @@ impl Blocks<'_> {
             }
         }
         self.raw = raw;
+        if block.error
+            && start > 0
+            && bytes[start - 1] == b';'
+            && let Some(read) = self.semicolon_comment(mark, start, line, block)
+        {
+            return read;
+        }
         (end, last)
     }
 }

@@ -503,7 +503,7 @@ fn unsupported_reason(table: CodeTable, g: GCode) -> String {
         }
         50 | 51 if !lathe => "scaling is not supported",
         53 => "machine coordinate positioning is not supported",
-        65..=67 => "macro calls are not supported",
+        65..=67 => "macro calls are not run yet",
         68 | 69 => "coordinate rotation is not supported",
         70..=76 if lathe => "multiple repetitive cycles (G70–G76) are not supported yet",
         15 | 16 => "polar coordinates are not supported",
