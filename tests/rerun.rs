@@ -157,6 +157,8 @@ fn edit() -> impl Strategy<Value = Edit> {
         1 => Just("X1.5 Y-2.\n".to_string()),
         1 => Just("G41 D02 X3.\n".to_string()),
         1 => Just("Q".to_string()),
+        1 => Just("\nO2000\n".to_string()),
+        1 => Just(" ; a note\n".to_string()),
     ];
     (
         0.0f64..1.0,

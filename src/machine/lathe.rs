@@ -49,10 +49,12 @@ impl Machine {
             return self.dwell(b, out);
         }
         for (abs, inc) in [(Address::X, Address::U), (Address::Z, Address::W)] {
-            if let (Some(_), Some(w)) = (b.get(abs), b.get(inc)) {
+            if let (Some(a), Some(w)) = (b.get(abs), b.get(inc)) {
+                // At the second word written.
+                let at = if a.span.start > w.span.start { a } else { w };
                 return Err(self.error(
                     "axis-conflict",
-                    w.span,
+                    at.span,
                     format!(
                         "{} and {} both set the {} target in one block: write one of them",
                         abs.letter(),
@@ -144,8 +146,15 @@ impl Machine {
                 ccw: direction == ArcDirection::Ccw,
                 ..ArcRequest::default()
             };
-            if let Some(r) = b.value(Address::R) {
-                req.radius = Some((self.mm(r), 0.0));
+            if let Some(r) = b.get(Address::R) {
+                if b.has(Address::I) || b.has(Address::K) {
+                    out.warnings.push(Diagnostic::warning(
+                        "arc-r-and-center",
+                        r.span,
+                        "R and I/K in one arc: R is used and I/K are ignored (Fanuc)",
+                    ));
+                }
+                req.radius = Some((self.mm(r.value), 0.0));
             } else {
                 if !(b.has(Address::I) || b.has(Address::K)) {
                     return Err(self.error(

@@ -106,8 +106,16 @@ impl Machine {
     /// motion mode, then the move (those steps cost much of the machine's
     /// share of the `check` instruction count in docs/performance.md).
     fn motion_block(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+        // I, J, K and R are read by arcs (and R, K by a canned cycle): in
+        // any other block they are refused (behaviour 2.22).
         if b.holds_any(&[Address::I, Address::J, Address::K, Address::R]) {
-            self.refuse_unused_motion_words(b)?;
+            let arc = match b.codes().motion() {
+                Some(m) => m.is_arc(),
+                None => self.state.modal.cycle.is_none() && self.state.modal.motion.is_arc(),
+            };
+            if !arc {
+                self.refuse_unused_motion_words(b)?;
+            }
         }
         if let Some(f) = b.value(Address::F) {
             self.state.feed = Some(f);

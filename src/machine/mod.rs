@@ -425,8 +425,15 @@ impl Machine {
             self.state.feed = Some(f);
         }
         if let Some(s) = b.value(Address::S) {
-            // G50 S on the lathe is the spindle speed limit, not a speed.
-            if !(machine == MachineKind::Lathe && c.non_modal() == Some(NonModal::SetCoordinates)) {
+            // G50 S on the lathe is the spindle speed limit, not a speed:
+            // said, since no state shows it (behaviour 2.19, 2.22).
+            if machine == MachineKind::Lathe && c.non_modal() == Some(NonModal::SetCoordinates) {
+                let g = crate::syntax::codes::Code::NonModal(NonModal::SetCoordinates)
+                    .gcode(self.state.table());
+                out.notes.push(format!(
+                    "{g} S{s}: the spindle speed limit, which constant surface speed (G96) keeps the spindle under; the spindle speed is not changed"
+                ));
+            } else {
                 self.state.spindle = Some(s);
             }
         }
@@ -467,12 +474,27 @@ impl Machine {
     /// G04: dwell P (ms) or X/U (s) (behaviour 2.9).
     fn dwell(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
         let p = b.get(Address::P);
+        // A time given twice is refused at the second word written.
+        let second = |a: &crate::syntax::Word, b: &crate::syntax::Word| {
+            if a.span.start > b.span.start {
+                a.span
+            } else {
+                b.span
+            }
+        };
+        if let (Some(x), Some(u)) = (b.get(Address::X), b.get(Address::U)) {
+            return Err(self.error(
+                "dwell-words",
+                second(x, u),
+                "G04 takes the dwell time once: X or U in seconds, not both",
+            ));
+        }
         let time_word = b.get(Address::X).or_else(|| b.get(Address::U));
         let seconds = match (p, time_word) {
-            (Some(_), Some(t)) => {
+            (Some(p), Some(t)) => {
                 return Err(self.error(
                     "dwell-words",
-                    t.span,
+                    second(p, t),
                     "G04 takes the dwell time once: P in milliseconds or X in seconds",
                 ));
             }

@@ -73,9 +73,9 @@ impl Address {
         ]
     };
 
-    /// The address for a byte of program text, a letter of either case (or
-    /// `:`, the program number), if offsetlab reads it: one load from a
-    /// table (the parser's dispatch on a word's letter).
+    /// The address for a byte of program text, a letter of either case, if
+    /// the one-pass reading reads it (all but O, behaviour 1.21): one load
+    /// from a table (the parser's dispatch on a word's letter).
     #[inline]
     pub fn from_byte(c: u8) -> Option<Address> {
         const BY_BYTE: [Option<Address>; 256] = {
@@ -85,8 +85,11 @@ impl Address {
                 table[c] = Address::from_letter((c as u8).to_ascii_uppercase());
                 c += 1;
             }
-            // `:` is the program number address in ISO code (behaviour 1.4).
-            table[b':' as usize] = Some(Address::O);
+            // A program header (O, or `:` in ISO code) is read in two passes,
+            // where the programs of a file are told apart (behaviour 1.21):
+            // ordinary blocks pay nothing for it.
+            table[b'O' as usize] = None;
+            table[b'o' as usize] = None;
             table
         };
         BY_BYTE[usize::from(c)]

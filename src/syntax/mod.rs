@@ -137,13 +137,17 @@ pub fn parse(text: &str, options: &ParseOptions) -> Program {
     }
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
 enum Tape {
     /// No `%` and no block seen yet.
     Before,
+    /// The tape start `%` was read, and no block yet.
+    Started,
     /// Reading blocks.
     Reading,
-    /// A closing `%` was read: nothing after it is part of the program.
+    /// A closing `%` was read: nothing after it is part of the program but
+    /// another program (behaviour 1.3); or a later program's header stopped
+    /// the reading of blocks to run (behaviour 1.21).
     Ended,
 }
 
@@ -344,7 +348,8 @@ pub struct Blocks<'a> {
     /// Which program of the file the parser is in (behaviour 1.21, 1.22).
     programs: program::Programs,
     /// A program header read in the current block besides an O word: a
-    /// `<NAME>` or a malformed number (behaviour 1.4, 1.21).
+    /// `<NAME>` or a malformed number (behaviour 1.4, 1.21; two-pass
+    /// reading only).
     header: Option<Span>,
     diagnostics: Vec<Diagnostic>,
     dropped: usize,
@@ -481,54 +486,54 @@ impl<'a> Blocks<'a> {
         loop {
             while self.pos < bytes.len() && self.tape != Tape::Ended {
                 let line = self.line;
-                let (end, found) = self.parse_block(self.pos, line, block);
-                self.pos = match bytes.get(end) {
-                    None => end,
-                    Some(b'\r') if bytes.get(end + 1) == Some(&b'\n') => {
-                        self.line += 1;
-                        end + 2
-                    }
-                    Some(b'\n' | b'\r') => {
-                        self.line += 1;
-                        end + 1
-                    }
-                    Some(_) => end + 1,
-                };
+                let (end, found) = self.parse_block::<true>(self.pos, line, block);
+                self.pos = self.after_block(end);
                 if found {
-                    // A later program of the file is read for its
-                    // diagnostics and not run (behaviour 1.21).
-                    self.programs.block = true;
-                    if !self.programs.later {
-                        return true;
-                    }
+                    return true;
                 }
             }
-            // After the closing %, another program may follow (behaviour 1.3).
-            if self.tape != Tape::Ended || !self.program_after_tape_end() {
-                break;
+            // The tape's end, or a later program: out of line, rare.
+            if !self.go_on_after_end(block) {
+                return false;
             }
         }
-        if self.tape == Tape::Ended {
-            let rest = &self.text[self.pos.min(self.text.len())..];
-            if let Some(off) = rest.find(|c: char| !c.is_whitespace()) {
-                let at = self.pos + off;
-                let line = self.line + count_lines(&bytes[self.pos..at]);
-                self.report(Diagnostic::warning(
-                    "text-after-tape-end",
-                    Span::new(at, at + 1, line),
-                    "text after the closing % is not read: % marks the end of the tape",
-                ));
+    }
+
+    /// The position after the end of block at `end` (its end-of-block
+    /// character), counting the line it ends.
+    #[inline(always)]
+    fn after_block(&mut self, end: usize) -> usize {
+        let bytes = self.text.as_bytes();
+        match bytes.get(end) {
+            None => end,
+            Some(b'\r') if bytes.get(end + 1) == Some(&b'\n') => {
+                self.line += 1;
+                end + 2
             }
-            self.pos = bytes.len();
+            Some(b'\n' | b'\r') => {
+                self.line += 1;
+                end + 1
+            }
+            Some(_) => end + 1,
         }
-        false
     }
 
     /// Parses the block that starts at `start`, up to its end-of-block
     /// character (newline or `;` outside a comment). Returns the position of
     /// that character (or the end of the text) and whether it is a block to
     /// execute.
-    fn parse_block(&mut self, start: usize, line: u32, block: &mut Block) -> (usize, bool) {
+    ///
+    /// `FAST`: the one-pass reading is tried first (the blocks to run); the
+    /// later programs of a file, read for their diagnostics only, take the
+    /// two-pass reading, which gives the same blocks (a copy of its own
+    /// keeps the hot loop's as it was: the `check` instruction count in
+    /// docs/performance.md).
+    fn parse_block<const FAST: bool>(
+        &mut self,
+        start: usize,
+        line: u32,
+        block: &mut Block,
+    ) -> (usize, bool) {
         let bytes = self.text.as_bytes();
         let n = bytes.len();
         let mut i = lexer::skip_blanks(bytes, start);
@@ -538,10 +543,13 @@ impl<'a> Blocks<'a> {
         if bytes[i] == b'%' {
             // Tape start before any block, tape end after (behaviour 1.3); the rest
             // of the line is not read.
-            self.tape = if self.tape == Tape::Before {
-                Tape::Reading
-            } else {
-                Tape::Ended
+            self.tape = match self.tape {
+                Tape::Before => Tape::Started,
+                Tape::Started | Tape::Ended => Tape::Ended,
+                Tape::Reading => {
+                    self.programs.block = true;
+                    Tape::Ended
+                }
             };
             while i < n && bytes[i] != b'\n' && bytes[i] != b'\r' {
                 i += 1;
@@ -569,7 +577,7 @@ impl<'a> Blocks<'a> {
         // the context the block started with, the way the two-pass reading
         // (its specification) reads it.
         let context = (self.units, self.in_cycle);
-        let read = match self.one_pass {
+        let read = match FAST && self.one_pass {
             true => self.read_one_pass(i, line, counts, block),
             false => None,
         };
@@ -582,11 +590,9 @@ impl<'a> Blocks<'a> {
             last -= 1;
         }
         block.span = Span::new(first, last, line);
-        if self.tape == Tape::Before {
+        // (A later program's header ends the reading: the tape stays Ended.)
+        if self.tape < Tape::Reading {
             self.tape = Tape::Reading;
-        }
-        if block.holds(Address::O) || self.header.is_some() {
-            self.program_header(block);
         }
         (end, !block.words.is_empty() || block.error)
     }
@@ -652,7 +658,7 @@ impl<'a> Blocks<'a> {
             }
             WordKind::Integer => {
                 if n.point {
-                    return self.dwell_seconds(address, n, span);
+                    return Err(Refusal::DecimalPoint);
                 }
                 let limit = integer_limit(self.options, address, self.in_cycle);
                 if n.negative && n.mantissa != 0 || n.mantissa > limit {
@@ -719,7 +725,13 @@ impl<'a> Blocks<'a> {
         let read = address
             .ok_or(Refusal::Address)
             .and_then(|a| Ok((a, w.number.map_err(Refusal::Number)?)))
-            .and_then(|(a, n)| self.read_word(a, n, span));
+            .and_then(|(a, n)| {
+                self.read_word(a, n, span).or_else(|refusal| match refusal {
+                    // Haas: a dwell's P with a point is seconds (behaviour 1.23).
+                    Refusal::DecimalPoint => self.dwell_seconds(a, n, span),
+                    _ => Err(refusal),
+                })
+            });
         match read {
             Ok((word, kind)) => {
                 if kind == WordKind::Dimension
@@ -760,23 +772,6 @@ impl<'a> Blocks<'a> {
     ) {
         self.error_span(block, code, Span::new(start, end, line), msg);
     }
-}
-
-fn count_lines(bytes: &[u8]) -> u32 {
-    let mut n = 0u32;
-    let mut i = 0;
-    while i < bytes.len() {
-        match bytes[i] {
-            b'\r' if bytes.get(i + 1) == Some(&b'\n') => {
-                n += 1;
-                i += 1;
-            }
-            b'\n' | b'\r' => n += 1,
-            _ => {}
-        }
-        i += 1;
-    }
-    n
 }
 
 fn integer_limit(options: ParseOptions, address: Address, in_cycle: bool) -> u64 {

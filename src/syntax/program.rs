@@ -20,7 +20,7 @@ pub(super) struct Programs {
     /// A program header has been read: the next one starts another program
     /// (behaviour 1.21).
     pub header: bool,
-    /// A block has been read.
+    /// A block was read before a closing `%`.
     pub block: bool,
     /// The tape has ended (a closing `%`) and the parser went on to another
     /// program: after a block, that is another program, header or none.
@@ -28,6 +28,10 @@ pub(super) struct Programs {
     /// The parser is past the first program: blocks are read for their
     /// diagnostics and not run.
     pub later: bool,
+    /// A later program's header has just stopped the reading of blocks to
+    /// run ([`Blocks::go_on_after_end`] goes on reading them for their
+    /// diagnostics).
+    pub stop: bool,
     /// The line where this program was told that `;` ends a block (0: not
     /// yet): the hint is given once a program (behaviour 1.22).
     pub semicolon_hint: u32,
@@ -173,12 +177,7 @@ impl Blocks<'_> {
     /// blocks before it; every later one, and one past a closing `%` after
     /// a block, starts a program that is not run, read from a fresh
     /// context, with a warning naming it (behaviour 1.21).
-    pub(super) fn program_header(&mut self, block: &Block) {
-        let span = self
-            .header
-            .take()
-            .or_else(|| block.get(Address::O).map(|w| w.span))
-            .unwrap_or(block.span);
+    pub(super) fn program_header(&mut self, span: Span, block: &mut Block) {
         let programs = &mut self.programs;
         if !(programs.header || programs.ended && programs.block) {
             programs.header = true;
@@ -192,9 +191,15 @@ impl Blocks<'_> {
         *programs = Programs {
             header: true,
             later: true,
+            stop: true,
             semicolon_hint: 0,
             ..*programs
         };
+        // The header's block is not run, nor any after it; the reading of
+        // blocks to run ends here.
+        block.clear();
+        block.error = false;
+        self.tape = Tape::Ended;
         (self.units, self.in_cycle) = (self.options.units, false);
         self.warned_integer = false;
         let name = quote(&self.text[span.start as usize..span.end as usize]);
@@ -205,6 +210,45 @@ impl Blocks<'_> {
                 "`{name}` starts {ordinal} program in this file, which is not run: a file's first program runs, and the others are the subprograms it calls (M98), which offsetlab does not run yet"
             ),
         ));
+    }
+
+    /// The reading of blocks to run has stopped: at the text's end, at a
+    /// closing `%`, or at the header of a later program. Reads the later
+    /// programs for their diagnostics, and says so of text after the tape
+    /// end that is no program (behaviour 1.3, 1.21). True when blocks to run
+    /// follow after all (a first program after the tape marks).
+    #[inline(never)]
+    pub(super) fn go_on_after_end(&mut self, block: &mut Block) -> bool {
+        let bytes = self.text.as_bytes();
+        loop {
+            if self.programs.stop {
+                self.programs.stop = false;
+                self.tape = Tape::Reading;
+            } else if self.tape != Tape::Ended || !self.program_after_tape_end() {
+                break;
+            } else if !self.programs.later {
+                return true;
+            }
+            while self.pos < bytes.len() && self.tape != Tape::Ended {
+                let line = self.line;
+                let (end, _) = self.parse_block::<false>(self.pos, line, block);
+                self.pos = self.after_block(end);
+            }
+        }
+        if self.tape == Tape::Ended {
+            let rest = &self.text[self.pos.min(self.text.len())..];
+            if let Some(off) = rest.find(|c: char| !c.is_whitespace()) {
+                let at = self.pos + off;
+                let line = self.line + count_lines(&bytes[self.pos..at]);
+                self.report(Diagnostic::warning(
+                    "text-after-tape-end",
+                    Span::new(at, at + 1, line),
+                    "text after the closing % is not read: % marks the end of the tape",
+                ));
+            }
+            self.pos = bytes.len();
+        }
+        false
     }
 
     /// After the closing `%`: true if another program follows (its header
@@ -234,7 +278,7 @@ impl Blocks<'_> {
                 b'O' | b'o' | b':' | b'<' => {
                     self.pos = p;
                     self.line += lines;
-                    self.tape = Tape::Reading;
+                    self.tape = Tape::Started;
                     self.programs.ended = true;
                     return true;
                 }
@@ -333,6 +377,23 @@ impl Blocks<'_> {
         };
         Ok((word, WordKind::Integer))
     }
+}
+
+fn count_lines(bytes: &[u8]) -> u32 {
+    let mut n = 0u32;
+    let mut i = 0;
+    while i < bytes.len() {
+        match bytes[i] {
+            b'\r' if bytes.get(i + 1) == Some(&b'\n') => {
+                n += 1;
+                i += 1;
+            }
+            b'\n' | b'\r' => n += 1,
+            _ => {}
+        }
+        i += 1;
+    }
+    n
 }
 
 /// What a block's reading may have to take back.

@@ -224,6 +224,14 @@ impl Blocks<'_> {
             }
         }
         self.raw = raw;
+        // A program header (O, `:`, <NAME>, or a malformed number).
+        let header = self
+            .header
+            .take()
+            .or_else(|| block.get(Address::O).map(|w| w.span));
+        if let Some(span) = header {
+            self.program_header(span, block);
+        }
         if block.error
             && start > 0
             && bytes[start - 1] == b';'
