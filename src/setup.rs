@@ -233,7 +233,7 @@ pub enum SameGroupCodes {
 }
 
 /// A decimal point in the P word of a dwell (G04, and the dwell at the
-/// bottom of a canned cycle) (behaviour 1.23, 7.20).
+/// bottom of a canned cycle) (behaviour 1.23, 7.21).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum DwellPDecimalPoint {
@@ -242,6 +242,16 @@ pub enum DwellPDecimalPoint {
     Error,
     /// `P3.` is 3 seconds and `P3` 3 milliseconds (Haas G04).
     Seconds,
+}
+
+/// What G12/G13 mean on the mill (behaviour 7.20, 14.13).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CirclePocket {
+    /// Haas circular pocket milling: I, K, Q, L, D, Z, F.
+    Haas,
+    /// Not a code of the control: an alarm.
+    Alarm,
 }
 
 /// The lathe's G-code system (behaviour 7.18): which numbers the single
@@ -307,10 +317,14 @@ pub struct Settings {
     /// [`Settings::gcode_system`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub gcode_system: Option<GCodeSystem>,
-    /// A decimal point in a dwell's P (behaviour 7.20); read it with
+    /// A decimal point in a dwell's P (behaviour 7.21); read it with
     /// [`Settings::dwell_p_decimal_point`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub dwell_p_decimal_point: Option<DwellPDecimalPoint>,
+    /// G12/G13 on the mill (behaviour 7.20); read it with
+    /// [`Settings::circle_pocket`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub circle_pocket: Option<CirclePocket>,
 }
 
 impl Settings {
@@ -323,6 +337,17 @@ impl Settings {
         self.same_group_codes.unwrap_or(match self.control {
             Control::Yasnac => SameGroupCodes::Error,
             Control::Fanuc | Control::Haas => SameGroupCodes::LastWins,
+        })
+    }
+
+    /// G12/G13 on the mill: Haas mills cut a circular pocket (Haas mill
+    /// operator's manual, "G12 Circular Pocket Milling CW / G13 … CCW");
+    /// neither the Fanuc 0i-MF G-code list nor the YASNAC seeds' manual has
+    /// them on the mill, where the control alarms.
+    pub fn circle_pocket(&self) -> CirclePocket {
+        self.circle_pocket.unwrap_or(match self.control {
+            Control::Haas => CirclePocket::Haas,
+            Control::Yasnac | Control::Fanuc => CirclePocket::Alarm,
         })
     }
 

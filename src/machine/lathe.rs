@@ -4,7 +4,7 @@
 //! [`crate::offsets::lathe`]'s; this file moves the tool by them.
 
 use super::modal::{ArcDirection, Distance, LatheCycle, Motion};
-use super::{ArcRequest, Machine, Mark, Out};
+use super::{Ahead, ArcRequest, Machine, Mark, Out};
 use super::{EventKind, MoveKind};
 use crate::diag::Diagnostic;
 use crate::geometry::Xyz;
@@ -24,7 +24,16 @@ pub(crate) struct TurningData {
 }
 
 impl Machine {
-    pub(super) fn lathe_block(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+    /// A lathe block. `_ahead` gives the blocks after it to the rules that
+    /// need the next move (none yet: the chamfer words and tool nose radius
+    /// compensation are refused until they are modelled).
+    pub(super) fn lathe_block(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+        _ahead: &mut dyn Ahead,
+    ) -> Result<(), Diagnostic> {
+        self.refuse_polar_moves(b)?;
         self.refuse_unmodelled(b)?;
         for w in &b.words {
             if matches!(w.address, Address::Y | Address::J | Address::D | Address::H) {
@@ -43,7 +52,9 @@ impl Machine {
         }
         self.refuse_calls(b)?;
         self.refuse_unused(b, self.lathe_path(b))?;
+        let before = self.state.modal;
         self.common_words(b, out);
+        self.mode_codes(b, out, before)?;
         let c = b.codes();
         if c.non_modal() == Some(NonModal::Dwell) {
             return self.dwell(b, out);
@@ -70,15 +81,35 @@ impl Machine {
                 self.turning = TurningData::default();
             }
         }
+        let mut skip = false;
         match c.non_modal() {
             Some(NonModal::SetCoordinates) => return self.g50(b),
             Some(NonModal::ReferenceReturn) => return self.lathe_g28(b, out),
-            // G04 was made above; G45–G48 are the mill's, refused by the
-            // parser on the lathe (seed 004).
-            Some(NonModal::Dwell | NonModal::PositionOffset(_)) | None => {}
+            // G31 moves as G01 whatever the mode (behaviour 14.7).
+            Some(NonModal::Skip) => {
+                self.skip_note(b, out)?;
+                skip = true;
+            }
+            // G04 was made above; G45–G48, G09, G05.1, G08, G187 and the
+            // pockets are the mill's, refused by the parser on the lathe.
+            Some(
+                NonModal::Dwell
+                | NonModal::PositionOffset(_)
+                | NonModal::ExactStop
+                | NonModal::AiContour
+                | NonModal::LookAhead
+                | NonModal::Smoothness
+                | NonModal::Cylindrical
+                | NonModal::CirclePocket(_),
+            )
+            | None => {}
         }
         let t_changed = self.t_code(b, out);
-        let motion = self.state.modal.motion;
+        let motion = if skip {
+            Motion::Linear
+        } else {
+            self.state.modal.motion
+        };
         let any_axis = [Address::X, Address::U, Address::Z, Address::W]
             .iter()
             .any(|a| b.has(*a));

@@ -5,8 +5,9 @@
 //! by them.
 
 use super::MoveKind;
-use super::modal::{ArcDirection, Distance, Motion, Plane};
-use super::{AXES, ArcRequest, Machine, Out};
+use super::corner::CORNER_WORDS;
+use super::modal::{ArcDirection, Distance, FeedMode, Motion, Plane};
+use super::{AXES, Ahead, ArcRequest, Machine, Out};
 use crate::diag::Diagnostic;
 use crate::geometry::Xyz;
 use crate::offsets::length::{LengthState, LengthWords, ZAfter};
@@ -31,10 +32,26 @@ const MOTION_WORDS: [Address; 10] = [
 ];
 
 impl Machine {
-    pub(super) fn mill_block(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
-        if b.holds_only(&MOTION_WORDS, &[Group::Motion]) {
+    /// A mill block. `ahead` gives the blocks after it to the rules that need
+    /// the next move: the chamfer and corner words `,C`/`,R` (`corner.rs`).
+    pub(super) fn mill_block(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+        ahead: &mut dyn Ahead,
+    ) -> Result<(), Diagnostic> {
+        if !self.special && b.holds_only(&MOTION_WORDS, &[Group::Motion]) {
             return self.motion_block(b, out);
         }
+        if b.holds_any(&CORNER_WORDS) {
+            return self.corner_block(b, out, ahead);
+        }
+        self.mill_general(b, out)
+    }
+
+    /// A mill block that is more than motion words (its codes, offsets,
+    /// cycles, G28/G92/G04), without look-ahead.
+    pub(super) fn mill_general(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
         self.refuse_unmodelled(b)?;
         let lathe_words = b.holds(Address::U) || b.holds(Address::W);
         for w in b.words.iter().filter(|_| lathe_words) {
@@ -51,8 +68,13 @@ impl Machine {
         }
         self.refuse_calls(b)?;
         self.refuse_unused(b, self.mill_path(b))?;
+        let before = self.state.modal;
         self.common_words(b, out);
+        self.mode_codes(b, out, before)?;
         let c = b.codes();
+        if self.state.modal.feed_mode == FeedMode::InverseTime {
+            self.check_inverse_time(b)?;
+        }
         if let Some(t) = b.get(Address::T) {
             self.state.next_tool = t.int();
         }
@@ -91,7 +113,20 @@ impl Machine {
             Some(NonModal::PositionOffset(code)) => {
                 return self.position_offset_block(b, code, out);
             }
-            None => {}
+            Some(NonModal::Skip) => return self.skip(b, out),
+            Some(NonModal::CirclePocket(direction)) => {
+                return self.circle_pocket(b, direction, out);
+            }
+            // Their words and sentences were taken by `mode_codes`; the
+            // block moves as any other (behaviour 14).
+            Some(
+                NonModal::ExactStop
+                | NonModal::AiContour
+                | NonModal::LookAhead
+                | NonModal::Smoothness
+                | NonModal::Cylindrical,
+            )
+            | None => {}
         }
         let old_length = self.length_words(b, out)?;
         match self.state.modal.cycle {
@@ -422,6 +457,18 @@ impl Machine {
         position::check_block(b, code, self.setup.machine, self.state.modal.cycle, arc)?;
         let old_length = self.length_words(b, out)?;
         self.mill_motion(b, out, old_length, Some(code))
+    }
+
+    /// G31: a G01 move whatever the motion mode, with the skip function's
+    /// sentence (behaviour 14.7).
+    fn skip(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+        self.skip_note(b, out)?;
+        let old_length = self.length_words(b, out)?;
+        let mode = self.state.modal.motion;
+        self.state.modal.motion = Motion::Linear;
+        let moved = self.mill_motion(b, out, old_length, None);
+        self.state.modal.motion = mode;
+        moved
     }
 
     /// G92 X… Y… Z…: sets the programmed position; the G45–G48 vector on each

@@ -9,10 +9,13 @@
 //! positions.
 
 pub mod arc;
+mod corner;
 mod cycles;
 mod lathe;
 mod mill;
 pub mod modal;
+mod modes;
+mod pocket;
 pub mod state;
 mod words;
 
@@ -29,6 +32,25 @@ use crate::syntax::{Address, Block};
 use arc::{ArcError, Circle};
 use modal::{Modal, WorkSystem};
 use std::sync::Arc;
+
+/// The blocks that run after the current one (look-ahead), for the rules
+/// that need the next move: the run reads them when a rule asks
+/// (`run/ahead.rs`), skipping the blocks the block skip switch passes over.
+pub(crate) trait Ahead {
+    /// The `k`-th block that runs after the current one (0: the next), as
+    /// parsed (a block with a parse error has `error` set), or None past the
+    /// program's end.
+    fn peek(&mut self, k: usize) -> Option<&Block>;
+}
+
+/// No blocks ahead: the program ends after the current block.
+pub(crate) struct NoneAhead;
+
+impl Ahead for NoneAhead {
+    fn peek(&mut self, _: usize) -> Option<&Block> {
+        None
+    }
+}
 
 /// What happens after a block.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -82,6 +104,9 @@ pub struct Machine {
     cycle: cycles::CycleData,
     turning: lathe::TurningData,
     feed_warned: bool,
+    /// A mode is in effect that every block must be checked against (G93,
+    /// behaviour 14.8): no block takes the mill's fast path for plain moves.
+    special: bool,
     index: u32,
     line: u32,
     span: Span,
@@ -91,6 +116,19 @@ pub struct Machine {
     pub(crate) moves_left: usize,
     /// Set when a block ran out of `moves_left`.
     overflow: bool,
+    /// The last block cut a chamfer or corner rounding at `corner`: the
+    /// next block's words count from the corner (behaviour 2.32). A flag
+    /// the next block tests, and the corner beside it (the `check`
+    /// instruction count in docs/performance.md).
+    pub(super) corner_cut: bool,
+    /// The corner the last block's chamfer or rounding cut.
+    pub(super) corner: Xyz,
+    /// While a block after a corner runs from the corner: where the tool
+    /// really starts (the chamfer's or the round's end).
+    pub(super) corner_end: Option<Xyz>,
+    /// This machine is a copy running the next block to find its direction
+    /// (behaviour 2.31): its own chamfers are not cut.
+    reading_ahead: bool,
 }
 
 const AXES: [(Address, char); 3] = [(Address::X, 'X'), (Address::Y, 'Y'), (Address::Z, 'Z')];
@@ -134,11 +172,16 @@ impl Machine {
             cycle: cycles::CycleData::default(),
             turning: lathe::TurningData::default(),
             feed_warned: false,
+            special: false,
             index: 0,
             line: 0,
             span: Span::default(),
             moves_left: usize::MAX,
             overflow: false,
+            corner_cut: false,
+            corner: [0.0; 3],
+            corner_end: None,
+            reading_ahead: false,
         }
     }
 
@@ -173,7 +216,10 @@ impl Machine {
                     m.mirror_center,
                     m.cycle,
                     m.turning,
-                    m.feed_warned
+                    m.feed_warned,
+                    m.special,
+                    m.corner_cut,
+                    m.corner
                 )
             )
         }
@@ -189,14 +235,20 @@ impl Machine {
         block: &Block,
         index: u32,
         out: &mut Out,
+        ahead: &mut dyn Ahead,
     ) -> Result<Flow, Diagnostic> {
         self.index = index;
         self.line = block.span.line;
         self.span = block.span;
         self.overflow = false;
+        let after_corner = self.corner_cut.then(|| self.run_from_corner());
         match self.setup.machine {
-            MachineKind::Mill => self.mill_block(block, out)?,
-            MachineKind::Lathe => self.lathe_block(block, out)?,
+            MachineKind::Mill => self.mill_block(block, out, ahead)?,
+            MachineKind::Lathe => self.lathe_block(block, out, ahead)?,
+        }
+        if let Some(end) = after_corner {
+            Self::start_at_corner_end(out, end);
+            self.corner_end = None;
         }
         if self.overflow {
             return Err(self.error(
@@ -238,7 +290,14 @@ impl Machine {
             return Ok(());
         }
         let lathe = self.setup.machine == MachineKind::Lathe;
-        let Some(w) = b.words.iter().find(|w| UNMODELLED.contains(&w.address)) else {
+        // The mill cuts the corner words (`corner.rs`); section 14 models
+        // G187's E and the rotary word of G07.1 (`models_word`).
+        let modelled = |a: Address| !lathe && matches!(a, Address::CommaC | Address::CommaR);
+        let Some(w) = b.words.iter().find(|w| {
+            UNMODELLED.contains(&w.address)
+                && !modelled(w.address)
+                && !self.models_word(b, w.address)
+        }) else {
             return Ok(());
         };
         let letter = w.address.letter();
@@ -249,6 +308,26 @@ impl Machine {
             _ => "chamfering and corner rounding (,C and ,R) are not modelled yet",
         };
         Err(self.error("unsupported-word", w.span, format!("{letter}: {why}")))
+    }
+
+    /// True for a word of [`Machine::refuse_unmodelled`]'s list that this
+    /// block models: G187's E (behaviour 14.6), the rotary word of G07.1 and
+    /// of the blocks in its mode (behaviour 14.10).
+    fn models_word(&self, b: &Block, a: Address) -> bool {
+        use crate::syntax::codes::NonModal;
+        let code = b.codes().non_modal();
+        match a {
+            Address::E => code == Some(NonModal::Smoothness),
+            Address::A | Address::B | Address::C => {
+                let rotary: &[Address] = match self.setup.machine {
+                    MachineKind::Mill => &[Address::A, Address::B, Address::C],
+                    MachineKind::Lathe => &[Address::C],
+                };
+                (code == Some(NonModal::Cylindrical) && rotary.contains(&a))
+                    || self.state.modal.cylinder.is_some_and(|(axis, _)| axis == a)
+            }
+            _ => false,
+        }
     }
 
     // ----- small helpers -------------------------------------------------
@@ -327,6 +406,51 @@ impl Machine {
             to,
             programmed_from: from.prog,
             programmed_to: prog,
+            arc,
+        });
+    }
+
+    /// Records a generated move whose actual path is not the programmed one
+    /// plus the offset vectors (a pocket's circles inside the contour,
+    /// behaviour 14.12; a corner, behaviour 14.14): both ends given. Like
+    /// [`Machine::emit`] it stops at the move budget and warns of a feed
+    /// move before any F; a straight move that goes nowhere is not recorded.
+    /// Out of line: ordinary moves take `emit`.
+    #[inline(never)]
+    pub(crate) fn push_move(
+        &mut self,
+        out: &mut Out,
+        kind: MoveKind,
+        from: Mark,
+        to: Mark,
+        arc: Option<ArcInfo>,
+    ) {
+        if arc.is_none() && from.act == to.act && from.prog == to.prog {
+            return;
+        }
+        if out.moves.len() >= self.moves_left {
+            self.overflow = true;
+            return;
+        }
+        let feed = kind != MoveKind::Rapid;
+        if feed && self.state.feed.is_none() && !self.feed_warned {
+            self.feed_warned = true;
+            out.warnings.push(Diagnostic::warning(
+                "missing-feed",
+                self.span,
+                "feed move before any F word: a control would stop here with an alarm",
+            ));
+        }
+        out.moves.push(Move {
+            kind,
+            at_feed: feed,
+            block: self.index,
+            line: self.line,
+            units: self.units(),
+            from: from.act,
+            to: to.act,
+            programmed_from: from.prog,
+            programmed_to: to.prog,
             arc,
         });
     }

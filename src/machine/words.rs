@@ -6,10 +6,14 @@
 //! Each block path of the mill and the lathe has its list of addresses
 //! below. A word outside its block's list stops the run at the word
 //! (`unused-word`) — the words the parser reads but no rule models at all
-//! are refused before (`unsupported-word`, [`Machine::refuse_unmodelled`]),
-//! and the other machine's addresses too (`lathe-address`,
-//! `mill-address`). `tests/silent_skips.rs` runs every address in every
-//! kind of block and holds each to being acted on or refused.
+//! are refused before (`unsupported-word`, [`Machine::refuse_unmodelled`],
+//! which lets through the rotary words, E and the comma words a block
+//! models), and the other machine's addresses too (`lathe-address`,
+//! `mill-address`). The codes of section 14 that check their own words
+//! (G31, G12/G13, G05.1, G08, G187, G07.1) take every address here and
+//! refuse with their own sentences. `tests/silent_skips.rs` runs every
+//! address in every kind of block and holds each to being acted on or
+//! refused.
 
 use super::Machine;
 use super::modal::Motion;
@@ -45,14 +49,20 @@ pub(crate) enum Path {
     LatheArc(Motion),
     /// Lathe single cycle G90/G92/G94 (system A names).
     LatheCycle(Motion),
+    /// A code that checks its own words (G31, G12/G13, G05.1, G08, G187,
+    /// G07.1: behaviour 14): every address passes here.
+    OwnWords(Code),
 }
 
 /// Every mill block acts on these: the sequence number and the program
 /// number, its G and M codes (each by its own rule), the feed, the tool
-/// number for the next M06 and the D register.
-const MILL_COMMON: [Address; 7] = [N, O, G, M, F, T, D];
-/// The lathe's, besides a path's own: T selects the tool and its offset.
-const LATHE_COMMON: [Address; 6] = [N, O, G, M, F, S];
+/// number for the next M06 and the D register; and the words
+/// [`Machine::refuse_unmodelled`] and the corner rules (`corner.rs`) rule on.
+const MILL_COMMON: [Address; 13] = [N, O, G, M, F, T, D, A, B, C, E, CommaC, CommaR];
+/// The lathe's, besides a path's own (T selects the tool and its offset).
+const LATHE_COMMON: [Address; 12] = [N, O, G, M, F, S, A, B, C, E, CommaC, CommaR];
+/// Every address: a code that checks its words itself.
+const ALL: [Address; Address::COUNT] = Address::ALL;
 
 impl Path {
     /// The addresses a block of this kind acts on (besides
@@ -77,6 +87,7 @@ impl Path {
             Path::LatheLine(_) => &[T, X, Z, U, W],
             Path::LatheArc(_) => &[T, X, Z, U, W, I, K, R],
             Path::LatheCycle(_) => &[T, X, Z, U, W, R],
+            Path::OwnWords(_) => &ALL,
         }
     }
 
@@ -95,6 +106,7 @@ impl Path {
                 .gcode(table)
                 .to_string(),
             Path::ReferenceReturn => "G28".to_string(),
+            Path::OwnWords(code) => code.gcode(table).to_string(),
         }
     }
 }
@@ -113,7 +125,16 @@ impl Machine {
                 let code = Code::NonModal(NonModal::PositionOffset(p));
                 return Path::PositionOffset(code, motion.is_arc());
             }
-            None => {}
+            Some(
+                code @ (NonModal::Skip
+                | NonModal::CirclePocket(_)
+                | NonModal::AiContour
+                | NonModal::LookAhead
+                | NonModal::Smoothness
+                | NonModal::Cylindrical),
+            ) => return Path::OwnWords(Code::NonModal(code)),
+            // G09 stops at the end of a block that moves as any other.
+            Some(NonModal::ExactStop) | None => {}
         }
         let cycle = match (c.cycle(), c.motion()) {
             (Some(CannedCycle::Cycle(cycle)), _) => Some(cycle),
@@ -134,8 +155,19 @@ impl Machine {
             Some(NonModal::Dwell) => return Path::Dwell,
             Some(NonModal::SetCoordinates) => return Path::SetCoordinates,
             Some(NonModal::ReferenceReturn) => return Path::ReferenceReturn,
-            // The parser gives the lathe no G45–G48 (seed 004).
-            Some(NonModal::PositionOffset(_)) | None => {}
+            Some(NonModal::Skip) => return Path::OwnWords(Code::NonModal(NonModal::Skip)),
+            // The parser gives the lathe none of the mill's one-shot codes
+            // (seed 004, behaviour 14).
+            Some(
+                NonModal::PositionOffset(_)
+                | NonModal::ExactStop
+                | NonModal::AiContour
+                | NonModal::LookAhead
+                | NonModal::Smoothness
+                | NonModal::Cylindrical
+                | NonModal::CirclePocket(_),
+            )
+            | None => {}
         }
         match c.motion().unwrap_or(self.state.modal.motion) {
             m @ Motion::LatheCycle(_) => Path::LatheCycle(m),
@@ -152,10 +184,16 @@ impl Machine {
         let mill = self.setup.machine == MachineKind::Mill;
         let common: &[Address] = if mill { &MILL_COMMON } else { &LATHE_COMMON };
         let own = path.own();
-        let mut allowed = [N; 20];
-        let n = common.len() + own.len();
+        let mut allowed = [N; 2 * Address::COUNT + 2];
+        let mut n = common.len() + own.len();
         allowed[..common.len()].copy_from_slice(common);
         allowed[common.len()..n].copy_from_slice(own);
+        // G61–G64 refuse their P and Q with a sentence of their own
+        // (`mode-words`, behaviour 14.2).
+        if b.codes().cutting_mode().is_some() {
+            allowed[n..n + 2].copy_from_slice(&[P, Q]);
+            n += 2;
+        }
         if let Some(w) = b.first_outside(&allowed[..n]) {
             let text = self.word_text(b, w.address);
             let msg = unused_message(&text, w.address, mill, path, &path.name(self));

@@ -343,6 +343,10 @@ pub struct Blocks<'a> {
     units: Units,
     /// A mill canned cycle is active (K is then a repeat count).
     in_cycle: bool,
+    /// The block read in two passes holds G05.1, whose Q (Q1/Q0) is no
+    /// dimension to warn about (behaviour 14.4); set afresh by each two-pass
+    /// reading (the one-pass reading leaves a block with a warning due to it).
+    whole_q: bool,
     tape: Tape,
     warned_integer: bool,
     /// Which program of the file the parser is in (behaviour 1.21, 1.22).
@@ -371,6 +375,7 @@ impl<'a> Blocks<'a> {
             table: options.table(),
             options,
             in_cycle: false,
+            whole_q: false,
             tape: Tape::Before,
             warned_integer: false,
             programs: program::Programs::default(),
@@ -408,6 +413,13 @@ impl<'a> Blocks<'a> {
             programs: at.programs,
             ..Blocks::new(text, options)
         }
+    }
+
+    /// A second parser standing where this one stands, with no diagnostics
+    /// (look-ahead reads the blocks after the running one with it; the run's
+    /// parser reads and reports them when they run).
+    pub fn fork(&self) -> Blocks<'a> {
+        Blocks::resume(self.text, self.options, self.resume_point())
     }
 
     /// [`Blocks::resume`] with the diagnostics reported before `at` (they
@@ -601,14 +613,40 @@ impl<'a> Blocks<'a> {
     /// increment) and mill canned cycles (K is then a repeat count), from
     /// a G word's number as lexed (written without a point or sign).
     fn note_context(&mut self, n: Number) {
-        if n.frac_digits != 0 || n.negative {
+        if n.negative {
             return;
+        }
+        if n.frac_digits != 0 {
+            return self.note_decimal_context(n);
         }
         let Ok(major) = u16::try_from(n.mantissa) else {
             return;
         };
         if let Some(code) = Code::of(self.table, GCode::new(major)) {
             self.note_code(code);
+        }
+    }
+
+    /// [`Blocks::note_context`] for a G code written with a decimal: G05.1's
+    /// Q is a switch (Q1/Q0, behaviour 14.4), no dimension to warn about.
+    /// Out of line: few G codes have a decimal.
+    #[inline(never)]
+    fn note_decimal_context(&mut self, n: Number) {
+        let (Ok(major), Ok(scaled)) = (
+            u16::try_from(n.mantissa / 10),
+            u8::try_from(n.mantissa % 10),
+        ) else {
+            return;
+        };
+        if n.frac_digits != 1 {
+            return;
+        }
+        let g = GCode {
+            major,
+            minor: scaled,
+        };
+        if Code::of(self.table, g) == Some(Code::NonModal(codes::NonModal::AiContour)) {
+            self.whole_q = true;
         }
     }
 
@@ -629,7 +667,9 @@ impl<'a> Blocks<'a> {
             | Code::Length(_)
             | Code::Return(_)
             | Code::Work(_)
-            | Code::SurfaceSpeed(_) => {}
+            | Code::SurfaceSpeed(_)
+            | Code::CuttingMode(_)
+            | Code::Polar(_) => {}
         }
     }
 
@@ -644,10 +684,9 @@ impl<'a> Blocks<'a> {
         n: Number,
         span: Span,
     ) -> Result<(Word, WordKind), Refusal> {
-        let kind = if address == Address::K && self.in_cycle {
-            WordKind::Integer
-        } else {
-            address.kind()
+        let kind = match address {
+            Address::K if self.in_cycle => WordKind::Integer,
+            _ => address.kind(),
         };
         let value = match kind {
             WordKind::Integer if address == Address::G => {
@@ -735,6 +774,7 @@ impl<'a> Blocks<'a> {
         match read {
             Ok((word, kind)) => {
                 if kind == WordKind::Dimension
+                    && !(word.address == Address::Q && self.whole_q)
                     && let Ok(n) = w.number
                     && self.integer_warning_due(n)
                 {

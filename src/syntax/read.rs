@@ -108,6 +108,7 @@ impl Blocks<'_> {
         let mark = self.mark();
         self.header = None;
         self.raw.clear();
+        self.whole_q = false;
         i = lexer::skip_blanks(bytes, i);
         let mut last = i;
 

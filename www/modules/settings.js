@@ -39,6 +39,11 @@ const CHOICES = [
     help: 'Lathe G-code table. A on every control (Fanuc B and C by parameter): G90/G92/G94 cycles, G50 coordinates. B: G77/G78/G79 cycles, G92 coordinates, G94/G95 feed. C: as B with G20/G21/G24 cycles.',
   },
   {
+    id: 'circle_pocket', label: 'G12/G13 (mill)', machine: 'mill', controlDefault: true,
+    options: [['haas', 'a circular pocket (Haas)'], ['alarm', 'an alarm']],
+    help: 'G12/G13 on the mill: Haas cuts a circular pocket (I, K, Q, L, D, Z); Fanuc and YASNAC mills have no such code and alarm.',
+  },
+  {
     id: 'dwell_p_decimal_point', label: 'Decimal point in P', controlDefault: true,
     options: [['error', 'an error'], ['seconds', 'seconds']],
     help: 'G04 P3. (and a canned cycle’s dwell P): YASNAC and Fanuc take P in milliseconds without a point and refuse P3.; Haas reads P3. as 3 seconds and P3 as 3 milliseconds.',
