@@ -72,7 +72,7 @@ pub struct ParseOptions {
     pub system: GCodeSystem,
     /// Two G codes of one modal group in a block (behaviour 1.11, 7.17).
     pub same_group: SameGroupCodes,
-    /// A decimal point in a dwell's P (behaviour 1.23, 7.20).
+    /// A decimal point in a dwell's P (behaviour 1.23, 7.21).
     pub dwell_p: DwellPDecimalPoint,
 }
 
