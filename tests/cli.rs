@@ -19,9 +19,12 @@ fn offsetlab(args: &[&str], stdin: &[u8]) -> Output {
         .stderr(Stdio::piped())
         .spawn()
         .expect("binary runs");
-    // The program may exit before it reads its input (bad usage): a closed
-    // pipe is then no failure of the test.
-    let _ = child.stdin.take().unwrap().write_all(stdin);
+    // A run that refuses its arguments exits before it reads: the pipe may
+    // be closed already, and the exit status is what the test checks.
+    let written = child.stdin.take().unwrap().write_all(stdin);
+    if let Err(e) = written {
+        assert_eq!(e.kind(), std::io::ErrorKind::BrokenPipe, "{e}");
+    }
     child.wait_with_output().unwrap()
 }
 

@@ -121,7 +121,7 @@ fn behaviour1_23_haas_reads_p_with_a_point_as_seconds_fanuc_and_yasnac_refuse_it
 }
 
 #[test]
-fn behaviour7_21_the_profile_gives_the_dwell_p_rule() {
+fn behaviour7_24_the_profile_gives_the_dwell_p_rule() {
     let mut s = Settings::default();
     assert_eq!(s.dwell_p_decimal_point(), DwellPDecimalPoint::Error);
     s.control = Control::Fanuc;

@@ -21,8 +21,9 @@ use offsetlab::{
 };
 use proptest::prelude::*;
 
-const FIXTURES: [&str; 7] = [
+const FIXTURES: [&str; 8] = [
     "contour_g45",
+    "coordinates",
     "corners",
     "g54_g28",
     "haas_modes",

@@ -27,9 +27,11 @@ struct Kind {
     refused: &'static str,
 }
 
-/// Refused on every mill block: the lathe's axes (`lathe-address`), rotary
-/// axes, E and the comma words (`unsupported-word`).
-const MILL_NEVER: &str = "U W A B C E ,C ,R";
+/// Refused on every mill block: the lathe's axes (`lathe-address`), E and
+/// the comma words (`unsupported-word`; `,C`/`,R` are cut between two G01
+/// moves only, and these blocks have no next move). Rotary axes A, B, C are
+/// reported, not drawn (behaviour 13).
+const MILL_NEVER: &str = "U W E ,C ,R";
 /// Refused on every lathe block: the mill's addresses (`mill-address`) and
 /// the words not modelled. (X with U, or Z with W, is `axis-conflict`, and
 /// a dwell's time given twice `dwell-words`: in the tables below.)
@@ -168,21 +170,21 @@ const MILL: &[Kind] = &[
         before: "",
         block: "G05.1 Q1",
         after: "",
-        refused: "D I J K L P R X Y Z",
+        refused: "A B C D I J K L P R X Y Z",
     },
     Kind {
         name: "G08 look-ahead",
         before: "",
         block: "G08 P1",
         after: "",
-        refused: "D I J K L Q R X Y Z",
+        refused: "A B C D I J K L Q R X Y Z",
     },
     Kind {
         name: "G187 smoothness (Haas)",
         before: "",
         block: "G187 P1",
         after: "",
-        refused: "D I J K L Q R X Y Z -E",
+        refused: "A B C D I J K L Q R X Y Z -E",
     },
     Kind {
         name: "G93 inverse time feed",
@@ -190,6 +192,69 @@ const MILL: &[Kind] = &[
         block: "G93 G01 X10. F2.",
         after: "",
         refused: "I J K R Q P L",
+    },
+    Kind {
+        name: "G27 reference position check",
+        before: "G00 X10. Y5.\n",
+        block: "G91 G27 Z0",
+        after: "",
+        refused: "I J K L P Q R",
+    },
+    Kind {
+        name: "G30 second reference position",
+        before: "G00 X10. Y5.\n",
+        block: "G91 G30 P3 Z0",
+        after: "",
+        refused: "I J K L Q R",
+    },
+    Kind {
+        name: "G52 local coordinates",
+        before: "",
+        block: "G52 X10. Y5.",
+        after: "",
+        refused: "I J K L P Q R",
+    },
+    Kind {
+        name: "G53 machine coordinates",
+        before: "",
+        block: "G53 G00 X10. Y5.",
+        after: "",
+        refused: "I J K L P Q R",
+    },
+    Kind {
+        name: "G92.1 preset",
+        before: "G92 X0 Y0\n",
+        block: "G92.1 X0",
+        after: "",
+        refused: "I J K L P Q R Y Z",
+    },
+    Kind {
+        name: "G54.1 additional work system",
+        before: "",
+        block: "G54.1 P1",
+        after: "",
+        refused: "I J K L Q R",
+    },
+    Kind {
+        name: "G68 rotation",
+        before: "",
+        block: "G68 X0 Y0 R30.",
+        after: "G69\n",
+        refused: "I J K L P Q Z",
+    },
+    Kind {
+        name: "G51 scaling",
+        before: "",
+        block: "G51 X0 Y0 P2000",
+        after: "G50\n",
+        refused: "L Q R",
+    },
+    Kind {
+        name: "G51.1 mirror",
+        before: "",
+        block: "G51.1 X5.",
+        after: "G50.1\n",
+        refused: "I J K L P Q R",
     },
 ];
 
@@ -256,6 +321,27 @@ const LATHE: &[Kind] = &[
         block: "G31 X40. F0.2",
         after: "",
         refused: "I K R Q P L U",
+    },
+    Kind {
+        name: "lathe G30",
+        before: "G00 X50. Z5.\n",
+        block: "G30 U0.",
+        after: "",
+        refused: "I K L P Q R T X",
+    },
+    Kind {
+        name: "lathe G52",
+        before: "",
+        block: "G52 Z-5.",
+        after: "",
+        refused: "I K L P Q R T U W",
+    },
+    Kind {
+        name: "lathe G53",
+        before: "",
+        block: "G53 X100. Z50.",
+        after: "",
+        refused: "I K L P Q R T U W",
     },
 ];
 

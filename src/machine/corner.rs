@@ -284,9 +284,14 @@ impl Machine {
                 // corner is cut as without it.
                 NonModal::ExactStop => "",
                 NonModal::PositionOffset(_) => "G45–G48 change the block's move by an offset",
-                NonModal::Dwell | NonModal::ReferenceReturn | NonModal::SetCoordinates => {
-                    "the block makes no G01 move of its own"
-                }
+                NonModal::Dwell
+                | NonModal::ReferenceReturn
+                | NonModal::SetCoordinates
+                | NonModal::ReferenceCheck
+                | NonModal::OtherReference
+                | NonModal::LocalCoordinates
+                | NonModal::MachineCoordinates
+                | NonModal::PresetCoordinates => "the block makes no G01 move of its own",
                 NonModal::Skip => "a skip signal may end G31's move anywhere (behaviour 14.7)",
                 NonModal::CirclePocket(_) => "G12/G13 cut a pocket of their own (behaviour 14.12)",
                 NonModal::AiContour

@@ -91,7 +91,12 @@ impl Machine {
                 | NonModal::CirclePocket(_)
                 | NonModal::ReferenceReturn
                 | NonModal::PositionOffset(_)
-                | NonModal::SetCoordinates,
+                | NonModal::SetCoordinates
+                | NonModal::ReferenceCheck
+                | NonModal::OtherReference
+                | NonModal::LocalCoordinates
+                | NonModal::MachineCoordinates
+                | NonModal::PresetCoordinates,
             )
             | None => {}
         }
@@ -386,7 +391,14 @@ impl Machine {
                 | NonModal::AiContour
                 | NonModal::LookAhead
                 | NonModal::Smoothness
-                | NonModal::Cylindrical,
+                | NonModal::Cylindrical
+                // The reference returns, G53 and the coordinate codes move at
+                // rapid or not at all (behaviour 13).
+                | NonModal::ReferenceCheck
+                | NonModal::OtherReference
+                | NonModal::LocalCoordinates
+                | NonModal::MachineCoordinates
+                | NonModal::PresetCoordinates,
             ) => false,
             Some(NonModal::PositionOffset(_)) | None => {
                 moves

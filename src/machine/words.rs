@@ -19,7 +19,7 @@ use super::Machine;
 use super::modal::Motion;
 use crate::diag::Diagnostic;
 use crate::setup::MachineKind;
-use crate::syntax::codes::{CannedCycle, Code, Group, MCode, NonModal};
+use crate::syntax::codes::{CannedCycle, Code, Group, MCode, NonModal, RotationMode, ScalingMode};
 use crate::syntax::{Address, Block, WordKind};
 
 use Address::*;
@@ -39,8 +39,11 @@ pub(crate) enum Path {
     Dwell,
     /// Mill G92, lathe G50 (or G92 in G-code system B/C).
     SetCoordinates,
-    /// G28.
-    ReferenceReturn,
+    /// G28, G30 (with P, the reference position's number).
+    ReferenceReturn(Code),
+    /// G27, G52, G53, G92.1: axis words and, on the mill, the length offset
+    /// (behaviour 13).
+    Coordinates(Code),
     /// Mill G45–G48, in a straight (false) or an arc (true) mode.
     PositionOffset(Code, bool),
     /// Lathe G00/G01 (or no motion code in a straight mode).
@@ -81,7 +84,8 @@ impl Path {
             // The mill's G92 S is Fanuc's spindle speed limit under constant
             // surface speed, not modelled: S is refused there.
             Path::SetCoordinates => &[X, Y, Z, U, W],
-            Path::ReferenceReturn => &[S, X, Y, Z, U, W, H],
+            Path::ReferenceReturn(_) => &[S, X, Y, Z, U, W, H, P],
+            Path::Coordinates(_) => &[S, X, Y, Z, U, W, H],
             Path::PositionOffset(_, false) => &[S, X, Y, Z, H],
             Path::PositionOffset(_, true) => &[S, X, Y, Z, I, J, K, R, H],
             Path::LatheLine(_) => &[T, X, Z, U, W],
@@ -105,8 +109,9 @@ impl Path {
             Path::SetCoordinates => Code::NonModal(NonModal::SetCoordinates)
                 .gcode(table)
                 .to_string(),
-            Path::ReferenceReturn => "G28".to_string(),
-            Path::OwnWords(code) => code.gcode(table).to_string(),
+            Path::ReferenceReturn(code) | Path::Coordinates(code) | Path::OwnWords(code) => {
+                code.gcode(table).to_string()
+            }
         }
     }
 }
@@ -120,7 +125,15 @@ impl Machine {
         match c.non_modal() {
             Some(NonModal::Dwell) => return Path::Dwell,
             Some(NonModal::SetCoordinates) => return Path::SetCoordinates,
-            Some(NonModal::ReferenceReturn) => return Path::ReferenceReturn,
+            Some(code @ (NonModal::ReferenceReturn | NonModal::OtherReference)) => {
+                return Path::ReferenceReturn(Code::NonModal(code));
+            }
+            Some(
+                code @ (NonModal::ReferenceCheck
+                | NonModal::LocalCoordinates
+                | NonModal::MachineCoordinates
+                | NonModal::PresetCoordinates),
+            ) => return Path::Coordinates(Code::NonModal(code)),
             Some(NonModal::PositionOffset(p)) => {
                 let code = Code::NonModal(NonModal::PositionOffset(p));
                 return Path::PositionOffset(code, motion.is_arc());
@@ -154,7 +167,15 @@ impl Machine {
         match c.non_modal() {
             Some(NonModal::Dwell) => return Path::Dwell,
             Some(NonModal::SetCoordinates) => return Path::SetCoordinates,
-            Some(NonModal::ReferenceReturn) => return Path::ReferenceReturn,
+            Some(code @ (NonModal::ReferenceReturn | NonModal::OtherReference)) => {
+                return Path::ReferenceReturn(Code::NonModal(code));
+            }
+            Some(
+                code @ (NonModal::ReferenceCheck
+                | NonModal::LocalCoordinates
+                | NonModal::MachineCoordinates
+                | NonModal::PresetCoordinates),
+            ) => return Path::Coordinates(Code::NonModal(code)),
             Some(NonModal::Skip) => return Path::OwnWords(Code::NonModal(NonModal::Skip)),
             // The parser gives the lathe none of the mill's one-shot codes
             // (seed 004, behaviour 14).
@@ -184,15 +205,45 @@ impl Machine {
         let mill = self.setup.machine == MachineKind::Mill;
         let common: &[Address] = if mill { &MILL_COMMON } else { &LATHE_COMMON };
         let own = path.own();
-        let mut allowed = [N; 2 * Address::COUNT + 2];
-        let mut n = common.len() + own.len();
-        allowed[..common.len()].copy_from_slice(common);
-        allowed[common.len()..n].copy_from_slice(own);
-        // G61–G64 refuse their P and Q with a sentence of their own
-        // (`mode-words`, behaviour 14.2).
-        if b.codes().cutting_mode().is_some() {
-            allowed[n..n + 2].copy_from_slice(&[P, Q]);
-            n += 2;
+        let mut allowed = [N; 3 * Address::COUNT];
+        let mut n = 0;
+        let mut add = |addresses: &[Address]| {
+            allowed[n..n + addresses.len()].copy_from_slice(addresses);
+            n += addresses.len();
+        };
+        add(common);
+        add(own);
+        let c = b.codes();
+        // Codes of other groups that read words of their own, and refuse
+        // what they do not read with their sentences (behaviour 13, 14):
+        // G61–G64's P and Q (`mode-words`), G54.1/G154/G54's P (the work
+        // system), G51's P or I/J/K (magnifications), G68's R (the angle).
+        if c.cutting_mode().is_some() {
+            add(&[P, Q]);
+        }
+        if c.work().is_some() {
+            add(&[P]);
+        }
+        if c.scaling() == Some(ScalingMode::Start) {
+            add(&[P, I, J, K]);
+        }
+        if c.rotation() == Some(RotationMode::Start) {
+            add(&[R]);
+        }
+        // The lathe's positioning codes refuse a T code themselves
+        // (`t-in-positioning`, behaviour 13).
+        if !mill
+            && matches!(
+                c.non_modal(),
+                Some(
+                    NonModal::ReferenceCheck
+                        | NonModal::OtherReference
+                        | NonModal::LocalCoordinates
+                        | NonModal::MachineCoordinates
+                )
+            )
+        {
+            add(&[T]);
         }
         if let Some(w) = b.first_outside(&allowed[..n]) {
             let text = self.word_text(b, w.address);
@@ -314,7 +365,7 @@ fn unused_message(text: &str, a: Address, mill: bool, path: Path, name: &str) ->
         _ => "this address is not read here",
     };
     let hint = match path {
-        Path::Dwell | Path::SetCoordinates | Path::ReferenceReturn => {
+        Path::Dwell | Path::SetCoordinates | Path::ReferenceReturn(_) | Path::Coordinates(_) => {
             format!("; write it in a block of its own, not in a {name} block")
         }
         _ => "; remove it".to_string(),

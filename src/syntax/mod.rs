@@ -72,7 +72,7 @@ pub struct ParseOptions {
     pub system: GCodeSystem,
     /// Two G codes of one modal group in a block (behaviour 1.11, 7.17).
     pub same_group: SameGroupCodes,
-    /// A decimal point in a dwell's P (behaviour 1.23, 7.21).
+    /// A decimal point in a dwell's P (behaviour 1.23, 7.24).
     pub dwell_p: DwellPDecimalPoint,
 }
 
@@ -669,7 +669,12 @@ impl<'a> Blocks<'a> {
             | Code::Work(_)
             | Code::SurfaceSpeed(_)
             | Code::CuttingMode(_)
-            | Code::Polar(_) => {}
+            | Code::Polar(_)
+            | Code::Scaling(_)
+            | Code::Rotation(_)
+            | Code::PolarCoordinates(_)
+            | Code::Mirror(_)
+            | Code::ArcCenter(_) => {}
         }
     }
 
