@@ -626,55 +626,6 @@ impl Machine {
         }
     }
 
-    /// G04: dwell P (ms) or X/U (s) (behaviour 2.9).
-    fn dwell(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
-        let p = b.get(Address::P);
-        // A time given twice is refused at the second word written.
-        let second = |a: &crate::syntax::Word, b: &crate::syntax::Word| {
-            if a.span.start > b.span.start {
-                a.span
-            } else {
-                b.span
-            }
-        };
-        if let (Some(x), Some(u)) = (b.get(Address::X), b.get(Address::U)) {
-            return Err(self.error(
-                "dwell-words",
-                second(x, u),
-                "G04 takes the dwell time once: X or U in seconds, not both",
-            ));
-        }
-        let time_word = b.get(Address::X).or_else(|| b.get(Address::U));
-        let seconds = match (p, time_word) {
-            (Some(p), Some(t)) => {
-                return Err(self.error(
-                    "dwell-words",
-                    second(p, t),
-                    "G04 takes the dwell time once: P in milliseconds or X in seconds",
-                ));
-            }
-            (Some(p), None) => milliseconds(p) / 1000.0,
-            (None, Some(t)) => {
-                if t.value < 0.0 {
-                    return Err(self.error("dwell-words", t.span, "a dwell time is not negative"));
-                }
-                t.value
-            }
-            (None, None) => 0.0,
-        };
-        for a in [Address::Y, Address::Z, Address::W] {
-            if let Some(w) = b.get(a) {
-                return Err(self.error(
-                    "dwell-words",
-                    w.span,
-                    format!("G04 is a dwell and takes no {} word", a.letter()),
-                ));
-            }
-        }
-        self.event(out, EventKind::Dwell { seconds });
-        Ok(())
-    }
-
     /// Builds the circle of an arc move for both paths (behaviour 2.12, 4.8).
     fn arc_geometry(&self, b: &Block, req: &ArcRequest) -> Result<ArcInfo, Diagnostic> {
         let plane = self.state.modal.plane;
@@ -776,13 +727,6 @@ impl Machine {
             diameter_x: lathe,
         })
     }
-}
-
-/// A dwell's P in milliseconds: as written, or, written with a decimal
-/// point (the parser takes one only with setting `dwell_p_decimal_point =
-/// seconds`, Haas), in seconds (behaviour 1.23).
-pub(crate) fn milliseconds(p: &crate::syntax::Word) -> f64 {
-    if p.point { p.value * 1000.0 } else { p.value }
 }
 
 /// What an arc block asks for, after offsets changed its words.
