@@ -205,6 +205,36 @@ pub struct Settings {
     /// (a machine parameter on a real control). Default 1 mm / 0.04 in.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub peck_retract: Option<f64>,
+    /// How D reads in a lathe G71/G72/G74–G76 block (behaviour 7.19, 15.2);
+    /// read it with [`Settings::depth_word`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub depth_word: Option<DepthWord>,
+}
+
+impl Settings {
+    /// How the D word of the one-block G71/G72 (depth of cut), G74/G75
+    /// (relief) and G76 (first depth) reads (behaviour 7.19): Haas reads it
+    /// as a length with a decimal point (Haas lathe operator's manual, G71:
+    /// "D – depth of cut for each pass, positive radius", written `D0.05`);
+    /// the Fanuc Series 10/11 tape format of the 0i-TF (parameter FCV) in
+    /// least input increments, without a decimal point (`D7000` = 7 mm).
+    /// YASNAC (the seeds' control) writes it as Haas's YASNAC mode does:
+    /// a length.
+    pub fn depth_word(&self) -> DepthWord {
+        self.depth_word.unwrap_or(DepthWord::Dimension)
+    }
+}
+
+/// How D reads in a lathe G71/G72/G74–G76 block (behaviour 7.19).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum DepthWord {
+    /// A length, read as a dimension word (decimal point: program units;
+    /// without: decimal input, behaviour 1.15): Haas, YASNAC.
+    Dimension,
+    /// A whole number of least input increments, no decimal point (Fanuc
+    /// Series 10/11 format: `D7000` = 7.000 mm).
+    Increments,
 }
 
 /// A point of the setup (start, reference, work offset), in setup units.

@@ -4,6 +4,7 @@
 //! [`crate::offsets::lathe`]'s; this file moves the tool by them.
 
 use super::modal::{ArcDirection, LatheCycle, Motion};
+use super::program::ProgramText;
 use super::{ArcRequest, Machine, Mark, Out};
 use super::{EventKind, MoveKind};
 use crate::diag::Diagnostic;
@@ -24,9 +25,22 @@ pub(crate) struct TurningData {
 }
 
 impl Machine {
-    pub(super) fn lathe_block(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+    pub(super) fn lathe_block(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+        program: &mut dyn ProgramText,
+    ) -> Result<(), Diagnostic> {
+        if self.passing_over() {
+            self.pass_over(b, out);
+            return Ok(());
+        }
+        // A G71/G72/G74–G76 block's D is its depth (behaviour 15.2).
+        let cycle_d = matches!(b.codes().non_modal(), Some(NonModal::Repetitive(_)));
         for w in &b.words {
-            if matches!(w.address, Address::Y | Address::J | Address::D | Address::H) {
+            if matches!(w.address, Address::Y | Address::J | Address::H)
+                || (w.address == Address::D && !cycle_d)
+            {
                 let why = match w.address {
                     Address::D | Address::H => {
                         "the lathe takes its offsets from T codes (seed 004)"
@@ -68,6 +82,7 @@ impl Machine {
         match c.non_modal() {
             Some(NonModal::SetCoordinates) => return self.g50(b),
             Some(NonModal::ReferenceReturn) => return self.lathe_g28(b, out),
+            Some(NonModal::Repetitive(cycle)) => return self.repetitive(b, cycle, out, program),
             // G04 was made above; G45–G48 are the mill's, refused by the
             // parser on the lathe (seed 004).
             Some(NonModal::Dwell | NonModal::PositionOffset(_)) | None => {}
@@ -212,7 +227,7 @@ impl Machine {
 
     /// The T word (behaviour 5, [`LatheState::command`]): returns true if the
     /// offset vector the machine should carry changed.
-    fn t_code(&mut self, b: &Block, out: &mut Out) -> bool {
+    pub(super) fn t_code(&mut self, b: &Block, out: &mut Out) -> bool {
         let Some(t) = b.get(Address::T) else {
             return false;
         };

@@ -88,7 +88,9 @@ impl Machine {
             Some(NonModal::PositionOffset(code)) => {
                 return self.position_offset_block(b, code, out);
             }
-            None => {}
+            // G70–G76 are the lathe's (on the mill the parser reads those
+            // numbers as its canned cycles).
+            Some(NonModal::Repetitive(_)) | None => {}
         }
         let old_length = self.length_words(b, out)?;
         match self.state.modal.cycle {

@@ -13,6 +13,8 @@ mod cycles;
 mod lathe;
 mod mill;
 pub mod modal;
+mod mrc;
+pub mod program;
 pub mod state;
 
 pub use state::{ArcInfo, BlockState, EventKind, Move, MoveKind};
@@ -45,6 +47,11 @@ pub(crate) struct Out {
     pub events: Vec<EventKind>,
     pub notes: Vec<String>,
     pub warnings: Vec<Diagnostic>,
+    /// The block's result depends on the program text before this byte
+    /// offset besides the block itself (a G70–G73 read its contour by
+    /// sequence number, behaviour 15.3): a run made again after an edit
+    /// there must run the block again.
+    pub reads: Option<u32>,
 }
 
 impl Out {
@@ -53,6 +60,7 @@ impl Out {
         self.events.clear();
         self.notes.clear();
         self.warnings.clear();
+        self.reads = None;
     }
 }
 
@@ -80,6 +88,9 @@ pub struct Machine {
     mirror_center: Xyz,
     cycle: cycles::CycleData,
     turning: lathe::TurningData,
+    /// The lathe's G70–G76 data and the contour being passed over after a
+    /// G71–G73 (behaviour 15).
+    mrc: mrc::MrcData,
     feed_warned: bool,
     index: u32,
     line: u32,
@@ -131,6 +142,7 @@ impl Machine {
             mirror_center: add(start, origin),
             cycle: cycles::CycleData::default(),
             turning: lathe::TurningData::default(),
+            mrc: mrc::MrcData::default(),
             feed_warned: false,
             index: 0,
             line: 0,
@@ -171,6 +183,7 @@ impl Machine {
                     m.mirror_center,
                     m.cycle,
                     m.turning,
+                    m.mrc,
                     m.feed_warned
                 )
             )
@@ -180,13 +193,15 @@ impl Machine {
             && key(self) == key(other)
     }
 
-    /// Runs one block. On error the block has no effect that matters: the
-    /// run stops there (behaviour 2.1).
+    /// Runs one block; `program` is the text it is part of, read again by
+    /// sequence number when a block asks (behaviour 15.3). On error the block
+    /// has no effect that matters: the run stops there (behaviour 2.1).
     pub(crate) fn execute(
         &mut self,
         block: &Block,
         index: u32,
         out: &mut Out,
+        program: &mut dyn program::ProgramText,
     ) -> Result<Flow, Diagnostic> {
         self.index = index;
         self.line = block.span.line;
@@ -194,7 +209,7 @@ impl Machine {
         self.overflow = false;
         match self.setup.machine {
             MachineKind::Mill => self.mill_block(block, out)?,
-            MachineKind::Lathe => self.lathe_block(block, out)?,
+            MachineKind::Lathe => self.lathe_block(block, out, program)?,
         }
         if self.overflow {
             return Err(self.error(

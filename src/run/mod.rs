@@ -16,9 +16,10 @@ pub(crate) mod again;
 mod checkpoint;
 #[cfg(not(target_arch = "wasm32"))]
 pub(crate) mod pipeline;
+mod sequence;
 
 use checkpoint::Totals;
-pub use checkpoint::{Checkpoint, Checkpoints};
+pub use checkpoint::{Checkpoint, Checkpoints, Read};
 
 use crate::diag::{self, Diagnostic};
 use crate::machine::{Flow, Machine, Out};
@@ -88,6 +89,9 @@ enum Step {
 /// checkpoint, so both execute exactly the same way.
 struct Runner<'t> {
     parser: Blocks<'t>,
+    /// The text again, for the blocks that read it by sequence number
+    /// (behaviour 15.3).
+    sequences: sequence::Sequences<'t>,
     machine: Machine,
     block: Block,
     out: Out,
@@ -106,6 +110,7 @@ impl<'t> Runner<'t> {
     fn new(text: &'t str, setup: &Setup, options: RunOptions) -> Runner<'t> {
         let machine = Machine::new(Arc::new(setup.clone()));
         Runner::at(
+            text,
             Blocks::new(text, ParseOptions::from(setup)),
             machine,
             setup,
@@ -125,7 +130,7 @@ impl<'t> Runner<'t> {
         Runner {
             index: at.index,
             move_count: at.move_count,
-            ..Runner::at(parser, at.machine.clone(), setup, options)
+            ..Runner::at(text, parser, at.machine.clone(), setup, options)
         }
     }
 
@@ -136,13 +141,20 @@ impl<'t> Runner<'t> {
         Runner {
             index: at.index,
             move_count: at.move_count,
-            ..Runner::at(parser, at.machine.clone(), setup, options)
+            ..Runner::at(text, parser, at.machine.clone(), setup, options)
         }
     }
 
-    fn at(parser: Blocks<'t>, machine: Machine, setup: &Setup, options: RunOptions) -> Runner<'t> {
+    fn at(
+        text: &'t str,
+        parser: Blocks<'t>,
+        machine: Machine,
+        setup: &Setup,
+        options: RunOptions,
+    ) -> Runner<'t> {
         Runner {
             parser,
+            sequences: sequence::Sequences::new(text, ParseOptions::from(setup)),
             machine,
             block: Block::default(),
             out: Out::default(),
@@ -235,7 +247,8 @@ impl<'t> Runner<'t> {
             ))));
         }
         self.machine.moves_left = self.options.max_moves.saturating_sub(self.move_count);
-        match self.machine.execute(block, self.index, &mut self.out) {
+        let program = &mut self.sequences;
+        match self.machine.execute(block, self.index, &mut self.out, program) {
             Ok(flow) => {
                 self.index += 1;
                 self.move_count += self.out.moves.len();
@@ -413,6 +426,13 @@ impl Making {
             );
             if every > 0 {
                 self.checkpoints.lines.push(r.block.span.line);
+                if let Some(upto) = r.out.reads {
+                    self.checkpoints.reads.push(Read {
+                        index,
+                        start: r.block.span.start,
+                        upto,
+                    });
+                }
             }
         }
     }

@@ -119,6 +119,7 @@ fn on_two_threads(text: &str, setup: &Setup, options: RunOptions) -> Option<Run>
         let mut totals = Totals::default();
         let machine = Machine::new(Arc::new(setup.clone()));
         let mut r = Runner::at(
+            text,
             Blocks::new("", ParseOptions::from(setup)),
             machine,
             setup,

@@ -18,8 +18,8 @@ mod read;
 pub use block::{Address, Block, Word, WordKind};
 
 use crate::diag::{Diagnostic, Span};
-use crate::setup::{DecimalInput, MachineKind, Setup, Units};
-use codes::{Code, GCode, Group, MCode, g_group};
+use crate::setup::{DecimalInput, DepthWord, MachineKind, Setup, Units};
+use codes::{Code, GCode, Group, MCode, NonModal, Repetitive, g_group};
 use lexer::{Number, NumberError};
 
 /// Most diagnostics one program reports; past this one more says so.
@@ -65,6 +65,8 @@ pub struct ParseOptions {
     pub table_size: u16,
     /// Skipped blocks (`/`) do not change the parser's G20/G21 state.
     pub block_skip: bool,
+    /// How D reads in a lathe G71/G72/G74–G76 block (behaviour 15.2).
+    pub depth_word: DepthWord,
 }
 
 impl Default for ParseOptions {
@@ -81,6 +83,7 @@ impl From<&Setup> for ParseOptions {
             decimal_input: s.settings.decimal_input,
             table_size: s.table_size,
             block_skip: s.settings.block_skip,
+            depth_word: s.settings.depth_word(),
         }
     }
 }
@@ -306,6 +309,12 @@ pub struct Blocks<'a> {
     units: Units,
     /// A mill canned cycle is active (K is then a repeat count).
     in_cycle: bool,
+    /// The lathe G70–G76 code of the block being read (P, Q, R, D read as
+    /// that cycle reads them: behaviour 15.2); None between blocks.
+    mrc: Option<Repetitive>,
+    /// `in_cycle || mrc.is_some()`: a word's address alone does not say how
+    /// it reads (one test per word, as the canned cycles' K had).
+    context: bool,
     tape: Tape,
     warned_integer: bool,
     diagnostics: Vec<Diagnostic>,
@@ -326,6 +335,8 @@ impl<'a> Blocks<'a> {
             units: options.units,
             options,
             in_cycle: false,
+            mrc: None,
+            context: false,
             tape: Tape::Before,
             warned_integer: false,
             diagnostics: Vec::new(),
@@ -355,6 +366,7 @@ impl<'a> Blocks<'a> {
             line: at.line,
             units: at.units,
             in_cycle: at.in_cycle,
+            context: at.in_cycle,
             tape: at.tape,
             warned_integer: at.warned_integer,
             ..Blocks::new(text, options)
@@ -513,6 +525,11 @@ impl<'a> Blocks<'a> {
         // Nearly every block reads in one pass; the rest is read again, from
         // the context the block started with, the way the two-pass reading
         // (its specification) reads it.
+        if self.mrc.is_some() {
+            // A G70–G76 code counts for its own block only.
+            self.mrc = None;
+            self.context = self.in_cycle;
+        }
         let context = (self.units, self.in_cycle);
         let read = match self.one_pass {
             true => self.read_one_pass(i, line, counts, block),
@@ -520,6 +537,8 @@ impl<'a> Blocks<'a> {
         };
         let (end, mut last) = read.unwrap_or_else(|| {
             (self.units, self.in_cycle) = context;
+            self.mrc = None;
+            self.context = self.in_cycle;
             block.clear();
             self.read_two_pass(i, line, counts, block)
         });
@@ -554,9 +573,19 @@ impl<'a> Blocks<'a> {
     fn note_code(&mut self, code: Code) {
         match code {
             // A group 01 code ends the canned cycle (only the mill has one).
-            Code::Motion(_) | Code::Cycle(codes::CannedCycle::Cancel) => self.in_cycle = false,
-            Code::Cycle(codes::CannedCycle::Cycle(_)) => self.in_cycle = true,
+            Code::Motion(_) | Code::Cycle(codes::CannedCycle::Cancel) => {
+                self.in_cycle = false;
+                self.context = self.mrc.is_some();
+            }
+            Code::Cycle(codes::CannedCycle::Cycle(_)) => {
+                self.in_cycle = true;
+                self.context = true;
+            }
             Code::Units(units) => self.units = units,
+            Code::NonModal(NonModal::Repetitive(r)) => {
+                self.mrc = Some(r);
+                self.context = true;
+            }
             Code::NonModal(_)
             | Code::Plane(_)
             | Code::Distance(_)
@@ -580,8 +609,8 @@ impl<'a> Blocks<'a> {
         n: Number,
         span: Span,
     ) -> Result<(Word, WordKind), Refusal> {
-        let kind = if address == Address::K && self.in_cycle {
-            WordKind::Integer
+        let kind = if self.context {
+            self.context_kind(address)
         } else {
             address.kind()
         };
@@ -596,7 +625,7 @@ impl<'a> Blocks<'a> {
                 if n.point {
                     return Err(Refusal::DecimalPoint);
                 }
-                let limit = integer_limit(self.options, address, self.in_cycle);
+                let limit = integer_limit(self.options, address, self.in_cycle, self.mrc);
                 if n.negative && n.mantissa != 0 || n.mantissa > limit {
                     return Err(Refusal::Integer(limit));
                 }
@@ -630,6 +659,26 @@ impl<'a> Blocks<'a> {
             span,
         };
         Ok((word, kind))
+    }
+
+    /// How `address` reads in a mill canned cycle (K a repeat count,
+    /// behaviour 1.16) or a lathe G70–G76 block (behaviour 15.2): P and Q
+    /// are whole numbers there — sequence numbers in G70–G73, least input
+    /// increments or G76's `mmrraa` code in G74–G76 — and so are G73's R
+    /// and D (counts of divisions); D elsewhere reads as setting
+    /// `depth_word` says. Out of line: few blocks have either.
+    #[inline(never)]
+    fn context_kind(&self, address: Address) -> WordKind {
+        match (address, self.mrc) {
+            (Address::K, _) if self.in_cycle => WordKind::Integer,
+            (Address::P | Address::Q, Some(_)) => WordKind::Integer,
+            (Address::R | Address::D, Some(Repetitive::PatternRepeat)) => WordKind::Integer,
+            (Address::D, Some(_)) => match self.options.depth_word {
+                DepthWord::Increments => WordKind::Integer,
+                DepthWord::Dimension => WordKind::Dimension,
+            },
+            _ => address.kind(),
+        }
     }
 
     /// The value of a dimension word in the current units (decimal input,
@@ -717,8 +766,15 @@ fn count_lines(bytes: &[u8]) -> u32 {
     n
 }
 
-fn integer_limit(options: ParseOptions, address: Address, in_cycle: bool) -> u64 {
+fn integer_limit(
+    options: ParseOptions,
+    address: Address,
+    in_cycle: bool,
+    mrc: Option<Repetitive>,
+) -> u64 {
     match address {
+        // A lathe G70–G76 block's D is a depth or a count (behaviour 15.2).
+        Address::D if mrc.is_some() => MAX_INTEGER,
         Address::D | Address::H => u64::from(options.table_size),
         Address::T if options.machine == MachineKind::Lathe => 9999,
         Address::L => MAX_REPEATS,

@@ -6,6 +6,20 @@
 use super::messages::unexpected_message;
 use super::*;
 
+/// The addresses whose reading a G code later in the block can change: K
+/// (a mill canned cycle's repeat count) and P, Q, R, D (a lathe G70–G76
+/// block's words, behaviour 15.2).
+const CONTEXT_ADDRESSES: u32 = {
+    let a = [Address::K, Address::P, Address::Q, Address::R, Address::D];
+    let mut bits = 0;
+    let mut i = 0;
+    while i < a.len() {
+        bits |= 1 << (a[i] as u32);
+        i += 1;
+    }
+    bits
+};
+
 impl Blocks<'_> {
     /// Reads the words of a block from `i` (after any `/`) in one pass,
     /// typing each word as it is lexed with the G20/G21 and canned-cycle
@@ -31,7 +45,7 @@ impl Blocks<'_> {
         // A G20/G21 after a dimension word, or a cycle code changing the
         // cycle state after a K word, changes how that word is read.
         let mut read_dimension = false;
-        let mut read_k = false;
+        let mut read_context = false;
         loop {
             i = lexer::skip_blanks(bytes, i);
             let Some(&c) = bytes.get(i) else { break };
@@ -55,10 +69,10 @@ impl Blocks<'_> {
             let (word_end, next, number) = lexer::number(bytes, i + 1);
             let number = number.ok()?;
             if address == Address::G && counts {
-                let before = (self.units, self.in_cycle);
+                let before = (self.units, self.in_cycle, self.mrc);
                 self.note_context(number);
                 if (read_dimension && self.units != before.0)
-                    || (read_k && self.in_cycle != before.1)
+                    || (read_context && (self.in_cycle, self.mrc) != (before.1, before.2))
                 {
                     return None;
                 }
@@ -71,7 +85,7 @@ impl Blocks<'_> {
                 }
                 read_dimension = true;
             }
-            read_k |= address == Address::K;
+            read_context |= address.bit() & CONTEXT_ADDRESSES != 0;
             checks.admit(self.options.machine, block, word).ok()?;
             last = word_end;
             i = next;

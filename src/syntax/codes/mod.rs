@@ -11,7 +11,8 @@ mod mcodes;
 
 pub use groups::{
     ArcDirection, CannedCycle, CutterCompensation, Cycle, Distance, FeedMode, LatheCycle,
-    LengthOffset, Motion, NonModal, Plane, PositionOffset, ReturnLevel, SurfaceSpeed, WorkSystem,
+    LengthOffset, Motion, NonModal, Plane, PositionOffset, Repetitive, ReturnLevel, SurfaceSpeed,
+    WorkSystem,
 };
 pub use mcodes::MCode;
 
@@ -201,6 +202,13 @@ impl Code {
                 40 => C::CutterCompensation(CutterCompensation::Cancel),
                 50 => C::NonModal(NonModal::SetCoordinates),
                 54..=59 => C::Work(work_system(g.major)),
+                70 => C::NonModal(NonModal::Repetitive(Repetitive::Finishing)),
+                71 => C::NonModal(NonModal::Repetitive(Repetitive::TurningStock)),
+                72 => C::NonModal(NonModal::Repetitive(Repetitive::FacingStock)),
+                73 => C::NonModal(NonModal::Repetitive(Repetitive::PatternRepeat)),
+                74 => C::NonModal(NonModal::Repetitive(Repetitive::FacePeck)),
+                75 => C::NonModal(NonModal::Repetitive(Repetitive::DiameterPeck)),
+                76 => C::NonModal(NonModal::Repetitive(Repetitive::Threading)),
                 90 => C::Motion(Motion::LatheCycle(LatheCycle::Turning)),
                 92 => C::Motion(Motion::LatheCycle(LatheCycle::Threading)),
                 94 => C::Motion(Motion::LatheCycle(LatheCycle::Facing)),
@@ -376,7 +384,6 @@ fn unsupported_reason(machine: MachineKind, g: GCode) -> String {
         53 => "machine coordinate positioning is not supported",
         65..=67 => "macro calls are not supported",
         68 | 69 => "coordinate rotation is not supported",
-        70..=76 if lathe => "multiple repetitive cycles (G70–G76) are not supported yet",
         15 | 16 => "polar coordinates are not supported",
         17 | 19 if lathe => "the lathe works in the ZX plane (G18) only",
         61..=64 => "cutting modes (exact stop, tapping, continuous) are not modelled",
