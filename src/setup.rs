@@ -182,10 +182,92 @@ impl<'de> Deserialize<'de> for Mirror {
     }
 }
 
+/// The control whose manual a program is written for (behaviour 12): it
+/// gives the default of every setting on which controls disagree (each
+/// setting of that kind is an `Option`, read through its accessor, and a
+/// value set in the setup wins over the control's default).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Control {
+    /// Yaskawa YASNAC (PC NC, J50M/J50L): the seeds' control, the default.
+    #[default]
+    Yasnac,
+    /// Fanuc 0i-MF/TF and the 30i family (G-code system A on the lathe).
+    Fanuc,
+    /// Haas mills and lathes (the NGC operator's manuals).
+    Haas,
+}
+
+impl Control {
+    /// Every control, in the order the page lists them.
+    pub const ALL: [Control; 3] = [Control::Yasnac, Control::Fanuc, Control::Haas];
+
+    /// "yasnac", "fanuc" or "haas".
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Control::Yasnac => "yasnac",
+            Control::Fanuc => "fanuc",
+            Control::Haas => "haas",
+        }
+    }
+
+    /// The control's name as its maker writes it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Control::Yasnac => "YASNAC",
+            Control::Fanuc => "Fanuc",
+            Control::Haas => "Haas",
+        }
+    }
+}
+
+/// What two G codes of one modal group in a block do (behaviour 1.11, 7.17).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SameGroupCodes {
+    /// An error: the block is refused (YASNAC: an input error).
+    Error,
+    /// The last one written is in effect, with a warning that names the one
+    /// it replaces (Fanuc: "only the last G code specified is valid").
+    LastWins,
+}
+
+/// The lathe's G-code system (behaviour 7.18): which numbers the single
+/// cycles, coordinate setting, feed modes and inch/metric have.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum GCodeSystem {
+    /// System A: G90/G92/G94 are the single cycles, G50 sets coordinates,
+    /// X/Z absolute and U/W incremental, G98/G99 feed per minute/revolution.
+    A,
+    /// System B: G90/G91 absolute/incremental, G77/G78/G79 the single cycles,
+    /// G92 sets coordinates, G94/G95 feed per minute/revolution.
+    B,
+    /// System C: as B, with the single cycles G20/G21/G24 and inch/metric
+    /// G70/G71.
+    C,
+}
+
+impl GCodeSystem {
+    /// "A", "B" or "C".
+    pub fn as_str(self) -> &'static str {
+        match self {
+            GCodeSystem::A => "A",
+            GCodeSystem::B => "B",
+            GCodeSystem::C => "C",
+        }
+    }
+}
+
 /// Settings where controls disagree; the seeds' behaviour is the default.
+/// A setting whose default depends on the control is an `Option` read
+/// through its accessor (`None`: the control's default).
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Settings {
+    /// The control profile (behaviour 12): the defaults of the settings below
+    /// that are left out.
+    #[serde(skip_serializing_if = "is_default")]
+    pub control: Control,
     /// Dimension words without a decimal point (behaviour 1.15).
     #[serde(skip_serializing_if = "is_default")]
     pub decimal_input: DecimalInput,
@@ -205,6 +287,14 @@ pub struct Settings {
     /// (a machine parameter on a real control). Default 1 mm / 0.04 in.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub peck_retract: Option<f64>,
+    /// Two G codes of one modal group in a block (behaviour 7.17); read it
+    /// with [`Settings::same_group_codes`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub same_group_codes: Option<SameGroupCodes>,
+    /// The lathe's G-code system (behaviour 7.18); read it with
+    /// [`Settings::gcode_system`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub gcode_system: Option<GCodeSystem>,
     /// How D reads in a lathe G71/G72/G74–G76 block (behaviour 7.19, 15.2);
     /// read it with [`Settings::depth_word`].
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -212,6 +302,27 @@ pub struct Settings {
 }
 
 impl Settings {
+    /// Two G codes of one group in a block: YASNAC refuses the block (an
+    /// input error, as it refuses two of G45–G48, seed 003); Fanuc documents
+    /// that the last one specified is valid (0i-MF/TF operator's manuals,
+    /// "Preparatory function (G function)"), and the Haas profile follows
+    /// the Fanuc rule its manuals are written against.
+    pub fn same_group_codes(&self) -> SameGroupCodes {
+        self.same_group_codes.unwrap_or(match self.control {
+            Control::Yasnac => SameGroupCodes::Error,
+            Control::Fanuc | Control::Haas => SameGroupCodes::LastWins,
+        })
+    }
+
+    /// The lathe's G-code system: A on every profile (Fanuc's default, the
+    /// parameters GSB/GSC of No. 3401 choosing B or C; Haas lathes and the
+    /// seed 004 manual write system A).
+    pub fn gcode_system(&self) -> GCodeSystem {
+        self.gcode_system.unwrap_or(match self.control {
+            Control::Yasnac | Control::Fanuc | Control::Haas => GCodeSystem::A,
+        })
+    }
+
     /// How the D word of the one-block G71/G72 (depth of cut), G74/G75
     /// (relief) and G76 (first depth) reads (behaviour 7.19): Haas reads it
     /// as a length with a decimal point (Haas lathe operator's manual, G71:
@@ -221,7 +332,10 @@ impl Settings {
     /// YASNAC (the seeds' control) writes it as Haas's YASNAC mode does:
     /// a length.
     pub fn depth_word(&self) -> DepthWord {
-        self.depth_word.unwrap_or(DepthWord::Dimension)
+        self.depth_word.unwrap_or(match self.control {
+            Control::Fanuc => DepthWord::Increments,
+            Control::Yasnac | Control::Haas => DepthWord::Dimension,
+        })
     }
 }
 

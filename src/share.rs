@@ -35,7 +35,9 @@ pub const LONG_LINK: usize = 8000;
 /// The base URL links point to by default.
 pub const DEFAULT_BASE: &str = "http://127.0.0.1:8000/";
 
-/// The keys of the plain form.
+/// The keys of the plain form. Besides these, any field of the setup's
+/// `settings` is a key (`control=fanuc`, `peck_retract=0.5`): its value is
+/// read as that setting is in a setup document ([`is_setting`]).
 pub const PLAIN_KEYS: &[&str] = &[
     "program",
     "machine",
@@ -198,6 +200,20 @@ pub fn encode_plain(doc: &Document, embed: bool) -> String {
             .join(",");
         parts.push(format!("mirror={m}"));
     }
+    // Every other setting as its document writes it (a setting left at its
+    // default is not written there either).
+    if let Ok(serde_json::Value::Object(fields)) = serde_json::to_value(st) {
+        for (key, value) in fields {
+            if PLAIN_KEYS.contains(&key.as_str()) {
+                continue;
+            }
+            let text = match value {
+                serde_json::Value::String(t) => t,
+                other => other.to_string(),
+            };
+            parts.push(format!("{key}={}", plain_value(&text)));
+        }
+    }
     if s.start != Position::default() {
         parts.push(format!("start={},{},{}", s.start.x, s.start.y, s.start.z));
     }
@@ -353,11 +369,11 @@ fn decode_plain(fragment: &str) -> Result<Link, LinkError> {
                 format!("the value of `{key}` is not UTF-8 after percent-decoding"),
             )
         })?;
-        if !PLAIN_KEYS.contains(&key) {
+        if !PLAIN_KEYS.contains(&key) && !is_setting(key) {
             return Err(err(
                 "link-plain",
                 format!(
-                    "unknown key `{}` (keys: {})",
+                    "unknown key `{}` (keys: {}, or the name of a setting)",
                     shorten(key),
                     PLAIN_KEYS.join(", ")
                 ),
@@ -389,6 +405,7 @@ fn decode_plain(fragment: &str) -> Result<Link, LinkError> {
             .ok_or_else(|| bad(key, value, "a number"))
     };
     let s = &mut doc.setup;
+    let mut settings = serde_json::Map::new();
     for (key, value) in &pairs {
         let v = value.as_str();
         match *key {
@@ -489,8 +506,20 @@ fn decode_plain(fragment: &str) -> Result<Link, LinkError> {
                     _ => return Err(bad(key, v, "1 or 0")),
                 }
             }
-            _ => {}
+            // A setting named by its field (checked by `is_setting` above).
+            _ => {
+                settings.insert(key.to_string(), setting_value(v));
+            }
         }
+    }
+    if !settings.is_empty() {
+        let mut all = match serde_json::to_value(&s.settings) {
+            Ok(serde_json::Value::Object(fields)) => fields,
+            _ => serde_json::Map::new(),
+        };
+        all.extend(settings);
+        s.settings = serde_json::from_value(serde_json::Value::Object(all))
+            .map_err(|e| err("link-plain", format!("settings: {e}")))?;
     }
     // Registers are read once the machine is known, whatever the key order.
     for spec in offsets {
@@ -510,6 +539,32 @@ fn decode_plain(fragment: &str) -> Result<Link, LinkError> {
         .validated()
         .map_err(|e| err("link-document", e.to_string()))?;
     Ok(Link { document, embed })
+}
+
+/// True if `key` names a field of the setup's settings (the setup document
+/// is the one list of them: a new setting is a plain-link key with nothing
+/// added here).
+fn is_setting(key: &str) -> bool {
+    let probe = serde_json::json!({ key: null });
+    match serde_json::from_value::<crate::setup::Settings>(probe) {
+        Ok(_) => true,
+        Err(e) => !e.to_string().starts_with("unknown field"),
+    }
+}
+
+/// A plain-link value as the JSON value of a setting: a number or a boolean
+/// when it reads as one, else the text (`fanuc`, `last_wins`).
+fn setting_value(v: &str) -> serde_json::Value {
+    let t = v.trim();
+    match t {
+        "true" => return serde_json::Value::Bool(true),
+        "false" => return serde_json::Value::Bool(false),
+        _ => {}
+    }
+    match t.parse::<f64>().ok().and_then(serde_json::Number::from_f64) {
+        Some(n) if !t.is_empty() => serde_json::Value::Number(n),
+        _ => serde_json::Value::String(t.to_string()),
+    }
 }
 
 #[cfg(test)]
@@ -571,6 +626,32 @@ mod tests {
         // A plus sign is a plus sign.
         let d = decode("#program=G91%20X+10.").unwrap().document;
         assert_eq!(d.program, "G91 X+10.");
+    }
+
+    #[test]
+    fn behaviour9_every_setting_is_a_plain_key_by_its_name() {
+        use crate::setup::{Control, GCodeSystem, SameGroupCodes};
+        let l = decode(
+            "#program=G00%20X1.&control=haas&same_group_codes=error&gcode_system=B&peck_retract=0.5&machine=lathe",
+        )
+        .unwrap();
+        let st = &l.document.setup.settings;
+        assert_eq!(st.control, Control::Haas);
+        assert_eq!(st.same_group_codes, Some(SameGroupCodes::Error));
+        assert_eq!(st.gcode_system, Some(GCodeSystem::B));
+        assert_eq!(st.peck_retract, Some(0.5));
+        // Written back by name in alphabetical order, each only when set.
+        let p = encode_plain(&l.document, false);
+        assert!(
+            p.ends_with("&control=haas&gcode_system=B&peck_retract=0.5&same_group_codes=error"),
+            "{p}"
+        );
+        assert_eq!(decode(&p).unwrap().document, l.document);
+        let e = decode("#program=G00&control=siemens").unwrap_err();
+        assert_eq!(e.code, "link-plain");
+        assert!(e.message.contains("unknown variant `siemens`"), "{e}");
+        let e = decode("#program=G00&colour=red").unwrap_err();
+        assert!(e.message.contains("or the name of a setting"), "{e}");
     }
 
     #[test]

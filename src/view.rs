@@ -153,7 +153,7 @@ fn block_view_at<'a>(b: &BlockReport, text: &'a str, columns: (u32, u32)) -> Blo
         units: u.as_str(),
         programmed: pos(s.programmed, u, m),
         actual: pos(s.actual, u, m),
-        modal: s.modal.codes(m),
+        modal: s.modal.codes(s.table()),
         feed: s.feed,
         spindle: s.spindle,
         tool: if mill { s.tool } else { s.lathe.tool },

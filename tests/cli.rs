@@ -255,6 +255,31 @@ fn setup_file_is_read_and_options_override_it() {
 }
 
 #[test]
+fn behaviour11_3_control_sets_the_profile_over_the_setup_and_keeps_its_settings() {
+    // Two codes of group 01: an error on YASNAC (the default), a warning on
+    // Fanuc (the last one wins).
+    let out = offsetlab(&["check", "-"], b"G00 G01 X1. F100.");
+    assert_eq!(out.status.code(), Some(1));
+    let out = offsetlab(&["check", "--control", "fanuc", "-"], b"G00 G01 X1. F100.");
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("warning[modal-conflict]"), "{text}");
+    // A setting the setup sets stays whatever the profile.
+    let setup = temp_file(
+        "strict.json",
+        br#"{"settings": {"control": "haas", "same_group_codes": "error"}}"#,
+    );
+    let s = setup.to_str().unwrap();
+    let out = offsetlab(
+        &["check", "--setup", s, "--control", "fanuc", "-"],
+        b"G00 G01 X1. F100.",
+    );
+    assert_eq!(out.status.code(), Some(1));
+    let out = offsetlab(&["check", "--control", "siemens", "-"], b"G00");
+    assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
 fn bad_usage_and_unreadable_input_exit_2() {
     let cases: Vec<(Vec<&str>, &[u8], &str)> = vec![
         (vec!["run", "--bogus", "-"], b"", "unexpected argument"),

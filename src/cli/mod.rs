@@ -9,6 +9,7 @@ use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use offsetlab::document::{ViewPlane, ViewState};
+use offsetlab::setup::Control;
 use offsetlab::share::{self, DEFAULT_BASE, LONG_LINK};
 use offsetlab::view::{RunView, summary};
 use offsetlab::{Document, MachineKind, RunOptions, run_pipelined, run_with};
@@ -74,6 +75,10 @@ struct Common {
     /// Machine kind (overrides the setup file).
     #[arg(long, value_enum)]
     machine: Option<Machine>,
+    /// Control profile: the defaults of the settings where controls differ
+    /// (overrides the setup file's; settings the setup sets stay).
+    #[arg(long, value_enum)]
+    control: Option<ControlArg>,
     /// One offset register: mill NN=VALUE (01=5.0), lathe NN=X<v>,Z<v>
     /// (08=X0.4,Z-0.2). Repeatable; applied after --setup.
     #[arg(long = "offset", value_name = "SPEC")]
@@ -91,6 +96,13 @@ struct Common {
 enum Machine {
     Mill,
     Lathe,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum ControlArg {
+    Yasnac,
+    Fanuc,
+    Haas,
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -268,6 +280,13 @@ fn load_setup(common: &Common) -> Result<(String, Document), Fatal> {
         doc.setup.machine = match m {
             Machine::Mill => MachineKind::Mill,
             Machine::Lathe => MachineKind::Lathe,
+        };
+    }
+    if let Some(c) = common.control {
+        doc.setup.settings.control = match c {
+            ControlArg::Yasnac => Control::Yasnac,
+            ControlArg::Fanuc => Control::Fanuc,
+            ControlArg::Haas => Control::Haas,
         };
     }
     for spec in &common.offsets {

@@ -3,14 +3,14 @@
 //! A). The T-code tool position offset's rules and sentences are
 //! [`crate::offsets::lathe`]'s; this file moves the tool by them.
 
-use super::modal::{ArcDirection, LatheCycle, Motion};
+use super::modal::{ArcDirection, Distance, LatheCycle, Motion};
 use super::program::ProgramText;
 use super::{ArcRequest, Machine, Mark, Out};
 use super::{EventKind, MoveKind};
 use crate::diag::Diagnostic;
 use crate::geometry::Xyz;
 use crate::offsets::lathe as toffset;
-use crate::syntax::codes::NonModal;
+use crate::syntax::codes::{Code, NonModal};
 use crate::syntax::{Address, Block};
 
 /// The lathe's turning-cycle data, modal until another group 01 code.
@@ -35,6 +35,7 @@ impl Machine {
             self.pass_over(b, out);
             return Ok(());
         }
+        self.refuse_unmodelled(b)?;
         // A G71/G72/G74–G76 block's D is its depth (behaviour 15.2).
         let cycle_d = matches!(b.codes().non_modal(), Some(NonModal::Repetitive(_)));
         for w in &b.words {
@@ -103,8 +104,11 @@ impl Machine {
         }
         if !any_axis && !arc_words {
             if t_changed {
-                let at_feed =
-                    toffset::offset_motion_at_feed(motion, self.word_span(b, Address::T))?;
+                let at_feed = toffset::offset_motion_at_feed(
+                    motion,
+                    self.state.table(),
+                    self.word_span(b, Address::T),
+                )?;
                 let start = self.mark();
                 let old = self.state.lathe.vector;
                 self.state.lathe.vector = self.state.lathe.target;
@@ -118,17 +122,10 @@ impl Machine {
         }
         let start = self.mark();
         let mut target = self.state.programmed;
-        if let Some(x) = b.value(Address::X) {
-            target[0] = self.mm(x);
-        }
-        if let Some(u) = b.value(Address::U) {
-            target[0] += self.mm(u);
-        }
-        if let Some(z) = b.value(Address::Z) {
-            target[2] = self.mm(z);
-        }
-        if let Some(w) = b.value(Address::W) {
-            target[2] += self.mm(w);
+        for axis in [0, 2] {
+            if let Some(v) = self.lathe_target(b, axis) {
+                target[axis] = v;
+            }
         }
         let moved = [
             b.has(Address::X) || b.has(Address::U),
@@ -169,7 +166,7 @@ impl Machine {
                         b.span,
                         format!(
                             "{} needs R or the centre words I (radius) and K",
-                            motion.gcode()
+                            Code::Motion(motion).gcode(self.state.table())
                         ),
                     ));
                 }
@@ -219,6 +216,25 @@ impl Machine {
         };
         self.emit(out, start, kind, at_feed, None);
         Ok(())
+    }
+
+    /// The programmed target (mm) a block's words give `axis` (0: X, 2: Z):
+    /// X/Z absolute — incremental in G91, which only G-code systems B and C
+    /// have (behaviour 7.18) — and U/W incremental.
+    fn lathe_target(&self, b: &Block, axis: usize) -> Option<f64> {
+        let (abs, inc) = match axis {
+            0 => (Address::X, Address::U),
+            _ => (Address::Z, Address::W),
+        };
+        let p = self.state.programmed[axis];
+        match (b.value(abs), b.value(inc)) {
+            (Some(v), _) if self.state.modal.distance == Distance::Incremental => {
+                Some(p + self.mm(v))
+            }
+            (Some(v), _) => Some(self.mm(v)),
+            (None, Some(d)) => Some(p + self.mm(d)),
+            (None, None) => None,
+        }
     }
 
     fn sub_xz(&self, a: Xyz, b: Xyz) -> Xyz {
@@ -274,12 +290,9 @@ impl Machine {
     fn lathe_g28(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
         let mut named = [false; 3];
         let start = self.mark();
-        for (axis, abs, inc) in [(0, Address::X, Address::U), (2, Address::Z, Address::W)] {
-            let p = self.state.programmed[axis];
-            let to = match (b.value(abs), b.value(inc)) {
-                (Some(v), _) => self.mm(v),
-                (None, Some(d)) => p + self.mm(d),
-                (None, None) => continue,
+        for axis in [0, 2] {
+            let Some(to) = self.lathe_target(b, axis) else {
+                continue;
             };
             named[axis] = true;
             self.state.programmed[axis] = to;
@@ -316,17 +329,11 @@ impl Machine {
     ) -> Result<(), Diagnostic> {
         let motion = self.state.modal.motion;
         let (x0, z0) = (self.state.programmed[0], self.state.programmed[2]);
-        if let Some(x) = b.value(Address::X) {
-            self.turning.x = Some(self.mm(x));
+        if let Some(x) = self.lathe_target(b, 0) {
+            self.turning.x = Some(x);
         }
-        if let Some(u) = b.value(Address::U) {
-            self.turning.x = Some(x0 + self.mm(u));
-        }
-        if let Some(z) = b.value(Address::Z) {
-            self.turning.z = Some(self.mm(z));
-        }
-        if let Some(w) = b.value(Address::W) {
-            self.turning.z = Some(z0 + self.mm(w));
+        if let Some(z) = self.lathe_target(b, 2) {
+            self.turning.z = Some(z);
         }
         if let Some(r) = b.value(Address::R) {
             self.turning.r = self.mm(r);
@@ -335,7 +342,10 @@ impl Machine {
             return Err(self.error(
                 "cycle-without-target",
                 b.span,
-                format!("{} needs X (or U) and Z (or W)", motion.gcode()),
+                format!(
+                    "{} needs X (or U) and Z (or W)",
+                    Code::Motion(motion).gcode(self.state.table())
+                ),
             ));
         };
         let r = self.turning.r;

@@ -35,6 +35,7 @@ impl Machine {
         if b.holds_only(&MOTION_WORDS, &[Group::Motion]) {
             return self.motion_block(b, out);
         }
+        self.refuse_unmodelled(b)?;
         let lathe_words = b.holds(Address::U) || b.holds(Address::W);
         for w in b.words.iter().filter(|_| lathe_words) {
             if matches!(w.address, Address::U | Address::W) {

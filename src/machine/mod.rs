@@ -117,6 +117,7 @@ impl Machine {
         };
         let state = BlockState {
             machine: setup.machine,
+            system: setup.settings.gcode_system(),
             programmed: start,
             actual: start,
             modal: Modal::start(setup.machine, setup.units),
@@ -231,6 +232,44 @@ impl Machine {
         let end =
             block.holds(Address::M) && block.mcodes(self.setup.machine).any(|m| m.ends_program());
         Ok(if end { Flow::End } else { Flow::Continue })
+    }
+
+    /// Refuses the words the parser reads but no rule of the machine acts on
+    /// yet (behaviour 1.7): rotary axes A/B/C, E, and the chamfer and corner
+    /// words `,C`/`,R` — an error at the word, never a word passed over.
+    /// A code that models one of them takes it out of this list for the
+    /// blocks it handles.
+    fn refuse_unmodelled(&self, b: &Block) -> Result<(), Diagnostic> {
+        const UNMODELLED: [Address; 6] = [
+            Address::A,
+            Address::B,
+            Address::C,
+            Address::E,
+            Address::CommaC,
+            Address::CommaR,
+        ];
+        if !b.holds_any(&UNMODELLED) {
+            return Ok(());
+        }
+        let lathe = self.setup.machine == MachineKind::Lathe;
+        // G76's A is its tool angle (behaviour 15.12).
+        let g76 = b.codes().non_modal()
+            == Some(NonModal::Repetitive(crate::syntax::codes::Repetitive::Threading));
+        let Some(w) = b
+            .words
+            .iter()
+            .find(|w| UNMODELLED.contains(&w.address) && !(g76 && w.address == Address::A))
+        else {
+            return Ok(());
+        };
+        let letter = w.address.letter();
+        let why = match w.address {
+            Address::C if lathe => "the C axis and the chamfer word C are not modelled yet",
+            Address::A | Address::B | Address::C => "rotary axes are not modelled yet",
+            Address::E => "thread lead (and Haas G187's corner tolerance) is not modelled yet",
+            _ => "chamfering and corner rounding (,C and ,R) are not modelled yet",
+        };
+        Err(self.error("unsupported-word", w.span, format!("{letter}: {why}")))
     }
 
     // ----- small helpers -------------------------------------------------

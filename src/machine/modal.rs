@@ -5,11 +5,11 @@
 use serde::Serialize;
 
 use crate::setup::{MachineKind, Units};
-use crate::syntax::codes::CannedCycle;
 pub use crate::syntax::codes::{
     ArcDirection, Cycle, Distance, FeedMode, LatheCycle, LengthOffset, Motion, Plane, ReturnLevel,
     SurfaceSpeed, WorkSystem,
 };
+use crate::syntax::codes::{CannedCycle, Code, CodeTable};
 
 /// All modal codes a block report shows.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -59,15 +59,17 @@ impl Modal {
         }
     }
 
-    /// The modal codes as the manuals write them, for reports.
-    pub fn codes(&self, machine: MachineKind) -> ModalCodes {
-        let mill = machine == MachineKind::Mill;
+    /// The modal codes as the manuals write them in this table, for reports.
+    pub fn codes(&self, table: impl Into<CodeTable>) -> ModalCodes {
+        let table: CodeTable = table.into();
+        let mill = table.machine() == MachineKind::Mill;
         ModalCodes {
-            motion: self.motion.gcode(),
+            motion: Code::Motion(self.motion).gcode(table),
             plane: self.plane.gcode(),
-            distance: mill.then_some(self.distance.gcode()),
-            units: self.units.gcode(),
-            feed_mode: self.feed_mode.gcode(machine),
+            // The lathe has the distance codes in G-code systems B and C.
+            distance: (mill || table.lathe_distance_codes()).then_some(self.distance.gcode()),
+            units: Code::Units(self.units).gcode(table),
+            feed_mode: Code::FeedMode(self.feed_mode).gcode(table),
             length: mill.then_some(self.length.gcode()),
             cycle: mill.then(|| self.cycle.map_or(CannedCycle::Cancel.gcode(), Cycle::gcode)),
             return_level: mill.then_some(self.return_level.gcode()),

@@ -10,7 +10,8 @@ use crate::geometry::Xyz;
 use crate::offsets::lathe::LatheState;
 use crate::offsets::length::LengthState;
 use crate::offsets::position::PositionState;
-use crate::setup::{MachineKind, Units};
+use crate::setup::{GCodeSystem, MachineKind, Units};
+use crate::syntax::codes::CodeTable;
 
 /// What kind of motion a move is (behaviour 2).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
@@ -209,6 +210,8 @@ pub enum EventKind {
 pub struct BlockState {
     /// Mill or lathe.
     pub machine: MachineKind,
+    /// The lathe's G-code system (how its codes are written back).
+    pub system: GCodeSystem,
     /// Programmed position (mm, current work coordinates).
     pub programmed: Xyz,
     /// Actual position of the tool reference point (mm).
@@ -229,4 +232,11 @@ pub struct BlockState {
     pub position: PositionState,
     /// T-code offset (lathe).
     pub lathe: LatheState,
+}
+
+impl BlockState {
+    /// The table the block's codes are written back with.
+    pub fn table(&self) -> CodeTable {
+        CodeTable::new(self.machine, self.system)
+    }
 }

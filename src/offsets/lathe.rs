@@ -11,7 +11,7 @@
 use crate::diag::{Diagnostic, Span};
 use crate::geometry::{Xyz, show, show_signed};
 use crate::setup::{LatheRegister, LatheXOffset, Units};
-use crate::syntax::codes::Motion;
+use crate::syntax::codes::{Code, CodeTable, Motion};
 
 /// Lathe T-code offset state (behaviour 5).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -166,7 +166,11 @@ impl LatheState {
 /// (G01) rather than rapid (G00), in motion mode `motion` (behaviour 5.3, seed
 /// 004); in G02/G03 or a turning cycle it cannot be made. `t` is where the
 /// T word is.
-pub fn offset_motion_at_feed(motion: Motion, t: Span) -> Result<bool, Diagnostic> {
+pub fn offset_motion_at_feed(
+    motion: Motion,
+    table: CodeTable,
+    t: Span,
+) -> Result<bool, Diagnostic> {
     match motion {
         Motion::Rapid => Ok(false),
         Motion::Linear => Ok(true),
@@ -175,7 +179,7 @@ pub fn offset_motion_at_feed(motion: Motion, t: Span) -> Result<bool, Diagnostic
             t,
             format!(
                 "a T offset change with no move is made at rapid (G00) or feed (G01); {} is active: command G00 or G01 with it",
-                motion.gcode()
+                Code::Motion(motion).gcode(table)
             ),
         )),
     }
@@ -281,15 +285,15 @@ mod tests {
     #[test]
     fn behaviour5_3_a_t_change_alone_moves_at_the_motion_modes_rate() {
         assert_eq!(
-            offset_motion_at_feed(Motion::Rapid, Span::default()),
+            offset_motion_at_feed(Motion::Rapid, CodeTable::LATHE, Span::default()),
             Ok(false)
         );
         assert_eq!(
-            offset_motion_at_feed(Motion::Linear, Span::default()),
+            offset_motion_at_feed(Motion::Linear, CodeTable::LATHE, Span::default()),
             Ok(true)
         );
         let arc = Motion::Arc(crate::syntax::codes::ArcDirection::Ccw);
-        let e = offset_motion_at_feed(arc, Span::default()).unwrap_err();
+        let e = offset_motion_at_feed(arc, CodeTable::LATHE, Span::default()).unwrap_err();
         assert_eq!(e.code, "offset-motion-mode");
     }
 }

@@ -71,7 +71,7 @@ pub fn check_block(
                 b.code_span(other.group()),
                 format!(
                     "{} cannot share a block with {}: only G00–G03 and G90/G91 may (seed 003: an input error occurs)",
-                    other.gcode(machine),
+                    other.gcode(machine.into()),
                     code.gcode()
                 ),
             ));

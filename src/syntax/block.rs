@@ -3,7 +3,7 @@
 
 use serde::Serialize;
 
-use super::codes::{Code, Codes, GCode, Group, MCode};
+use super::codes::{Code, CodeTable, Codes, GCode, Group, MCode};
 use crate::diag::Span;
 use crate::setup::MachineKind;
 
@@ -32,6 +32,20 @@ pub enum Address {
     X,
     Y,
     Z,
+    /// Rotary axis about X (mill) (behaviour 1.7).
+    A,
+    /// Rotary axis about Y (mill).
+    B,
+    /// Rotary axis about Z; on the lathe also the chamfer word of some
+    /// controls.
+    C,
+    /// Thread lead (lathe, inch threading), Haas G187's corner tolerance.
+    E,
+    /// `,C`: chamfer at the end of a G01 block (Fanuc "optional angle
+    /// chamfering").
+    CommaC,
+    /// `,R`: corner rounding at the end of a G01 block.
+    CommaR,
 }
 
 /// How a word's number is read.
@@ -41,13 +55,23 @@ pub enum WordKind {
     Integer,
     /// Feed rate: read in units with or without a decimal point (behaviour 1.14).
     Feed,
-    /// Dimension words X Y Z U W I J K R Q: decimal input applies (behaviour 1.15).
+    /// Dimension words X Y Z U W I J K R Q, A B C E and `,C` `,R`: decimal
+    /// input applies (behaviour 1.15).
     Dimension,
 }
 
 impl Address {
     /// Number of addresses.
-    pub const COUNT: usize = 21;
+    pub const COUNT: usize = 27;
+
+    /// Every address, in declaration order (`ALL[a as usize] == a`).
+    pub const ALL: [Address; Address::COUNT] = {
+        use Address::*;
+        [
+            D, F, G, H, I, J, K, L, M, N, O, P, Q, R, S, T, U, W, X, Y, Z, A, B, C, E, CommaC,
+            CommaR,
+        ]
+    };
 
     /// The address for a byte of program text, a letter of either case, if
     /// offsetlab reads it: one load from a table (the parser's dispatch on a
@@ -91,45 +115,85 @@ impl Address {
             b'X' => X,
             b'Y' => Y,
             b'Z' => Z,
+            b'A' => A,
+            b'B' => B,
+            b'C' => C,
+            b'E' => E,
             _ => return None,
         })
     }
 
-    /// The letter.
-    pub fn letter(self) -> char {
-        use Address::*;
-        match self {
-            D => 'D',
-            F => 'F',
-            G => 'G',
-            H => 'H',
-            I => 'I',
-            J => 'J',
-            K => 'K',
-            L => 'L',
-            M => 'M',
-            N => 'N',
-            O => 'O',
-            P => 'P',
-            Q => 'Q',
-            R => 'R',
-            S => 'S',
-            T => 'T',
-            U => 'U',
-            W => 'W',
-            X => 'X',
-            Y => 'Y',
-            Z => 'Z',
+    /// The comma word written `,` + this letter (either case), if offsetlab
+    /// reads it: `,C` and `,R`.
+    #[inline]
+    pub const fn comma(c: u8) -> Option<Address> {
+        match c.to_ascii_uppercase() {
+            b'C' => Some(Address::CommaC),
+            b'R' => Some(Address::CommaR),
+            _ => None,
         }
     }
 
-    /// How the number of this address is read.
+    /// The address as written: its letter, or `,C` / `,R`.
+    pub fn letter(self) -> &'static str {
+        use Address::*;
+        match self {
+            D => "D",
+            F => "F",
+            G => "G",
+            H => "H",
+            I => "I",
+            J => "J",
+            K => "K",
+            L => "L",
+            M => "M",
+            N => "N",
+            O => "O",
+            P => "P",
+            Q => "Q",
+            R => "R",
+            S => "S",
+            T => "T",
+            U => "U",
+            W => "W",
+            X => "X",
+            Y => "Y",
+            Z => "Z",
+            A => "A",
+            B => "B",
+            C => "C",
+            E => "E",
+            CommaC => ",C",
+            CommaR => ",R",
+        }
+    }
+
+    /// How the number of this address is read: one load from a table
+    /// (every word asks; a `match` here cost the parser several percent of
+    /// the `check` instruction count in docs/performance.md, depending on
+    /// what the compiler inlined around it).
+    #[inline]
     pub fn kind(self) -> WordKind {
+        const KINDS: [WordKind; Address::COUNT] = {
+            let mut kinds = [WordKind::Dimension; Address::COUNT];
+            let mut i = 0;
+            while i < Address::COUNT {
+                kinds[i] = Address::ALL[i].kind_of();
+                i += 1;
+            }
+            kinds
+        };
+        KINDS[self as usize]
+    }
+
+    const fn kind_of(self) -> WordKind {
         use Address::*;
         match self {
             G | M | N | O | T | D | H | S | P | L => WordKind::Integer,
             F => WordKind::Feed,
-            X | Y | Z | U | W | I | J | K | R | Q => WordKind::Dimension,
+            X | Y | Z | U | W | I | J | K | R | Q | A | B | C | E | CommaC | CommaR => {
+                WordKind::Dimension
+            }
         }
     }
 
@@ -203,8 +267,8 @@ pub struct Block {
     /// four: the block is handed between threads in batches (the 1M-block
     /// `check`, target 6 in docs/performance.md).
     groups: [u16; Group::COUNT],
-    /// The machine the parser read the block for (what a G number means).
-    pub(super) machine: MachineKind,
+    /// The table the parser read the block's G numbers with.
+    pub(super) table: CodeTable,
     /// The groups of the block's G codes, a bit each (by [`Group::index`]).
     group_bits: u16,
 }
@@ -252,7 +316,7 @@ impl Block {
         match self.groups[group.index()] {
             0 if self.holds_group(group) => self.words.iter().find(|w| {
                 w.address == Address::G
-                    && Code::of(self.machine, w.gcode()).is_some_and(|c| c.group() == group)
+                    && Code::of(self.table, w.gcode()).is_some_and(|c| c.group() == group)
             }),
             0 => None,
             i => self.words.get(usize::from(i) - 1),
@@ -293,6 +357,13 @@ impl Block {
     /// a loop over the words.
     pub fn holds(&self, address: Address) -> bool {
         self.addresses & address.bit() != 0
+    }
+
+    /// True if any word of the block has one of these addresses.
+    #[inline]
+    pub fn holds_any(&self, addresses: &[Address]) -> bool {
+        let words = addresses.iter().fold(0, |bits, a| bits | a.bit());
+        self.addresses & words != 0
     }
 
     /// True if every word of the block has one of these addresses and every

@@ -25,14 +25,16 @@ impl Blocks<'_> {
     pub(super) fn refusal_message(&self, w: &RawWord, refusal: Refusal) -> (&'static str, String) {
         // The word as written.
         let text = &self.text[w.start..w.end];
-        let letter = w.letter as char;
+        let letter = match w.comma {
+            true => format!(",{}", w.letter as char),
+            false => (w.letter as char).to_string(),
+        };
         match refusal {
             Refusal::Address => {
-                let msg = match letter {
-                    'A' | 'B' | 'C' => {
-                        format!("{letter}: rotary axes are not modelled by offsetlab")
-                    }
-                    'E' => "E (thread lead) is not supported".to_string(),
+                let msg = match w.letter {
+                    b'V' => format!(
+                        "{letter} is not an address offsetlab reads (a U/V/W secondary axis of a mill is not modelled)"
+                    ),
                     _ => format!("{letter} is not an address offsetlab reads"),
                 };
                 ("unsupported-address", msg)
@@ -59,7 +61,7 @@ impl Blocks<'_> {
             ),
             Refusal::Integer(limit) => {
                 let address = Address::from_letter(w.letter).unwrap_or(Address::N);
-                let msg = integer_range_message(text, letter, address, limit, self.options);
+                let msg = integer_range_message(text, &letter, address, limit, self.options);
                 ("out-of-range", msg)
             }
             Refusal::LatheOffset => {
@@ -87,6 +89,18 @@ impl Blocks<'_> {
         }
     }
 
+    /// The warning's sentence when `word`'s G code replaces the block's
+    /// earlier code of `group` (setting `same_group_codes = last_wins`).
+    pub(super) fn replaced_message(&self, block: &Block, word: &Word, group: Group) -> String {
+        let first = block.group_word(group).map_or(word.gcode(), Word::gcode);
+        format!(
+            "{first} and {} are both in group {}: the last one, {}, is in effect and {first} is not (Fanuc: the last G code of a group specified in a block is valid)",
+            word.gcode(),
+            group.label(),
+            word.gcode(),
+        )
+    }
+
     /// The diagnostic code and sentence of a word the block's earlier words
     /// exclude.
     pub(super) fn clash_message(
@@ -100,10 +114,10 @@ impl Blocks<'_> {
             Clash::Group(group) => {
                 let first = block.group_word(group).map_or(word.gcode(), Word::gcode);
                 let msg = format!(
-                    "{first} and {} are both in group {}; a block may hold one of them{}",
+                    "{first} and {} are both in group {}; a block may hold one of them{} (setting same_group_codes: last_wins, the Fanuc rule, takes the last)",
                     word.gcode(),
                     group.label(),
-                    conflict_hint(self.options.machine, group)
+                    conflict_hint(self.table, group)
                 );
                 ("modal-conflict", msg)
             }
@@ -138,7 +152,7 @@ impl Blocks<'_> {
 
 fn integer_range_message(
     text: &str,
-    letter: char,
+    letter: &str,
     address: Address,
     limit: u64,
     options: ParseOptions,
@@ -155,9 +169,9 @@ fn integer_range_message(
     }
 }
 
-fn conflict_hint(machine: MachineKind, group: Group) -> &'static str {
-    match (machine, group) {
-        (MachineKind::Lathe, Group::Motion) => {
+fn conflict_hint(table: CodeTable, group: Group) -> &'static str {
+    match (table.machine(), group) {
+        (MachineKind::Lathe, Group::Motion) if !table.lathe_distance_codes() => {
             " (on the lathe, G-code system A, G90/G92/G94 are turning cycles; X/Z are absolute and U/W incremental)"
         }
         (_, Group::NonModal) => " (one-shot codes such as G45–G48 take one per block, seed 003)",
@@ -173,6 +187,7 @@ pub(super) fn unexpected_message(ch: char) -> String {
             )
         }
         '/' => "`/` (optional block skip) must start the block".to_string(),
+        ',' => "`,` starts the comma words ,C (chamfer) and ,R (corner rounding) only; other comma words (such as ,A, the angle of direct drawing dimension programming) are not read".to_string(),
         '%' => "`%` marks the tape start or end and must be alone on its line".to_string(),
         ')' => "`)` closes no comment".to_string(),
         '\u{feff}' => "character '\\u{feff}' (a byte order mark) is not part of a program: save the file as UTF-8 without BOM".to_string(),

@@ -18,8 +18,10 @@ mod read;
 pub use block::{Address, Block, Word, WordKind};
 
 use crate::diag::{Diagnostic, Span};
-use crate::setup::{DecimalInput, DepthWord, MachineKind, Setup, Units};
-use codes::{Code, GCode, Group, MCode, NonModal, Repetitive, g_group};
+use crate::setup::{
+    DecimalInput, DepthWord, GCodeSystem, MachineKind, SameGroupCodes, Setup, Units,
+};
+use codes::{Code, CodeTable, GCode, Group, MCode, NonModal, Repetitive, g_group};
 use lexer::{Number, NumberError};
 
 /// Most diagnostics one program reports; past this one more says so.
@@ -65,8 +67,20 @@ pub struct ParseOptions {
     pub table_size: u16,
     /// Skipped blocks (`/`) do not change the parser's G20/G21 state.
     pub block_skip: bool,
+    /// The lathe's G-code system (behaviour 7.18; the mill has one table).
+    pub system: GCodeSystem,
+    /// Two G codes of one modal group in a block (behaviour 1.11, 7.17).
+    pub same_group: SameGroupCodes,
     /// How D reads in a lathe G71/G72/G74–G76 block (behaviour 15.2).
     pub depth_word: DepthWord,
+}
+
+impl ParseOptions {
+    /// The table G numbers are read with.
+    #[inline(always)]
+    pub fn table(&self) -> CodeTable {
+        CodeTable::new(self.machine, self.system)
+    }
 }
 
 impl Default for ParseOptions {
@@ -83,6 +97,8 @@ impl From<&Setup> for ParseOptions {
             decimal_input: s.settings.decimal_input,
             table_size: s.table_size,
             block_skip: s.settings.block_skip,
+            system: s.settings.gcode_system(),
+            same_group: s.settings.same_group_codes(),
             depth_word: s.settings.depth_word(),
         }
     }
@@ -185,7 +201,10 @@ pub(crate) fn shift(at: i64, by: i64) -> i64 {
 /// A word as lexed, before it is typed.
 #[derive(Clone, Copy)]
 struct RawWord {
+    /// The letter, upper case (of a comma word, the letter after the comma).
     letter: u8,
+    /// A comma word: `,C` or `,R` (behaviour 1.7).
+    comma: bool,
     number: Result<Number, NumberError>,
     start: usize,
     end: usize,
@@ -223,7 +242,8 @@ enum Refusal {
 enum Clash {
     /// A G code this machine does not model, and why.
     UnknownGCode(String),
-    /// A second G code of a modal group.
+    /// A second G code of a modal group (with the setting
+    /// `same_group_codes = last_wins` it replaces the first, behaviour 1.11).
     Group(Group),
     /// An M code of the same group as an earlier one.
     MCode,
@@ -247,18 +267,18 @@ struct Checks {
 impl Checks {
     /// Adds `word` to `block` unless an earlier word excludes it.
     #[inline(always)]
-    fn admit(&mut self, machine: MachineKind, block: &mut Block, word: Word) -> Result<(), Clash> {
+    fn admit(&mut self, table: CodeTable, block: &mut Block, word: Word) -> Result<(), Clash> {
         let a = word.address;
         match a {
             Address::G => {
                 let written = word.gcode();
-                let Some(code) = Code::of(machine, written) else {
-                    let why = g_group(machine, written).err().unwrap_or_default();
+                let Some(code) = Code::of(table, written) else {
+                    let why = g_group(table, written).err().unwrap_or_default();
                     return Err(Clash::UnknownGCode(why));
                 };
                 return self.admit_code(block, word, code);
             }
-            Address::M => self.admit_mcode(machine, &word)?,
+            Address::M => self.admit_mcode(table.machine(), &word)?,
             _ => {
                 if block.holds(a) {
                     return Err(Clash::Duplicate);
@@ -305,6 +325,8 @@ pub struct Blocks<'a> {
     pos: usize,
     line: u32,
     options: ParseOptions,
+    /// `options.table()`, kept: every G word is looked up in it.
+    table: CodeTable,
     /// G20/G21 as last written (decimal input depends on it).
     units: Units,
     /// A mill canned cycle is active (K is then a repeat count).
@@ -333,6 +355,7 @@ impl<'a> Blocks<'a> {
             pos: 0,
             line: 1,
             units: options.units,
+            table: options.table(),
             options,
             in_cycle: false,
             mrc: None,
@@ -509,7 +532,7 @@ impl<'a> Blocks<'a> {
         block.skip = false;
         block.clear();
         block.error = false;
-        block.machine = self.options.machine;
+        block.table = self.table;
 
         if bytes[i] == b'/' {
             block.skip = true;
@@ -562,7 +585,7 @@ impl<'a> Blocks<'a> {
         let Ok(major) = u16::try_from(n.mantissa) else {
             return;
         };
-        if let Some(code) = Code::of(self.options.machine, GCode::new(major)) {
+        if let Some(code) = Code::of(self.table, GCode::new(major)) {
             self.note_code(code);
         }
     }
@@ -673,6 +696,8 @@ impl<'a> Blocks<'a> {
             (Address::K, _) if self.in_cycle => WordKind::Integer,
             (Address::P | Address::Q, Some(_)) => WordKind::Integer,
             (Address::R | Address::D, Some(Repetitive::PatternRepeat)) => WordKind::Integer,
+            // G76's tool angle, in whole degrees (Haas: no decimal point).
+            (Address::A, Some(Repetitive::Threading)) => WordKind::Integer,
             (Address::D, Some(_)) => match self.options.depth_word {
                 DepthWord::Increments => WordKind::Integer,
                 DepthWord::Dimension => WordKind::Dimension,
@@ -703,7 +728,11 @@ impl<'a> Blocks<'a> {
     /// Types one lexed word, reporting what is wrong with it.
     fn type_word(&mut self, w: &RawWord, line: u32, block: &mut Block) -> Option<Word> {
         let span = Span::new(w.start, w.end, line);
-        let read = Address::from_letter(w.letter)
+        let address = match w.comma {
+            true => Address::comma(w.letter),
+            false => Address::from_letter(w.letter),
+        };
+        let read = address
             .ok_or(Refusal::Address)
             .and_then(|a| Ok((a, w.number.map_err(Refusal::Number)?)))
             .and_then(|(a, n)| self.read_word(a, n, span));

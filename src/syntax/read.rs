@@ -7,10 +7,17 @@ use super::messages::unexpected_message;
 use super::*;
 
 /// The addresses whose reading a G code later in the block can change: K
-/// (a mill canned cycle's repeat count) and P, Q, R, D (a lathe G70–G76
+/// (a mill canned cycle's repeat count) and P, Q, R, D, A (a lathe G70–G76
 /// block's words, behaviour 15.2).
 const CONTEXT_ADDRESSES: u32 = {
-    let a = [Address::K, Address::P, Address::Q, Address::R, Address::D];
+    let a = [
+        Address::K,
+        Address::P,
+        Address::Q,
+        Address::R,
+        Address::D,
+        Address::A,
+    ];
     let mut bits = 0;
     let mut i = 0;
     while i < a.len() {
@@ -62,7 +69,10 @@ impl Blocks<'_> {
                         continue;
                     }
                     // A letter offsetlab does not read, a character outside
-                    // a word: errors.
+                    // a word (errors), and the rare comma words `,C` `,R`
+                    // (behaviour 1.7) are read in two passes: a second shape
+                    // of word here cost every block (the `check`
+                    // instruction count in docs/performance.md).
                     _ => return None,
                 }
             };
@@ -86,7 +96,7 @@ impl Blocks<'_> {
                 read_dimension = true;
             }
             read_context |= address.bit() & CONTEXT_ADDRESSES != 0;
-            checks.admit(self.options.machine, block, word).ok()?;
+            checks.admit(self.table, block, word).ok()?;
             last = word_end;
             i = next;
         }
@@ -100,7 +110,10 @@ impl Blocks<'_> {
     /// before it, reporting what is wrong with each. This is the reading of
     /// behaviour 1 as written; [`Blocks::read_one_pass`] gives the same blocks
     /// and diagnostics faster for the blocks it reads. Returns what
-    /// [`Blocks::read_one_pass`] returns.
+    /// [`Blocks::read_one_pass`] returns. Out of line: few blocks take it,
+    /// and inlined it made the one-pass reading's loop slower (the `check`
+    /// instruction count in docs/performance.md).
+    #[inline(never)]
     pub(super) fn read_two_pass(
         &mut self,
         mut i: usize,
@@ -134,6 +147,20 @@ impl Blocks<'_> {
                 }
                 self.raw.push(RawWord {
                     letter,
+                    comma: false,
+                    number,
+                    start: i,
+                    end: word_end,
+                });
+                i = word_end;
+            } else if c == b','
+                && let Some(&l) = bytes.get(i + 1)
+                && Address::comma(l).is_some()
+            {
+                let (word_end, _, number) = lexer::number(bytes, i + 2);
+                self.raw.push(RawWord {
+                    letter: l.to_ascii_uppercase(),
+                    comma: true,
                     number,
                     start: i,
                     end: word_end,
@@ -179,9 +206,22 @@ impl Blocks<'_> {
             let Some(word) = self.type_word(w, line, block) else {
                 continue;
             };
-            if let Err(clash) = checks.admit(self.options.machine, block, word) {
-                let (code, msg) = self.clash_message(block, &word, clash);
-                self.error_word(block, code, &word, &msg);
+            match checks.admit(self.table, block, word) {
+                Ok(()) => {}
+                Err(Clash::Group(group)) if self.options.same_group == SameGroupCodes::LastWins => {
+                    // Fanuc: the last code of the group specified is valid
+                    // (behaviour 1.11): said, never silent.
+                    let msg = self.replaced_message(block, &word, group);
+                    self.report(Diagnostic::warning("modal-conflict", word.span, msg));
+                    if let Some(code) = Code::of(self.table, word.gcode()) {
+                        block.set_code(code, group);
+                    }
+                    block.push(word);
+                }
+                Err(clash) => {
+                    let (code, msg) = self.clash_message(block, &word, clash);
+                    self.error_word(block, code, &word, &msg);
+                }
             }
         }
         self.raw = raw;

@@ -270,9 +270,30 @@ fn behaviour1_9_characters_outside_words_are_errors() {
 
 #[test]
 fn behaviour1_7_unsupported_addresses_are_errors() {
-    let prog = p("G01 A90. X1.");
+    let prog = p("G01 V90. X1.");
     assert_eq!(codes(&prog), vec!["unsupported-address"]);
-    assert!(prog.diagnostics[0].message.contains("rotary"));
+    assert!(prog.diagnostics[0].message.contains("V is not an address"));
+}
+
+#[test]
+fn behaviour1_7_rotary_axes_e_and_comma_words_are_read() {
+    let prog = p("G01 A90. B-45.5 C10. E0.25 X1. ,C2. ,r1.5");
+    assert_eq!(codes(&prog), Vec::<&str>::new());
+    let b = &prog.blocks[0];
+    assert_eq!(value(b, Address::A), 90.0);
+    assert_eq!(value(b, Address::B), -45.5);
+    assert_eq!(value(b, Address::C), 10.0);
+    assert_eq!(value(b, Address::E), 0.25);
+    assert_eq!(value(b, Address::CommaC), 2.0);
+    assert_eq!(value(b, Address::CommaR), 1.5);
+    assert_eq!(Address::CommaC.letter(), ",C");
+    // Without a point they follow decimal input like any dimension word.
+    let prog = p("G01 ,C2000");
+    assert_eq!(value(&prog.blocks[0], Address::CommaC), 2.0);
+    // A comma word the parser does not read.
+    let prog = p("G01 X1. ,A30.");
+    assert_eq!(codes(&prog)[0], "unexpected-character");
+    assert!(prog.diagnostics[0].message.contains(",C (chamfer)"));
 }
 
 #[test]
@@ -488,6 +509,7 @@ fn options_of(lathe: bool, inch: bool, calculator: bool, skip: bool) -> ParseOpt
         } else {
             crate::setup::DepthWord::Dimension
         },
+        ..ParseOptions::default()
     }
 }
 

@@ -25,6 +25,20 @@ const CHOICES = [
     help: 'Units at program start, and of the offsets, start position and work offsets below.',
   },
   {
+    id: 'control', label: 'Control', options: [['yasnac', 'YASNAC'], ['fanuc', 'Fanuc 0i/30i'], ['haas', 'Haas']],
+    help: 'The control the program is written for: it chooses each setting left “as the control”. YASNAC: the seeds’ manuals (PC NC, J50). Fanuc: 0i-MF/TF and 30i. Haas: NGC mills and lathes.',
+  },
+  {
+    id: 'same_group_codes', label: 'Two G codes of a group', controlDefault: true,
+    options: [['error', 'an error'], ['last_wins', 'the last one wins']],
+    help: 'G91 … G90 in one block: YASNAC refuses the block; Fanuc and Haas take the last one and offsetlab warns.',
+  },
+  {
+    id: 'gcode_system', label: 'G-code system', machine: 'lathe', controlDefault: true,
+    options: [['A', 'A (G90 turning cycle)'], ['B', 'B (G90/G91 absolute/incremental)'], ['C', 'C (G90/G91, G70/G71 inch/metric)']],
+    help: 'Lathe G-code table. A on every control (Fanuc B and C by parameter): G90/G92/G94 cycles, G50 coordinates. B: G77/G78/G79 cycles, G92 coordinates, G94/G95 feed. C: as B with G20/G21/G24 cycles.',
+  },
+  {
     id: 'decimal_input', label: 'Decimal input', options: [['increment', 'increment'], ['calculator', 'calculator']],
     help: 'A dimension without a point: X12345 is 12.345 mm (increment, Fanuc/YASNAC) or 12345 mm (calculator).',
   },
@@ -129,9 +143,13 @@ export function initSettings({ getSetup, change, replace }) {
   const parts = [];
   for (const def of CHOICES) {
     const select = document.createElement('select');
+    // A setting whose default is the control's: "as the control" leaves it
+    // out of the document (the core reads the control's default).
+    if (def.controlDefault) select.add(new Option('as the control', ''));
     for (const [value, text] of def.options) select.add(new Option(text, value));
     select.addEventListener('change', () => {
-      ctx.change((s) => (def.set ? def.set(s, select.value) : setSetting(s, def.id, select.value)), 'settings');
+      const value = def.controlDefault && select.value === '' ? undefined : select.value;
+      ctx.change((s) => (def.set ? def.set(s, value) : setSetting(s, def.id, value)), 'settings');
       renderSettings();
     });
     parts.push(field(def, select));
@@ -188,7 +206,7 @@ export function renderSettings({ json = true } = {}) {
   const setup = ctx.getSetup();
   const machine = machineOf(setup);
   for (const def of CHOICES) {
-    ctx.form.querySelector(`#set-${def.id}`).value = def.get ? def.get(setup) : settingOf(setup, def.id);
+    ctx.form.querySelector(`#set-${def.id}`).value = (def.get ? def.get(setup) : settingOf(setup, def.id)) ?? '';
   }
   const mirror = settingOf(setup, 'mirror') || [];
   for (const def of SWITCHES) {

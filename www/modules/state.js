@@ -3,12 +3,6 @@
 // their values and vectors, feed, spindle, and the sentence saying what the
 // offsets did. Everything is set as text (textContent), never as markup.
 
-const MODAL = [
-  ['motion', 'motion'], ['plane', 'plane'], ['distance', 'distance'], ['units', 'units'],
-  ['feed_mode', 'feed mode'], ['length', 'length offset'], ['cycle', 'cycle'],
-  ['return_level', 'return level'], ['work', 'work system'],
-];
-
 function decimals(units) {
   return units === 'inch' ? 4 : 3;
 }
@@ -49,7 +43,8 @@ export function stateRows(b) {
   const unit = u === 'inch' ? 'in' : 'mm';
   const rows = [
     ['Block', `line ${b.line}: ${b.text}`, 'block'],
-    ['Modal', MODAL.map(([key]) => b.modal?.[key]).filter(Boolean).join(' '), 'modal'],
+    // Every modal group the core reports, in its order (src/machine/modal.rs).
+    ['Modal', Object.values(b.modal ?? {}).filter(Boolean).join(' '), 'modal'],
     ['Programmed', `${position(b.programmed, u)} ${unit}`, 'programmed'],
     ['Actual', `${position(b.actual, u)} ${unit}`, 'actual'],
   ];

@@ -146,6 +146,7 @@ impl Machine {
                 ));
             }
             self.contour_codes(b, blk, cycle)?;
+            self.refuse_unmodelled(blk)?;
             let codes = blk.codes();
             if i == 0 && !matches!(codes.motion(), Some(Motion::Rapid | Motion::Linear)) {
                 return Err(self.mrc_error(

@@ -206,6 +206,7 @@ impl Machine {
                         Address::I,
                         Address::K,
                         Address::D,
+                        Address::A,
                     ],
                 )?;
                 self.t_for_cycle(b, out);

@@ -145,8 +145,23 @@ impl Machine {
     /// I(i) K(k) D(Δd) F(L) P(method)` (behaviour 15.12).
     pub(super) fn threading(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
         let cycle = Repetitive::Threading;
-        let t = self.mrc.thread.unwrap_or_default();
-        let one_block = b.has(Address::K) || b.has(Address::D) || b.has(Address::I);
+        let mut t = self.mrc.thread.unwrap_or_default();
+        let one_block = [Address::K, Address::D, Address::I, Address::A]
+            .iter()
+            .any(|a| b.has(*a));
+        if let Some(w) = b.get(Address::A) {
+            // Haas: the tool nose angle, 0 to 120 degrees.
+            if w.int() > 120 {
+                return Err(self.mrc_error(
+                    b,
+                    "mrc-value",
+                    "PS0062",
+                    cycle,
+                    format!("A{}: the tool angle is 0 to 120 degrees", w.int()),
+                ));
+            }
+            t.angle = w.int();
+        }
         let (taper, k, first, infeed) = if one_block {
             if b.has(Address::R) {
                 return Err(self.mrc_error(

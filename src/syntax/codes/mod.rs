@@ -16,7 +16,7 @@ pub use groups::{
 };
 pub use mcodes::MCode;
 
-use crate::setup::{MachineKind, Units};
+use crate::setup::{GCodeSystem, MachineKind, Setup, Units};
 
 /// A G-code modal group. Two codes of one group in a block is an error
 /// (behaviour 1). Numbers follow the Fanuc/YASNAC M tables where they exist.
@@ -115,6 +115,79 @@ impl std::fmt::Display for GCode {
     }
 }
 
+/// Which table turns a G number into a code: the mill's, or the lathe's in
+/// its G-code system (behaviour 7.18). One byte, compared once per G word.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CodeTable {
+    /// The mill (one table).
+    Mill,
+    /// The lathe, G-code system A.
+    LatheA,
+    /// The lathe, G-code system B.
+    LatheB,
+    /// The lathe, G-code system C.
+    LatheC,
+}
+
+impl CodeTable {
+    /// The mill's table.
+    pub const MILL: CodeTable = CodeTable::Mill;
+    /// The lathe's table in G-code system A.
+    pub const LATHE: CodeTable = CodeTable::LatheA;
+
+    /// The table a setup reads programs with.
+    pub fn of(setup: &Setup) -> CodeTable {
+        CodeTable::new(setup.machine, setup.settings.gcode_system())
+    }
+
+    /// The table of `machine`; `system` counts on the lathe only.
+    pub fn new(machine: MachineKind, system: GCodeSystem) -> CodeTable {
+        match (machine, system) {
+            (MachineKind::Mill, _) => CodeTable::Mill,
+            (MachineKind::Lathe, GCodeSystem::A) => CodeTable::LatheA,
+            (MachineKind::Lathe, GCodeSystem::B) => CodeTable::LatheB,
+            (MachineKind::Lathe, GCodeSystem::C) => CodeTable::LatheC,
+        }
+    }
+
+    /// Mill or lathe.
+    #[inline]
+    pub fn machine(self) -> MachineKind {
+        match self {
+            CodeTable::Mill => MachineKind::Mill,
+            CodeTable::LatheA | CodeTable::LatheB | CodeTable::LatheC => MachineKind::Lathe,
+        }
+    }
+
+    /// The lathe's G-code system (A on the mill, where it means nothing).
+    #[inline]
+    pub fn system(self) -> GCodeSystem {
+        match self {
+            CodeTable::Mill | CodeTable::LatheA => GCodeSystem::A,
+            CodeTable::LatheB => GCodeSystem::B,
+            CodeTable::LatheC => GCodeSystem::C,
+        }
+    }
+
+    /// True on the lathe in system B or C (G90/G91 are distance modes).
+    pub fn lathe_distance_codes(self) -> bool {
+        matches!(self, CodeTable::LatheB | CodeTable::LatheC)
+    }
+}
+
+impl Default for CodeTable {
+    fn default() -> Self {
+        CodeTable::MILL
+    }
+}
+
+impl From<MachineKind> for CodeTable {
+    /// The machine's table in G-code system A.
+    fn from(machine: MachineKind) -> CodeTable {
+        CodeTable::new(machine, GCodeSystem::A)
+    }
+}
+
 /// A G code resolved for the machine: the value of its modal group.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[allow(missing_docs)]
@@ -136,16 +209,18 @@ pub enum Code {
 impl Code {
     /// The code this machine models for `g`, or None (then [`g_group`] says
     /// why). The one table from numbers to codes: the mill and the lathe
-    /// (G-code system A) read some numbers differently. A new code is a
-    /// line here and a variant of its group's type.
+    /// read some numbers differently, and the lathe's G-code systems A, B
+    /// and C number some codes differently (Fanuc 0i-TF, "G code list":
+    /// behaviour 7.18). A new code is a line here and a variant of its
+    /// group's type.
     #[inline(always)]
-    pub fn of(machine: MachineKind, g: GCode) -> Option<Code> {
+    pub fn of(table: CodeTable, g: GCode) -> Option<Code> {
         use ArcDirection::{Ccw, Cw};
         use Code as C;
         if g.minor != 0 {
             return None;
         }
-        Some(match machine {
+        Some(match table.machine() {
             MachineKind::Mill => match g.major {
                 0 => C::Motion(Motion::Rapid),
                 1 => C::Motion(Motion::Linear),
@@ -189,35 +264,7 @@ impl Code {
                 99 => C::Return(ReturnLevel::R),
                 _ => return None,
             },
-            MachineKind::Lathe => match g.major {
-                0 => C::Motion(Motion::Rapid),
-                1 => C::Motion(Motion::Linear),
-                2 => C::Motion(Motion::Arc(Cw)),
-                3 => C::Motion(Motion::Arc(Ccw)),
-                4 => C::NonModal(NonModal::Dwell),
-                18 => C::Plane(Plane::ZX),
-                20 => C::Units(Units::Inch),
-                21 => C::Units(Units::Mm),
-                28 => C::NonModal(NonModal::ReferenceReturn),
-                40 => C::CutterCompensation(CutterCompensation::Cancel),
-                50 => C::NonModal(NonModal::SetCoordinates),
-                54..=59 => C::Work(work_system(g.major)),
-                70 => C::NonModal(NonModal::Repetitive(Repetitive::Finishing)),
-                71 => C::NonModal(NonModal::Repetitive(Repetitive::TurningStock)),
-                72 => C::NonModal(NonModal::Repetitive(Repetitive::FacingStock)),
-                73 => C::NonModal(NonModal::Repetitive(Repetitive::PatternRepeat)),
-                74 => C::NonModal(NonModal::Repetitive(Repetitive::FacePeck)),
-                75 => C::NonModal(NonModal::Repetitive(Repetitive::DiameterPeck)),
-                76 => C::NonModal(NonModal::Repetitive(Repetitive::Threading)),
-                90 => C::Motion(Motion::LatheCycle(LatheCycle::Turning)),
-                92 => C::Motion(Motion::LatheCycle(LatheCycle::Threading)),
-                94 => C::Motion(Motion::LatheCycle(LatheCycle::Facing)),
-                96 => C::SurfaceSpeed(SurfaceSpeed::Constant),
-                97 => C::SurfaceSpeed(SurfaceSpeed::Cancel),
-                98 => C::FeedMode(FeedMode::PerMinute),
-                99 => C::FeedMode(FeedMode::PerRevolution),
-                _ => return None,
-            },
+            MachineKind::Lathe => return lathe_code(table.system(), g.major),
         })
     }
 
@@ -240,8 +287,32 @@ impl Code {
         }
     }
 
-    /// The G code as the manuals write it on this machine.
-    pub fn gcode(self, machine: MachineKind) -> &'static str {
+    /// The G code as the manuals write it in this table.
+    pub fn gcode(self, table: CodeTable) -> &'static str {
+        let machine = table.machine();
+        if table.lathe_distance_codes() {
+            // System B and C spell some lathe codes otherwise (behaviour 7.18).
+            let c = table.system() == GCodeSystem::C;
+            match self {
+                Code::Motion(Motion::LatheCycle(cycle)) => {
+                    return match (cycle, c) {
+                        (LatheCycle::Turning, false) => "G77",
+                        (LatheCycle::Threading, false) => "G78",
+                        (LatheCycle::Facing, false) => "G79",
+                        (LatheCycle::Turning, true) => "G20",
+                        (LatheCycle::Threading, true) => "G21",
+                        (LatheCycle::Facing, true) => "G24",
+                    };
+                }
+                Code::NonModal(NonModal::Repetitive(r)) if c => return r.gcode_system_c(),
+                Code::Units(Units::Inch) if c => return "G70",
+                Code::Units(Units::Mm) if c => return "G71",
+                Code::NonModal(NonModal::SetCoordinates) => return "G92",
+                Code::FeedMode(FeedMode::PerMinute) => return "G94",
+                Code::FeedMode(FeedMode::PerRevolution) => return "G95",
+                _ => {}
+            }
+        }
         match self {
             Code::NonModal(c) => c.gcode(machine),
             Code::Motion(c) => c.gcode(),
@@ -257,6 +328,69 @@ impl Code {
             Code::SurfaceSpeed(c) => c.gcode(),
         }
     }
+}
+
+/// The lathe's table (behaviour 1.12, 7.18), out of line: the parser's reading
+/// of every block inlines the mill's table, and this one's size kept the
+/// reading of a block from being inlined (the `check` instruction count in
+/// docs/performance.md).
+#[inline(never)]
+fn lathe_code(system: GCodeSystem, major: u16) -> Option<Code> {
+    use ArcDirection::{Ccw, Cw};
+    use Code as C;
+    // The codes every system numbers alike.
+    match major {
+        0 => return Some(C::Motion(Motion::Rapid)),
+        1 => return Some(C::Motion(Motion::Linear)),
+        2 => return Some(C::Motion(Motion::Arc(Cw))),
+        3 => return Some(C::Motion(Motion::Arc(Ccw))),
+        4 => return Some(C::NonModal(NonModal::Dwell)),
+        18 => return Some(C::Plane(Plane::ZX)),
+        28 => return Some(C::NonModal(NonModal::ReferenceReturn)),
+        40 => return Some(C::CutterCompensation(CutterCompensation::Cancel)),
+        54..=59 => return Some(C::Work(work_system(major))),
+        96 => return Some(C::SurfaceSpeed(SurfaceSpeed::Constant)),
+        97 => return Some(C::SurfaceSpeed(SurfaceSpeed::Cancel)),
+        _ => {}
+    }
+    let turning = C::Motion(Motion::LatheCycle(LatheCycle::Turning));
+    let threading = C::Motion(Motion::LatheCycle(LatheCycle::Threading));
+    let facing = C::Motion(Motion::LatheCycle(LatheCycle::Facing));
+    let mrc = |r| C::NonModal(NonModal::Repetitive(r));
+    Some(match (system, major) {
+        (GCodeSystem::A | GCodeSystem::B, 20) | (GCodeSystem::C, 70) => C::Units(Units::Inch),
+        (GCodeSystem::A | GCodeSystem::B, 21) | (GCodeSystem::C, 71) => C::Units(Units::Mm),
+        (GCodeSystem::A, 50) | (GCodeSystem::B | GCodeSystem::C, 92) => {
+            C::NonModal(NonModal::SetCoordinates)
+        }
+        (GCodeSystem::A, 90) | (GCodeSystem::B, 77) | (GCodeSystem::C, 20) => turning,
+        (GCodeSystem::A, 92) | (GCodeSystem::B, 78) | (GCodeSystem::C, 21) => threading,
+        (GCodeSystem::A, 94) | (GCodeSystem::B, 79) | (GCodeSystem::C, 24) => facing,
+        (GCodeSystem::A, 98) | (GCodeSystem::B | GCodeSystem::C, 94) => {
+            C::FeedMode(FeedMode::PerMinute)
+        }
+        (GCodeSystem::A, 99) | (GCodeSystem::B | GCodeSystem::C, 95) => {
+            C::FeedMode(FeedMode::PerRevolution)
+        }
+        // The multiple repetitive cycles: G70–G76 in systems A and B,
+        // G72–G78 in C (Fanuc 0i-TF, "G code list"; behaviour 15.1).
+        (GCodeSystem::A | GCodeSystem::B, 70) | (GCodeSystem::C, 72) => mrc(Repetitive::Finishing),
+        (GCodeSystem::A | GCodeSystem::B, 71) | (GCodeSystem::C, 73) => {
+            mrc(Repetitive::TurningStock)
+        }
+        (GCodeSystem::A | GCodeSystem::B, 72) | (GCodeSystem::C, 74) => mrc(Repetitive::FacingStock),
+        (GCodeSystem::A | GCodeSystem::B, 73) | (GCodeSystem::C, 75) => {
+            mrc(Repetitive::PatternRepeat)
+        }
+        (GCodeSystem::A | GCodeSystem::B, 74) | (GCodeSystem::C, 76) => mrc(Repetitive::FacePeck),
+        (GCodeSystem::A | GCodeSystem::B, 75) | (GCodeSystem::C, 77) => {
+            mrc(Repetitive::DiameterPeck)
+        }
+        (GCodeSystem::A | GCodeSystem::B, 76) | (GCodeSystem::C, 78) => mrc(Repetitive::Threading),
+        (GCodeSystem::B | GCodeSystem::C, 90) => C::Distance(Distance::Absolute),
+        (GCodeSystem::B | GCodeSystem::C, 91) => C::Distance(Distance::Incremental),
+        _ => return None,
+    })
 }
 
 /// G54 … G59 from 54 … 59 (other numbers are not passed here).
@@ -359,18 +493,20 @@ impl Codes {
     );
 }
 
-/// The modal group of a G code this machine models, or why it does not.
-pub fn g_group(machine: MachineKind, g: GCode) -> Result<Group, String> {
+/// The modal group of a G code this table models, or why it does not.
+pub fn g_group(table: CodeTable, g: GCode) -> Result<Group, String> {
     if g.minor != 0 {
         return Err(format!("{g} is not supported by offsetlab"));
     }
-    Code::of(machine, g)
+    Code::of(table, g)
         .map(Code::group)
-        .ok_or_else(|| unsupported_reason(machine, g))
+        .ok_or_else(|| unsupported_reason(table, g))
 }
 
-fn unsupported_reason(machine: MachineKind, g: GCode) -> String {
+fn unsupported_reason(table: CodeTable, g: GCode) -> String {
+    let machine = table.machine();
     let lathe = machine == MachineKind::Lathe;
+    let system_b_or_c = table.lathe_distance_codes();
     let why = match g.major {
         41 | 42 if lathe => "tool nose radius compensation is not modelled",
         41 | 42 => {
@@ -380,6 +516,9 @@ fn unsupported_reason(machine: MachineKind, g: GCode) -> String {
         45..=48 if lathe => "the lathe uses T-code offsets, not G45–G48 (seed 004)",
         10 => "programmable data input is not supported; enter offsets in the offset table",
         32..=34 => "thread cutting blocks are not supported",
+        50 if lathe && system_b_or_c => {
+            "in G-code system B and C the coordinate system is set with G92 (setting gcode_system)"
+        }
         50 | 51 if !lathe => "scaling is not supported",
         53 => "machine coordinate positioning is not supported",
         65..=67 => "macro calls are not supported",
@@ -387,11 +526,18 @@ fn unsupported_reason(machine: MachineKind, g: GCode) -> String {
         15 | 16 => "polar coordinates are not supported",
         17 | 19 if lathe => "the lathe works in the ZX plane (G18) only",
         61..=64 => "cutting modes (exact stop, tapping, continuous) are not modelled",
-        91 if lathe => "the lathe (G-code system A) has no G91; U and W are the incremental axes",
+        91 if lathe => {
+            "the lathe in G-code system A has no G91: U and W are the incremental axes (setting gcode_system B or C makes G90/G91 the distance modes)"
+        }
         _ => "is not a G code offsetlab knows",
     };
     if why.starts_with("is not") {
-        format!("{g} {why} on the {}", machine.as_str())
+        let system = if system_b_or_c {
+            format!(" (G-code system {})", table.system().as_str())
+        } else {
+            String::new()
+        };
+        format!("{g} {why} on the {}{system}", machine.as_str())
     } else {
         format!("{g}: {why}")
     }
@@ -403,12 +549,9 @@ mod tests {
 
     #[test]
     fn lathe_g90_is_a_cycle_not_absolute_mode() {
+        assert_eq!(g_group(CodeTable::LATHE, GCode::new(90)), Ok(Group::Motion));
         assert_eq!(
-            g_group(MachineKind::Lathe, GCode::new(90)),
-            Ok(Group::Motion)
-        );
-        assert_eq!(
-            g_group(MachineKind::Mill, GCode::new(90)),
+            g_group(CodeTable::MILL, GCode::new(90)),
             Ok(Group::Distance)
         );
     }
@@ -417,47 +560,52 @@ mod tests {
     fn lathe_g90_is_a_turning_cycle_and_g92_sets_coordinates_on_the_mill() {
         let g = GCode::new;
         assert_eq!(
-            Code::of(MachineKind::Lathe, g(90)),
+            Code::of(CodeTable::LATHE, g(90)),
             Some(Code::Motion(Motion::LatheCycle(LatheCycle::Turning)))
         );
         assert_eq!(
-            Code::of(MachineKind::Mill, g(90)),
+            Code::of(CodeTable::MILL, g(90)),
             Some(Code::Distance(Distance::Absolute))
         );
         assert_eq!(
-            Code::of(MachineKind::Mill, g(92)),
+            Code::of(CodeTable::MILL, g(92)),
             Some(Code::NonModal(NonModal::SetCoordinates))
         );
         assert_eq!(
-            Code::of(MachineKind::Lathe, g(99)),
+            Code::of(CodeTable::LATHE, g(99)),
             Some(Code::FeedMode(FeedMode::PerRevolution))
         );
     }
 
     #[test]
     fn every_code_writes_back_the_number_it_was_read_from() {
-        for machine in [MachineKind::Mill, MachineKind::Lathe] {
+        let tables = [MachineKind::Mill, MachineKind::Lathe]
+            .into_iter()
+            .flat_map(|m| {
+                [GCodeSystem::A, GCodeSystem::B, GCodeSystem::C].map(|s| CodeTable::new(m, s))
+            });
+        for table in tables {
             for n in 0..=200 {
                 let g = GCode::new(n);
-                if let Some(code) = Code::of(machine, g) {
-                    assert_eq!(code.gcode(machine), g.to_string(), "{machine:?} {g}");
-                    assert_eq!(g_group(machine, g), Ok(code.group()));
+                if let Some(code) = Code::of(table, g) {
+                    assert_eq!(code.gcode(table), g.to_string(), "{table:?} {g}");
+                    assert_eq!(g_group(table, g), Ok(code.group()));
                     let mut codes = Codes::default();
                     codes.set(code, code.group());
                     assert_eq!(codes.each().collect::<Vec<_>>(), vec![code]);
                 }
             }
-            assert_eq!(Code::of(machine, GCode { major: 1, minor: 5 }), None);
+            assert_eq!(Code::of(table, GCode { major: 1, minor: 5 }), None);
         }
     }
 
     #[test]
     fn unsupported_codes_say_why() {
-        let e = g_group(MachineKind::Mill, GCode::new(41)).unwrap_err();
+        let e = g_group(CodeTable::MILL, GCode::new(41)).unwrap_err();
         assert!(e.contains("G45–G48"), "{e}");
-        let e = g_group(MachineKind::Mill, GCode::new(7)).unwrap_err();
+        let e = g_group(CodeTable::MILL, GCode::new(7)).unwrap_err();
         assert!(e.contains("G07 is not a G code"), "{e}");
-        let e = g_group(MachineKind::Mill, GCode { major: 5, minor: 1 }).unwrap_err();
+        let e = g_group(CodeTable::MILL, GCode { major: 5, minor: 1 }).unwrap_err();
         assert!(e.contains("G05.1"), "{e}");
     }
 }
