@@ -21,10 +21,11 @@ use offsetlab::{
 };
 use proptest::prelude::*;
 
-const FIXTURES: [&str; 5] = [
+const FIXTURES: [&str; 6] = [
     "contour_g45",
     "g54_g28",
     "inch_plate",
+    "lathe_cycles",
     "lathe_taper",
     "pocket_g43_drill",
 ];

@@ -147,15 +147,18 @@ impl Machine {
         let units = self.units();
         let (peck_axis, shift_axis) = if face { ("Z", "X") } else { ("X", "Z") };
         out.notes.push(format!(
-            "{}: at {} place{} {} {} apart along {shift_axis}, {} peck{} of {} along {peck_axis} each, back {} between pecks{}; then back to the start (behaviour 15.10)",
+            "{}: at {} place{} {} {} apart along {shift_axis}{}, {} peck{} of {} {}{} along {peck_axis} each, back {} between pecks{}; then back to the start (behaviour 15.10)",
             cycle.gcode(),
             shifts,
             if shifts == 1.0 { "" } else { "s" },
             step_name,
-            show(if face { 2.0 * step } else { step }, units),
+            show(step, units),
+            if face { " (a radius value)" } else { "" },
             pecks,
             if pecks == 1.0 { "" } else { "s" },
-            show(if face { peck } else { 2.0 * peck }, units),
+            peck_name,
+            show(peck, units),
+            if face { "" } else { " (a radius value)" },
             show(e, units),
             if relief > 0.0 {
                 format!(", relief {} at the bottom", show(relief, units))

@@ -306,10 +306,21 @@ impl Machine {
             .iter()
             .flat_map(|pc| [pc.a.1, pc.b.1])
             .fold(p_a, f64::min);
-        let levels = ((p_a - p_min) / depth - 1e-9).ceil().max(0.0);
-        if levels > MAX_PASSES as f64 {
-            return Err(self.passes_error(b, cycle, levels));
+        let steps = ((p_a - p_min) / depth - 1e-9).ceil().max(0.0);
+        if steps > MAX_PASSES as f64 {
+            return Err(self.passes_error(b, cycle, steps));
         }
+        // Δd apart from the start, and (type II) a level at each pocket's
+        // bottom too, so that no pocket is left to the finishing pass.
+        let mut depths: Vec<f64> = (1..=steps as usize)
+            .map(|k| (p_a - k as f64 * depth).max(p_min))
+            .collect();
+        if type_two {
+            depths.extend(pocket_bottoms(&pieces));
+            depths.sort_by(|x, y| y.total_cmp(x));
+            depths.dedup_by(|x, y| (*x - *y).abs() < 1e-6);
+        }
+        let levels = depths.len() as f64;
         let approach = match c.segs.first() {
             Some(s) if s.rapid => MoveKind::Rapid,
             _ => MoveKind::Feed,
@@ -323,11 +334,10 @@ impl Machine {
             *at = (q, p);
         };
         let mut cuts = 0usize;
-        for k in 1..=levels as usize {
+        for &level in &depths {
             if self.out_of_moves() {
                 break;
             }
-            let level = (p_a - k as f64 * depth).max(p_min);
             let stretches = intervals(frame, &pieces, level);
             let mut from_start = false;
             for &(first_piece, qa, qb) in &stretches {
@@ -664,6 +674,25 @@ impl Machine {
         self.after_contour(b, cycle, &c, (p, q), out);
         Ok(())
     }
+}
+
+/// The depths of the contour's pockets' bottoms: where it stops going down
+/// and goes up again (flat stretches between count as the bottom).
+fn pocket_bottoms(pieces: &[Piece]) -> Vec<f64> {
+    let mut out = Vec::new();
+    let mut going_down = false;
+    for pc in pieces.iter().skip(1) {
+        let dp = pc.b.1 - pc.a.1;
+        if dp < -EPS {
+            going_down = true;
+        } else if dp > EPS {
+            if going_down {
+                out.push(pc.a.1);
+            }
+            going_down = false;
+        }
+    }
+    out
 }
 
 /// The depth axis value (X diameter or Z) of the deepest level.
