@@ -254,7 +254,9 @@ impl Machine {
         let lathe = self.setup.machine == MachineKind::Lathe;
         // G76's A is its tool angle (behaviour 15.12).
         let g76 = b.codes().non_modal()
-            == Some(NonModal::Repetitive(crate::syntax::codes::Repetitive::Threading));
+            == Some(NonModal::Repetitive(
+                crate::syntax::codes::Repetitive::Threading,
+            ));
         let Some(w) = b
             .words
             .iter()

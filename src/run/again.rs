@@ -220,7 +220,8 @@ impl<'a> Plan<'a> {
         making.run.events =
             old.events[..old.events.partition_point(|e| e.block < c.index)].to_vec();
         making.checkpoints.lines = earlier.lines[..c.index as usize].to_vec();
-        making.checkpoints.reads = earlier.reads[..earlier.reads.partition_point(|r| r.index < c.index)].to_vec();
+        making.checkpoints.reads =
+            earlier.reads[..earlier.reads.partition_point(|r| r.index < c.index)].to_vec();
         let diagnostics = old
             .diagnostics
             .iter()

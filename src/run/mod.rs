@@ -248,7 +248,10 @@ impl<'t> Runner<'t> {
         }
         self.machine.moves_left = self.options.max_moves.saturating_sub(self.move_count);
         let program = &mut self.sequences;
-        match self.machine.execute(block, self.index, &mut self.out, program) {
+        match self
+            .machine
+            .execute(block, self.index, &mut self.out, program)
+        {
             Ok(flow) => {
                 self.index += 1;
                 self.move_count += self.out.moves.len();

@@ -154,9 +154,7 @@ impl Machine {
                     "mrc-first-block",
                     "PS0065",
                     cycle,
-                    format!(
-                        "the contour's first block N{p} (line {line}) must command G00 or G01"
-                    ),
+                    format!("the contour's first block N{p} (line {line}) must command G00 or G01"),
                 ));
             }
             if let Some(m) = codes.motion() {
@@ -236,7 +234,9 @@ impl Machine {
                 "mrc-shape",
                 "PS0325",
                 cycle,
-                format!("the contour block at line {line} has {what}, which a contour may not hold"),
+                format!(
+                    "the contour block at line {line} has {what}, which a contour may not hold"
+                ),
             )
         };
         let codes = blk.codes();
@@ -255,7 +255,9 @@ impl Machine {
             return Err(refuse(w.gcode().to_string()));
         }
         if blk.has(Address::T) {
-            return Err(refuse("a T code (a tool change inside a contour is not modelled)".into()));
+            return Err(refuse(
+                "a T code (a tool change inside a contour is not modelled)".into(),
+            ));
         }
         for m in blk.mcodes(self.setup.machine) {
             match m {

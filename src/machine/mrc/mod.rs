@@ -19,7 +19,7 @@ use super::program::ProgramText;
 use super::{Machine, MoveKind, Out};
 use crate::diag::Diagnostic;
 use crate::geometry::show;
-use crate::syntax::codes::Repetitive;
+use crate::syntax::codes::{Code, CodeTable, NonModal, Repetitive};
 use crate::syntax::{Address, Block};
 
 pub(super) use thread::ThreadData;
@@ -89,7 +89,8 @@ impl Machine {
 
     /// The cycle's G code as this program writes it.
     fn code_name(&self, cycle: Repetitive) -> &'static str {
-        cycle.gcode()
+        let code = Code::NonModal(NonModal::Repetitive(cycle));
+        code.gcode(CodeTable::of(&self.setup))
     }
 
     /// A block with G70–G76 (behaviour 15).
@@ -156,14 +157,20 @@ impl Machine {
                 self.words(b, cycle, &[Address::R])?;
                 let e = self.length(b, Address::R).unwrap_or(0.0);
                 if e < 0.0 {
-                    return Err(self.mrc_error(b, "mrc-value", "PS0062", cycle, "the return amount R(e) is not negative".into()));
+                    return Err(self.mrc_error(
+                        b,
+                        "mrc-value",
+                        "PS0062",
+                        cycle,
+                        "the return amount R(e) is not negative".into(),
+                    ));
                 }
                 self.mrc.peck_return = Some(e);
                 out.notes.push(format!(
                     "{}: return amount e = {} kept for the next {} (behaviour 15.10)",
-                    cycle.gcode(),
+                    self.code_name(cycle),
                     show(e, self.units()),
-                    cycle.gcode()
+                    self.code_name(cycle)
                 ));
                 Ok(())
             }
@@ -234,7 +241,7 @@ impl Machine {
                     w.span,
                     format!(
                         "{} in this form reads {} (and F, S, T): {} is not one of its words (Fanuc PS0066, an unavailable command in the cycle block)",
-                        cycle.gcode(),
+                        self.code_name(cycle),
                         list.join(" "),
                         w.address.letter()
                     ),
@@ -308,7 +315,7 @@ impl Machine {
         self.error(
             code,
             b.span,
-            format!("{}: {why} (Fanuc alarm {alarm})", cycle.gcode()),
+            format!("{}: {why} (Fanuc alarm {alarm})", self.code_name(cycle)),
         )
     }
 

@@ -14,10 +14,19 @@ impl Machine {
     /// G74 / G75 with their target: Fanuc's second block `X(U) Z(W) P(Δi)
     /// Q(Δk) R(Δd) F`, or the one block of the Series 10/11 format and
     /// Haas, `X Z I(Δi) K(Δk) D(Δd) F` (behaviour 15.10).
-    pub(super) fn peck(&mut self, b: &Block, cycle: Repetitive, out: &mut Out) -> Result<(), Diagnostic> {
+    pub(super) fn peck(
+        &mut self,
+        b: &Block,
+        cycle: Repetitive,
+        out: &mut Out,
+    ) -> Result<(), Diagnostic> {
         let face = cycle == Repetitive::FacePeck;
         let fanuc = b.has(Address::P) || b.has(Address::Q);
-        if fanuc && [Address::I, Address::K, Address::D].iter().any(|a| b.has(*a)) {
+        if fanuc
+            && [Address::I, Address::K, Address::D]
+                .iter()
+                .any(|a| b.has(*a))
+        {
             return Err(self.mrc_error(
                 b,
                 "mrc-word",
@@ -95,7 +104,7 @@ impl Machine {
                 b.span,
                 format!(
                     "{}: {pecks} pecks at each of {shifts} places; offsetlab makes at most {MAX_PASSES} in one cycle",
-                    cycle.gcode()
+                    self.code_name(cycle)
                 ),
             ));
         }
@@ -141,14 +150,20 @@ impl Machine {
             if relief > 0.0 && ds != 0.0 {
                 go(self, out, at, relieved, MoveKind::Rapid);
             }
-            go(self, out, p0, if ds != 0.0 { relieved } else { s }, MoveKind::Rapid);
+            go(
+                self,
+                out,
+                p0,
+                if ds != 0.0 { relieved } else { s },
+                MoveKind::Rapid,
+            );
         }
         self.cycle_move(out, start[0], start[1], MoveKind::Rapid);
         let units = self.units();
         let (peck_axis, shift_axis) = if face { ("Z", "X") } else { ("X", "Z") };
         out.notes.push(format!(
             "{}: at {} place{} {} {} apart along {shift_axis}{}, {} peck{} of {} {}{} along {peck_axis} each, back {} between pecks{}; then back to the start (behaviour 15.10)",
-            cycle.gcode(),
+            self.code_name(cycle),
             shifts,
             if shifts == 1.0 { "" } else { "s" },
             step_name,

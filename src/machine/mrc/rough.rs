@@ -221,8 +221,8 @@ impl Machine {
         let units = self.units();
         let say = |v: Option<f64>| v.map_or("unset".to_string(), |v| show(v, units));
         out.notes.push(format!(
-            "{}: depth of cut Δd {} and escape e {} kept for the G71 and G72 blocks that follow (behaviour 15.4)",
-            cycle.gcode(),
+            "{}: depth of cut Δd {} and escape e {} kept for the stock removal cycles that follow (behaviour 15.4)",
+            self.code_name(cycle),
             say(self.mrc.rough_depth),
             say(self.mrc.rough_retract)
         ));
@@ -253,7 +253,7 @@ impl Machine {
                 cycle,
                 format!(
                     "no positive depth of cut: give it in a first block ({} {}… R…) or with D",
-                    cycle.gcode(),
+                    self.code_name(cycle),
                     if facing { 'W' } else { 'U' }
                 ),
             ));
@@ -375,7 +375,7 @@ impl Machine {
                 go(self, out, &mut at, q_a, p0, MoveKind::Rapid);
             } else if (at.0 - q_a).abs() > EPS {
                 let q0 = at.0;
-                        go(self, out, &mut at, q0, p_a, MoveKind::Rapid);
+                go(self, out, &mut at, q0, p_a, MoveKind::Rapid);
                 go(self, out, &mut at, q_a, p_a, MoveKind::Rapid);
             }
             prev = level;
@@ -386,7 +386,7 @@ impl Machine {
         let units = self.units();
         out.notes.push(format!(
             "{} type {}: {} cut{} at {} levels Δd {} apart ({}) from {}{} toward {}{}, escape {} at 45° after each; then the contour N{p}–N{q} (lines {}–{}) shifted by the finishing allowance U{} W{}, and back to the start (behaviour 15.7)",
-            cycle.gcode(),
+            self.code_name(cycle),
             if type_two { "II" } else { "I" },
             cuts,
             if cuts == 1 { "" } else { "s" },
@@ -477,7 +477,14 @@ impl Machine {
 
     /// After G71–G73: the blocks of a contour that follows are passed over
     /// up to N`q` (behaviour 15.5).
-    fn after_contour(&mut self, b: &Block, cycle: Repetitive, c: &Contour, (p, q): (u32, u32), out: &mut Out) {
+    fn after_contour(
+        &mut self,
+        b: &Block,
+        cycle: Repetitive,
+        c: &Contour,
+        (p, q): (u32, u32),
+        out: &mut Out,
+    ) {
         if c.p_start > b.span.start {
             self.mrc.skip = Some(Skip {
                 cycle,
@@ -503,7 +510,7 @@ impl Machine {
             b.span,
             format!(
                 "{}: these values make {n} passes; offsetlab makes at most {MAX_PASSES} in one cycle",
-                cycle.gcode()
+                self.code_name(cycle)
             ),
         )
     }
@@ -586,7 +593,8 @@ impl Machine {
         self.cycle_move(out, c.start[0], c.start[1], MoveKind::Rapid);
         let units = self.units();
         out.notes.push(format!(
-            "G70: the contour N{p}–N{q} (lines {}–{}) once as programmed, with its own F and S, then back to the start X{} Z{} at rapid; the run goes on after this block (behaviour 15.11)",
+            "{}: the contour N{p}–N{q} (lines {}–{}) once as programmed, with its own F and S, then back to the start X{} Z{} at rapid; the run goes on after this block (behaviour 15.11)",
+            self.code_name(Repetitive::Finishing),
             c.p_line,
             c.q_line,
             show(c.start[0], units),
@@ -596,7 +604,11 @@ impl Machine {
     }
 
     /// `G73 U(Δi) W(Δk) R(d);` (behaviour 15.4).
-    pub(super) fn pattern_first_block(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+    pub(super) fn pattern_first_block(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+    ) -> Result<(), Diagnostic> {
         let (di, dk, d) = self.mrc.pattern.unwrap_or((0.0, 0.0, 0));
         let di = self.length(b, Address::U).unwrap_or(di);
         let dk = self.length(b, Address::W).unwrap_or(dk);
@@ -604,7 +616,8 @@ impl Machine {
         self.mrc.pattern = Some((di, dk, d));
         let units = self.units();
         out.notes.push(format!(
-            "G73: escape Δi {} (X, a radius value) and Δk {} (Z) over {d} divisions, kept for the G73 blocks that follow (behaviour 15.4)",
+            "{}: escape Δi {} (X, a radius value) and Δk {} (Z) over {d} divisions, kept for the pattern repeating cycles that follow (behaviour 15.4)",
+            self.code_name(Repetitive::PatternRepeat),
             show(di, units),
             show(dk, units)
         ));
@@ -663,7 +676,8 @@ impl Machine {
         }
         let units = self.units();
         out.notes.push(format!(
-            "G73: the contour N{p}–N{q} (lines {}–{}) {d} times, shifted first by X {} Z {} and last by the finishing allowance U{} W{}, back to the start after each (behaviour 15.9)",
+            "{}: the contour N{p}–N{q} (lines {}–{}) {d} times, shifted first by X {} Z {} and last by the finishing allowance U{} W{}, back to the start after each (behaviour 15.9)",
+            self.code_name(cycle),
             c.p_line,
             c.q_line,
             show(du + 2.0 * di, units),

@@ -97,7 +97,11 @@ pub(super) fn pass_depths(
 
 impl Machine {
     /// `G76 P(mmrraa) Q(Δdmin) R(d);` (behaviour 15.4).
-    pub(super) fn thread_first_block(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+    pub(super) fn thread_first_block(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+    ) -> Result<(), Diagnostic> {
         let cycle = Repetitive::Threading;
         let mut t = self.mrc.thread.unwrap_or_default();
         if let Some(p) = b.get(Address::P) {
@@ -122,14 +126,21 @@ impl Machine {
         }
         if let Some(r) = self.length(b, Address::R) {
             if r < 0.0 {
-                return Err(self.mrc_error(b, "mrc-value", "PS0062", cycle, "the finishing allowance R(d) is not negative".into()));
+                return Err(self.mrc_error(
+                    b,
+                    "mrc-value",
+                    "PS0062",
+                    cycle,
+                    "the finishing allowance R(d) is not negative".into(),
+                ));
             }
             t.allowance = r;
         }
         self.mrc.thread = Some(t);
         let units = self.units();
         out.notes.push(format!(
-            "G76: {} finishing pass{}, chamfer {} tenths of the lead, tool angle {}°, least depth {}, finishing allowance {}, kept for the G76 blocks that follow (behaviour 15.4)",
+            "{}: {} finishing pass{}, chamfer {} tenths of the lead, tool angle {}°, least depth {}, finishing allowance {}, kept for the threading cycles that follow (behaviour 15.4)",
+            self.code_name(cycle),
             t.finishing,
             if t.finishing == 1 { "" } else { "es" },
             t.chamfer,
@@ -229,14 +240,30 @@ impl Machine {
             ));
         }
         let Some(lead) = b.value(Address::F).or(self.state.feed).map(|f| self.mm(f)) else {
-            return Err(self.mrc_error(b, "mrc-value", "PS0062", cycle, "F, the thread lead, is missing".into()));
+            return Err(self.mrc_error(
+                b,
+                "mrc-value",
+                "PS0062",
+                cycle,
+                "F, the thread lead, is missing".into(),
+            ));
         };
         let constant_amount = matches!(infeed, Infeed::SingleAmount | Infeed::DoubleAmount);
-        let Some(depths) = pass_depths(k, first, t.min_cut, t.allowance, t.finishing, constant_amount) else {
+        let Some(depths) = pass_depths(
+            k,
+            first,
+            t.min_cut,
+            t.allowance,
+            t.finishing,
+            constant_amount,
+        ) else {
             return Err(self.error(
                 "mrc-passes",
                 b.span,
-                format!("G76: these values make more than {MAX_PASSES} passes"),
+                format!(
+                    "{}: these values make more than {MAX_PASSES} passes",
+                    self.code_name(cycle)
+                ),
             ));
         };
         let a = [self.state.programmed[0], self.state.programmed[2]];
@@ -300,7 +327,8 @@ impl Machine {
         let units = self.units();
         let list: Vec<String> = depths.iter().map(|d| show(*d, units)).collect();
         out.notes.push(format!(
-            "G76: {} passes from the crest X{} to the root X{} (height k {}, first depth Δd {}, {}), depths {}; lead {}{} (behaviour 15.12)",
+            "{}: {} passes from the crest X{} to the root X{} (height k {}, first depth Δd {}, {}), depths {}; lead {}{} (behaviour 15.12)",
+            self.code_name(cycle),
             depths.len(),
             show(2.0 * crest, units),
             show(end[0], units),
@@ -342,16 +370,20 @@ mod tests {
         // 0.7071 + 0.2 = 0.9071; 0.5·√4 = 1.0 is 0.093 deeper → 1.1071,
         // past k − d = 0.95 → 0.95; then two passes at k = 1.0.
         let d = pass_depths(1.0, 0.5, 0.2, 0.05, 2, true).unwrap();
-        let want = [0.5, 0.5 * 2f64.sqrt(), 0.5 * 2f64.sqrt() + 0.2, 0.95, 1.0, 1.0];
+        let want = [
+            0.5,
+            0.5 * 2f64.sqrt(),
+            0.5 * 2f64.sqrt() + 0.2,
+            0.95,
+            1.0,
+            1.0,
+        ];
         assert_eq!(d.len(), want.len(), "{d:?}");
         for (a, b) in d.iter().zip(want) {
             assert!((a - b).abs() < 1e-12, "{d:?}");
         }
         // Constant depth: n·Δd, 0.3, 0.6, 0.9, then 1.0, and one at k.
-        assert_eq!(
-            pass_depths(1.0, 0.3, 0.0, 0.0, 1, false).unwrap().len(),
-            5
-        );
+        assert_eq!(pass_depths(1.0, 0.3, 0.0, 0.0, 1, false).unwrap().len(), 5);
         assert!(pass_depths(1.0, 1e-9, 0.0, 0.0, 1, true).is_none());
     }
 }

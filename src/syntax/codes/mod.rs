@@ -378,7 +378,9 @@ fn lathe_code(system: GCodeSystem, major: u16) -> Option<Code> {
         (GCodeSystem::A | GCodeSystem::B, 71) | (GCodeSystem::C, 73) => {
             mrc(Repetitive::TurningStock)
         }
-        (GCodeSystem::A | GCodeSystem::B, 72) | (GCodeSystem::C, 74) => mrc(Repetitive::FacingStock),
+        (GCodeSystem::A | GCodeSystem::B, 72) | (GCodeSystem::C, 74) => {
+            mrc(Repetitive::FacingStock)
+        }
         (GCodeSystem::A | GCodeSystem::B, 73) | (GCodeSystem::C, 75) => {
             mrc(Repetitive::PatternRepeat)
         }
