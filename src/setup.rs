@@ -299,6 +299,11 @@ pub struct Settings {
     /// read it with [`Settings::depth_word`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub depth_word: Option<DepthWord>,
+    /// What the G00 blocks that end a G71/G72 contour going back toward
+    /// the start are (behaviour 7.20, 15.6); read it with
+    /// [`Settings::trailing_rapids`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub trailing_rapids: Option<TrailingRapids>,
 }
 
 impl Settings {
@@ -331,12 +336,37 @@ impl Settings {
     /// least input increments, without a decimal point (`D7000` = 7 mm).
     /// YASNAC (the seeds' control) writes it as Haas's YASNAC mode does:
     /// a length.
+    pub fn trailing_rapids(&self) -> TrailingRapids {
+        // Fanuc checks every block from P to Q (a shape that turns back is
+        // PS0064/PS0329); Haas school programs end the contour with `G00
+        // G40 Z0.1` back to the start and run: our reading of the Haas
+        // profile takes those rapids as the exit.
+        self.trailing_rapids.unwrap_or(match self.control {
+            Control::Haas => TrailingRapids::Exit,
+            Control::Yasnac | Control::Fanuc => TrailingRapids::Shape,
+        })
+    }
+
+    /// How the D word of the one-block G71/G72 (depth of cut), G74/G75
+    /// (relief) and G76 (first depth) reads: see [`DepthWord`].
     pub fn depth_word(&self) -> DepthWord {
         self.depth_word.unwrap_or(match self.control {
             Control::Fanuc => DepthWord::Increments,
             Control::Yasnac | Control::Haas => DepthWord::Dimension,
         })
     }
+}
+
+/// What the G00 blocks that end a G71/G72 contour going back along the
+/// cut toward the start are (behaviour 7.20).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum TrailingRapids {
+    /// Part of the shape, which then turns back: Fanuc alarm PS0064/PS0329.
+    Shape,
+    /// The tool's exit: the roughing stops at the last block before them,
+    /// with a warning.
+    Exit,
 }
 
 /// How D reads in a lathe G71/G72/G74–G76 block (behaviour 7.19).

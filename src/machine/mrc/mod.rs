@@ -29,6 +29,18 @@ pub(super) use thread::ThreadData;
 /// hang (behaviour 15.14).
 pub(super) const MAX_PASSES: usize = 10_000;
 
+/// +1, −1, or 0 within a ten-millionth of a millimetre (`f64::signum` is
+/// 1 for a zero).
+pub(super) fn sign(v: f64) -> f64 {
+    if v > 1e-7 {
+        1.0
+    } else if v < -1e-7 {
+        -1.0
+    } else {
+        0.0
+    }
+}
+
 /// What the G70–G76 first blocks set, kept until set again (Fanuc keeps
 /// them in parameters 5132–5143), and the contour passed over after a
 /// G71–G73 (behaviour 15.4, 15.5).

@@ -112,8 +112,8 @@ impl Machine {
             .mrc
             .peck_return
             .unwrap_or_else(|| self.setup.peck_retract_mm());
-        let dp = (p1 - p0).signum();
-        let ds = (s1 - s0).signum();
+        let dp = super::sign(p1 - p0);
+        let ds = super::sign(s1 - s0);
         self.take_offset();
         let go = |m: &mut Machine, out: &mut Out, p: f64, s: f64, kind| {
             let (x, z) = join(p, s);

@@ -264,12 +264,13 @@ impl Machine {
             .unwrap_or_else(|| self.setup.peck_retract_mm());
         let du = self.length(b, Address::U).unwrap_or(0.0);
         let dw = self.length(b, Address::W).unwrap_or(0.0);
-        let c = self.read_contour(b, cycle, (p, q), program, out)?;
+        let mut c = self.read_contour(b, cycle, (p, q), program, out)?;
         let type_two = if facing { c.p_x } else { c.p_z };
+        let (depth_axis, cut_axis) = if facing { (1, 0) } else { (0, 1) };
+        self.trailing_exit(b, cycle, &mut c, cut_axis, out);
         let a = c.start;
         let a1 = c.a_prime();
         let end = c.end();
-        let (depth_axis, cut_axis) = if facing { (1, 0) } else { (0, 1) };
         let (depth_name, cut_name) = if facing { ('Z', 'X') } else { ('X', 'Z') };
         if (a[depth_axis] - a1[depth_axis]).abs() < EPS {
             return Err(self.mrc_error(
@@ -293,8 +294,8 @@ impl Machine {
         }
         let frame = Frame {
             facing,
-            sq: (end[cut_axis] - a[cut_axis]).signum(),
-            sp: (a[depth_axis] - a1[depth_axis]).signum(),
+            sq: super::sign(end[cut_axis] - a[cut_axis]),
+            sp: super::sign(a[depth_axis] - a1[depth_axis]),
         };
         // The checks look at the contour as programmed; the passes cut the
         // one shifted by the finishing allowance.
@@ -405,6 +406,51 @@ impl Machine {
         ));
         self.after_contour(b, cycle, &c, (p, q), out);
         Ok(())
+    }
+
+    /// The G00 blocks that end the contour going back along the cut axis:
+    /// with setting `trailing_rapids` = `exit` (Haas) they are the tool's
+    /// exit and leave the shape, with a warning (behaviour 7.20).
+    fn trailing_exit(
+        &self,
+        b: &Block,
+        cycle: Repetitive,
+        c: &mut Contour,
+        cut_axis: usize,
+        out: &mut Out,
+    ) {
+        if self.setup.settings.trailing_rapids() != crate::setup::TrailingRapids::Exit {
+            return;
+        }
+        let rapids = c.segs.iter().rev().take_while(|s| s.rapid).count();
+        let keep = c.segs.len() - rapids;
+        if rapids == 0 || keep == 0 {
+            return;
+        }
+        let last = c.segs[keep - 1].to;
+        let forward = super::sign(last[cut_axis] - c.start[cut_axis]);
+        let back = c.segs[keep..]
+            .iter()
+            .scan(last, |at, s| {
+                let d = s.to[cut_axis] - at[cut_axis];
+                *at = s.to;
+                Some(d)
+            })
+            .any(|d| d * forward < -1e-9 || (forward == 0.0 && d.abs() > 1e-9));
+        if !back {
+            return;
+        }
+        c.segs.truncate(keep);
+        out.warnings.push(Diagnostic::warning(
+            "mrc-exit",
+            b.span,
+            format!(
+                "{}: the G00 block{} ending the contour go{} back toward the start: taken as the tool's exit, not the shape (setting trailing_rapids; Fanuc would stop with PS0064)",
+                self.code_name(cycle),
+                if rapids == 1 { "" } else { "s" },
+                if rapids == 1 { "es" } else { "" },
+            ),
+        ));
     }
 
     /// The contour checks of G71/G72 (behaviour 15.6): monotonic along the

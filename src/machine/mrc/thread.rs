@@ -282,8 +282,8 @@ impl Machine {
         }
         // From the root toward the start along X (outside: +1), and the
         // direction of the cut along Z.
-        let sx = (a[0] - end[0]).signum();
-        let sz = (end[1] - a[1]).signum();
+        let sx = super::sign(a[0] - end[0]);
+        let sz = super::sign(end[1] - a[1]);
         if sx == 0.0 || sz == 0.0 {
             return Err(self.mrc_error(
                 b,
