@@ -295,12 +295,12 @@ pub struct Settings {
     /// [`Settings::gcode_system`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub gcode_system: Option<GCodeSystem>,
-    /// How D reads in a lathe G71/G72/G74–G76 block (behaviour 7.19, 15.2);
+    /// How D reads in a lathe G71/G72/G74–G76 block (behaviour 7.20, 15.2);
     /// read it with [`Settings::depth_word`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub depth_word: Option<DepthWord>,
     /// What the G00 blocks that end a G71/G72 contour going back toward
-    /// the start are (behaviour 7.20, 15.6); read it with
+    /// the start are (behaviour 7.21, 15.6); read it with
     /// [`Settings::trailing_rapids`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub trailing_rapids: Option<TrailingRapids>,
@@ -329,7 +329,7 @@ impl Settings {
     }
 
     /// How the D word of the one-block G71/G72 (depth of cut), G74/G75
-    /// (relief) and G76 (first depth) reads (behaviour 7.19): Haas reads it
+    /// (relief) and G76 (first depth) reads (behaviour 7.20): Haas reads it
     /// as a length with a decimal point (Haas lathe operator's manual, G71:
     /// "D – depth of cut for each pass, positive radius", written `D0.05`);
     /// the Fanuc Series 10/11 tape format of the 0i-TF (parameter FCV) in
@@ -358,7 +358,7 @@ impl Settings {
 }
 
 /// What the G00 blocks that end a G71/G72 contour going back along the
-/// cut toward the start are (behaviour 7.20).
+/// cut toward the start are (behaviour 7.21).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum TrailingRapids {
@@ -369,7 +369,7 @@ pub enum TrailingRapids {
     Exit,
 }
 
-/// How D reads in a lathe G71/G72/G74–G76 block (behaviour 7.19).
+/// How D reads in a lathe G71/G72/G74–G76 block (behaviour 7.20).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum DepthWord {

@@ -400,7 +400,7 @@ fn behaviour15_12_g76_one_block_haas_reads_d_as_a_length() {
 }
 
 #[test]
-fn behaviour7_19_depth_word_reads_d_by_the_control() {
+fn behaviour7_20_depth_word_reads_d_by_the_control() {
     // Fanuc's Series 10/11 format: D in least increments, D800 = 0.8 mm;
     // a decimal point there is an error.
     let fanuc = with_control(lathe(&[]), Control::Fanuc);
@@ -583,5 +583,40 @@ fn behaviour15_11_g70_dwell_in_the_contour_is_an_event() {
         r.events
             .iter()
             .any(|e| e.block == 1 && e.kind == EventKind::Dwell { seconds: 0.5 })
+    );
+}
+
+#[test]
+fn behaviour7_21_trailing_rapids_are_the_exit_on_haas_and_the_shape_on_fanuc() {
+    // The contour ends `G00 Z2.` back at the start, as Haas school programs
+    // write it.
+    let text = "G00 X50. Z2.\nG71 P10 Q20 U0 W0 D5. F0.2\nN10 G00 X30. Z2.\nG01 Z-10.\nX50.\nN20 G00 Z2.\n";
+    let fanuc = with_control(lathe(&[]), Control::Fanuc);
+    let r = run(&text.replace("D5.", "D5000"), &fanuc);
+    assert_eq!(
+        r.diagnostics[0].code, "mrc-monotonic",
+        "{:#?}",
+        r.diagnostics
+    );
+    let r = ok(text, &with_control(lathe(&[]), Control::Haas));
+    assert_eq!(r.diagnostics[0].code, "mrc-exit");
+    // Without the exit: levels X40 and X30 to Z-10 (the wall at X30–X50),
+    // the shape X30 Z2 → Z-10 → X50, back to A.
+    same_path(
+        &path(&r, 1),
+        &[
+            (Rapid, 40.0, 2.0),
+            (Feed, 40.0, -10.0),
+            (Rapid, 41.0, -9.5),
+            (Rapid, 41.0, 2.0),
+            (Rapid, 30.0, 2.0),
+            (Feed, 30.0, -10.0),
+            (Rapid, 31.0, -9.5),
+            (Rapid, 31.0, 2.0),
+            (Rapid, 30.0, 2.0),
+            (Feed, 30.0, -10.0),
+            (Feed, 50.0, -10.0),
+            (Rapid, 50.0, 2.0),
+        ],
     );
 }

@@ -39,6 +39,16 @@ const CHOICES = [
     help: 'Lathe G-code table. A on every control (Fanuc B and C by parameter): G90/G92/G94 cycles, G50 coordinates. B: G77/G78/G79 cycles, G92 coordinates, G94/G95 feed. C: as B with G20/G21/G24 cycles.',
   },
   {
+    id: 'depth_word', label: 'D of G71–G76', machine: 'lathe', controlDefault: true,
+    options: [['dimension', 'a length (D0.5)'], ['increments', 'least increments (D500)']],
+    help: 'The one-block G71/G72 depth of cut, G74/G75 relief and G76 first depth: Haas and YASNAC write a length with a decimal point; Fanuc’s Series 10/11 format counts least increments, no decimal point.',
+  },
+  {
+    id: 'trailing_rapids', label: 'G00 ending a G71 contour', machine: 'lathe', controlDefault: true,
+    options: [['shape', 'part of the shape'], ['exit', 'the tool’s exit']],
+    help: 'G00 blocks that end a G71/G72 contour going back toward the start: Fanuc checks them as the shape (alarm PS0064); the Haas profile takes them as the exit, with a warning.',
+  },
+  {
     id: 'decimal_input', label: 'Decimal input', options: [['increment', 'increment'], ['calculator', 'calculator']],
     help: 'A dimension without a point: X12345 is 12.345 mm (increment, Fanuc/YASNAC) or 12345 mm (calculator).',
   },
