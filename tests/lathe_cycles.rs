@@ -600,19 +600,21 @@ fn behaviour7_21_trailing_rapids_are_the_exit_on_haas_and_the_shape_on_fanuc() {
     );
     let r = ok(text, &with_control(lathe(&[]), Control::Haas));
     assert_eq!(r.diagnostics[0].code, "mrc-exit");
-    // Without the exit: levels X40 and X30 to Z-10 (the wall at X30–X50),
-    // the shape X30 Z2 → Z-10 → X50, back to A.
+    // Without the exit: levels X40 and X30 (D5. radius from X50) to Z-10
+    // (the wall at X30–X50), escaping by e = 1 mm (no first block: setting
+    // peck_retract) — X +2.0, Z +1.0; then the shape X30 Z2 → Z-10 → X50,
+    // back to A.
     same_path(
         &path(&r, 1),
         &[
             (Rapid, 40.0, 2.0),
             (Feed, 40.0, -10.0),
-            (Rapid, 41.0, -9.5),
-            (Rapid, 41.0, 2.0),
+            (Rapid, 42.0, -9.0),
+            (Rapid, 42.0, 2.0),
             (Rapid, 30.0, 2.0),
             (Feed, 30.0, -10.0),
-            (Rapid, 31.0, -9.5),
-            (Rapid, 31.0, 2.0),
+            (Rapid, 32.0, -9.0),
+            (Rapid, 32.0, 2.0),
             (Rapid, 30.0, 2.0),
             (Feed, 30.0, -10.0),
             (Feed, 50.0, -10.0),
