@@ -69,7 +69,8 @@ pub(super) fn pass_depths(
     let mut depths = Vec::new();
     let mut prev = 0.0;
     let mut n = 1.0f64;
-    while rough_to > 0.0 {
+    // Each pass goes deeper; the count is bounded by MAX_PASSES below.
+    while rough_to > 0.0 && depths.len() <= MAX_PASSES {
         let mut d = if constant_amount {
             first * n.sqrt()
         } else {
@@ -85,9 +86,6 @@ pub(super) fn pass_depths(
         depths.push(d);
         prev = d;
         n += 1.0;
-        if depths.len() > MAX_PASSES {
-            return None;
-        }
     }
     for _ in 0..finishing {
         depths.push(k);
