@@ -9,23 +9,17 @@ use super::*;
 /// The addresses whose reading a G code later in the block can change: K
 /// (a mill canned cycle's repeat count) and P, Q, R, D, A (a lathe G70–G76
 /// block's words, behaviour 15.2).
-const CONTEXT_ADDRESSES: u32 = {
-    let a = [
-        Address::K,
-        Address::P,
-        Address::Q,
-        Address::R,
-        Address::D,
-        Address::A,
-    ];
-    let mut bits = 0;
-    let mut i = 0;
-    while i < a.len() {
-        bits |= 1 << (a[i] as u32);
-        i += 1;
-    }
-    bits
-};
+/// The words pushed so far are those before the G code: the block's own
+/// record of its addresses says whether any is one of these (no work per
+/// word; the `check` instruction count in docs/performance.md).
+const CONTEXT_ADDRESSES: [Address; 6] = [
+    Address::K,
+    Address::P,
+    Address::Q,
+    Address::R,
+    Address::D,
+    Address::A,
+];
 
 impl Blocks<'_> {
     /// Reads the words of a block from `i` (after any `/`) in one pass,
@@ -52,7 +46,6 @@ impl Blocks<'_> {
         // A G20/G21 after a dimension word, or a cycle code changing the
         // cycle state after a K word, changes how that word is read.
         let mut read_dimension = false;
-        let mut read_context = false;
         loop {
             i = lexer::skip_blanks(bytes, i);
             let Some(&c) = bytes.get(i) else { break };
@@ -82,7 +75,8 @@ impl Blocks<'_> {
                 let before = (self.units, self.in_cycle, self.mrc);
                 self.note_context(number);
                 if (read_dimension && self.units != before.0)
-                    || (read_context && (self.in_cycle, self.mrc) != (before.1, before.2))
+                    || ((self.in_cycle, self.mrc) != (before.1, before.2)
+                        && block.holds_any(&CONTEXT_ADDRESSES))
                 {
                     return None;
                 }
@@ -95,7 +89,6 @@ impl Blocks<'_> {
                 }
                 read_dimension = true;
             }
-            read_context |= address.bit() & CONTEXT_ADDRESSES != 0;
             checks.admit(self.table, block, word).ok()?;
             last = word_end;
             i = next;
