@@ -142,6 +142,18 @@ fn programs_of_many_batches_run_the_same_on_two_threads() {
 }
 
 #[test]
+fn look_ahead_across_batches_runs_the_same_on_two_threads() {
+    // Every block chamfers its end (behaviour 2.30), so the block that ends
+    // a batch reads the next batch's first block ahead: the text past the
+    // batch, read from the batch's end.
+    let square = "G91 G01 X10. ,C1. F100.\nY10. ,C1.\nX-10. ,C1.\nY-10. ,C1.\n";
+    let text = format!("{}G90 X20. Y0\n", square.repeat(1100));
+    let one = offsetlab::run(&text, &Setup::default());
+    assert!(!one.has_errors(), "{:?}", one.diagnostics.first());
+    assert_same(&text, &Setup::default(), "chamfered squares, 4401 blocks");
+}
+
+#[test]
 fn warnings_between_parse_diagnostics_keep_their_order_across_batches() {
     // A machine warning (R with I/J, H00) and parse diagnostics in every
     // few blocks, at the same places as each other: one thread reports a

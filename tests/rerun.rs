@@ -23,6 +23,7 @@ use proptest::prelude::*;
 
 const FIXTURES: [&str; 6] = [
     "contour_g45",
+    "corners",
     "g54_g28",
     "inch_plate",
     "lathe_cycles",

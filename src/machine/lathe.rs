@@ -5,7 +5,7 @@
 
 use super::modal::{ArcDirection, Distance, LatheCycle, Motion};
 use super::program::ProgramText;
-use super::{ArcRequest, Machine, Mark, Out};
+use super::{Ahead, ArcRequest, Machine, Mark, Out};
 use super::{EventKind, MoveKind};
 use crate::diag::Diagnostic;
 use crate::geometry::Xyz;
@@ -25,10 +25,15 @@ pub(crate) struct TurningData {
 }
 
 impl Machine {
+    /// A lathe block; `program` is its text, read again by sequence
+    /// number for G70–G73 (behaviour 15.3). `_ahead` gives the blocks after it to the rules that
+    /// need the next move (none yet: the chamfer words and tool nose radius
+    /// compensation are refused until they are modelled).
     pub(super) fn lathe_block(
         &mut self,
         b: &Block,
         out: &mut Out,
+        _ahead: &mut dyn Ahead,
         program: &mut dyn ProgramText,
     ) -> Result<(), Diagnostic> {
         if self.passing_over() {

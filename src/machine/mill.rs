@@ -5,8 +5,9 @@
 //! by them.
 
 use super::MoveKind;
+use super::corner::CORNER_WORDS;
 use super::modal::{ArcDirection, Distance, Motion, Plane};
-use super::{AXES, ArcRequest, Machine, Out};
+use super::{AXES, Ahead, ArcRequest, Machine, Out};
 use crate::diag::Diagnostic;
 use crate::geometry::Xyz;
 use crate::offsets::length::{LengthState, LengthWords, ZAfter};
@@ -31,10 +32,26 @@ const MOTION_WORDS: [Address; 10] = [
 ];
 
 impl Machine {
-    pub(super) fn mill_block(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+    /// A mill block. `ahead` gives the blocks after it to the rules that need
+    /// the next move: the chamfer and corner words `,C`/`,R` (`corner.rs`).
+    pub(super) fn mill_block(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+        ahead: &mut dyn Ahead,
+    ) -> Result<(), Diagnostic> {
         if b.holds_only(&MOTION_WORDS, &[Group::Motion]) {
             return self.motion_block(b, out);
         }
+        if b.holds_any(&CORNER_WORDS) {
+            return self.corner_block(b, out, ahead);
+        }
+        self.mill_general(b, out)
+    }
+
+    /// A mill block that is more than motion words (its codes, offsets,
+    /// cycles, G28/G92/G04), without look-ahead.
+    pub(super) fn mill_general(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
         self.refuse_unmodelled(b)?;
         let lathe_words = b.holds(Address::U) || b.holds(Address::W);
         for w in b.words.iter().filter(|_| lathe_words) {

@@ -9,6 +9,7 @@
 //! positions.
 
 pub mod arc;
+mod corner;
 mod cycles;
 mod lathe;
 mod mill;
@@ -30,6 +31,25 @@ use crate::syntax::{Address, Block};
 use arc::{ArcError, Circle};
 use modal::{Modal, WorkSystem};
 use std::sync::Arc;
+
+/// The blocks that run after the current one (look-ahead), for the rules
+/// that need the next move: the run reads them when a rule asks
+/// (`run/ahead.rs`), skipping the blocks the block skip switch passes over.
+pub(crate) trait Ahead {
+    /// The `k`-th block that runs after the current one (0: the next), as
+    /// parsed (a block with a parse error has `error` set), or None past the
+    /// program's end.
+    fn peek(&mut self, k: usize) -> Option<&Block>;
+}
+
+/// No blocks ahead: the program ends after the current block.
+pub(crate) struct NoneAhead;
+
+impl Ahead for NoneAhead {
+    fn peek(&mut self, _: usize) -> Option<&Block> {
+        None
+    }
+}
 
 /// What happens after a block.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -101,6 +121,19 @@ pub struct Machine {
     pub(crate) moves_left: usize,
     /// Set when a block ran out of `moves_left`.
     overflow: bool,
+    /// The last block cut a chamfer or corner rounding at `corner`: the
+    /// next block's words count from the corner (behaviour 2.32). A flag
+    /// the next block tests, and the corner beside it (the `check`
+    /// instruction count in docs/performance.md).
+    pub(super) corner_cut: bool,
+    /// The corner the last block's chamfer or rounding cut.
+    pub(super) corner: Xyz,
+    /// While a block after a corner runs from the corner: where the tool
+    /// really starts (the chamfer's or the round's end).
+    pub(super) corner_end: Option<Xyz>,
+    /// This machine is a copy running the next block to find its direction
+    /// (behaviour 2.31): its own chamfers are not cut.
+    reading_ahead: bool,
 }
 
 const AXES: [(Address, char); 3] = [(Address::X, 'X'), (Address::Y, 'Y'), (Address::Z, 'Z')];
@@ -150,6 +183,10 @@ impl Machine {
             span: Span::default(),
             moves_left: usize::MAX,
             overflow: false,
+            corner_cut: false,
+            corner: [0.0; 3],
+            corner_end: None,
+            reading_ahead: false,
         }
     }
 
@@ -185,7 +222,9 @@ impl Machine {
                     m.cycle,
                     m.turning,
                     m.mrc,
-                    m.feed_warned
+                    m.feed_warned,
+                    m.corner_cut,
+                    m.corner
                 )
             )
         }
@@ -202,15 +241,21 @@ impl Machine {
         block: &Block,
         index: u32,
         out: &mut Out,
+        ahead: &mut dyn Ahead,
         program: &mut dyn program::ProgramText,
     ) -> Result<Flow, Diagnostic> {
         self.index = index;
         self.line = block.span.line;
         self.span = block.span;
         self.overflow = false;
+        let after_corner = self.corner_cut.then(|| self.run_from_corner());
         match self.setup.machine {
-            MachineKind::Mill => self.mill_block(block, out)?,
-            MachineKind::Lathe => self.lathe_block(block, out, program)?,
+            MachineKind::Mill => self.mill_block(block, out, ahead)?,
+            MachineKind::Lathe => self.lathe_block(block, out, ahead, program)?,
+        }
+        if let Some(end) = after_corner {
+            Self::start_at_corner_end(out, end);
+            self.corner_end = None;
         }
         if self.overflow {
             return Err(self.error(
@@ -252,15 +297,19 @@ impl Machine {
             return Ok(());
         }
         let lathe = self.setup.machine == MachineKind::Lathe;
-        // G76's A is its tool angle (behaviour 15.12).
+        // The mill cuts the corner words (`corner.rs`); G76's A is its tool
+        // angle (behaviour 15.12).
         let g76 = b.codes().non_modal()
             == Some(NonModal::Repetitive(
                 crate::syntax::codes::Repetitive::Threading,
             ));
+        let modelled = |a: Address| {
+            (!lathe && matches!(a, Address::CommaC | Address::CommaR)) || (g76 && a == Address::A)
+        };
         let Some(w) = b
             .words
             .iter()
-            .find(|w| UNMODELLED.contains(&w.address) && !(g76 && w.address == Address::A))
+            .find(|w| UNMODELLED.contains(&w.address) && !modelled(w.address))
         else {
             return Ok(());
         };

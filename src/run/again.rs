@@ -177,9 +177,10 @@ impl<'a> Plan<'a> {
         }
         // The last checkpoint before the edit: the parser there had read
         // the text before it and looked one character further at most (the
-        // LF after a CR). The first one, at the start, always qualifies.
+        // LF after a CR), and no block before it read ahead into the edit
+        // (its horizon). The first one, at the start, always qualifies.
         let resume = checkpoints
-            .partition_point(|c| c.parser.offset() == 0 || c.parser.offset() < before)
+            .partition_point(|c| c.parser.offset() == 0 || c.horizon < before)
             .checked_sub(1)?;
         let limited = |d: &Diagnostic| {
             matches!(
@@ -415,6 +416,7 @@ impl Checkpoint {
             index: shift(i64::from(self.index), d.blocks) as u32,
             move_count: shift(self.move_count as i64, d.moves) as usize,
             parser: self.parser.shifted(d.bytes, d.lines),
+            horizon: shift(self.horizon as i64, d.bytes) as usize,
             // The machine's own note of its place is set by the next block.
             machine: self.machine.clone(),
             segment: self.segment.clone(),

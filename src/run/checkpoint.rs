@@ -65,6 +65,11 @@ pub struct Checkpoint {
     /// Moves made before this point.
     pub move_count: usize,
     pub(super) parser: Resume,
+    /// The furthest byte of the text the machine's state here follows from:
+    /// the parser's place, or further when a block before read ahead
+    /// (`run/ahead.rs`). A run made again resumes only where this is before
+    /// the edit.
+    pub(super) horizon: usize,
     pub(super) machine: Machine,
     /// What the blocks from here to the next checkpoint add to the run's
     /// totals, so that a run made again after an edit
@@ -77,8 +82,17 @@ pub struct Checkpoint {
 /// place (the machine state there follows from the program).
 impl PartialEq for Checkpoint {
     fn eq(&self, other: &Self) -> bool {
-        (self.index, self.move_count, self.parser.offset())
-            == (other.index, other.move_count, other.parser.offset())
+        (
+            self.index,
+            self.move_count,
+            self.parser.offset(),
+            self.horizon,
+        ) == (
+            other.index,
+            other.move_count,
+            other.parser.offset(),
+            other.horizon,
+        )
     }
 }
 

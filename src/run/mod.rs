@@ -13,6 +13,7 @@
 use std::sync::Arc;
 
 pub(crate) mod again;
+mod ahead;
 mod checkpoint;
 #[cfg(not(target_arch = "wasm32"))]
 pub(crate) mod pipeline;
@@ -22,7 +23,8 @@ use checkpoint::Totals;
 pub use checkpoint::{Checkpoint, Checkpoints, Read};
 
 use crate::diag::{self, Diagnostic};
-use crate::machine::{Flow, Machine, Out};
+use crate::machine::program::ProgramText;
+use crate::machine::{Ahead, Flow, Machine, Out};
 use crate::report::{BlockReport, End, Event, Run, include_move};
 use crate::setup::{MachineKind, Setup};
 use crate::syntax::{Address, Block, Blocks, ParseOptions};
@@ -92,6 +94,8 @@ struct Runner<'t> {
     /// The text again, for the blocks that read it by sequence number
     /// (behaviour 15.3).
     sequences: sequence::Sequences<'t>,
+    /// The blocks after the running one, when the machine asks.
+    ahead: ahead::Reader<'t>,
     machine: Machine,
     block: Block,
     out: Out,
@@ -127,22 +131,26 @@ impl<'t> Runner<'t> {
         diagnostics: Vec<Diagnostic>,
     ) -> Runner<'t> {
         let parser = Blocks::resume_after(text, ParseOptions::from(setup), at.parser, diagnostics);
-        Runner {
+        let mut r = Runner {
             index: at.index,
             move_count: at.move_count,
             ..Runner::at(text, parser, at.machine.clone(), setup, options)
-        }
+        };
+        r.ahead.horizon = at.horizon;
+        r
     }
 
     /// Resumes at a checkpoint, whose machine already holds the setup (a
     /// report made again for the page does not copy the setup).
     fn resume(text: &'t str, setup: &Setup, options: RunOptions, at: &Checkpoint) -> Runner<'t> {
         let parser = Blocks::resume(text, ParseOptions::from(setup), at.parser);
-        Runner {
+        let mut r = Runner {
             index: at.index,
             move_count: at.move_count,
             ..Runner::at(text, parser, at.machine.clone(), setup, options)
-        }
+        };
+        r.ahead.horizon = at.horizon;
+        r
     }
 
     fn at(
@@ -155,6 +163,7 @@ impl<'t> Runner<'t> {
         Runner {
             parser,
             sequences: sequence::Sequences::new(text, ParseOptions::from(setup)),
+            ahead: ahead::Reader::new(setup.settings.block_skip),
             machine,
             block: Block::default(),
             out: Out::default(),
@@ -204,6 +213,7 @@ impl<'t> Runner<'t> {
             index: self.index,
             move_count: self.move_count,
             parser: self.parser.resume_point(),
+            horizon: self.ahead.horizon.max(self.parser.offset()),
             machine: self.machine.clone(),
             segment: Default::default(),
         }
@@ -214,54 +224,67 @@ impl<'t> Runner<'t> {
         if !self.parser.next_into(&mut self.block) {
             return None;
         }
-        self.execute()
+        let mut ahead = self.ahead.at(self.index, ahead::From::Parser(&self.parser));
+        execute(
+            &self.block,
+            &mut self.machine,
+            &mut self.out,
+            &self.options,
+            (&mut self.index, &mut self.move_count, &mut self.stopped),
+            self.block_skip,
+            (&mut ahead, &mut self.sequences),
+        )
     }
+}
 
-    /// Runs the block just read into `self.block`; always Some (the
-    /// answer of [`Runner::step`], made in place: a `Step` made here and
-    /// wrapped there was copied every block; the `check` instruction count
-    /// in docs/performance.md guards it).
-    #[inline(always)]
-    fn execute(&mut self) -> Option<Step> {
-        let block = &self.block;
-        if self.stopped {
-            return Some(Step::Passed);
+/// Runs the block just read (a runner's `block`, with the runner's other
+/// parts: split so that look-ahead may borrow the parser meanwhile);
+/// always Some (the answer of [`Runner::step`], made in place: a `Step`
+/// made here and wrapped there was copied every block; the `check`
+/// instruction count in docs/performance.md guards it).
+#[inline(always)]
+fn execute(
+    block: &Block,
+    machine: &mut Machine,
+    out: &mut Out,
+    options: &RunOptions,
+    (index, move_count, stopped): (&mut u32, &mut usize, &mut bool),
+    block_skip: bool,
+    (ahead, program): (&mut dyn Ahead, &mut dyn ProgramText),
+) -> Option<Step> {
+    if *stopped {
+        return Some(Step::Passed);
+    }
+    if block.error {
+        *stopped = true;
+        return Some(Step::Stopped(None));
+    }
+    if block.skip && block_skip {
+        return Some(Step::Passed);
+    }
+    out.clear();
+    if *index as usize >= options.max_blocks {
+        *stopped = true;
+        return Some(Step::Stopped(Some(Diagnostic::error(
+            "too-many-blocks",
+            block.span,
+            format!(
+                "the program runs more than {} blocks (see the limits in the README); the run stops here",
+                options.max_blocks
+            ),
+        ))));
+    }
+    machine.moves_left = options.max_moves.saturating_sub(*move_count);
+    match machine.execute(block, *index, out, ahead, program) {
+        Ok(flow) => {
+            *index += 1;
+            *move_count += out.moves.len();
+            *stopped = flow == Flow::End;
+            Some(Step::Ran(flow))
         }
-        if block.error {
-            self.stopped = true;
-            return Some(Step::Stopped(None));
-        }
-        if block.skip && self.block_skip {
-            return Some(Step::Passed);
-        }
-        self.out.clear();
-        if self.index as usize >= self.options.max_blocks {
-            self.stopped = true;
-            return Some(Step::Stopped(Some(Diagnostic::error(
-                "too-many-blocks",
-                block.span,
-                format!(
-                    "the program runs more than {} blocks (see the limits in the README); the run stops here",
-                    self.options.max_blocks
-                ),
-            ))));
-        }
-        self.machine.moves_left = self.options.max_moves.saturating_sub(self.move_count);
-        let program = &mut self.sequences;
-        match self
-            .machine
-            .execute(block, self.index, &mut self.out, program)
-        {
-            Ok(flow) => {
-                self.index += 1;
-                self.move_count += self.out.moves.len();
-                self.stopped = flow == Flow::End;
-                Some(Step::Ran(flow))
-            }
-            Err(d) => {
-                self.stopped = true;
-                Some(Step::Stopped(Some(d)))
-            }
+        Err(d) => {
+            *stopped = true;
+            Some(Step::Stopped(Some(d)))
         }
     }
 }

@@ -10,13 +10,14 @@
 use std::sync::Arc;
 use std::sync::mpsc::{channel, sync_channel};
 
+use super::ahead::From;
 use super::checkpoint::Totals;
 use super::{RunOptions, Runner, Step, close, counts, fresh, stop};
 use crate::diag::Diagnostic;
 use crate::machine::Machine;
 use crate::report::Run;
 use crate::setup::Setup;
-use crate::syntax::{Block, Blocks, MAX_DIAGNOSTICS, ParseOptions, check_size};
+use crate::syntax::{Block, Blocks, MAX_DIAGNOSTICS, ParseOptions, Resume, check_size};
 
 /// Programs shorter than this run on one thread: a thread and its hand-overs
 /// cost more than they save on a program that runs in a few milliseconds.
@@ -38,6 +39,9 @@ struct Batch {
     /// Per block read, how many diagnostics the parser had reported by its
     /// end: the machine's warnings about the block come after these.
     reported: Vec<u32>,
+    /// The parser's place after the last block read, for look-ahead past
+    /// the batch (`run/ahead.rs`); None when the text ends in the batch.
+    then: Option<Resume>,
 }
 
 /// The run [`super::run_with`] makes, on two threads when `text` is at
@@ -80,6 +84,7 @@ fn on_two_threads(text: &str, setup: &Setup, options: RunOptions) -> Option<Run>
                 blocks: Vec::new(),
                 len: 0,
                 reported: Vec::with_capacity(BATCH),
+                then: None,
             };
             give_back.send(batch).ok()?;
         }
@@ -104,6 +109,7 @@ fn on_two_threads(text: &str, setup: &Setup, options: RunOptions) -> Option<Run>
                     batch.reported.push(parser.diagnostics().len() as u32);
                 }
                 let last = batch.len < BATCH;
+                batch.then = (!last).then(|| parser.resume_point());
                 if full.send(batch).is_err() || last {
                     break;
                 }
@@ -127,11 +133,28 @@ fn on_two_threads(text: &str, setup: &Setup, options: RunOptions) -> Option<Run>
         );
         let mut run_diagnostics: Vec<Diagnostic> = Vec::new();
         let mut warnings: Vec<(u32, Diagnostic)> = Vec::new();
+        let options_parse = ParseOptions::from(setup);
         for mut batch in filled.iter() {
-            for (block, &reported) in batch.blocks[..batch.len].iter_mut().zip(&batch.reported) {
-                std::mem::swap(&mut r.block, block);
+            let then = batch.then.map(|at| (text, options_parse, at));
+            for i in 0..batch.len {
+                let reported = batch.reported[i];
+                // The block runs from the runner (swapped in, not copied);
+                // the rest of the batch is what follows it.
+                let (head, rest) = batch.blocks[..batch.len].split_at_mut(i + 1);
+                std::mem::swap(&mut r.block, &mut head[i]);
                 let (index, first_move) = (r.index, r.move_count);
-                match r.execute() {
+                let from = From::Read { blocks: rest, then };
+                let mut ahead = r.ahead.at(index, from);
+                let step = super::execute(
+                    &r.block,
+                    &mut r.machine,
+                    &mut r.out,
+                    &r.options,
+                    (&mut r.index, &mut r.move_count, &mut r.stopped),
+                    r.block_skip,
+                    (&mut ahead, &mut r.sequences),
+                );
+                match step {
                     Some(Step::Ran(flow)) => {
                         let ran = (index, first_move, flow);
                         r.account(
@@ -148,7 +171,7 @@ fn on_two_threads(text: &str, setup: &Setup, options: RunOptions) -> Option<Run>
                     }
                     Some(Step::Passed) | None => {}
                 }
-                std::mem::swap(&mut r.block, block);
+                std::mem::swap(&mut r.block, &mut batch.blocks[i]);
             }
             // Gone only once the parser is done.
             let _ = give_back.send(batch);

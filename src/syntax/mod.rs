@@ -396,6 +396,13 @@ impl<'a> Blocks<'a> {
         }
     }
 
+    /// A second parser standing where this one stands, with no diagnostics
+    /// (look-ahead reads the blocks after the running one with it; the run's
+    /// parser reads and reports them when they run).
+    pub fn fork(&self) -> Blocks<'a> {
+        Blocks::resume(self.text, self.options, self.resume_point())
+    }
+
     /// [`Blocks::resume`] with the diagnostics reported before `at` (they
     /// count against [`MAX_DIAGNOSTICS`] as they did then).
     pub fn resume_after(

@@ -7,7 +7,8 @@
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 import {
-  countDifferences, decode, loadExample, stateText, useBrowser, waitForRun, waitForView,
+  countDifferences, decode, loadExample, shoot, stateText, typeProgram, useBrowser, waitForRun,
+  waitForView,
 } from './harness.mjs';
 
 const { withPage } = useBrowser();
@@ -160,6 +161,43 @@ describe('settings', () => {
       await page.getByLabel('Units').selectOption('inch');
       await waitForRun(page);
       assert.match(await page.locator('#offsets-units').textContent(), /^\(in/);
+    });
+  });
+
+  test('the control profile gives the defaults of the settings left “as the control”', async () => {
+    await withPage(async (page) => {
+      // Behaviour 1.11, 7.17, 12: two codes of group 01 in a block.
+      await typeProgram(page, 'G00 G01 X10. F100.');
+      const codes = () => page.locator('#diagnostics .code').allTextContents();
+      assert.match((await codes()).join(' '), /modal-conflict/);
+      assert.match(await page.locator('#summary').textContent(), /1 errors?/);
+      const help = await page.locator('[data-setting="same_group_codes"] .help').textContent();
+      assert.match(help, /YASNAC/);
+      assert.match(help, /Fanuc and Haas/);
+      assert.equal(await page.getByLabel('Two G codes of a group').inputValue(), '');
+      await page.getByLabel('Control').selectOption('fanuc');
+      await waitForRun(page);
+      assert.deepEqual((await setupJson(page)).settings, { control: 'fanuc' });
+      assert.match(await page.locator('#summary').textContent(), /0 errors · 1 warning/);
+      await shoot(page, 'settings-control-fanuc');
+      // A setting set wins over the profile; "as the control" leaves it out again.
+      await page.getByLabel('Two G codes of a group').selectOption('error');
+      await waitForRun(page);
+      assert.deepEqual((await setupJson(page)).settings, { control: 'fanuc', same_group_codes: 'error' });
+      assert.match(await page.locator('#summary').textContent(), /1 errors?/);
+      await page.getByLabel('Two G codes of a group').selectOption('');
+      await waitForRun(page);
+      assert.deepEqual((await setupJson(page)).settings, { control: 'fanuc' });
+      // The lathe's G-code system: B makes G90/G91 the distance codes.
+      assert.equal(await page.getByLabel('G-code system').isVisible(), false);
+      await page.getByLabel('Machine').selectOption('lathe');
+      await page.getByLabel('G-code system').selectOption('B');
+      await typeProgram(page, 'G92 X100. Z50.\nG00 G91 X-20. W-5.');
+      assert.match(await page.locator('#summary').textContent(), /0 errors/);
+      await page.locator('#step-last').click();
+      await waitForView(page, (v) => v.step === 1);
+      assert.match(await stateText(page, 'modal'), /G91/);
+      assert.match(await stateText(page, 'actual'), /^X80\.000 Z45\.000/);
     });
   });
 

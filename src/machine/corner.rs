@@ -1,0 +1,417 @@
+//! Chamfer and corner rounding at the end of a G01 block on the mill, the
+//! comma words `,C` and `,R` (behaviour 2.30–2.34; Fanuc 0i-MF "optional
+//! angle chamfering and corner R"): the control reads the next block, and
+//! between the two straight moves it cuts the corner with a line (`,C`: the
+//! distance from the corner to each end of the chamfer) or a tangent arc
+//! (`,R`: its radius). The inserted move belongs to the block that carries
+//! the word, so a single block stop is at its end; the next block's words
+//! still count from the corner as written.
+
+use super::arc::P2;
+use super::{Ahead, ArcRequest, Machine, Mark, MoveKind, NoneAhead, Out};
+use crate::diag::Diagnostic;
+use crate::geometry::{Xyz, show};
+use crate::syntax::codes::{Motion, NonModal};
+use crate::syntax::{Address, Block};
+
+/// The comma words this file handles.
+pub(super) const CORNER_WORDS: [Address; 2] = [Address::CommaC, Address::CommaR];
+
+/// What a `,C` or `,R` word asks for.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Corner {
+    /// `,C`: a straight chamfer this far from the corner along each move.
+    Chamfer(f64),
+    /// `,R`: a tangent arc of this radius.
+    Round(f64),
+}
+
+/// A plane vector's length.
+fn len(v: P2) -> f64 {
+    v[0].hypot(v[1])
+}
+
+impl Machine {
+    /// A mill block with `,C` or `,R` (behaviour 2.30): runs the block to its
+    /// corner, reads the next block's move, and inserts the chamfer or the
+    /// corner arc.
+    pub(super) fn corner_block(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+        ahead: &mut dyn Ahead,
+    ) -> Result<(), Diagnostic> {
+        let corner = self.corner_word(b)?;
+        // A block run only to find the next move's direction for an
+        // earlier corner makes its own move as written (behaviour 2.31).
+        if self.reading_ahead {
+            return self.mill_general(b, out);
+        }
+        let word = b.get(Address::CommaC).or_else(|| b.get(Address::CommaR));
+        let word_span = word.map_or(b.span, |w| w.span);
+        let letter = word.map_or(",C", |w| w.address.letter());
+        let start = self.state.programmed;
+        let moves_before = out.moves.len();
+        self.mill_general(b, out)?;
+        // The word in the units the block's G20/G21 left.
+        let corner = match corner {
+            Corner::Chamfer(c) => Corner::Chamfer(self.mm(c)),
+            Corner::Round(r) => Corner::Round(self.mm(r)),
+        };
+        match self.state.modal.motion {
+            Motion::Linear => {}
+            Motion::Arc(_) => {
+                return Err(self.error(
+                    "corner-not-modelled",
+                    word_span,
+                    format!(
+                        "{letter}: a chamfer or corner rounding at the end of an arc is not modelled yet (only between two G01 moves)"
+                    ),
+                ));
+            }
+            Motion::Rapid | Motion::LatheCycle(_) => {
+                return Err(self.error(
+                    "corner-motion",
+                    word_span,
+                    format!(
+                        "{letter}: a chamfer or corner rounding is cut at feed, at the end of a G01 block, not in {}",
+                        self.state.modal.motion.gcode()
+                    ),
+                ));
+            }
+        }
+        let (ia, ib, normal) = self.state.modal.plane.axes();
+        let plane = self.state.modal.plane.gcode();
+        let at = self.state.programmed;
+        let made: Vec<usize> = (moves_before..out.moves.len()).collect();
+        let in_plane_only = at[normal] == start[normal]
+            && made.len() == 1
+            && out.moves[made[0]].kind == MoveKind::Feed
+            && out.moves[made[0]].to[normal] == out.moves[made[0]].from[normal];
+        // The move as made: from the end of a corner the block before cut,
+        // if it did (both corners must fit on it).
+        let made_from = self.corner_end.unwrap_or(start);
+        let u = [at[ia] - made_from[ia], at[ib] - made_from[ib]];
+        if !in_plane_only || len(u) < 1e-9 {
+            return Err(self.error(
+                "corner-move",
+                word_span,
+                format!(
+                    "{letter}: the block's move must lie in the {plane} plane, along its two axes only, to chamfer or round its end (Fanuc alarm PS0055 when it is missing or too short)"
+                ),
+            ));
+        }
+        let Some(v) = self.next_direction(ahead, letter, word_span)? else {
+            out.notes.push(format!(
+                "{letter}: the next block cannot run (its error stops the run there), so no corner is cut at its start"
+            ));
+            return Ok(());
+        };
+        let (lu, lv) = (len(u), len(v.0));
+        let (uh, vh) = ([u[0] / lu, u[1] / lu], [v.0[0] / lv, v.0[1] / lv]);
+        let cross = uh[0] * vh[1] - uh[1] * vh[0];
+        let dot = uh[0] * vh[0] + uh[1] * vh[1];
+        if cross.abs() < 1e-9 {
+            return Err(self.error(
+                "corner-angle",
+                word_span,
+                format!(
+                    "{letter}: the next block's move goes on along the same line{} (line {}): there is no corner to cut",
+                    if dot < 0.0 { ", backwards," } else { "" },
+                    v.1
+                ),
+            ));
+        }
+        // Distance from the corner to each end of the inserted move: the
+        // chamfer's own length, or the tangent length R·tan(φ/2) of a round,
+        // φ the angle the path turns by at the corner.
+        let (reach, corner_kind) = match corner {
+            Corner::Chamfer(c) => (c, corner),
+            Corner::Round(r) => {
+                let turn = cross.atan2(dot).abs();
+                (r * (turn / 2.0).tan(), corner)
+            }
+        };
+        let units = self.units();
+        if reach > lu + 1e-9 || reach > lv + 1e-9 {
+            return Err(self.error(
+                "corner-too-long",
+                word_span,
+                format!(
+                    "{letter}: the {} needs {} of each move from the corner, but this block's move is {} and the next block's (line {}) {} long (Fanuc alarm PS0055)",
+                    if matches!(corner, Corner::Chamfer(_)) { "chamfer" } else { "corner rounding" },
+                    show(reach, units),
+                    show(lu, units),
+                    v.1,
+                    show(lv, units)
+                ),
+            ));
+        }
+        let mut p1 = at;
+        let mut p2 = at;
+        for k in 0..2 {
+            let axis = [ia, ib][k];
+            p1[axis] = at[axis] - reach * uh[k];
+            p2[axis] = at[axis] + reach * vh[k];
+        }
+        // The block's move ends where the inserted one starts; the offsets'
+        // vectors stand as they did at the corner.
+        let shift = [
+            self.actual()[0] - at[0],
+            self.actual()[1] - at[1],
+            self.actual()[2] - at[2],
+        ];
+        let shifted = |p: Xyz| [p[0] + shift[0], p[1] + shift[1], p[2] + shift[2]];
+        if let Some(m) = out.moves.last_mut() {
+            m.programmed_to = p1;
+            m.to = shifted(p1);
+        }
+        self.state.programmed = p1;
+        let from: Mark = self.mark();
+        let sentence = match corner_kind {
+            Corner::Chamfer(c) => {
+                self.state.programmed = p2;
+                self.emit(out, from, MoveKind::Feed, true, None);
+                format!(
+                    "{letter}{}: a chamfer from {} to {} cuts the corner at {} (line {}'s move starts there)",
+                    show(c, units),
+                    self.plane_point(p1),
+                    self.plane_point(p2),
+                    self.plane_point(at),
+                    v.1
+                )
+            }
+            Corner::Round(r) => {
+                // The centre is R from both moves, on the side the path
+                // turns to.
+                let side = if cross > 0.0 { 1.0 } else { -1.0 };
+                let n = [-uh[1] * side, uh[0] * side];
+                // As I/J/K: from the arc's start.
+                let mut center = [0.0; 3];
+                center[ia] = r * n[0];
+                center[ib] = r * n[1];
+                let req = ArcRequest {
+                    target: p2,
+                    actual_end: shifted(p2),
+                    ccw: cross > 0.0,
+                    center,
+                    ..ArcRequest::default()
+                };
+                let info = self.arc_geometry(b, &req)?;
+                self.state.programmed = p2;
+                let kind = if info.sweep > 0.0 {
+                    MoveKind::ArcCcw
+                } else {
+                    MoveKind::ArcCw
+                };
+                self.emit(out, from, kind, true, Some(info));
+                format!(
+                    "{letter}{}: an arc of radius {} from {} to {}, tangent to both moves, rounds the corner at {} (line {}'s move starts there)",
+                    show(r, units),
+                    show(r, units),
+                    self.plane_point(p1),
+                    self.plane_point(p2),
+                    self.plane_point(at),
+                    v.1
+                )
+            }
+        };
+        out.notes.push(sentence);
+        // The next block's words count from the corner (behaviour 2.32).
+        self.corner_cut = true;
+        self.corner = at;
+        Ok(())
+    }
+
+    /// Before the block after a corner: its words count from the corner
+    /// (behaviour 2.32), so the block runs from there; returns where the
+    /// tool stands, the chamfer's or the round's end.
+    #[cold]
+    pub(super) fn run_from_corner(&mut self) -> Xyz {
+        self.corner_cut = false;
+        let end = std::mem::replace(&mut self.state.programmed, self.corner);
+        self.corner_end = Some(end);
+        end
+    }
+
+    /// After the block after a corner: its move, made from the corner,
+    /// starts where the tool stands (the next move is a straight feed move:
+    /// behaviour 2.31 checked it before cutting the corner).
+    #[cold]
+    pub(super) fn start_at_corner_end(out: &mut Out, end: Xyz) {
+        if let Some(m) = out.moves.first_mut() {
+            for ((from, e), p) in m.from.iter_mut().zip(end).zip(m.programmed_from) {
+                *from += e - p;
+            }
+            m.programmed_from = end;
+        }
+    }
+
+    /// The `,C` or `,R` of a block, checked (behaviour 2.30, 2.33).
+    fn corner_word(&self, b: &Block) -> Result<Corner, Diagnostic> {
+        let (word, corner) = match (b.get(Address::CommaC), b.get(Address::CommaR)) {
+            (Some(_), Some(r)) => {
+                return Err(self.error(
+                    "corner-words",
+                    r.span,
+                    ",C and ,R in one block: a corner is either chamfered or rounded; write one of them",
+                ));
+            }
+            // In the block's own units, known once its codes have run:
+            // converted by the caller.
+            (Some(c), None) => (c, Corner::Chamfer(c.value)),
+            (None, Some(r)) => (r, Corner::Round(r.value)),
+            (None, None) => {
+                return Err(self.error("corner-words", b.span, "no ,C or ,R word in this block"));
+            }
+        };
+        let value = match corner {
+            Corner::Chamfer(v) | Corner::Round(v) => v,
+        };
+        if value <= 0.0 {
+            return Err(self.error(
+                "corner-words",
+                word.span,
+                format!(
+                    "{}: a chamfer or corner radius is a positive length",
+                    word.address.letter()
+                ),
+            ));
+        }
+        if let Some(code) = b.codes().non_modal() {
+            let what = match code {
+                NonModal::PositionOffset(_) => "G45–G48 change the block's move by an offset",
+                NonModal::Dwell
+                | NonModal::ReferenceReturn
+                | NonModal::SetCoordinates
+                | NonModal::Repetitive(_) => "the block makes no G01 move of its own",
+            };
+            return Err(self.error(
+                "corner-words",
+                word.span,
+                format!(
+                    "{}: {} cannot share a block with a chamfer or corner rounding ({what})",
+                    word.address.letter(),
+                    code.gcode(self.setup.machine)
+                ),
+            ));
+        }
+        if self.state.modal.cycle.is_some() && b.codes().motion().is_none() {
+            return Err(self.error(
+                "corner-words",
+                word.span,
+                format!(
+                    "{}: a chamfer or corner rounding is not made while a canned cycle is active",
+                    word.address.letter()
+                ),
+            ));
+        }
+        Ok(corner)
+    }
+
+    /// The plane direction of the next block's first move, from the
+    /// corner, and its line; None when the next block has an error of its own
+    /// (the run stops there). The next block is run on a copy of the machine
+    /// standing at the corner (behaviour 2.31): what it does is what it
+    /// will do, with every word and mode as the machine reads them.
+    fn next_direction(
+        &self,
+        ahead: &mut dyn Ahead,
+        letter: &str,
+        span: crate::diag::Span,
+    ) -> Result<Option<(P2, u32)>, Diagnostic> {
+        let Some(next) = ahead.peek(0) else {
+            return Err(self.error(
+                "corner-next-move",
+                span,
+                format!(
+                    "{letter}: the program ends after this block, and a chamfer or corner rounding needs the next block's move (Fanuc alarm PS0051)"
+                ),
+            ));
+        };
+        if next.error {
+            return Ok(None);
+        }
+        let line = next.span.line;
+        let mut probe = self.clone();
+        probe.reading_ahead = true;
+        probe.corner_cut = false;
+        probe.corner_end = None;
+        probe.moves_left = usize::MAX;
+        let mut scratch = Out::default();
+        if probe
+            .execute(
+                next,
+                self.index + 1,
+                &mut scratch,
+                &mut NoneAhead,
+                &mut super::program::NoText,
+            )
+            .is_err()
+        {
+            return Ok(None);
+        }
+        let (ia, ib, normal) = self.state.modal.plane.axes();
+        let plane = self.state.modal.plane.gcode();
+        let Some(m) = scratch.moves.first() else {
+            return Err(self.error(
+                "corner-next-move",
+                span,
+                format!(
+                    "{letter}: the next block (line {line}) makes no move, and a chamfer or corner rounding is cut between this block's move and the next one's (Fanuc alarm PS0051)"
+                ),
+            ));
+        };
+        match m.kind {
+            MoveKind::Feed => {}
+            MoveKind::ArcCw | MoveKind::ArcCcw => {
+                return Err(self.error(
+                    "corner-not-modelled",
+                    span,
+                    format!(
+                        "{letter}: a chamfer or corner rounding before an arc (line {line}) is not modelled yet (only between two G01 moves)"
+                    ),
+                ));
+            }
+            MoveKind::Rapid | MoveKind::Offset => {
+                return Err(self.error(
+                    "corner-next-move",
+                    span,
+                    format!(
+                        "{letter}: the next block (line {line}) does not move at feed (G01/G02/G03), and a chamfer or corner rounding is cut between two feed moves (Fanuc alarm PS0052)"
+                    ),
+                ));
+            }
+        }
+        let v = [
+            m.programmed_to[ia] - m.programmed_from[ia],
+            m.programmed_to[ib] - m.programmed_from[ib],
+        ];
+        let moved_normal = (m.programmed_to[normal] - m.programmed_from[normal]).abs() > 1e-9
+            || (m.to[normal] - m.from[normal]).abs() > 1e-9;
+        if moved_normal || len(v) < 1e-9 {
+            return Err(self.error(
+                "corner-next-move",
+                span,
+                format!(
+                    "{letter}: the next block's move (line {line}) must lie in the {plane} plane, along its two axes only (Fanuc alarm PS0051)"
+                ),
+            ));
+        }
+        Ok(Some((v, line)))
+    }
+
+    /// "X50.000 Y0.000": a point's coordinates in the selected plane.
+    fn plane_point(&self, p: Xyz) -> String {
+        let (ia, ib, _) = self.state.modal.plane.axes();
+        let names = ['X', 'Y', 'Z'];
+        let units = self.units();
+        format!(
+            "{}{} {}{}",
+            names[ia],
+            show(p[ia], units),
+            names[ib],
+            show(p[ib], units)
+        )
+    }
+}

@@ -1,0 +1,202 @@
+//! Behaviour 2.30–2.34 (`docs/behaviour.md`): chamfer `,C` and corner
+//! rounding `,R` at the end of a G01 block on the mill, cut between its move
+//! and the next block's (Fanuc 0i-MF "optional angle chamfering and corner
+//! R"; alarms PS0051, PS0052, PS0055).
+#![cfg(not(target_arch = "wasm32"))]
+
+mod common;
+use common::*;
+use offsetlab::setup::Mirror;
+use offsetlab::{MoveKind, Setup, run};
+
+fn error_of(text: &str, setup: &Setup) -> (String, String) {
+    let r = run(text, setup);
+    let d = r
+        .diagnostics
+        .iter()
+        .find(|d| d.is_error())
+        .unwrap_or_else(|| panic!("no error in {text}: {:#?}", r.diagnostics));
+    (d.code.to_string(), d.message.clone())
+}
+
+#[test]
+fn behaviour2_30_a_chamfer_cuts_the_corner_between_two_g01_moves() {
+    // The fixture's N50 X60. ,C5. then N60 Y40.: the corner is (60, 0); the
+    // chamfer starts 5 before it on the first move, (55, 0), and ends 5
+    // along the second, (60, 5). H01 = 10 keeps the actual path 10 above.
+    let (text, setup) = fixture("corners");
+    let r = ok(&text, &setup);
+    let on = |line: u32| -> Vec<_> { r.moves.iter().filter(|m| m.line == line).collect() };
+    let n50 = on(8);
+    assert_eq!(n50.len(), 2);
+    same(n50[0].programmed_from, [0.0, 0.0, -2.0]);
+    same(n50[0].programmed_to, [55.0, 0.0, -2.0]);
+    assert_eq!(n50[1].kind, MoveKind::Feed);
+    same(n50[1].programmed_from, [55.0, 0.0, -2.0]);
+    same(n50[1].programmed_to, [60.0, 5.0, -2.0]);
+    same(n50[1].to, [60.0, 5.0, 8.0]);
+    // The block ends where the chamfer does; the next move starts there.
+    same(programmed(&r, 5), [60.0, 5.0, -2.0]);
+    same(on(9)[0].programmed_from, [60.0, 5.0, -2.0]);
+    assert!(explain(&r, 5).contains("a chamfer from X55.000 Y0.000 to X60.000 Y5.000"));
+}
+
+#[test]
+fn behaviour2_30_a_corner_round_is_an_arc_tangent_to_both_moves() {
+    // N60 Y40. ,R8. then N70 X0: the path turns left by 90° at (60, 40);
+    // the tangent length is 8·tan(45°) = 8, so the arc runs from (60, 32)
+    // to (52, 40) about (52, 32), counter-clockwise.
+    let (text, setup) = fixture("corners");
+    let r = ok(&text, &setup);
+    let n60: Vec<_> = r.moves.iter().filter(|m| m.line == 9).collect();
+    assert_eq!(n60.len(), 2);
+    same(n60[0].programmed_to, [60.0, 32.0, -2.0]);
+    assert_eq!(n60[1].kind, MoveKind::ArcCcw);
+    let arc = n60[1].arc.unwrap();
+    same(arc.programmed_center, [52.0, 32.0, -2.0]);
+    assert!((arc.programmed_radius - 8.0).abs() < 1e-9);
+    assert!((arc.programmed_sweep - std::f64::consts::FRAC_PI_2).abs() < 1e-9);
+    same(n60[1].programmed_to, [52.0, 40.0, -2.0]);
+}
+
+#[test]
+fn behaviour2_30_a_round_at_a_45_degree_turn() {
+    // X50. then X100. Y50.: the path turns left by 45° at (50, 0); the
+    // tangent length is 5·tan(22.5°) = 2.071068; the arc runs from
+    // (47.928932, 0) to (50 + 2.071068·cos 45°, 2.071068·sin 45°) =
+    // (51.464466, 1.464466) about (47.928932, 5).
+    let r = ok("G01 X50. ,R5. F100.\nX100. Y50.", &Setup::default());
+    let d = 5.0 * (std::f64::consts::PI / 8.0).tan();
+    same(r.moves[0].programmed_to, [50.0 - d, 0.0, 0.0]);
+    let arc = r.moves[1].arc.unwrap();
+    same(arc.programmed_center, [50.0 - d, 5.0, 0.0]);
+    let h = d * std::f64::consts::FRAC_1_SQRT_2;
+    same(r.moves[1].programmed_to, [50.0 + h, h, 0.0]);
+    same(r.moves[2].programmed_from, [50.0 + h, h, 0.0]);
+    same(r.moves[2].programmed_to, [100.0, 50.0, 0.0]);
+}
+
+#[test]
+fn behaviour2_30_a_right_turn_rounds_clockwise() {
+    // X50. then Y-30.: a right turn at (50, 0); the arc about (45, -5) runs
+    // from (45, 0) to (50, -5) clockwise.
+    let r = ok("G01 X50. ,R5. F100.\nY-30.", &Setup::default());
+    assert_eq!(r.moves[1].kind, MoveKind::ArcCw);
+    same(r.moves[1].arc.unwrap().programmed_center, [45.0, -5.0, 0.0]);
+    same(r.moves[1].programmed_to, [50.0, -5.0, 0.0]);
+}
+
+#[test]
+fn behaviour2_32_the_next_block_counts_its_words_from_the_corner() {
+    // The fixture's N80 G91 Y-20. ,R6. after the chamfer of N70 at (0, 40):
+    // Y-20 from the corner, not from the chamfer's end (0, 36), is (0, 20);
+    // N90 X20. likewise from (0, 20) is (20, 20).
+    let (text, setup) = fixture("corners");
+    let r = ok(&text, &setup);
+    let n80: Vec<_> = r.moves.iter().filter(|m| m.line == 11).collect();
+    same(n80[0].programmed_from, [0.0, 36.0, -2.0]);
+    same(n80[0].programmed_to, [0.0, 26.0, -2.0]);
+    same(n80[1].arc.unwrap().programmed_center, [6.0, 26.0, -2.0]);
+    let n90 = r.moves.iter().find(|m| m.line == 12).unwrap();
+    same(n90.programmed_from, [6.0, 20.0, -2.0]);
+    same(n90.programmed_to, [20.0, 20.0, -2.0]);
+}
+
+#[test]
+fn behaviour2_31_the_next_move_must_be_a_feed_move_in_the_plane() {
+    let s = Setup::default();
+    let (code, msg) = error_of("G01 X50. ,C5. F100.", &s);
+    assert_eq!(code, "corner-next-move");
+    assert!(
+        msg.contains("program ends") && msg.contains("PS0051"),
+        "{msg}"
+    );
+    let (code, msg) = error_of("G01 X50. ,C5. F100.\nM08\nY40.", &s);
+    assert_eq!(code, "corner-next-move");
+    assert!(msg.contains("line 2") && msg.contains("PS0051"), "{msg}");
+    let (code, msg) = error_of("G01 X50. ,C5. F100.\nG00 Y40.", &s);
+    assert_eq!(code, "corner-next-move");
+    assert!(msg.contains("PS0052"), "{msg}");
+    let (code, msg) = error_of("G01 X50. ,C5. F100.\nZ-5.", &s);
+    assert_eq!(code, "corner-next-move");
+    assert!(msg.contains("G17 plane"), "{msg}");
+    let (code, _) = error_of("G01 X50. ,C5. F100.\nG03 X60. Y10. R10.", &s);
+    assert_eq!(code, "corner-not-modelled");
+    let (code, _) = error_of("G01 X50. ,R5. F100.\nX80.", &s);
+    assert_eq!(code, "corner-angle");
+    // Nothing moves past the block before the one refused.
+    let r = run("G01 X10. F100.\nX50. ,C5.\nG00 Y40.", &s);
+    assert_eq!(r.moves.len(), 1);
+}
+
+#[test]
+fn behaviour2_31_the_next_block_is_the_next_one_that_runs() {
+    // With the block skip switch on, /X100. does not run: the chamfer is cut
+    // towards Y40.; with it off X100. is the next move, along the same line.
+    let text = "G01 X50. ,C5. F100.\n/X100.\nY40.";
+    let mut s = Setup::default();
+    s.settings.block_skip = true;
+    let r = ok(text, &s);
+    same(r.moves[1].programmed_to, [50.0, 5.0, 0.0]);
+    assert_eq!(error_of(text, &Setup::default()).0, "corner-angle");
+}
+
+#[test]
+fn behaviour2_33_the_corner_words_are_refused_where_no_corner_is_cut() {
+    let s = Setup::default();
+    let cases = [
+        (
+            "G01 X50. ,C5. ,R2. F100.\nY40.",
+            "corner-words",
+            "either chamfered or rounded",
+        ),
+        (
+            "G00 X50. ,C5.\nG01 Y40. F100.",
+            "corner-motion",
+            "not in G00",
+        ),
+        ("G01 X50. ,C0 F100.\nY40.", "corner-words", "positive"),
+        (
+            "G91 G01 G45 X50. ,C5. D01 F100.\nY40.",
+            "corner-words",
+            "G45",
+        ),
+        ("G01 X50. Z-5. ,C5. F100.\nY40.", "corner-move", "G17"),
+        ("G01 X4. ,C5. F100.\nY40.", "corner-too-long", "PS0055"),
+        ("G01 X50. ,C5. F100.\nY4.", "corner-too-long", "line 2"),
+        (
+            "G02 X50. R25. ,C5. F100.\nY40.",
+            "corner-not-modelled",
+            "end of an arc",
+        ),
+    ];
+    for (text, code, says) in cases {
+        let (got, msg) = error_of(text, &s);
+        assert_eq!(got, code, "{text}: {msg}");
+        assert!(msg.contains(says), "{text}: {msg}");
+    }
+    // The lathe's chamfer words are another rule: refused until modelled.
+    let (code, _) = error_of("G01 U10. ,C1. F0.1\nW-10.", &lathe(&[]));
+    assert_eq!(code, "unsupported-word");
+}
+
+#[test]
+fn behaviour2_34_the_corner_follows_mirror_image_and_the_offsets() {
+    // Mirror X about the start: X60. goes to X-60; the chamfer runs from
+    // (-55, 0) to (-60, 5). G43 H01 = 10 lifts both ends by 10.
+    let mut s = mill(&[(1, 10.0)]);
+    s.settings.mirror = Mirror { x: true, y: false };
+    let r = ok("G43 Z0 H01\nG01 X60. ,C5. F100.\nY40.", &s);
+    let m = &r.moves[2];
+    same(m.programmed_from, [-55.0, 0.0, 0.0]);
+    same(m.programmed_to, [-60.0, 5.0, 0.0]);
+    same(m.to, [-60.0, 5.0, 10.0]);
+}
+
+#[test]
+fn behaviour2_30_inch_words_are_inches() {
+    // G20: ,C0.2 is 5.08 mm along each move.
+    let r = ok("G20 G01 X2. ,C0.2 F10.\nY2.", &Setup::default());
+    same(r.moves[0].programmed_to, [(2.0 - 0.2) * 25.4, 0.0, 0.0]);
+    same(r.moves[1].programmed_to, [50.8, 5.08, 0.0]);
+}
