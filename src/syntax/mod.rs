@@ -603,9 +603,13 @@ impl<'a> Blocks<'a> {
     fn note_code(&mut self, code: Code) {
         match code {
             // A group 01 code ends the canned cycle (only the mill has one).
+            // Only the mill has canned cycles and only the lathe G70–G76,
+            // so leaving a cycle leaves no context.
             Code::Motion(_) | Code::Cycle(codes::CannedCycle::Cancel) => {
-                self.in_cycle = false;
-                self.context = self.mrc.is_some();
+                if self.in_cycle {
+                    self.in_cycle = false;
+                    self.context = false;
+                }
             }
             Code::Cycle(codes::CannedCycle::Cycle(_)) => {
                 self.in_cycle = true;
@@ -698,6 +702,7 @@ impl<'a> Blocks<'a> {
     /// and D (counts of divisions); D elsewhere reads as setting
     /// `depth_word` says. Out of line: few blocks have either.
     #[inline(never)]
+    #[cold]
     fn context_kind(&self, address: Address) -> WordKind {
         match (address, self.mrc) {
             (Address::K, _) if self.in_cycle => WordKind::Integer,
