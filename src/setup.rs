@@ -232,6 +232,16 @@ pub enum SameGroupCodes {
     LastWins,
 }
 
+/// What G12/G13 mean on the mill (behaviour 7.20, 14.13).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CirclePocket {
+    /// Haas circular pocket milling: I, K, Q, L, D, Z, F.
+    Haas,
+    /// Not a code of the control: an alarm.
+    Alarm,
+}
+
 /// The lathe's G-code system (behaviour 7.18): which numbers the single
 /// cycles, coordinate setting, feed modes and inch/metric have.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -295,12 +305,16 @@ pub struct Settings {
     /// [`Settings::gcode_system`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub gcode_system: Option<GCodeSystem>,
-    /// How D reads in a lathe G71/G72/G74–G76 block (behaviour 7.20, 15.2);
+    /// G12/G13 on the mill (behaviour 7.20); read it with
+    /// [`Settings::circle_pocket`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub circle_pocket: Option<CirclePocket>,
+    /// How D reads in a lathe G71/G72/G74–G76 block (behaviour 7.21, 15.2);
     /// read it with [`Settings::depth_word`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub depth_word: Option<DepthWord>,
     /// What the G00 blocks that end a G71/G72 contour going back toward
-    /// the start are (behaviour 7.21, 15.6); read it with
+    /// the start are (behaviour 7.22, 15.6); read it with
     /// [`Settings::trailing_rapids`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub trailing_rapids: Option<TrailingRapids>,
@@ -319,6 +333,17 @@ impl Settings {
         })
     }
 
+    /// G12/G13 on the mill: Haas mills cut a circular pocket (Haas mill
+    /// operator's manual, "G12 Circular Pocket Milling CW / G13 … CCW");
+    /// neither the Fanuc 0i-MF G-code list nor the YASNAC seeds' manual has
+    /// them on the mill, where the control alarms.
+    pub fn circle_pocket(&self) -> CirclePocket {
+        self.circle_pocket.unwrap_or(match self.control {
+            Control::Haas => CirclePocket::Haas,
+            Control::Yasnac | Control::Fanuc => CirclePocket::Alarm,
+        })
+    }
+
     /// The lathe's G-code system: A on every profile (Fanuc's default, the
     /// parameters GSB/GSC of No. 3401 choosing B or C; Haas lathes and the
     /// seed 004 manual write system A).
@@ -329,7 +354,7 @@ impl Settings {
     }
 
     /// How the D word of the one-block G71/G72 (depth of cut), G74/G75
-    /// (relief) and G76 (first depth) reads (behaviour 7.20): Haas reads it
+    /// (relief) and G76 (first depth) reads (behaviour 7.21): Haas reads it
     /// as a length with a decimal point (Haas lathe operator's manual, G71:
     /// "D – depth of cut for each pass, positive radius", written `D0.05`);
     /// the Fanuc Series 10/11 tape format of the 0i-TF (parameter FCV) in
@@ -358,7 +383,7 @@ impl Settings {
 }
 
 /// What the G00 blocks that end a G71/G72 contour going back along the
-/// cut toward the start are (behaviour 7.21).
+/// cut toward the start are (behaviour 7.22).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum TrailingRapids {
@@ -369,7 +394,7 @@ pub enum TrailingRapids {
     Exit,
 }
 
-/// How D reads in a lathe G71/G72/G74–G76 block (behaviour 7.20).
+/// How D reads in a lathe G71/G72/G74–G76 block (behaviour 7.21).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum DepthWord {

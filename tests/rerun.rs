@@ -25,6 +25,7 @@ const FIXTURES: [&str; 7] = [
     "contour_g45",
     "corners",
     "g54_g28",
+    "haas_modes",
     "inch_plate",
     "lathe_cycles",
     "lathe_taper",
@@ -159,6 +160,9 @@ fn edit() -> impl Strategy<Value = Edit> {
         1 => Just("X1.5 Y-2.\n".to_string()),
         1 => Just("G41 D02 X3.\n".to_string()),
         1 => Just("Q".to_string()),
+        1 => Just("G93\n".to_string()),
+        1 => Just("G13 I6. K9. Q1. D01\n".to_string()),
+        1 => Just("G61 ".to_string()),
     ];
     (
         0.0f64..1.0,

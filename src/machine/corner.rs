@@ -280,21 +280,34 @@ impl Machine {
         }
         if let Some(code) = b.codes().non_modal() {
             let what = match code {
+                // G09 only stops at the block's end (behaviour 14.2): the
+                // corner is cut as without it.
+                NonModal::ExactStop => "",
                 NonModal::PositionOffset(_) => "G45–G48 change the block's move by an offset",
                 NonModal::Dwell
                 | NonModal::ReferenceReturn
                 | NonModal::SetCoordinates
                 | NonModal::Repetitive(_) => "the block makes no G01 move of its own",
+                NonModal::Skip => "a skip signal may end G31's move anywhere (behaviour 14.7)",
+                NonModal::CirclePocket(_) => "G12/G13 cut a pocket of their own (behaviour 14.12)",
+                NonModal::AiContour
+                | NonModal::LookAhead
+                | NonModal::Smoothness
+                | NonModal::Cylindrical => {
+                    "the mode code stands alone in its block (behaviour 14.3)"
+                }
             };
-            return Err(self.error(
-                "corner-words",
-                word.span,
-                format!(
-                    "{}: {} cannot share a block with a chamfer or corner rounding ({what})",
-                    word.address.letter(),
-                    code.gcode(self.setup.machine)
-                ),
-            ));
+            if !what.is_empty() {
+                return Err(self.error(
+                    "corner-words",
+                    word.span,
+                    format!(
+                        "{}: {} cannot share a block with a chamfer or corner rounding ({what})",
+                        word.address.letter(),
+                        code.gcode(self.setup.machine)
+                    ),
+                ));
+            }
         }
         if self.state.modal.cycle.is_some() && b.codes().motion().is_none() {
             return Err(self.error(

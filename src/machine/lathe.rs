@@ -40,6 +40,7 @@ impl Machine {
             self.pass_over(b, out);
             return Ok(());
         }
+        self.refuse_polar_moves(b)?;
         self.refuse_unmodelled(b)?;
         // A G71/G72/G74–G76 block's D is its depth (behaviour 15.2).
         let cycle_d = matches!(b.codes().non_modal(), Some(NonModal::Repetitive(_)));
@@ -60,7 +61,9 @@ impl Machine {
                 ));
             }
         }
+        let before = self.state.modal;
         self.common_words(b, out);
+        self.mode_codes(b, out, before)?;
         let c = b.codes();
         if c.non_modal() == Some(NonModal::Dwell) {
             return self.dwell(b, out);
@@ -85,16 +88,36 @@ impl Machine {
                 self.turning = TurningData::default();
             }
         }
+        let mut skip = false;
         match c.non_modal() {
             Some(NonModal::SetCoordinates) => return self.g50(b),
             Some(NonModal::ReferenceReturn) => return self.lathe_g28(b, out),
             Some(NonModal::Repetitive(cycle)) => return self.repetitive(b, cycle, out, program),
-            // G04 was made above; G45–G48 are the mill's, refused by the
-            // parser on the lathe (seed 004).
-            Some(NonModal::Dwell | NonModal::PositionOffset(_)) | None => {}
+            // G31 moves as G01 whatever the mode (behaviour 14.7).
+            Some(NonModal::Skip) => {
+                self.skip_note(b, out)?;
+                skip = true;
+            }
+            // G04 was made above; G45–G48, G09, G05.1, G08, G187 and the
+            // pockets are the mill's, refused by the parser on the lathe.
+            Some(
+                NonModal::Dwell
+                | NonModal::PositionOffset(_)
+                | NonModal::ExactStop
+                | NonModal::AiContour
+                | NonModal::LookAhead
+                | NonModal::Smoothness
+                | NonModal::Cylindrical
+                | NonModal::CirclePocket(_),
+            )
+            | None => {}
         }
         let t_changed = self.t_code(b, out);
-        let motion = self.state.modal.motion;
+        let motion = if skip {
+            Motion::Linear
+        } else {
+            self.state.modal.motion
+        };
         let any_axis = [Address::X, Address::U, Address::Z, Address::W]
             .iter()
             .any(|a| b.has(*a));

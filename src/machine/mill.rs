@@ -6,7 +6,7 @@
 
 use super::MoveKind;
 use super::corner::CORNER_WORDS;
-use super::modal::{ArcDirection, Distance, Motion, Plane};
+use super::modal::{ArcDirection, Distance, FeedMode, Motion, Plane};
 use super::{AXES, Ahead, ArcRequest, Machine, Out};
 use crate::diag::Diagnostic;
 use crate::geometry::Xyz;
@@ -40,7 +40,7 @@ impl Machine {
         out: &mut Out,
         ahead: &mut dyn Ahead,
     ) -> Result<(), Diagnostic> {
-        if b.holds_only(&MOTION_WORDS, &[Group::Motion]) {
+        if !self.special && b.holds_only(&MOTION_WORDS, &[Group::Motion]) {
             return self.motion_block(b, out);
         }
         if b.holds_any(&CORNER_WORDS) {
@@ -66,8 +66,13 @@ impl Machine {
                 ));
             }
         }
+        let before = self.state.modal;
         self.common_words(b, out);
+        self.mode_codes(b, out, before)?;
         let c = b.codes();
+        if self.state.modal.feed_mode == FeedMode::InverseTime {
+            self.check_inverse_time(b)?;
+        }
         if let Some(t) = b.get(Address::T) {
             self.state.next_tool = t.int();
         }
@@ -106,9 +111,23 @@ impl Machine {
             Some(NonModal::PositionOffset(code)) => {
                 return self.position_offset_block(b, code, out);
             }
+            Some(NonModal::Skip) => return self.skip(b, out),
+            Some(NonModal::CirclePocket(direction)) => {
+                return self.circle_pocket(b, direction, out);
+            }
+            // Their words and sentences were taken by `mode_codes`; the
+            // block moves as any other (behaviour 14).
+            Some(
+                NonModal::ExactStop
+                | NonModal::AiContour
+                | NonModal::LookAhead
+                | NonModal::Smoothness
+                | NonModal::Cylindrical,
+            )
+            | None => {}
             // G70–G76 are the lathe's (on the mill the parser reads those
             // numbers as its canned cycles).
-            Some(NonModal::Repetitive(_)) | None => {}
+            Some(NonModal::Repetitive(_)) => {}
         }
         let old_length = self.length_words(b, out)?;
         match self.state.modal.cycle {
@@ -427,6 +446,18 @@ impl Machine {
         position::check_block(b, code, self.setup.machine, self.state.modal.cycle)?;
         let old_length = self.length_words(b, out)?;
         self.mill_motion(b, out, old_length, Some(code))
+    }
+
+    /// G31: a G01 move whatever the motion mode, with the skip function's
+    /// sentence (behaviour 14.7).
+    fn skip(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+        self.skip_note(b, out)?;
+        let old_length = self.length_words(b, out)?;
+        let mode = self.state.modal.motion;
+        self.state.modal.motion = Motion::Linear;
+        let moved = self.mill_motion(b, out, old_length, None);
+        self.state.modal.motion = mode;
+        moved
     }
 
     /// G92 X… Y… Z…: sets the programmed position; the G45–G48 vector on each

@@ -14,7 +14,9 @@ mod cycles;
 mod lathe;
 mod mill;
 pub mod modal;
+mod modes;
 mod mrc;
+mod pocket;
 pub mod program;
 pub mod state;
 
@@ -112,6 +114,9 @@ pub struct Machine {
     /// G71–G73 (behaviour 15).
     mrc: mrc::MrcData,
     feed_warned: bool,
+    /// A mode is in effect that every block must be checked against (G93,
+    /// behaviour 14.8): no block takes the mill's fast path for plain moves.
+    special: bool,
     index: u32,
     line: u32,
     span: Span,
@@ -178,6 +183,7 @@ impl Machine {
             turning: lathe::TurningData::default(),
             mrc: mrc::MrcData::default(),
             feed_warned: false,
+            special: false,
             index: 0,
             line: 0,
             span: Span::default(),
@@ -223,6 +229,7 @@ impl Machine {
                     m.turning,
                     m.mrc,
                     m.feed_warned,
+                    m.special,
                     m.corner_cut,
                     m.corner
                 )
@@ -297,8 +304,9 @@ impl Machine {
             return Ok(());
         }
         let lathe = self.setup.machine == MachineKind::Lathe;
-        // The mill cuts the corner words (`corner.rs`); G76's A is its tool
-        // angle (behaviour 15.12).
+        // The mill cuts the corner words (`corner.rs`); section 14 models
+        // G187's E and the rotary word of G07.1 (`models_word`); G76's A is
+        // its tool angle (behaviour 15.12).
         let g76 = b.codes().non_modal()
             == Some(NonModal::Repetitive(
                 crate::syntax::codes::Repetitive::Threading,
@@ -306,11 +314,11 @@ impl Machine {
         let modelled = |a: Address| {
             (!lathe && matches!(a, Address::CommaC | Address::CommaR)) || (g76 && a == Address::A)
         };
-        let Some(w) = b
-            .words
-            .iter()
-            .find(|w| UNMODELLED.contains(&w.address) && !modelled(w.address))
-        else {
+        let Some(w) = b.words.iter().find(|w| {
+            UNMODELLED.contains(&w.address)
+                && !modelled(w.address)
+                && !self.models_word(b, w.address)
+        }) else {
             return Ok(());
         };
         let letter = w.address.letter();
@@ -321,6 +329,26 @@ impl Machine {
             _ => "chamfering and corner rounding (,C and ,R) are not modelled yet",
         };
         Err(self.error("unsupported-word", w.span, format!("{letter}: {why}")))
+    }
+
+    /// True for a word of [`Machine::refuse_unmodelled`]'s list that this
+    /// block models: G187's E (behaviour 14.6), the rotary word of G07.1 and
+    /// of the blocks in its mode (behaviour 14.10).
+    fn models_word(&self, b: &Block, a: Address) -> bool {
+        use crate::syntax::codes::NonModal;
+        let code = b.codes().non_modal();
+        match a {
+            Address::E => code == Some(NonModal::Smoothness),
+            Address::A | Address::B | Address::C => {
+                let rotary: &[Address] = match self.setup.machine {
+                    MachineKind::Mill => &[Address::A, Address::B, Address::C],
+                    MachineKind::Lathe => &[Address::C],
+                };
+                (code == Some(NonModal::Cylindrical) && rotary.contains(&a))
+                    || self.state.modal.cylinder.is_some_and(|(axis, _)| axis == a)
+            }
+            _ => false,
+        }
     }
 
     // ----- small helpers -------------------------------------------------
@@ -399,6 +427,51 @@ impl Machine {
             to,
             programmed_from: from.prog,
             programmed_to: prog,
+            arc,
+        });
+    }
+
+    /// Records a generated move whose actual path is not the programmed one
+    /// plus the offset vectors (a pocket's circles inside the contour,
+    /// behaviour 14.12; a corner, behaviour 14.14): both ends given. Like
+    /// [`Machine::emit`] it stops at the move budget and warns of a feed
+    /// move before any F; a straight move that goes nowhere is not recorded.
+    /// Out of line: ordinary moves take `emit`.
+    #[inline(never)]
+    pub(crate) fn push_move(
+        &mut self,
+        out: &mut Out,
+        kind: MoveKind,
+        from: Mark,
+        to: Mark,
+        arc: Option<ArcInfo>,
+    ) {
+        if arc.is_none() && from.act == to.act && from.prog == to.prog {
+            return;
+        }
+        if out.moves.len() >= self.moves_left {
+            self.overflow = true;
+            return;
+        }
+        let feed = kind != MoveKind::Rapid;
+        if feed && self.state.feed.is_none() && !self.feed_warned {
+            self.feed_warned = true;
+            out.warnings.push(Diagnostic::warning(
+                "missing-feed",
+                self.span,
+                "feed move before any F word: a control would stop here with an alarm",
+            ));
+        }
+        out.moves.push(Move {
+            kind,
+            at_feed: feed,
+            block: self.index,
+            line: self.line,
+            units: self.units(),
+            from: from.act,
+            to: to.act,
+            programmed_from: from.prog,
+            programmed_to: to.prog,
             arc,
         });
     }

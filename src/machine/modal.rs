@@ -5,9 +5,10 @@
 use serde::Serialize;
 
 use crate::setup::{MachineKind, Units};
+use crate::syntax::Address;
 pub use crate::syntax::codes::{
-    ArcDirection, Cycle, Distance, FeedMode, LatheCycle, LengthOffset, Motion, Plane, ReturnLevel,
-    SurfaceSpeed, WorkSystem,
+    ArcDirection, CuttingMode, Cycle, Distance, FeedMode, LatheCycle, LengthOffset, Motion, Plane,
+    Polar, PolarSpelling, ReturnLevel, SurfaceSpeed, WorkSystem,
 };
 use crate::syntax::codes::{CannedCycle, Code, CodeTable};
 
@@ -32,8 +33,42 @@ pub struct Modal {
     pub return_level: ReturnLevel,
     /// Group 14.
     pub work: WorkSystem,
-    /// Lathe group 02: constant surface speed (G96) or G97.
+    /// Constant surface speed (G96) or G97: lathe group 02, mill group 13.
     pub surface_speed: SurfaceSpeed,
+    /// Mill group 15: G61–G64 (behaviour 14.2).
+    pub cutting_mode: CuttingMode,
+    /// Mill: Fanuc AI contour control, G05.1 Q1 (behaviour 14.4).
+    pub ai_contour: bool,
+    /// Mill: Fanuc look-ahead, G08 P1 (behaviour 14.5).
+    pub look_ahead: bool,
+    /// Mill: Haas G187 smoothness, once a G187 was given (behaviour 14.6).
+    pub smoothness: Option<Smoothness>,
+    /// G07.1: cylindrical interpolation on, with its rotary axis and the
+    /// cylinder's radius (mm) (behaviour 14.10).
+    pub cylinder: Option<(Address, f64)>,
+    /// Lathe group 21: polar coordinate interpolation (behaviour 14.11).
+    pub polar: Polar,
+}
+
+/// Haas G187's smoothness: a level and a corner tolerance (behaviour 14.6).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Smoothness {
+    /// P1 (rough) to P3 (finish); 0 for G187 without P, Setting 191's level.
+    pub level: u8,
+    /// E: how far the control may round a corner (mm), if given.
+    pub corner: Option<f64>,
+}
+
+impl Smoothness {
+    /// The code as the state panel shows it.
+    pub fn code(self) -> &'static str {
+        match self.level {
+            1 => "G187 P1",
+            2 => "G187 P2",
+            3 => "G187 P3",
+            _ => "G187",
+        }
+    }
 }
 
 impl Modal {
@@ -56,6 +91,12 @@ impl Modal {
             return_level: ReturnLevel::Initial,
             work: WorkSystem::G54,
             surface_speed: SurfaceSpeed::Cancel,
+            cutting_mode: CuttingMode::Cutting,
+            ai_contour: false,
+            look_ahead: false,
+            smoothness: None,
+            cylinder: None,
+            polar: Polar::Off(PolarSpelling::Fanuc),
         }
     }
 
@@ -71,10 +112,17 @@ impl Modal {
             units: Code::Units(self.units).gcode(table),
             feed_mode: Code::FeedMode(self.feed_mode).gcode(table),
             length: mill.then_some(self.length.gcode()),
-            cycle: mill.then(|| self.cycle.map_or(CannedCycle::Cancel.gcode(), Cycle::gcode)),
+            // The lathe's G80 (behaviour 14.9): no drilling cycle is ever active there.
+            cycle: Some(self.cycle.map_or(CannedCycle::Cancel.gcode(), Cycle::gcode)),
             return_level: mill.then_some(self.return_level.gcode()),
             work: self.work.gcode(),
-            surface_speed: (!mill).then_some(self.surface_speed.gcode()),
+            surface_speed: Some(self.surface_speed.gcode()),
+            cutting_mode: mill.then_some(self.cutting_mode.gcode()),
+            ai_contour: self.ai_contour.then_some("G05.1 Q1"),
+            look_ahead: self.look_ahead.then_some("G08 P1"),
+            smoothness: self.smoothness.map(Smoothness::code),
+            cylindrical: self.cylinder.map(|_| "G07.1"),
+            polar: (!mill).then_some(self.polar.gcode()),
         }
     }
 }
@@ -104,7 +152,25 @@ pub struct ModalCodes {
     pub return_level: Option<&'static str>,
     /// Group 14.
     pub work: &'static str,
-    /// Lathe group 02.
+    /// Constant surface speed: lathe group 02, mill group 13.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub surface_speed: Option<&'static str>,
+    /// Group 15 (mill): G61–G64.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cutting_mode: Option<&'static str>,
+    /// `G05.1 Q1` while AI contour control is on (mill).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ai_contour: Option<&'static str>,
+    /// `G08 P1` while look-ahead is on (mill).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub look_ahead: Option<&'static str>,
+    /// Haas G187's level, once given (mill).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub smoothness: Option<&'static str>,
+    /// `G07.1` while cylindrical interpolation is on.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cylindrical: Option<&'static str>,
+    /// Group 21 (lathe): G12.1/G112 or G13.1/G113.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub polar: Option<&'static str>,
 }

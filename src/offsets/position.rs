@@ -63,7 +63,9 @@ pub fn check_block(
             | Code::Cycle(_)
             | Code::Return(_)
             | Code::Work(_)
-            | Code::SurfaceSpeed(_) => false,
+            | Code::SurfaceSpeed(_)
+            | Code::CuttingMode(_)
+            | Code::Polar(_) => false,
         };
         if !allowed {
             return Err(Diagnostic::error(

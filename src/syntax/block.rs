@@ -279,7 +279,7 @@ impl Block {
         self.words.clear();
         self.slots = [0; Address::COUNT];
         self.addresses = 0;
-        self.codes = Codes::default();
+        self.codes.clear();
         self.groups = [0; Group::COUNT];
         self.group_bits = 0;
     }

@@ -337,6 +337,10 @@ pub struct Blocks<'a> {
     /// `in_cycle || mrc.is_some()`: a word's address alone does not say how
     /// it reads (one test per word, as the canned cycles' K had).
     context: bool,
+    /// The block read in two passes holds G05.1, whose Q (Q1/Q0) is no
+    /// dimension to warn about (behaviour 14.4); set afresh by each two-pass
+    /// reading (the one-pass reading leaves a block with a warning due to it).
+    whole_q: bool,
     tape: Tape,
     warned_integer: bool,
     diagnostics: Vec<Diagnostic>,
@@ -360,6 +364,7 @@ impl<'a> Blocks<'a> {
             in_cycle: false,
             mrc: None,
             context: false,
+            whole_q: false,
             tape: Tape::Before,
             warned_integer: false,
             diagnostics: Vec::new(),
@@ -586,14 +591,40 @@ impl<'a> Blocks<'a> {
     /// increment) and mill canned cycles (K is then a repeat count), from
     /// a G word's number as lexed (written without a point or sign).
     fn note_context(&mut self, n: Number) {
-        if n.frac_digits != 0 || n.negative {
+        if n.negative {
             return;
+        }
+        if n.frac_digits != 0 {
+            return self.note_decimal_context(n);
         }
         let Ok(major) = u16::try_from(n.mantissa) else {
             return;
         };
         if let Some(code) = Code::of(self.table, GCode::new(major)) {
             self.note_code(code);
+        }
+    }
+
+    /// [`Blocks::note_context`] for a G code written with a decimal: G05.1's
+    /// Q is a switch (Q1/Q0, behaviour 14.4), no dimension to warn about.
+    /// Out of line: few G codes have a decimal.
+    #[inline(never)]
+    fn note_decimal_context(&mut self, n: Number) {
+        let (Ok(major), Ok(scaled)) = (
+            u16::try_from(n.mantissa / 10),
+            u8::try_from(n.mantissa % 10),
+        ) else {
+            return;
+        };
+        if n.frac_digits != 1 {
+            return;
+        }
+        let g = GCode {
+            major,
+            minor: scaled,
+        };
+        if Code::of(self.table, g) == Some(Code::NonModal(codes::NonModal::AiContour)) {
+            self.whole_q = true;
         }
     }
 
@@ -628,7 +659,9 @@ impl<'a> Blocks<'a> {
             | Code::Length(_)
             | Code::Return(_)
             | Code::Work(_)
-            | Code::SurfaceSpeed(_) => {}
+            | Code::SurfaceSpeed(_)
+            | Code::CuttingMode(_)
+            | Code::Polar(_) => {}
         }
     }
 
@@ -751,6 +784,7 @@ impl<'a> Blocks<'a> {
         match read {
             Ok((word, kind)) => {
                 if kind == WordKind::Dimension
+                    && !(word.address == Address::Q && self.whole_q)
                     && let Ok(n) = w.number
                     && self.integer_warning_due(n)
                 {

@@ -118,6 +118,7 @@ impl Blocks<'_> {
         let n = bytes.len();
         let mut last = i;
         self.raw.clear();
+        self.whole_q = false;
 
         // Lex: comments, words, and anything else as an error. Words are
         // typed once the whole block is lexed, because a G code anywhere in

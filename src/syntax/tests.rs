@@ -139,7 +139,7 @@ fn behaviour1_8_malformed_numbers_are_errors() {
 
 #[test]
 fn behaviour1_12_unknown_g_code_is_an_error() {
-    let prog = p("G07 X1.\nG41 D1 X1.\nG05.1 Q1.");
+    let prog = p("G07 X1.\nG41 D1 X1.\nG61.1 Q1.");
     assert_eq!(
         codes(&prog),
         vec![

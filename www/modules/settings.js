@@ -39,6 +39,11 @@ const CHOICES = [
     help: 'Lathe G-code table. A on every control (Fanuc B and C by parameter): G90/G92/G94 cycles, G50 coordinates. B: G77/G78/G79 cycles, G92 coordinates, G94/G95 feed. C: as B with G20/G21/G24 cycles.',
   },
   {
+    id: 'circle_pocket', label: 'G12/G13 (mill)', machine: 'mill', controlDefault: true,
+    options: [['haas', 'a circular pocket (Haas)'], ['alarm', 'an alarm']],
+    help: 'G12/G13 on the mill: Haas cuts a circular pocket (I, K, Q, L, D, Z); Fanuc and YASNAC mills have no such code and alarm.',
+  },
+  {
     id: 'depth_word', label: 'D of G71–G76', machine: 'lathe', controlDefault: true,
     options: [['dimension', 'a length (D0.5)'], ['increments', 'least increments (D500)']],
     help: 'The one-block G71/G72 depth of cut, G74/G75 relief and G76 first depth: Haas and YASNAC write a length with a decimal point; Fanuc’s Series 10/11 format counts least increments, no decimal point.',

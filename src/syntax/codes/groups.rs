@@ -122,6 +122,8 @@ pub enum FeedMode {
     PerMinute,
     /// Feed per revolution: mill G95, lathe G99.
     PerRevolution,
+    /// Mill G93: inverse time, F is 1 / the minutes a move takes (behaviour 14.8).
+    InverseTime,
 }
 
 impl FeedMode {
@@ -133,6 +135,8 @@ impl FeedMode {
             (MachineKind::Mill, FeedMode::PerRevolution) => "G95",
             (MachineKind::Lathe, FeedMode::PerMinute) => "G98",
             (MachineKind::Lathe, FeedMode::PerRevolution) => "G99",
+            // Only the mill reads G93 (the lathe's table has no such code).
+            (_, FeedMode::InverseTime) => "G93",
         }
     }
 }
@@ -321,11 +325,88 @@ impl SurfaceSpeed {
     }
 }
 
-/// Group 00: one-shot codes, in effect in their block only.
+/// Fanuc M group 15 (mill): how a move ends and the next begins. None of
+/// them changes the path (behaviour 14.2).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CuttingMode {
+    /// G61: exact stop mode.
+    ExactStop,
+    /// G62: automatic corner override.
+    CornerOverride,
+    /// G63: tapping mode.
+    Tapping,
+    /// G64: cutting mode (the start state).
+    Cutting,
+}
+
+impl CuttingMode {
+    /// The G code.
+    pub fn gcode(self) -> &'static str {
+        match self {
+            CuttingMode::ExactStop => "G61",
+            CuttingMode::CornerOverride => "G62",
+            CuttingMode::Tapping => "G63",
+            CuttingMode::Cutting => "G64",
+        }
+    }
+}
+
+/// Lathe group 21: polar coordinate interpolation (behaviour 14.11).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Polar {
+    /// Fanuc G12.1 / Haas G112: X and the rotary axis C make a Cartesian plane.
+    On(PolarSpelling),
+    /// Fanuc G13.1 / Haas G113: cancel (the start state).
+    Off(PolarSpelling),
+}
+
+/// How a program writes the polar interpolation codes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PolarSpelling {
+    /// G12.1 / G13.1 (Fanuc).
+    Fanuc,
+    /// G112 / G113 (Haas).
+    Haas,
+}
+
+impl Polar {
+    /// The G code as written.
+    pub fn gcode(self) -> &'static str {
+        match self {
+            Polar::On(PolarSpelling::Fanuc) => "G12.1",
+            Polar::Off(PolarSpelling::Fanuc) => "G13.1",
+            Polar::On(PolarSpelling::Haas) => "G112",
+            Polar::Off(PolarSpelling::Haas) => "G113",
+        }
+    }
+
+    /// True for G12.1 / G112.
+    pub fn is_on(self) -> bool {
+        matches!(self, Polar::On(_))
+    }
+}
+
+/// Group 00: one-shot codes, in effect in their block only (some of them,
+/// G05.1, G07.1, G08, G187, switch a mode the control keeps: behaviour 14).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum NonModal {
     /// G04: dwell.
     Dwell,
+    /// G09 (mill): exact stop at the end of this block.
+    ExactStop,
+    /// G31: skip function, a feed move a skip signal may cut short.
+    Skip,
+    /// G05.1 (mill): AI contour control on (Q1) or off (Q0), Fanuc.
+    AiContour,
+    /// G08 (mill): look-ahead (advanced preview control) on (P1) or off (P0), Fanuc.
+    LookAhead,
+    /// G187 (mill): smoothness level P1–P3 and corner tolerance E, Haas.
+    Smoothness,
+    /// G07.1: cylindrical interpolation, the rotary word the cylinder's radius.
+    Cylindrical,
+    /// G12 (clockwise) / G13 (counter-clockwise) on the mill: Haas circular
+    /// pocket milling.
+    CirclePocket(ArcDirection),
     /// G28: return to the reference position.
     ReferenceReturn,
     /// G45–G48 (mill): tool position offset (seeds 000 and 003).
@@ -402,6 +483,14 @@ impl NonModal {
     pub fn gcode(self, machine: MachineKind) -> &'static str {
         match (self, machine) {
             (NonModal::Dwell, _) => "G04",
+            (NonModal::ExactStop, _) => "G09",
+            (NonModal::Skip, _) => "G31",
+            (NonModal::AiContour, _) => "G05.1",
+            (NonModal::LookAhead, _) => "G08",
+            (NonModal::Smoothness, _) => "G187",
+            (NonModal::Cylindrical, _) => "G07.1",
+            (NonModal::CirclePocket(ArcDirection::Cw), _) => "G12",
+            (NonModal::CirclePocket(ArcDirection::Ccw), _) => "G13",
             (NonModal::ReferenceReturn, _) => "G28",
             (NonModal::PositionOffset(p), _) => p.gcode(),
             (NonModal::SetCoordinates, MachineKind::Mill) => "G92",

@@ -10,9 +10,9 @@ mod groups;
 mod mcodes;
 
 pub use groups::{
-    ArcDirection, CannedCycle, CutterCompensation, Cycle, Distance, FeedMode, LatheCycle,
-    LengthOffset, Motion, NonModal, Plane, PositionOffset, Repetitive, ReturnLevel, SurfaceSpeed,
-    WorkSystem,
+    ArcDirection, CannedCycle, CutterCompensation, CuttingMode, Cycle, Distance, FeedMode,
+    LatheCycle, LengthOffset, Motion, NonModal, Plane, Polar, PolarSpelling, PositionOffset,
+    Repetitive, ReturnLevel, SurfaceSpeed, WorkSystem,
 };
 pub use mcodes::MCode;
 
@@ -38,14 +38,18 @@ pub enum Group {
     Cutter,
     /// 08: tool length offset.
     Length,
-    /// 09: canned cycles (mill).
+    /// 09: canned cycles (mill); the lathe has its G80 (Fanuc T group 10).
     Cycle,
     /// 10: canned-cycle return level (mill).
     Return,
     /// 14: work coordinate systems.
     Work,
-    /// Lathe 02: constant surface speed on/off.
+    /// Constant surface speed on/off (lathe 02, Fanuc M 13).
     SurfaceSpeed,
+    /// 15 (mill): exact stop, corner override, tapping and cutting modes.
+    CuttingMode,
+    /// 21 (lathe): polar coordinate interpolation.
+    Polar,
 }
 
 impl Group {
@@ -54,7 +58,7 @@ impl Group {
         self as usize
     }
     /// Number of groups.
-    pub const COUNT: usize = 12;
+    pub const COUNT: usize = 14;
     /// Every group, in index order.
     pub const ALL: [Group; Group::COUNT] = [
         Group::NonModal,
@@ -69,6 +73,8 @@ impl Group {
         Group::Return,
         Group::Work,
         Group::SurfaceSpeed,
+        Group::CuttingMode,
+        Group::Polar,
     ];
     /// The group's name in the manuals.
     pub fn label(self) -> &'static str {
@@ -84,7 +90,9 @@ impl Group {
             Group::Cycle => "09 (canned cycle)",
             Group::Return => "10 (return level)",
             Group::Work => "14 (work coordinates)",
-            Group::SurfaceSpeed => "02 (constant surface speed)",
+            Group::SurfaceSpeed => "02/13 (constant surface speed)",
+            Group::CuttingMode => "15 (cutting mode)",
+            Group::Polar => "21 (polar coordinate interpolation)",
         }
     }
 }
@@ -204,6 +212,8 @@ pub enum Code {
     Return(ReturnLevel),
     Work(WorkSystem),
     SurfaceSpeed(SurfaceSpeed),
+    CuttingMode(CuttingMode),
+    Polar(Polar),
 }
 
 impl Code {
@@ -218,7 +228,7 @@ impl Code {
         use ArcDirection::{Ccw, Cw};
         use Code as C;
         if g.minor != 0 {
-            return None;
+            return Code::of_decimal(table.machine(), g);
         }
         Some(match table.machine() {
             MachineKind::Mill => match g.major {
@@ -227,12 +237,17 @@ impl Code {
                 2 => C::Motion(Motion::Arc(Cw)),
                 3 => C::Motion(Motion::Arc(Ccw)),
                 4 => C::NonModal(NonModal::Dwell),
+                8 => C::NonModal(NonModal::LookAhead),
+                9 => C::NonModal(NonModal::ExactStop),
+                12 => C::NonModal(NonModal::CirclePocket(Cw)),
+                13 => C::NonModal(NonModal::CirclePocket(Ccw)),
                 17 => C::Plane(Plane::XY),
                 18 => C::Plane(Plane::ZX),
                 19 => C::Plane(Plane::YZ),
                 20 => C::Units(Units::Inch),
                 21 => C::Units(Units::Mm),
                 28 => C::NonModal(NonModal::ReferenceReturn),
+                31 => C::NonModal(NonModal::Skip),
                 40 => C::CutterCompensation(CutterCompensation::Cancel),
                 43 => C::Length(LengthOffset::Add),
                 44 => C::Length(LengthOffset::Subtract),
@@ -242,6 +257,10 @@ impl Code {
                 48 => C::NonModal(NonModal::PositionOffset(PositionOffset::DoubleReduction)),
                 49 => C::Length(LengthOffset::Cancel),
                 54..=59 => C::Work(work_system(g.major)),
+                61 => C::CuttingMode(CuttingMode::ExactStop),
+                62 => C::CuttingMode(CuttingMode::CornerOverride),
+                63 => C::CuttingMode(CuttingMode::Tapping),
+                64 => C::CuttingMode(CuttingMode::Cutting),
                 73 => C::Cycle(CannedCycle::Cycle(Cycle::HighSpeedPeck)),
                 74 => C::Cycle(CannedCycle::Cycle(Cycle::LeftHandTapping)),
                 76 => C::Cycle(CannedCycle::Cycle(Cycle::FineBoring)),
@@ -258,13 +277,31 @@ impl Code {
                 90 => C::Distance(Distance::Absolute),
                 91 => C::Distance(Distance::Incremental),
                 92 => C::NonModal(NonModal::SetCoordinates),
+                93 => C::FeedMode(FeedMode::InverseTime),
                 94 => C::FeedMode(FeedMode::PerMinute),
                 95 => C::FeedMode(FeedMode::PerRevolution),
+                96 => C::SurfaceSpeed(SurfaceSpeed::Constant),
+                97 => C::SurfaceSpeed(SurfaceSpeed::Cancel),
                 98 => C::Return(ReturnLevel::Initial),
                 99 => C::Return(ReturnLevel::R),
+                187 => C::NonModal(NonModal::Smoothness),
                 _ => return None,
             },
             MachineKind::Lathe => return lathe_code(table.system(), g.major),
+        })
+    }
+
+    /// [`Code::of`] for a code written with a decimal (`G05.1`): out of line,
+    /// as nearly every G code is a whole number (the parser's dispatch).
+    #[inline(never)]
+    fn of_decimal(machine: MachineKind, g: GCode) -> Option<Code> {
+        use Code as C;
+        Some(match (machine, g.major, g.minor) {
+            (MachineKind::Mill, 5, 1) => C::NonModal(NonModal::AiContour),
+            (_, 7, 1) => C::NonModal(NonModal::Cylindrical),
+            (MachineKind::Lathe, 12, 1) => C::Polar(Polar::On(PolarSpelling::Fanuc)),
+            (MachineKind::Lathe, 13, 1) => C::Polar(Polar::Off(PolarSpelling::Fanuc)),
+            _ => return None,
         })
     }
 
@@ -284,6 +321,8 @@ impl Code {
             Code::Return(_) => Group::Return,
             Code::Work(_) => Group::Work,
             Code::SurfaceSpeed(_) => Group::SurfaceSpeed,
+            Code::CuttingMode(_) => Group::CuttingMode,
+            Code::Polar(_) => Group::Polar,
         }
     }
 
@@ -326,6 +365,8 @@ impl Code {
             Code::Return(c) => c.gcode(),
             Code::Work(c) => c.gcode(),
             Code::SurfaceSpeed(c) => c.gcode(),
+            Code::CuttingMode(c) => c.gcode(),
+            Code::Polar(c) => c.gcode(),
         }
     }
 }
@@ -348,9 +389,15 @@ fn lathe_code(system: GCodeSystem, major: u16) -> Option<Code> {
         18 => return Some(C::Plane(Plane::ZX)),
         28 => return Some(C::NonModal(NonModal::ReferenceReturn)),
         40 => return Some(C::CutterCompensation(CutterCompensation::Cancel)),
+        31 => return Some(C::NonModal(NonModal::Skip)),
         54..=59 => return Some(C::Work(work_system(major))),
+        // The lathe's canned cycle cancel (Fanuc T group 10): its drilling
+        // cycles are refused (behaviour 14.9).
+        80 => return Some(C::Cycle(CannedCycle::Cancel)),
         96 => return Some(C::SurfaceSpeed(SurfaceSpeed::Constant)),
         97 => return Some(C::SurfaceSpeed(SurfaceSpeed::Cancel)),
+        112 => return Some(C::Polar(Polar::On(PolarSpelling::Haas))),
+        113 => return Some(C::Polar(Polar::Off(PolarSpelling::Haas))),
         _ => {}
     }
     let turning = C::Motion(Motion::LatheCycle(LatheCycle::Turning));
@@ -411,12 +458,35 @@ fn work_system(major: u16) -> WorkSystem {
 /// The G codes of one block, one typed value per modal group: the parser
 /// resolved each (and refused a block with two of a group or an unknown
 /// code), so the machine reads them here.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug)]
 pub struct Codes {
-    /// Per group (by [`Group::index`]), its code: keeping a code is one
-    /// store, which the parser does for every G word.
-    by_group: [Option<Code>; Group::COUNT],
+    /// The groups that hold a code, a bit each (by [`Group::index`]):
+    /// emptying the block for the next is this one store, whatever the
+    /// values left behind (the `check` instruction count in
+    /// docs/performance.md: clearing an array of `Option<Code>` cost two
+    /// dozen instructions a block).
+    present: u16,
+    /// Per group, its code, valid where `present` has the group's bit:
+    /// keeping a code is one store, which the parser does for every G word.
+    by_group: [Code; Group::COUNT],
 }
+
+impl Default for Codes {
+    fn default() -> Self {
+        Codes {
+            present: 0,
+            by_group: [Code::Motion(Motion::Rapid); Group::COUNT],
+        }
+    }
+}
+
+impl PartialEq for Codes {
+    fn eq(&self, other: &Codes) -> bool {
+        self.present == other.present && self.each().eq(other.each())
+    }
+}
+
+impl Eq for Codes {}
 
 /// The accessor of one group's value.
 macro_rules! group_value {
@@ -424,8 +494,11 @@ macro_rules! group_value {
         $(#[$doc])*
         #[inline(always)]
         pub fn $name(&self) -> Option<$ty> {
+            if self.present & 1 << Group::$group as usize == 0 {
+                return None;
+            }
             match self.by_group[Group::$group as usize] {
-                Some(Code::$variant(c)) => Some(c),
+                Code::$variant(c) => Some(c),
                 // `set` keeps each code under its own group.
                 _ => None,
             }
@@ -437,12 +510,23 @@ impl Codes {
     /// Keeps `code` as its group's value.
     #[inline(always)]
     pub(crate) fn set(&mut self, code: Code, group: Group) {
-        self.by_group[group.index()] = Some(code);
+        self.by_group[group.index()] = code;
+        self.present |= 1 << group.index();
+    }
+
+    /// Forgets every code (the values stay, unread).
+    #[inline(always)]
+    pub(crate) fn clear(&mut self) {
+        self.present = 0;
     }
 
     /// Every code of the block, in group order ([`Group::ALL`]).
     pub fn each(&self) -> impl Iterator<Item = Code> + '_ {
-        self.by_group.iter().flatten().copied()
+        self.by_group
+            .iter()
+            .enumerate()
+            .filter(|(i, _)| self.present & 1 << i != 0)
+            .map(|(_, c)| *c)
     }
 
     group_value!(
@@ -490,16 +574,21 @@ impl Codes {
         work, Work, Work, WorkSystem
     );
     group_value!(
-        /// Lathe group 02.
+        /// Lathe group 02, mill group 13.
         surface_speed, SurfaceSpeed, SurfaceSpeed, SurfaceSpeed
+    );
+    group_value!(
+        /// Mill group 15.
+        cutting_mode, CuttingMode, CuttingMode, CuttingMode
+    );
+    group_value!(
+        /// Lathe group 21.
+        polar, Polar, Polar, Polar
     );
 }
 
 /// The modal group of a G code this table models, or why it does not.
 pub fn g_group(table: CodeTable, g: GCode) -> Result<Group, String> {
-    if g.minor != 0 {
-        return Err(format!("{g} is not supported by offsetlab"));
-    }
     Code::of(table, g)
         .map(Code::group)
         .ok_or_else(|| unsupported_reason(table, g))
@@ -509,6 +598,26 @@ fn unsupported_reason(table: CodeTable, g: GCode) -> String {
     let machine = table.machine();
     let lathe = machine == MachineKind::Lathe;
     let system_b_or_c = table.lathe_distance_codes();
+    if g.minor != 0 {
+        let why = match (g.major, g.minor) {
+            (12 | 13, 1) => {
+                "polar coordinate interpolation is modelled on the lathe only (with X and C)"
+            }
+            (5, 1) => "AI contour control is a mill code (G05.1 Q1/Q0)",
+            (61, 1) => {
+                "no Fanuc, Haas or YASNAC control has G61.1 (it is Mitsubishi's high-accuracy control and LinuxCNC's exact path); use G61 for exact stop mode"
+            }
+            (31, _) => {
+                "the multi-step and high-speed skip codes are not modelled; G31 (with P1–P4) is"
+            }
+            _ => "is not a G code offsetlab knows",
+        };
+        return if why.starts_with("is not") {
+            format!("{g} {why} on the {}", machine.as_str())
+        } else {
+            format!("{g}: {why}")
+        };
+    }
     let why = match g.major {
         41 | 42 if lathe => "tool nose radius compensation is not modelled",
         41 | 42 => {
@@ -527,7 +636,14 @@ fn unsupported_reason(table: CodeTable, g: GCode) -> String {
         68 | 69 => "coordinate rotation is not supported",
         15 | 16 => "polar coordinates are not supported",
         17 | 19 if lathe => "the lathe works in the ZX plane (G18) only",
-        61..=64 => "cutting modes (exact stop, tapping, continuous) are not modelled",
+        61..=64 | 9 | 8 | 93 | 187 if lathe => "this cutting-mode or feed code is a mill code",
+        12 | 13 if lathe => {
+            "circular pocket milling is a mill code; polar coordinate interpolation is G12.1/G13.1 (Haas G112/G113)"
+        }
+        81..=89 if lathe => {
+            "the lathe's drilling canned cycles (live tooling) are not modelled; G80 cancels them"
+        }
+        112 | 113 => "polar coordinate interpolation is modelled on the lathe only",
         91 if lathe => {
             "the lathe in G-code system A has no G91: U and W are the incremental axes (setting gcode_system B or C makes G90/G91 the distance modes)"
         }
@@ -587,8 +703,9 @@ mod tests {
                 [GCodeSystem::A, GCodeSystem::B, GCodeSystem::C].map(|s| CodeTable::new(m, s))
             });
         for table in tables {
-            for n in 0..=200 {
-                let g = GCode::new(n);
+            let decimals =
+                (0..=200).flat_map(|n| (1..=9).map(move |m| GCode { major: n, minor: m }));
+            for g in (0..=200).map(GCode::new).chain(decimals) {
                 if let Some(code) = Code::of(table, g) {
                     assert_eq!(code.gcode(table), g.to_string(), "{table:?} {g}");
                     assert_eq!(g_group(table, g), Ok(code.group()));
@@ -598,6 +715,10 @@ mod tests {
                 }
             }
             assert_eq!(Code::of(table, GCode { major: 1, minor: 5 }), None);
+            assert_eq!(
+                g_group(table, GCode { major: 7, minor: 1 }),
+                Ok(Group::NonModal)
+            );
         }
     }
 
@@ -607,7 +728,21 @@ mod tests {
         assert!(e.contains("G45–G48"), "{e}");
         let e = g_group(CodeTable::MILL, GCode::new(7)).unwrap_err();
         assert!(e.contains("G07 is not a G code"), "{e}");
-        let e = g_group(CodeTable::MILL, GCode { major: 5, minor: 1 }).unwrap_err();
+        let e = g_group(
+            CodeTable::MILL,
+            GCode {
+                major: 61,
+                minor: 1,
+            },
+        )
+        .unwrap_err();
+        assert!(
+            e.contains("G61.1") && e.contains("G61 for exact stop"),
+            "{e}"
+        );
+        let e = g_group(CodeTable::LATHE, GCode { major: 5, minor: 1 }).unwrap_err();
         assert!(e.contains("G05.1"), "{e}");
+        let e = g_group(CodeTable::LATHE, GCode::new(83)).unwrap_err();
+        assert!(e.contains("drilling canned cycles"), "{e}");
     }
 }
