@@ -21,7 +21,7 @@ use offsetlab::{
 };
 use proptest::prelude::*;
 
-const FIXTURES: [&str; 7] = [
+const FIXTURES: [&str; 8] = [
     "contour_g45",
     "corners",
     "g54_g28",
