@@ -622,3 +622,40 @@ fn behaviour7_22_trailing_rapids_are_the_exit_on_haas_and_the_shape_on_fanuc() {
         ],
     );
 }
+
+#[test]
+fn behaviour15_5_blocks_between_the_cycle_and_p_are_passed_over_too() {
+    // Fanuc goes on after N20: the M08 between the G71 and N10 is not run.
+    let text = "G00 X50. Z2.\nG71 P10 Q20 U0 W0 D5. F0.2\nM08\nN10 G00 X30.\nN20 G01 Z-10.\nM09\n";
+    let r = ok(text, &lathe(&[]));
+    assert_eq!(r.blocks[2].move_count, 0);
+    assert!(explain(&r, 2).starts_with("not run"));
+    // Only the M09 after N20 is an event.
+    let events: Vec<_> = r.events.iter().map(|e| e.line).collect();
+    assert_eq!(events, vec![6]);
+}
+
+#[test]
+fn behaviour15_7_an_inch_program_reads_the_haas_d_in_inches() {
+    // G20, D.05 = 0.05 in (radius) from X1.0 down to X0.8: levels X0.9,
+    // X0.8 (0.1 in of radius over 0.05 → 2), cut to Z-0.5; escape by the
+    // default 1 mm (0.03937 in) at 45°.
+    let text =
+        "G20\nG00 X1.0 Z0.1\nG71 P10 Q20 U0 W0 D.05 F0.01\nN10 G00 X0.8\nG01 Z-0.5\nN20 X1.0\n";
+    let r = ok(text, &with_control(lathe(&[]), Control::Haas));
+    let mm = |v: f64| v * 25.4;
+    let got = path(&r, 2);
+    same_path(
+        &got[..3],
+        &[
+            (Rapid, mm(0.9), mm(0.1)),
+            (Feed, mm(0.9), mm(-0.5)),
+            (Rapid, mm(0.9) + 2.0, mm(-0.5) + 1.0),
+        ],
+    );
+    assert!(
+        explain(&r, 2).contains("2 cuts at 2 levels Δd 0.0500"),
+        "{}",
+        explain(&r, 2)
+    );
+}
