@@ -322,6 +322,19 @@ impl Machine {
             depths.dedup_by(|x, y| (*x - *y).abs() < 1e-6);
         }
         let levels = depths.len() as f64;
+        // Each level looks at every piece of the contour: bound the work as
+        // the passes are bounded (behaviour 15.14).
+        if levels * pieces.len() as f64 > (MAX_PASSES * 2_000) as f64 {
+            return Err(self.error(
+                "mrc-passes",
+                b.span,
+                format!(
+                    "{}: {levels} levels over a contour of {} pieces is more than offsetlab works out in one cycle",
+                    self.code_name(cycle),
+                    pieces.len()
+                ),
+            ));
+        }
         let approach = match c.segs.first() {
             Some(s) if s.rapid => MoveKind::Rapid,
             _ => MoveKind::Feed,
