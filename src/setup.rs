@@ -23,6 +23,9 @@ pub const MAX_DIMENSION_INCH: f64 = 9_999.999_9;
 pub const DEFAULT_TABLE_SIZE: u16 = 99;
 /// Largest table a setup may ask for.
 pub const MAX_TABLE_SIZE: u16 = 999;
+/// Most additional work systems a setup holds (Haas G154 P1–P99; Fanuc's
+/// G54.1 reads the first 48).
+pub const MAX_EXTENDED_WORK: u16 = 99;
 
 /// Milling machine (G43/G44/G45–G48) or lathe (T-code offsets).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -268,6 +271,51 @@ impl GCodeSystem {
     }
 }
 
+/// What G28 or G30 without an axis word returns (behaviour 13.5, 7.21).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ReturnWithoutAxes {
+    /// Every axis returns (Haas: "when no axis is specified, all axes
+    /// return").
+    AllAxes,
+    /// No axis moves: only the axes named return (Fanuc), with a warning.
+    NoAxis,
+}
+
+/// How a program names the additional work coordinate systems (behaviour
+/// 13.3, 7.22).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum ExtendedWork {
+    /// `G54.1 P1`–`P48`, or `G54 P1`–`P48` (Fanuc).
+    #[serde(rename = "g54_1")]
+    G54_1,
+    /// `G154 P1`–`P99` (Haas).
+    #[serde(rename = "g154")]
+    G154,
+}
+
+impl ExtendedWork {
+    /// The setting's value as written.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            ExtendedWork::G54_1 => "g54_1",
+            ExtendedWork::G154 => "g154",
+        }
+    }
+}
+
+/// How G68's R reads in G91 (behaviour 13.10, 7.23; Fanuc parameter RIN, No.
+/// 5400#0).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum RotationAngle {
+    /// R is the angle, whatever G90/G91 say (RIN = 0, the standard setting).
+    #[default]
+    Absolute,
+    /// In G91, R is added to the angle of the rotation in force (RIN = 1).
+    DistanceMode,
+}
+
 /// Settings where controls disagree; the seeds' behaviour is the default.
 /// A setting whose default depends on the control is an `Option` read
 /// through its accessor (`None`: the control's default).
@@ -309,12 +357,23 @@ pub struct Settings {
     /// [`Settings::circle_pocket`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub circle_pocket: Option<CirclePocket>,
-    /// How D reads in a lathe G71/G72/G74–G76 block (behaviour 7.21, 15.2);
+    /// G28/G30 without an axis word (behaviour 7.21); read it with
+    /// [`Settings::reference_return_without_axes`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reference_return_without_axes: Option<ReturnWithoutAxes>,
+    /// G54.1 Pn or G154 Pn (behaviour 7.22); read it with
+    /// [`Settings::extended_work_offsets`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub extended_work_offsets: Option<ExtendedWork>,
+    /// G68's R in G91 (behaviour 7.23).
+    #[serde(skip_serializing_if = "is_default")]
+    pub rotation_angle: RotationAngle,
+    /// How D reads in a lathe G71/G72/G74–G76 block (behaviour 7.24, 15.2);
     /// read it with [`Settings::depth_word`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub depth_word: Option<DepthWord>,
     /// What the G00 blocks that end a G71/G72 contour going back toward
-    /// the start are (behaviour 7.22, 15.6); read it with
+    /// the start are (behaviour 7.25, 15.6); read it with
     /// [`Settings::trailing_rapids`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub trailing_rapids: Option<TrailingRapids>,
@@ -353,8 +412,32 @@ impl Settings {
         })
     }
 
+    /// G28/G30 without an axis word: Haas returns every axis (mill and lathe
+    /// operator's manuals, G28); Fanuc returns the axes the block names, so
+    /// none (0i-MF/TF operator's manuals, "Reference position return": the
+    /// axes commanded return); the YASNAC manuals at hand do not say, and the
+    /// profile follows the Fanuc family (our convention).
+    pub fn reference_return_without_axes(&self) -> ReturnWithoutAxes {
+        self.reference_return_without_axes
+            .unwrap_or(match self.control {
+                Control::Haas => ReturnWithoutAxes::AllAxes,
+                Control::Yasnac | Control::Fanuc => ReturnWithoutAxes::NoAxis,
+            })
+    }
+
+    /// The additional work systems: Haas writes G154 P1–P99 (mill operator's
+    /// manual, G154); Fanuc G54.1 P1–P48 or G54 P1–P48 (0i-MF operator's
+    /// manual, "Adding workpiece coordinate systems"); YASNAC follows Fanuc
+    /// (our convention).
+    pub fn extended_work_offsets(&self) -> ExtendedWork {
+        self.extended_work_offsets.unwrap_or(match self.control {
+            Control::Haas => ExtendedWork::G154,
+            Control::Yasnac | Control::Fanuc => ExtendedWork::G54_1,
+        })
+    }
+
     /// How the D word of the one-block G71/G72 (depth of cut), G74/G75
-    /// (relief) and G76 (first depth) reads (behaviour 7.21): Haas reads it
+    /// (relief) and G76 (first depth) reads (behaviour 7.24): Haas reads it
     /// as a length with a decimal point (Haas lathe operator's manual, G71:
     /// "D – depth of cut for each pass, positive radius", written `D0.05`);
     /// the Fanuc Series 10/11 tape format of the 0i-TF (parameter FCV) in
@@ -383,7 +466,7 @@ impl Settings {
 }
 
 /// What the G00 blocks that end a G71/G72 contour going back along the
-/// cut toward the start are (behaviour 7.22).
+/// cut toward the start are (behaviour 7.25).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum TrailingRapids {
@@ -394,7 +477,7 @@ pub enum TrailingRapids {
     Exit,
 }
 
-/// How D reads in a lathe G71/G72/G74–G76 block (behaviour 7.21).
+/// How D reads in a lathe G71/G72/G74–G76 block (behaviour 7.24).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum DepthWord {
@@ -602,9 +685,24 @@ pub struct Setup {
     /// The reference position G28 returns to, in machine coordinates.
     #[serde(skip_serializing_if = "is_default")]
     pub reference: Position,
+    /// The second reference position (G30, G30 P2), in machine coordinates;
+    /// left out, the first.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub second_reference: Option<Position>,
+    /// The third reference position (G30 P3); left out, the first.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub third_reference: Option<Position>,
+    /// The fourth reference position (G30 P4); left out, the first.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fourth_reference: Option<Position>,
     /// G54–G59 zero points in machine coordinates.
     #[serde(skip_serializing_if = "is_default")]
     pub work_offsets: WorkOffsets,
+    /// The additional work systems' zero points in machine coordinates,
+    /// keyed by their P number (G54.1 Pn, G154 Pn); one left out is at
+    /// machine zero.
+    #[serde(with = "register_map", skip_serializing_if = "BTreeMap::is_empty")]
+    pub extended_work_offsets: BTreeMap<u16, Position>,
     /// Mill registers read by D and H.
     #[serde(with = "register_map", skip_serializing_if = "BTreeMap::is_empty")]
     pub offsets: BTreeMap<u16, MillRegister>,
@@ -623,7 +721,11 @@ impl Default for Setup {
             table_size: DEFAULT_TABLE_SIZE,
             start: Position::default(),
             reference: Position::default(),
+            second_reference: None,
+            third_reference: None,
+            fourth_reference: None,
             work_offsets: WorkOffsets::default(),
+            extended_work_offsets: BTreeMap::new(),
             offsets: BTreeMap::new(),
             lathe_offsets: BTreeMap::new(),
         }
@@ -794,6 +896,30 @@ impl Setup {
         for (name, p) in self.work_offsets.all() {
             check_pos(&format!("work_offsets.{name}"), p);
         }
+        for (name, p) in [
+            ("second_reference", self.second_reference),
+            ("third_reference", self.third_reference),
+            ("fourth_reference", self.fourth_reference),
+        ] {
+            if let Some(p) = p {
+                check_pos(name, p);
+            }
+        }
+        let mut extended = Vec::new();
+        for (&n, &p) in &self.extended_work_offsets {
+            check_pos(&format!("extended_work_offsets.{n:02}"), p);
+            if n == 0 || n > MAX_EXTENDED_WORK {
+                extended.push(n);
+            }
+        }
+        for n in extended {
+            out.push(setup_error(
+                "setup-range",
+                format!(
+                    "extended work offset {n:02} is outside 01 to {MAX_EXTENDED_WORK} (G54.1 P1–P48, G154 P1–P99)"
+                ),
+            ));
+        }
         if let Some(d) = self.settings.peck_retract
             && (!d.is_finite() || d < 0.0 || d > max)
         {
@@ -872,6 +998,18 @@ impl Setup {
             }
         }
         Ok(())
+    }
+
+    /// Reference position `n` (1 to 4; G28 returns to 1, G30 to 2–4), in
+    /// setup units: an unset one is the first.
+    pub fn reference_point(&self, n: u8) -> Position {
+        match n {
+            2 => self.second_reference,
+            3 => self.third_reference,
+            4 => self.fourth_reference,
+            _ => None,
+        }
+        .unwrap_or(self.reference)
     }
 
     /// The value register `n` holds for D and H (00 and unset read 0).

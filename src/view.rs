@@ -75,6 +75,82 @@ pub struct LatheView {
     pub vector: Pos,
 }
 
+/// Where the block's coordinate system lies on the machine (behaviour 13):
+/// its zero in machine coordinates and the parts beyond the work system's
+/// own zero.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct CoordinatesView {
+    /// The zero of the coordinate system the positions are in, in machine
+    /// coordinates (the work offset, the G92/G50 shift and the G52 local
+    /// offset added).
+    pub zero: Pos,
+    /// The G92 (lathe G50) shift.
+    pub shift: Pos,
+    /// The G52 local offset: the local zero in the work system.
+    pub local: Pos,
+}
+
+/// The mill's programmable mirror image (G51.1): each axis's mirror
+/// coordinate, or null.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct MirrorView {
+    /// X is mirrored about this X.
+    pub x: Option<f64>,
+    /// Y is mirrored about this Y.
+    pub y: Option<f64>,
+    /// Z is mirrored about this Z.
+    pub z: Option<f64>,
+}
+
+/// G51 scaling.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct ScalingView {
+    /// The centre.
+    pub center: Pos,
+    /// The factor of each axis.
+    pub factors: Pos,
+}
+
+/// G68 rotation.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct RotationView {
+    /// G17, G18 or G19.
+    pub plane: &'static str,
+    /// The centre.
+    pub center: Pos,
+    /// The angle, degrees counter-clockwise.
+    pub degrees: f64,
+}
+
+/// The mill's transformations in force (behaviour 13.8–13.10).
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct TransformsView {
+    /// G51.1.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mirror: Option<MirrorView>,
+    /// G51.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub scaling: Option<ScalingView>,
+    /// G68.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rotation: Option<RotationView>,
+}
+
+/// The rotary axes a program named (degrees): reported, not drawn
+/// (behaviour 13.14).
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct RotaryView {
+    /// A.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub a: Option<f64>,
+    /// B.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub b: Option<f64>,
+    /// C.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub c: Option<f64>,
+}
+
 /// One block as reported.
 #[derive(Clone, Debug, Serialize)]
 pub struct BlockView<'a> {
@@ -94,6 +170,16 @@ pub struct BlockView<'a> {
     pub programmed: Pos,
     /// Actual position after the block.
     pub actual: Pos,
+    /// The actual position in machine coordinates (behaviour 13.1).
+    pub machine: Pos,
+    /// Where the coordinate system lies on the machine.
+    pub coordinates: CoordinatesView,
+    /// Mill: the transformations in force, absent when none is.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub transforms: Option<TransformsView>,
+    /// Mill: the rotary axes, absent until a block names one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rotary: Option<RotaryView>,
     /// Modal codes after the block.
     pub modal: ModalCodes,
     /// Modal feed.
@@ -153,6 +239,18 @@ fn block_view_at<'a>(b: &BlockReport, text: &'a str, columns: (u32, u32)) -> Blo
         units: u.as_str(),
         programmed: pos(s.programmed, u, m),
         actual: pos(s.actual, u, m),
+        machine: pos(s.machine_position(), u, m),
+        coordinates: CoordinatesView {
+            zero: pos(s.coords.zero, u, m),
+            shift: pos(s.coords.shift, u, m),
+            local: pos(s.coords.local, u, m),
+        },
+        transforms: transforms_view(s),
+        rotary: (s.rotary != [None; 3]).then_some(RotaryView {
+            a: s.rotary[0].map(round6),
+            b: s.rotary[1].map(round6),
+            c: s.rotary[2].map(round6),
+        }),
         modal: s.modal.codes(s.table()),
         feed: s.feed,
         spindle: s.spindle,
@@ -183,6 +281,36 @@ fn block_view_at<'a>(b: &BlockReport, text: &'a str, columns: (u32, u32)) -> Blo
         first_move: b.first_move,
         move_count: b.move_count,
     }
+}
+
+/// The transformations of a block's state, if any is on.
+fn transforms_view(s: &crate::machine::BlockState) -> Option<TransformsView> {
+    let t = &s.modal.transforms;
+    if t.is_identity() {
+        return None;
+    }
+    let (u, m) = (s.modal.units, s.machine);
+    let mm = |v: Option<f64>| v.map(|v| to_units(v, u));
+    Some(TransformsView {
+        mirror: (t.mirror != [None; 3]).then_some(MirrorView {
+            x: mm(t.mirror[0]),
+            y: mm(t.mirror[1]),
+            z: mm(t.mirror[2]),
+        }),
+        scaling: t.scaling.map(|sc| ScalingView {
+            center: pos(sc.center, u, m),
+            factors: Pos {
+                x: round6(sc.factors[0]),
+                y: Some(round6(sc.factors[1])),
+                z: round6(sc.factors[2]),
+            },
+        }),
+        rotation: t.rotation.map(|r| RotationView {
+            plane: r.plane.gcode(),
+            center: pos(r.center, u, m),
+            degrees: round6(r.degrees),
+        }),
+    })
 }
 
 /// The circle of an arc move as reported.

@@ -57,6 +57,7 @@ fn assert_same_reports(text: &str, setup: &Setup) {
 fn reports_made_again_from_checkpoints_equal_the_kept_ones_for_every_fixture() {
     for name in [
         "contour_g45",
+        "coordinates",
         "corners",
         "g54_g28",
         "inch_plate",

@@ -400,7 +400,7 @@ fn behaviour15_12_g76_one_block_haas_reads_d_as_a_length() {
 }
 
 #[test]
-fn behaviour7_21_depth_word_reads_d_by_the_control() {
+fn behaviour7_24_depth_word_reads_d_by_the_control() {
     // Fanuc's Series 10/11 format: D in least increments, D800 = 0.8 mm;
     // a decimal point there is an error.
     let fanuc = with_control(lathe(&[]), Control::Fanuc);
@@ -587,7 +587,7 @@ fn behaviour15_11_g70_dwell_in_the_contour_is_an_event() {
 }
 
 #[test]
-fn behaviour7_22_trailing_rapids_are_the_exit_on_haas_and_the_shape_on_fanuc() {
+fn behaviour7_25_trailing_rapids_are_the_exit_on_haas_and_the_shape_on_fanuc() {
     // The contour ends `G00 Z2.` back at the start, as Haas school programs
     // write it.
     let text = "G00 X50. Z2.\nG71 P10 Q20 U0 W0 D5. F0.2\nN10 G00 X30. Z2.\nG01 Z-10.\nX50.\nN20 G00 Z2.\n";

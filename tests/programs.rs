@@ -224,3 +224,41 @@ fn two_fixtures_with_g54_g55_and_g28() {
     at(&f.n(90).actual, 250.0, Some(200.0), 300.0);
     insta::assert_snapshot!(f.digest());
 }
+
+#[test]
+fn coordinates_local_rotation_polar_mirror_scaling_and_returns() {
+    let f = load("coordinates");
+    // G54's zero is machine (-400, -200, -300); the start (0, 0, 100).
+    // N20: G43 H01 = 150: Z20 lands at 170.
+    at(&f.n(20).actual, 0.0, Some(0.0), 170.0);
+    // N25: G52 X50 Y50: the tool at machine (-400, -200) is (-50, -50).
+    at(&f.n(25).programmed, -50.0, Some(-50.0), 20.0);
+    // N40: X20 Y0 turned 30° about the local zero: (20 cos 30°, 20 sin 30°).
+    at(&f.n(40).programmed, 17.320508, Some(10.0), 20.0);
+    // N45: the G03 R20 from there to (0, 20) turned: (−10, 10√3), about (0, 0).
+    let b = f.n(45);
+    at(&b.programmed, -10.0, Some(17.320508), 20.0);
+    let arc = f.run.moves[b.first_move as usize].arc.unwrap();
+    common::same(arc.programmed_center, [0.0, 0.0, 20.0]);
+    // N60–N70: the polar holes at 30 from the local zero: 0°, 90°, 90° + 90°.
+    at(&f.n(60).programmed, 30.0, Some(0.0), 20.0);
+    at(&f.n(65).programmed, 0.0, Some(30.0), 20.0);
+    at(&f.n(70).programmed, -30.0, Some(0.0), 20.0);
+    // N80: G52 X0 Y0: the tool at machine (-380, -150) is G54 (20, 50).
+    at(&f.n(80).programmed, 20.0, Some(50.0), 20.0);
+    // N90: X80 mirrored about X100 is X120.
+    at(&f.n(90).programmed, 120.0, Some(0.0), 20.0);
+    // N95: G91 G45 Y10 D02 = 3: Y travels 13.
+    at(&f.n(95).actual, 120.0, Some(13.0), 170.0);
+    // N110: ×1.5 about the origin: (30, 30), the G45 vector carried.
+    at(&f.n(110).actual, 30.0, Some(33.0), 170.0);
+    // N120: G54.1 P1, zero at machine (-250, -200, -300).
+    let b = f.n(120);
+    assert_eq!(b.modal.work, "G54.1 P1");
+    at(&b.machine, -250.0, Some(-197.0), -130.0);
+    // N125: G30 (P2) Z: machine Z0 is Z300; the length vector is cleared.
+    at(&f.n(125).actual, 0.0, Some(3.0), 300.0);
+    // N135: G28 X0 Y0: machine (0, 0) is (250, 200); the Y vector cleared.
+    at(&f.n(135).actual, 250.0, Some(200.0), 300.0);
+    insta::assert_snapshot!(f.digest());
+}

@@ -23,6 +23,7 @@ use proptest::prelude::*;
 
 const FIXTURES: [&str; 8] = [
     "contour_g45",
+    "coordinates",
     "corners",
     "g54_g28",
     "haas_modes",

@@ -116,10 +116,14 @@ impl Machine {
             }
             // 1. Position over the hole at the current level.
             let start = self.mark();
-            for (k, &axis) in [ia, ib].iter().enumerate() {
-                if let Some(v) = words[k] {
-                    self.state.programmed[axis] = self.target(axis, v, incremental);
+            if self.plain_words {
+                for (k, &axis) in [ia, ib].iter().enumerate() {
+                    if let Some(v) = words[k] {
+                        self.state.programmed[axis] = self.target(axis, v, incremental);
+                    }
                 }
+            } else {
+                self.hole_position(b, incremental, out)?;
             }
             self.emit(out, start, MoveKind::Rapid, false, None);
             // The length offset applies to the Z levels of the cycle.
@@ -137,6 +141,9 @@ impl Machine {
                 (z, false) => z,
             };
             self.drill(cycle, n, ia, initial, r_level, bottom, out)?;
+            if !self.plain_words {
+                self.hole_done(n);
+            }
         }
         let l = self.state.length;
         if n == 2 && (l.vector != old_length.vector || l.target != old_length.target) {

@@ -62,8 +62,9 @@ impl Machine {
             }
         }
         let before = self.state.modal;
-        self.common_words(b, out);
+        self.common_words(b, out)?;
         self.mode_codes(b, out, before)?;
+        self.work_words(b, out)?;
         let c = b.codes();
         if c.non_modal() == Some(NonModal::Dwell) {
             return self.dwell(b, out);
@@ -88,10 +89,35 @@ impl Machine {
                 self.turning = TurningData::default();
             }
         }
+        let positioning = matches!(
+            c.non_modal(),
+            Some(
+                NonModal::ReferenceCheck
+                    | NonModal::OtherReference
+                    | NonModal::LocalCoordinates
+                    | NonModal::MachineCoordinates
+            )
+        );
+        if let Some(t) = b.get(Address::T).filter(|_| positioning) {
+            return Err(self.error(
+                "t-in-positioning",
+                t.span,
+                "a T code goes in a block of its own or with a move, not with G27, G30, G52 or G53",
+            ));
+        }
         let mut skip = false;
         match c.non_modal() {
             Some(NonModal::SetCoordinates) => return self.g50(b),
-            Some(NonModal::ReferenceReturn) => return self.lathe_g28(b, out),
+            Some(code @ (NonModal::ReferenceReturn | NonModal::OtherReference)) => {
+                return self.lathe_reference(b, code, out);
+            }
+            Some(NonModal::ReferenceCheck) => return self.g27(b, out),
+            Some(NonModal::LocalCoordinates) => return self.g52(b, out),
+            Some(NonModal::MachineCoordinates) => {
+                self.g53(b, out)?;
+                return Ok(());
+            }
+            Some(NonModal::PresetCoordinates) => return self.g92_1(b, out),
             Some(NonModal::Repetitive(cycle)) => return self.repetitive(b, cycle, out, program),
             // G31 moves as G01 whatever the mode (behaviour 14.7).
             Some(NonModal::Skip) => {
@@ -249,7 +275,7 @@ impl Machine {
     /// The programmed target (mm) a block's words give `axis` (0: X, 2: Z):
     /// X/Z absolute — incremental in G91, which only G-code systems B and C
     /// have (behaviour 7.18) — and U/W incremental.
-    fn lathe_target(&self, b: &Block, axis: usize) -> Option<f64> {
+    pub(super) fn lathe_target(&self, b: &Block, axis: usize) -> Option<f64> {
         let (abs, inc) = match axis {
             0 => (Address::X, Address::U),
             _ => (Address::Z, Address::W),
@@ -309,40 +335,6 @@ impl Machine {
                 "G50 needs X and Z (coordinate system setting) or S (spindle speed limit)",
             ));
         }
-        Ok(())
-    }
-
-    /// Lathe G28: through the intermediate point to the reference position;
-    /// the T vector is cleared on the axes that reach it and applies again at
-    /// their next move.
-    fn lathe_g28(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
-        let mut named = [false; 3];
-        let start = self.mark();
-        for axis in [0, 2] {
-            let Some(to) = self.lathe_target(b, axis) else {
-                continue;
-            };
-            named[axis] = true;
-            self.state.programmed[axis] = to;
-        }
-        if !named.iter().any(|n| *n) {
-            return Err(self.error(
-                "g28-without-axis",
-                b.span,
-                "G28 needs the axes to return (for example G28 U0 W0)",
-            ));
-        }
-        self.emit(out, start, MoveKind::Rapid, false, None);
-        let start = self.mark();
-        let reference = self.setup.reference.to_array();
-        for axis in [0, 2] {
-            if named[axis] {
-                self.state.lathe.vector[axis] = 0.0;
-                self.state.programmed[axis] =
-                    self.setup.units.mm() * reference[axis] - self.origin[axis];
-            }
-        }
-        self.emit(out, start, MoveKind::Rapid, false, None);
         Ok(())
     }
 

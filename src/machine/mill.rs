@@ -67,7 +67,7 @@ impl Machine {
             }
         }
         let before = self.state.modal;
-        self.common_words(b, out);
+        self.common_words(b, out)?;
         self.mode_codes(b, out, before)?;
         let c = b.codes();
         if self.state.modal.feed_mode == FeedMode::InverseTime {
@@ -104,10 +104,38 @@ impl Machine {
             None => {}
         }
 
-        match c.non_modal() {
+        let non_modal = c.non_modal();
+        if b.holds_any(&[Address::A, Address::B, Address::C]) {
+            let set = matches!(
+                non_modal,
+                Some(NonModal::SetCoordinates | NonModal::MachineCoordinates)
+            );
+            self.rotary_words(b, set, out);
+        }
+        let centre_words = self.transform_codes(b, out)?;
+        self.work_words(b, out)?;
+        if non_modal == Some(NonModal::MachineCoordinates) && self.g53(b, out)? {
+            return Ok(());
+        }
+        match non_modal {
             Some(NonModal::Dwell) => return self.dwell(b, out),
             Some(NonModal::SetCoordinates) => return self.g92(b),
-            Some(NonModal::ReferenceReturn) => return self.g28(b, out),
+            Some(code @ (NonModal::ReferenceReturn | NonModal::OtherReference)) => {
+                return self.mill_reference(b, code, out);
+            }
+            Some(NonModal::ReferenceCheck) => return self.g27(b, out),
+            Some(NonModal::LocalCoordinates) => {
+                self.g52(b, out)?;
+                let old_length = self.length_words(b, out)?;
+                return self.length_only_motion(out, old_length);
+            }
+            Some(NonModal::PresetCoordinates) => {
+                self.g92_1(b, out)?;
+                let old_length = self.length_words(b, out)?;
+                return self.length_only_motion(out, old_length);
+            }
+            // G53 in G91 is ignored: the block runs on (behaviour 13.1).
+            Some(NonModal::MachineCoordinates) => {}
             Some(NonModal::PositionOffset(code)) => {
                 return self.position_offset_block(b, code, out);
             }
@@ -130,6 +158,11 @@ impl Machine {
             Some(NonModal::Repetitive(_)) => {}
         }
         let old_length = self.length_words(b, out)?;
+        if centre_words {
+            // The axis words were G51's, G68's or G51.1's: no axis moves
+            // by them (behaviour 13.8–13.10).
+            return self.length_only_motion(out, old_length);
+        }
         match self.state.modal.cycle {
             Some(cycle) => self.cycle_block(b, cycle, out, old_length),
             None => self.mill_motion(b, out, old_length, None),
@@ -159,7 +192,11 @@ impl Machine {
 
     /// G43/G44/G49 and H (behaviour 3, [`LengthState::block`]). Returns the
     /// state before the block.
-    fn length_words(&mut self, b: &Block, out: &mut Out) -> Result<LengthState, Diagnostic> {
+    pub(super) fn length_words(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+    ) -> Result<LengthState, Diagnostic> {
         let code = b.codes().length();
         let h = b.get(Address::H);
         let old = self.state.length;
@@ -202,28 +239,25 @@ impl Machine {
         let setting = self.setup.settings.length_offset_without_z;
 
         if !any_axis && !arc_words {
-            if length_changed {
-                let start = self.mark();
-                self.state.length.vector = self.state.length.vector_after(false, true, setting);
-                self.length_note(old_length, None, out);
-                // Made in the G00/G01 mode; G02/G03 refuse a length change
-                // (behaviour 3.7) and the parser gives the mill no lathe cycle.
-                let at_feed = match motion {
-                    Motion::Linear => true,
-                    Motion::Rapid | Motion::Arc(_) | Motion::LatheCycle(_) => false,
-                };
-                self.emit(out, start, MoveKind::Offset, at_feed, None);
-            }
-            return Ok(());
+            return self.length_only_motion(out, old_length);
         }
 
         let start = self.mark();
         let mut target = self.state.programmed;
         let mut amount = [0.0; 3];
-        for (axis, w) in words.iter().enumerate() {
-            if let Some(v) = w {
-                target[axis] = self.target(axis, self.mm(*v), incremental);
-                amount[axis] = target[axis] - self.state.programmed[axis];
+        if self.plain_words {
+            for (axis, w) in words.iter().enumerate() {
+                if let Some(v) = w {
+                    target[axis] = self.target(axis, self.mm(*v), incremental);
+                    amount[axis] = target[axis] - self.state.programmed[axis];
+                }
+            }
+        } else {
+            target = self.framed_target(b, incremental, pos.is_some(), out)?;
+            for (axis, w) in words.iter().enumerate() {
+                if w.is_some() {
+                    amount[axis] = target[axis] - self.state.programmed[axis];
+                }
             }
         }
 
@@ -237,7 +271,12 @@ impl Machine {
                 d,
                 register,
                 incremental,
-                mirror: self.mirror,
+                // The offset follows the movement as the mirror image
+                // switches and the transformations turn it (behaviour 4.14,
+                // 13.7).
+                mirror: std::array::from_fn(|i| {
+                    self.mirror[i] != (self.state.modal.transforms.axis_factor(i) < 0.0)
+                }),
                 units: self.units(),
             };
             delta = change.axes(amount, words.map(|w| w.is_some()), &mut out.notes);
@@ -277,6 +316,58 @@ impl Machine {
         )
     }
 
+    /// A block that changes the length offset and moves no axis by its
+    /// words: Z travels the change as offset motion (behaviour 3.3), or
+    /// nothing moves.
+    pub(super) fn length_only_motion(
+        &mut self,
+        out: &mut Out,
+        old_length: LengthState,
+    ) -> Result<(), Diagnostic> {
+        if !self.state.length.changed_since(&old_length) {
+            return Ok(());
+        }
+        let setting = self.setup.settings.length_offset_without_z;
+        let start = self.mark();
+        self.state.length.vector = self.state.length.vector_after(false, true, setting);
+        self.length_note(old_length, None, out);
+        // Made in the G00/G01 mode; G02/G03 refuse a length change
+        // (behaviour 3.7) and the parser gives the mill no lathe cycle.
+        let at_feed = match self.state.modal.motion {
+            Motion::Linear => true,
+            Motion::Rapid | Motion::Arc(_) | Motion::LatheCycle(_) => false,
+        };
+        self.emit(out, start, MoveKind::Offset, at_feed, None);
+        Ok(())
+    }
+
+    /// The end point of a motion block whose words go through polar
+    /// coordinates or the transformations (behaviour 13.7), with the
+    /// sentence that says where they sent it. Out of line: the plain
+    /// block's path does not pay for it.
+    #[inline(never)]
+    fn framed_target(
+        &mut self,
+        b: &Block,
+        incremental: bool,
+        position_offset: bool,
+        out: &mut Out,
+    ) -> Result<Xyz, Diagnostic> {
+        if position_offset && self.state.modal.transforms.rotation.is_some() {
+            return Err(self.error(
+                "position-offset-rotation",
+                b.code_span(Group::NonModal),
+                "G45–G48 extend or reduce the movement of each axis word, and a rotated movement is no longer along the axes: cancel G68 first (our convention; the manuals say nothing of the two together)",
+            ));
+        }
+        let (target, cmd) = self.program_targets(b, [true; 3], incremental);
+        if let Some(note) = self.frame_sentence(b, [true; 3], target) {
+            out.notes.push(note);
+        }
+        self.command = cmd;
+        Ok(target)
+    }
+
     /// Ends a G02/G03 move (behaviour 2; with G45–G48, behaviour 4.8): solves the
     /// arc from R or I/J/K, updates the position and the vectors, notes what
     /// the length offset did and records the move. Kept out of line: inlined
@@ -309,6 +400,10 @@ impl Machine {
         };
         let (ia, ib, _) = self.state.modal.plane.axes();
         req.ccw = (direction == ArcDirection::Ccw) != (self.mirror[ia] != self.mirror[ib]);
+        let framed = !self.plain_words;
+        if framed {
+            req.ccw = req.ccw != self.framed_arc(b)?;
+        }
         let mut pv = self.state.position.vector;
         for i in 0..3 {
             pv[i] += delta[i];
@@ -344,7 +439,14 @@ impl Machine {
                     z_word,
                 );
             }
-            let r_mm = self.mm(r.value);
+            let mut r_mm = self.mm(r.value);
+            if framed {
+                r_mm *= self
+                    .state
+                    .modal
+                    .transforms
+                    .radius_factor(self.state.modal.plane);
+            }
             let dr = change.map_or(0.0, |c| c.radius(r_mm, &mut out.notes));
             req.radius = Some((r_mm, dr));
         } else {
@@ -366,27 +468,31 @@ impl Machine {
                     ),
                 ));
             }
-            for (i, w) in centre_words.iter().enumerate() {
-                let Some(v) = w else { continue };
-                if !in_plane(i) {
-                    out.warnings.push(Diagnostic::warning(
-                        "arc-center-word",
-                        self.word_span(b, [Address::I, Address::J, Address::K][i]),
-                        format!(
-                            "{} is not a centre word of the {} plane and is ignored",
-                            ['I', 'J', 'K'][i],
-                            self.state.modal.plane.gcode()
-                        ),
-                    ));
-                    continue;
-                }
-                let mut off = self.mm(*v);
-                if self.mirror[i] {
-                    off = -off;
-                }
-                req.center[i] = off;
-                if let Some(c) = change {
-                    req.center_change[i] = c.center(i, off, &mut out.notes);
+            if framed {
+                self.framed_centres(b, centre_words, change, &mut req, out)?;
+            } else {
+                for (i, w) in centre_words.iter().enumerate() {
+                    let Some(v) = w else { continue };
+                    if !in_plane(i) {
+                        out.warnings.push(Diagnostic::warning(
+                            "arc-center-word",
+                            self.word_span(b, [Address::I, Address::J, Address::K][i]),
+                            format!(
+                                "{} is not a centre word of the {} plane and is ignored",
+                                ['I', 'J', 'K'][i],
+                                self.state.modal.plane.gcode()
+                            ),
+                        ));
+                        continue;
+                    }
+                    let mut off = self.mm(*v);
+                    if self.mirror[i] {
+                        off = -off;
+                    }
+                    req.center[i] = off;
+                    if let Some(c) = change {
+                        req.center_change[i] = c.center(i, off, &mut out.notes);
+                    }
                 }
             }
         }
@@ -463,7 +569,11 @@ impl Machine {
     /// G92 X… Y… Z…: sets the programmed position; the G45–G48 vector on each
     /// named axis is cancelled first (behaviour 4.7, seed 003).
     fn g92(&mut self, b: &Block) -> Result<(), Diagnostic> {
-        if !AXES.iter().any(|(a, _)| b.has(*a)) {
+        self.refuse_in_transforms(b.code_span(Group::NonModal), "G92")?;
+        // A rotary word alone sets that axis (behaviour 13.14).
+        if !AXES.iter().any(|(a, _)| b.has(*a))
+            && !b.holds_any(&[Address::A, Address::B, Address::C])
+        {
             return Err(self.error(
                 "g92-without-axis",
                 b.span,
@@ -475,67 +585,6 @@ impl Machine {
                 let v = self.mm(v);
                 self.set_coordinate(axis, v, true);
             }
-        }
-        Ok(())
-    }
-
-    /// G28: to the intermediate point, then to the reference position on the
-    /// named axes; the length and position vectors are cleared on the axes
-    /// that reach it, and G43/G44 applies again at the next Z move (behaviour 2.10).
-    fn g28(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
-        if !AXES.iter().any(|(a, _)| b.has(*a)) {
-            return Err(self.error(
-                "g28-without-axis",
-                b.span,
-                "G28 needs the axes to return (for example G91 G28 Z0)",
-            ));
-        }
-        // A length offset commanded here applies at the next Z move: the
-        // return clears the Z vector anyway.
-        self.length_words(b, out)?;
-        let incremental = self.state.modal.distance == Distance::Incremental;
-        let start = self.mark();
-        let mut named = [false; 3];
-        for (axis, (a, _)) in AXES.iter().enumerate() {
-            if let Some(v) = b.value(*a) {
-                named[axis] = true;
-                self.state.programmed[axis] = self.target(axis, self.mm(v), incremental);
-            }
-        }
-        self.emit(out, start, MoveKind::Rapid, false, None);
-        let start = self.mark();
-        let reference = self.setup.reference.to_array();
-        let mut cleared = Vec::new();
-        for axis in 0..3 {
-            if !named[axis] {
-                continue;
-            }
-            let had = self.state.position.vector[axis] != 0.0
-                || (axis == 2 && self.state.length.vector != 0.0);
-            self.state.position.vector[axis] = 0.0;
-            if axis == 2 {
-                self.state.length.vector = 0.0;
-            }
-            self.state.programmed[axis] =
-                self.setup.units.mm() * reference[axis] - self.origin[axis];
-            if had {
-                cleared.push(AXES[axis].1.to_string());
-            }
-        }
-        self.emit(out, start, MoveKind::Rapid, false, None);
-        if !cleared.is_empty() {
-            let mut note = format!(
-                "G28: offset vectors cleared on {} at the reference position",
-                cleared.join(", ")
-            );
-            if named[2] && self.state.length.target != 0.0 {
-                note.push_str(&format!(
-                    "; {} H{:02} stays active and applies again at the next Z move",
-                    self.state.length.mode().gcode(),
-                    self.state.length.h
-                ));
-            }
-            out.notes.push(note);
         }
         Ok(())
     }

@@ -9,8 +9,10 @@
 //! positions.
 
 pub mod arc;
+mod coords;
 mod corner;
 mod cycles;
+pub mod frame;
 mod lathe;
 mod mill;
 pub mod modal;
@@ -18,12 +20,14 @@ mod modes;
 mod mrc;
 mod pocket;
 pub mod program;
+mod reference;
 pub mod state;
+mod transform;
 
 pub use state::{ArcInfo, BlockState, EventKind, Move, MoveKind};
 
 use crate::diag::{Diagnostic, Span};
-use crate::geometry::{Xyz, add, scale, sub, to_units};
+use crate::geometry::{Xyz, add, scale, to_units};
 use crate::offsets::lathe::LatheState;
 use crate::offsets::length::LengthState;
 use crate::offsets::position::PositionState;
@@ -31,7 +35,7 @@ use crate::setup::{MachineKind, Setup, Units};
 use crate::syntax::codes::{CutterCompensation, MCode, NonModal};
 use crate::syntax::{Address, Block};
 use arc::{ArcError, Circle};
-use modal::{Modal, WorkSystem};
+use modal::Modal;
 use std::sync::Arc;
 
 /// The blocks that run after the current one (look-ahead), for the rules
@@ -99,11 +103,16 @@ pub(crate) struct Mark {
 pub struct Machine {
     setup: Arc<Setup>,
     pub(crate) state: BlockState,
-    /// Zero of the current work coordinate system in machine coordinates (mm),
-    /// G92/G50 shift included.
-    origin: Xyz,
-    /// The G92/G50 shift, kept across G54–G59 changes.
-    shift: Xyz,
+    /// The tool's point in the program's own coordinates, before the mill's
+    /// transformations (mm; kept while one is on: behaviour 13.7).
+    command: Xyz,
+    /// No transformation, polar coordinates or absolute arc centre is on:
+    /// the words read plainly (the motion's fast path).
+    plain_words: bool,
+    /// The program was warned that rotary axes are not drawn.
+    rotary_warned: bool,
+    /// The program was warned of G90.1/G91.1.
+    arc_center_warned: bool,
     /// Mirror image switches per axis.
     mirror: [bool; 3],
     /// The point movements are mirrored about, in machine coordinates.
@@ -166,6 +175,11 @@ impl Machine {
             length: LengthState::default(),
             position: PositionState::default(),
             lathe: LatheState::default(),
+            coords: frame::Coordinates {
+                zero: origin,
+                ..frame::Coordinates::default()
+            },
+            rotary: [None; 3],
         };
         let mirror = if setup.machine == MachineKind::Mill {
             setup.settings.mirror.axes()
@@ -175,8 +189,10 @@ impl Machine {
         Machine {
             setup,
             state,
-            origin,
-            shift: [0.0; 3],
+            command: start,
+            plain_words: true,
+            rotary_warned: false,
+            arc_center_warned: false,
             mirror,
             mirror_center: add(start, origin),
             cycle: cycles::CycleData::default(),
@@ -221,13 +237,12 @@ impl Machine {
                 "{:?}",
                 (
                     &m.state,
-                    m.origin,
-                    m.shift,
+                    m.command,
+                    m.plain_words,
+                    (m.rotary_warned, m.arc_center_warned),
                     m.mirror,
                     m.mirror_center,
-                    m.cycle,
-                    m.turning,
-                    m.mrc,
+                    (m.cycle, m.turning, m.mrc),
                     m.feed_warned,
                     m.special,
                     m.corner_cut,
@@ -304,15 +319,21 @@ impl Machine {
             return Ok(());
         }
         let lathe = self.setup.machine == MachineKind::Lathe;
-        // The mill cuts the corner words (`corner.rs`); section 14 models
-        // G187's E and the rotary word of G07.1 (`models_word`); G76's A is
-        // its tool angle (behaviour 15.12).
+        // The mill cuts the corner words (`corner.rs`) and reports its
+        // rotary axes, not drawn (behaviour 13.14); section 14 models G187's
+        // E and the rotary word of G07.1 (`models_word`); G76's A is its tool
+        // angle (behaviour 15.12).
         let g76 = b.codes().non_modal()
             == Some(NonModal::Repetitive(
                 crate::syntax::codes::Repetitive::Threading,
             ));
         let modelled = |a: Address| {
-            (!lathe && matches!(a, Address::CommaC | Address::CommaR)) || (g76 && a == Address::A)
+            (g76 && a == Address::A)
+                || (!lathe
+                    && matches!(
+                        a,
+                        Address::CommaC | Address::CommaR | Address::A | Address::B | Address::C
+                    ))
         };
         let Some(w) = b.words.iter().find(|w| {
             UNMODELLED.contains(&w.address)
@@ -486,7 +507,7 @@ impl Machine {
     fn target(&self, axis: usize, word_mm: f64, incremental: bool) -> f64 {
         let p = self.state.programmed[axis];
         if self.mirror[axis] {
-            let c = self.mirror_center[axis] - self.origin[axis];
+            let c = self.mirror_center[axis] - self.state.coords.zero[axis];
             if incremental {
                 p - word_mm
             } else {
@@ -501,7 +522,8 @@ impl Machine {
 
     /// Sets the programmed coordinate of `axis` to `value` without moving the
     /// tool (G92 / G50). With `clear_position` the axis's G45–G48 vector is
-    /// cancelled first (behaviour 4.7, seed 003).
+    /// cancelled first (behaviour 4.7, seed 003). The G52 local offset of the
+    /// axis is cancelled: the shift takes it over (behaviour 13.2).
     fn set_coordinate(&mut self, axis: usize, value: f64, clear_position: bool) {
         let before = self.actual()[axis];
         if clear_position {
@@ -510,35 +532,35 @@ impl Machine {
         self.state.programmed[axis] = value;
         let after = self.actual()[axis];
         let moved = before - after;
-        self.origin[axis] += moved;
-        self.shift[axis] += moved;
+        let c = &mut self.state.coords;
+        c.zero[axis] += moved;
+        c.shift[axis] += moved + c.local[axis];
+        c.local[axis] = 0.0;
         if self.mirror[axis] {
             // Mirror about the point where the coordinate was set.
-            self.mirror_center[axis] = self.state.programmed[axis] + self.origin[axis];
+            self.mirror_center[axis] = self.state.programmed[axis] + self.state.coords.zero[axis];
         }
-    }
-
-    /// G54–G59: the tool stays; its coordinates change to the new system.
-    fn select_work(&mut self, work: WorkSystem) {
-        let unit = self.setup.units.mm();
-        let new_origin = add(
-            scale(self.setup.work_offsets.get(work.index()).to_array(), unit),
-            self.shift,
-        );
-        let delta = sub(self.origin, new_origin);
-        self.state.programmed = add(self.state.programmed, delta);
-        if self.setup.machine == MachineKind::Lathe {
-            self.state.programmed[1] = 0.0;
-        }
-        self.origin = new_origin;
-        self.state.modal.work = work;
     }
 
     /// Codes, words and M functions every block may carry: units, plane,
-    /// distance, feed mode, return level, work system, F, S, M codes.
-    fn common_words(&mut self, b: &Block, out: &mut Out) {
+    /// distance, feed mode, return level, F, S, M codes (the work system is
+    /// [`Machine::work_words`]).
+    fn common_words(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
         let machine = self.setup.machine;
         let c = b.codes();
+        if let (Some(plane), Some(r)) = (c.plane(), self.state.modal.transforms.rotation)
+            && plane != r.plane
+        {
+            return Err(self.error(
+                "rotation-plane",
+                b.code_span(crate::syntax::codes::Group::Plane),
+                format!(
+                    "{} cannot be selected while G68 rotates the {} plane (Fanuc: no plane selection in rotation mode)",
+                    plane.gcode(),
+                    r.plane.gcode()
+                ),
+            ));
+        }
         let modal = &mut self.state.modal;
         if let Some(units) = c.units() {
             modal.units = units;
@@ -558,9 +580,6 @@ impl Machine {
         if let Some(surface_speed) = c.surface_speed() {
             modal.surface_speed = surface_speed;
         }
-        if let Some(work) = c.work() {
-            self.select_work(work);
-        }
         match c.cutter() {
             // G40, cutter compensation cancel: the state offsetlab models
             // (the parser refuses G41/G42 with the reason).
@@ -576,7 +595,7 @@ impl Machine {
             }
         }
         if !b.holds(Address::M) {
-            return;
+            return Ok(());
         }
         for m in b.mcodes(machine) {
             let kind = match m {
@@ -604,6 +623,15 @@ impl Machine {
                 | MCode::Other(_) => EventKind::Auxiliary { m: m.number() },
             };
             self.event(out, kind);
+        }
+        Ok(())
+    }
+
+    /// The block's group 14 code, if it has one (behaviour 2.7, 13.3).
+    fn work_words(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+        match b.codes().work() {
+            Some(code) => self.work_code(b, code, out),
+            None => Ok(()),
         }
     }
 

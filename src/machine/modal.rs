@@ -4,13 +4,14 @@
 
 use serde::Serialize;
 
+use super::frame::Transforms;
 use crate::setup::{MachineKind, Units};
 use crate::syntax::Address;
 pub use crate::syntax::codes::{
-    ArcDirection, CuttingMode, Cycle, Distance, FeedMode, LatheCycle, LengthOffset, Motion, Plane,
-    Polar, PolarSpelling, ReturnLevel, SurfaceSpeed, WorkSystem,
+    ArcCenter, ArcDirection, CuttingMode, Cycle, Distance, FeedMode, LatheCycle, LengthOffset,
+    Motion, Plane, Polar, PolarMode, PolarSpelling, ReturnLevel, SurfaceSpeed, WorkSystem,
 };
-use crate::syntax::codes::{CannedCycle, Code, CodeTable};
+use crate::syntax::codes::{CannedCycle, Code, CodeTable, MirrorMode, RotationMode, ScalingMode};
 
 /// All modal codes a block report shows.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -48,6 +49,14 @@ pub struct Modal {
     pub cylinder: Option<(Address, f64)>,
     /// Lathe group 21: polar coordinate interpolation (behaviour 14.11).
     pub polar: Polar,
+    /// Groups 11, 16 and 22 (mill) with their data: scaling, rotation and
+    /// programmable mirror image (behaviour 13.8–13.10).
+    pub transforms: Transforms,
+    /// Group 17 (mill): polar coordinates (behaviour 13.11).
+    pub polar_coordinates: PolarMode,
+    /// G90.1/G91.1 (mill), None until the program writes one (behaviour
+    /// 13.12).
+    pub arc_center: Option<ArcCenter>,
 }
 
 /// Haas G187's smoothness: a level and a corner tolerance (behaviour 14.6).
@@ -97,6 +106,9 @@ impl Modal {
             smoothness: None,
             cylinder: None,
             polar: Polar::Off(PolarSpelling::Fanuc),
+            transforms: Transforms::default(),
+            polar_coordinates: PolarMode::Cancel,
+            arc_center: None,
         }
     }
 
@@ -123,6 +135,21 @@ impl Modal {
             smoothness: self.smoothness.map(Smoothness::code),
             cylindrical: self.cylinder.map(|_| "G07.1"),
             polar: (!mill).then_some(self.polar.gcode()),
+            scaling: mill.then_some(match self.transforms.scaling {
+                Some(_) => ScalingMode::Start.gcode(),
+                None => ScalingMode::Cancel.gcode(),
+            }),
+            rotation: mill.then_some(match self.transforms.rotation {
+                Some(_) => RotationMode::Start.gcode(),
+                None => RotationMode::Cancel.gcode(),
+            }),
+            polar_coordinates: mill.then_some(self.polar_coordinates.gcode()),
+            mirror: mill.then_some(if self.transforms.mirror == [None; 3] {
+                MirrorMode::Cancel.gcode()
+            } else {
+                MirrorMode::Start.gcode()
+            }),
+            arc_center: self.arc_center.filter(|_| mill).map(ArcCenter::gcode),
         }
     }
 }
@@ -173,4 +200,19 @@ pub struct ModalCodes {
     /// Group 21 (lathe): G12.1/G112 or G13.1/G113.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub polar: Option<&'static str>,
+    /// Group 11 (mill): G51 or G50.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub scaling: Option<&'static str>,
+    /// Group 16 (mill): G68 or G69.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rotation: Option<&'static str>,
+    /// Group 17 (mill): G16 or G15.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub polar_coordinates: Option<&'static str>,
+    /// Group 22 (mill): G51.1 or G50.1.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mirror: Option<&'static str>,
+    /// G90.1 or G91.1 (mill), once the program writes one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub arc_center: Option<&'static str>,
 }

@@ -92,6 +92,12 @@ impl Machine {
                 | NonModal::ReferenceReturn
                 | NonModal::PositionOffset(_)
                 | NonModal::SetCoordinates
+                | NonModal::ReferenceCheck
+                | NonModal::OtherReference
+                | NonModal::LocalCoordinates
+                | NonModal::MachineCoordinates
+                | NonModal::PresetCoordinates
+                // G70–G76 are the lathe's.
                 | NonModal::Repetitive(_),
             )
             | None => {}
@@ -388,7 +394,14 @@ impl Machine {
                 | NonModal::LookAhead
                 | NonModal::Smoothness
                 | NonModal::Cylindrical
-                // G93 is the mill's; G70–G76 are the lathe's.
+                // The reference returns, G53 and the coordinate codes move at
+                // rapid or not at all (behaviour 13).
+                | NonModal::ReferenceCheck
+                | NonModal::OtherReference
+                | NonModal::LocalCoordinates
+                | NonModal::MachineCoordinates
+                | NonModal::PresetCoordinates
+                // G70–G76 are the lathe's.
                 | NonModal::Repetitive(_),
             ) => false,
             Some(NonModal::PositionOffset(_)) | None => {

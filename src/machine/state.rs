@@ -5,6 +5,7 @@
 use serde::Serialize;
 
 use super::arc::Circle;
+pub use super::frame::Coordinates;
 use super::modal::{Modal, Plane};
 use crate::geometry::Xyz;
 use crate::offsets::lathe::LatheState;
@@ -232,9 +233,21 @@ pub struct BlockState {
     pub position: PositionState,
     /// T-code offset (lathe).
     pub lathe: LatheState,
+    /// Where the current coordinate system lies on the machine (behaviour
+    /// 13).
+    pub coords: Coordinates,
+    /// The rotary axes A, B, C (degrees), once a block names them: reported,
+    /// not drawn (behaviour 13.14).
+    pub rotary: [Option<f64>; 3],
 }
 
 impl BlockState {
+    /// The actual position in machine coordinates (mm): where the machine's
+    /// axes stand (behaviour 13.1).
+    pub fn machine_position(&self) -> Xyz {
+        crate::geometry::add(self.actual, self.coords.zero)
+    }
+
     /// The table the block's codes are written back with.
     pub fn table(&self) -> CodeTable {
         CodeTable::new(self.machine, self.system)

@@ -65,7 +65,12 @@ pub fn check_block(
             | Code::Work(_)
             | Code::SurfaceSpeed(_)
             | Code::CuttingMode(_)
-            | Code::Polar(_) => false,
+            | Code::Polar(_)
+            | Code::Scaling(_)
+            | Code::Rotation(_)
+            | Code::PolarCoordinates(_)
+            | Code::Mirror(_)
+            | Code::ArcCenter(_) => false,
         };
         if !allowed {
             return Err(Diagnostic::error(

@@ -661,7 +661,12 @@ impl<'a> Blocks<'a> {
             | Code::Work(_)
             | Code::SurfaceSpeed(_)
             | Code::CuttingMode(_)
-            | Code::Polar(_) => {}
+            | Code::Polar(_)
+            | Code::Scaling(_)
+            | Code::Rotation(_)
+            | Code::PolarCoordinates(_)
+            | Code::Mirror(_)
+            | Code::ArcCenter(_) => {}
         }
     }
 

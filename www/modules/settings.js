@@ -44,6 +44,21 @@ const CHOICES = [
     help: 'G12/G13 on the mill: Haas cuts a circular pocket (I, K, Q, L, D, Z); Fanuc and YASNAC mills have no such code and alarm.',
   },
   {
+    id: 'reference_return_without_axes', label: 'G28/G30 without axes', controlDefault: true,
+    options: [['all_axes', 'every axis returns'], ['no_axis', 'no axis moves']],
+    help: 'G28 or G30 with no axis word: Haas returns every axis; Fanuc returns only the axes named, so none (YASNAC as Fanuc), and offsetlab warns.',
+  },
+  {
+    id: 'extended_work_offsets', label: 'Additional work offsets', controlDefault: true,
+    options: [['g54_1', 'G54.1 P1–P48 (Fanuc)'], ['g154', 'G154 P1–P99 (Haas)']],
+    help: 'How a program names the additional work systems: Fanuc G54.1 Pn or G54 Pn, Haas G154 Pn (YASNAC as Fanuc). Their zero points are the setup document’s extended_work_offsets.',
+  },
+  {
+    id: 'rotation_angle', label: 'G68 R in G91', machine: 'mill',
+    options: [['absolute', 'the angle itself'], ['distance_mode', 'added in G91']],
+    help: 'G68 R… is the angle whatever G90/G91 say (Fanuc RIN = 0), or in G91 it adds to the rotation in force (RIN = 1).',
+  },
+  {
     id: 'depth_word', label: 'D of G71–G76', machine: 'lathe', controlDefault: true,
     options: [['dimension', 'a length (D0.5)'], ['increments', 'least increments (D500)']],
     help: 'The one-block G71/G72 depth of cut, G74/G75 relief and G76 first depth: Haas and YASNAC write a length with a decimal point; Fanuc’s Series 10/11 format counts least increments, no decimal point.',
@@ -192,7 +207,7 @@ export function initSettings({ getSetup, change, replace }) {
   works.className = 'works';
   const summary = document.createElement('summary');
   summary.textContent = 'Work offsets G54–G59';
-  works.append(summary, line('Zero point of each work coordinate system in machine coordinates; G54 is active at start.', 'works'));
+  works.append(summary, line('Zero point of each work coordinate system as a machine position; G54 is active at start. The additional systems (extended_work_offsets) and the second to fourth reference positions are set in the document below.', 'works'));
   for (const def of POINTS.slice(1)) works.append(pointField(def));
   parts.push(works);
   ctx.form.replaceChildren(...parts);

@@ -15,6 +15,7 @@ export const DEFAULT_SETTINGS = {
   length_offset_without_z: 'move',
   lathe_x_offset: 'diameter',
   mirror: [],
+  rotation_angle: 'absolute',
 };
 
 const NUMBER = /^[+-]?(\d+\.?\d*|\.\d+)$/;

@@ -37,6 +37,36 @@ function vector(p, units) {
 
 const two = (n) => String(n).padStart(2, '0');
 
+const zero = (p) => !p || [p.x, p.y ?? 0, p.z].every((v) => Math.abs(v) < 1e-9);
+
+/** "zero at machine X… Y… Z… · G92 shift … · G52 local …" (behaviour 13). */
+function coordinates(c, u) {
+  const parts = [`zero at machine ${position(c.zero, u)}`];
+  if (!zero(c.shift)) parts.push(`G92 shift ${vector(c.shift, u)}`);
+  if (!zero(c.local)) parts.push(`G52 local ${vector(c.local, u)}`);
+  return parts.join(' · ');
+}
+
+/** The mill's mirror image, scaling and rotation in force (behaviour 13.8–13.10). */
+function transforms(t, u) {
+  const parts = [];
+  if (t.mirror) {
+    const axes = ['x', 'y', 'z'].filter((k) => t.mirror[k] !== null && t.mirror[k] !== undefined);
+    parts.push(`G51.1 mirror ${axes.map((k) => `${k.toUpperCase()} about ${fmt(t.mirror[k], u)}`).join(', ')}`);
+  }
+  if (t.scaling) {
+    const f = t.scaling.factors;
+    const same = f.x === f.y && f.y === f.z;
+    const by = same ? `×${f.x}` : `×X${f.x} Y${f.y} Z${f.z}`;
+    parts.push(`G51 scaling ${by} about ${position(t.scaling.center, u)}`);
+  }
+  if (t.rotation) {
+    const r = t.rotation;
+    parts.push(`G68 rotation ${r.degrees.toFixed(3)}° about ${position(r.center, u)} (${r.plane})`);
+  }
+  return parts.join(' · ');
+}
+
 /** Rows [label, value, key] of the panel for one block report. */
 export function stateRows(b) {
   const u = b.units;
@@ -47,7 +77,14 @@ export function stateRows(b) {
     ['Modal', Object.values(b.modal ?? {}).filter(Boolean).join(' '), 'modal'],
     ['Programmed', `${position(b.programmed, u)} ${unit}`, 'programmed'],
     ['Actual', `${position(b.actual, u)} ${unit}`, 'actual'],
+    ['Machine position', `${position(b.machine, u)} ${unit}`, 'machine'],
   ];
+  if (b.coordinates) rows.push(['Coordinate system', coordinates(b.coordinates, u), 'coordinates']);
+  if (b.transforms) rows.push(['Transformations', transforms(b.transforms, u), 'transforms']);
+  if (b.rotary) {
+    const axes = ['a', 'b', 'c'].filter((k) => b.rotary[k] !== undefined && b.rotary[k] !== null);
+    rows.push(['Rotary axes (not drawn)', axes.map((k) => `${k.toUpperCase()}${b.rotary[k].toFixed(3)}°`).join(' '), 'rotary']);
+  }
   if (b.length_offset) {
     const l = b.length_offset;
     const h = l.h > 0 ? `H${two(l.h)} = ${fmt(l.value, u)}` : 'H00 (none)';

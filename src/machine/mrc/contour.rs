@@ -3,7 +3,7 @@
 //! checks them (behaviour 15.6).
 
 use super::super::arc::{self, Circle};
-use super::super::modal::{ArcDirection, Motion};
+use super::super::modal::{ArcDirection, Distance, Motion};
 use super::super::program::ProgramText;
 use super::Machine;
 use crate::diag::Diagnostic;
@@ -127,6 +127,7 @@ impl Machine {
             q_line: blocks[blocks.len() - 1].span.line,
         };
         let mut motion = self.state.modal.motion;
+        let mut distance = self.state.modal.distance;
         let mut at = start;
         let mut feed = self.state.feed;
         let mut spindle = self.state.spindle;
@@ -182,18 +183,34 @@ impl Machine {
                 });
                 continue;
             }
+            // X and Z absolute (incremental after G91 in G-code systems B
+            // and C, behaviour 7.18), U and W incremental.
+            if let Some(d) = codes.distance() {
+                distance = d;
+            }
             let mut to = at;
-            if let Some(x) = blk.value(Address::X) {
-                to[0] = self.mm(x);
-            }
-            if let Some(u) = blk.value(Address::U) {
-                to[0] += self.mm(u);
-            }
-            if let Some(z) = blk.value(Address::Z) {
-                to[1] = self.mm(z);
-            }
-            if let Some(w) = blk.value(Address::W) {
-                to[1] += self.mm(w);
+            for (i, abs, inc) in [(0, Address::X, Address::U), (1, Address::Z, Address::W)] {
+                to[i] = match (blk.get(abs), blk.get(inc)) {
+                    (Some(_), Some(w)) => {
+                        return Err(self.mrc_error(
+                            b,
+                            "mrc-shape",
+                            "PS0325",
+                            cycle,
+                            format!(
+                                "the contour block at line {line} has {} and {} together (axis-conflict)",
+                                abs.letter(),
+                                w.address.letter()
+                            ),
+                        ));
+                    }
+                    (Some(v), None) if distance == Distance::Incremental => {
+                        at[i] + self.mm(v.value)
+                    }
+                    (Some(v), None) => self.mm(v.value),
+                    (None, Some(d)) => at[i] + self.mm(d.value),
+                    (None, None) => at[i],
+                };
             }
             if i == 0 {
                 c.p_x = blk.has(Address::X) || blk.has(Address::U);

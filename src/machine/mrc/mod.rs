@@ -306,7 +306,7 @@ impl Machine {
         b.value(a).map(|v| self.mm(v * self.units().increment()))
     }
 
-    /// D as a length (behaviour 7.21): a dimension word, or least input
+    /// D as a length (behaviour 7.24): a dimension word, or least input
     /// increments, as setting `depth_word` reads it.
     fn depth_word(&self, b: &Block) -> Option<f64> {
         match self.setup.settings.depth_word() {

@@ -58,19 +58,12 @@ impl Machine {
             ));
         }
         let start = [self.state.programmed[0], self.state.programmed[2]];
-        let mut end = start;
-        if let Some(x) = self.length(b, Address::X) {
-            end[0] = x;
-        }
-        if let Some(u) = self.length(b, Address::U) {
-            end[0] += u;
-        }
-        if let Some(z) = self.length(b, Address::Z) {
-            end[1] = z;
-        }
-        if let Some(w) = self.length(b, Address::W) {
-            end[1] += w;
-        }
+        // X and Z absolute (incremental after G91 in systems B and C), U
+        // and W incremental (behaviour 7.18).
+        let end = [
+            self.lathe_target(b, 0).unwrap_or(start[0]),
+            self.lathe_target(b, 2).unwrap_or(start[1]),
+        ];
         // Work in X radius: (peck axis, shift axis) values of a point.
         let split = |x: f64, z: f64| if face { (z, x / 2.0) } else { (x / 2.0, z) };
         let join = |p: f64, s: f64| if face { (2.0 * s, p) } else { (2.0 * p, s) };

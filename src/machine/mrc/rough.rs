@@ -423,7 +423,7 @@ impl Machine {
 
     /// The G00 blocks that end the contour going back along the cut axis:
     /// with setting `trailing_rapids` = `exit` (Haas) they are the tool's
-    /// exit and leave the shape, with a warning (behaviour 7.22).
+    /// exit and leave the shape, with a warning (behaviour 7.25).
     fn trailing_exit(
         &self,
         b: &Block,

@@ -265,19 +265,12 @@ impl Machine {
             ));
         };
         let a = [self.state.programmed[0], self.state.programmed[2]];
-        let mut end = a;
-        if let Some(x) = self.length(b, Address::X) {
-            end[0] = x;
-        }
-        if let Some(u) = self.length(b, Address::U) {
-            end[0] += u;
-        }
-        if let Some(z) = self.length(b, Address::Z) {
-            end[1] = z;
-        }
-        if let Some(w) = self.length(b, Address::W) {
-            end[1] += w;
-        }
+        // X and Z absolute (incremental after G91 in systems B and C), U
+        // and W incremental (behaviour 7.18).
+        let end = [
+            self.lathe_target(b, 0).unwrap_or(a[0]),
+            self.lathe_target(b, 2).unwrap_or(a[1]),
+        ];
         // From the root toward the start along X (outside: +1), and the
         // direction of the cut along Z.
         let sx = super::sign(a[0] - end[0]);

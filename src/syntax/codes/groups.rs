@@ -278,11 +278,95 @@ pub enum WorkSystem {
     G57,
     G58,
     G59,
+    /// `G54.1 Pn` (or `G54 Pn`): Fanuc's additional workpiece coordinate
+    /// systems, n from 1 to 48 (behaviour 13.3).
+    Additional(u8),
+    /// `G154 Pn`: Haas's additional work offsets, n from 1 to 99.
+    Haas(u8),
 }
 
+/// The most additional work systems of `G54.1 Pn` (Fanuc 0i-MF: 48 sets).
+pub const MAX_ADDITIONAL_WORK: u8 = 48;
+/// The most additional work offsets of `G154 Pn` (Haas: P1 to P99).
+pub const MAX_HAAS_WORK: u8 = 99;
+
+/// `G54.1 P1` … `G54.1 P48` as written back (a modal code is a `&'static str`).
+const ADDITIONAL_WORK: [&str; MAX_ADDITIONAL_WORK as usize] = [
+    "G54.1 P1",
+    "G54.1 P2",
+    "G54.1 P3",
+    "G54.1 P4",
+    "G54.1 P5",
+    "G54.1 P6",
+    "G54.1 P7",
+    "G54.1 P8",
+    "G54.1 P9",
+    "G54.1 P10",
+    "G54.1 P11",
+    "G54.1 P12",
+    "G54.1 P13",
+    "G54.1 P14",
+    "G54.1 P15",
+    "G54.1 P16",
+    "G54.1 P17",
+    "G54.1 P18",
+    "G54.1 P19",
+    "G54.1 P20",
+    "G54.1 P21",
+    "G54.1 P22",
+    "G54.1 P23",
+    "G54.1 P24",
+    "G54.1 P25",
+    "G54.1 P26",
+    "G54.1 P27",
+    "G54.1 P28",
+    "G54.1 P29",
+    "G54.1 P30",
+    "G54.1 P31",
+    "G54.1 P32",
+    "G54.1 P33",
+    "G54.1 P34",
+    "G54.1 P35",
+    "G54.1 P36",
+    "G54.1 P37",
+    "G54.1 P38",
+    "G54.1 P39",
+    "G54.1 P40",
+    "G54.1 P41",
+    "G54.1 P42",
+    "G54.1 P43",
+    "G54.1 P44",
+    "G54.1 P45",
+    "G54.1 P46",
+    "G54.1 P47",
+    "G54.1 P48",
+];
+/// `G154 P1` … `G154 P99`.
+const HAAS_WORK: [&str; MAX_HAAS_WORK as usize] = [
+    "G154 P1", "G154 P2", "G154 P3", "G154 P4", "G154 P5", "G154 P6", "G154 P7", "G154 P8",
+    "G154 P9", "G154 P10", "G154 P11", "G154 P12", "G154 P13", "G154 P14", "G154 P15", "G154 P16",
+    "G154 P17", "G154 P18", "G154 P19", "G154 P20", "G154 P21", "G154 P22", "G154 P23", "G154 P24",
+    "G154 P25", "G154 P26", "G154 P27", "G154 P28", "G154 P29", "G154 P30", "G154 P31", "G154 P32",
+    "G154 P33", "G154 P34", "G154 P35", "G154 P36", "G154 P37", "G154 P38", "G154 P39", "G154 P40",
+    "G154 P41", "G154 P42", "G154 P43", "G154 P44", "G154 P45", "G154 P46", "G154 P47", "G154 P48",
+    "G154 P49", "G154 P50", "G154 P51", "G154 P52", "G154 P53", "G154 P54", "G154 P55", "G154 P56",
+    "G154 P57", "G154 P58", "G154 P59", "G154 P60", "G154 P61", "G154 P62", "G154 P63", "G154 P64",
+    "G154 P65", "G154 P66", "G154 P67", "G154 P68", "G154 P69", "G154 P70", "G154 P71", "G154 P72",
+    "G154 P73", "G154 P74", "G154 P75", "G154 P76", "G154 P77", "G154 P78", "G154 P79", "G154 P80",
+    "G154 P81", "G154 P82", "G154 P83", "G154 P84", "G154 P85", "G154 P86", "G154 P87", "G154 P88",
+    "G154 P89", "G154 P90", "G154 P91", "G154 P92", "G154 P93", "G154 P94", "G154 P95", "G154 P96",
+    "G154 P97", "G154 P98", "G154 P99",
+];
+
 impl WorkSystem {
-    /// The G code.
+    /// The G code (with its P number for the additional systems).
     pub fn gcode(self) -> &'static str {
+        let numbered = |table: &'static [&'static str], n: u8| {
+            table
+                .get(usize::from(n).wrapping_sub(1))
+                .copied()
+                .unwrap_or("G54.1")
+        };
         match self {
             WorkSystem::G54 => "G54",
             WorkSystem::G55 => "G55",
@@ -290,18 +374,141 @@ impl WorkSystem {
             WorkSystem::G57 => "G57",
             WorkSystem::G58 => "G58",
             WorkSystem::G59 => "G59",
+            WorkSystem::Additional(n) => numbered(&ADDITIONAL_WORK, n),
+            WorkSystem::Haas(n) => numbered(&HAAS_WORK, n),
         }
     }
 
-    /// Its row of the work offset table: 0 for G54 … 5 for G59.
-    pub fn index(self) -> usize {
+    /// Its row of the G54–G59 table (0 for G54 … 5 for G59), or None for an
+    /// additional system (its P number keys the setup's map).
+    pub fn index(self) -> Option<usize> {
         match self {
-            WorkSystem::G54 => 0,
-            WorkSystem::G55 => 1,
-            WorkSystem::G56 => 2,
-            WorkSystem::G57 => 3,
-            WorkSystem::G58 => 4,
-            WorkSystem::G59 => 5,
+            WorkSystem::G54 => Some(0),
+            WorkSystem::G55 => Some(1),
+            WorkSystem::G56 => Some(2),
+            WorkSystem::G57 => Some(3),
+            WorkSystem::G58 => Some(4),
+            WorkSystem::G59 => Some(5),
+            WorkSystem::Additional(_) | WorkSystem::Haas(_) => None,
+        }
+    }
+}
+
+/// Group 14 as a block writes it: a work system, or a code whose system is
+/// numbered by the block's P word.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum WorkCode {
+    /// G54 … G59 (on Fanuc, `G54 Pn` is `G54.1 Pn`).
+    Standard(WorkSystem),
+    /// G54.1: Fanuc's additional systems, numbered by P.
+    Additional,
+    /// G154: Haas's additional work offsets, numbered by P.
+    Haas,
+}
+
+impl WorkCode {
+    /// The G code as written.
+    pub fn gcode(self) -> &'static str {
+        match self {
+            WorkCode::Standard(w) => w.gcode(),
+            WorkCode::Additional => "G54.1",
+            WorkCode::Haas => "G154",
+        }
+    }
+}
+
+/// Group 11 (mill): scaling.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ScalingMode {
+    /// G51: scaling on.
+    Start,
+    /// G50: scaling off (the lathe's G50 is coordinate setting).
+    Cancel,
+}
+
+impl ScalingMode {
+    /// The G code.
+    pub fn gcode(self) -> &'static str {
+        match self {
+            ScalingMode::Start => "G51",
+            ScalingMode::Cancel => "G50",
+        }
+    }
+}
+
+/// Group 16 (mill): coordinate system rotation.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum RotationMode {
+    /// G68: rotation on.
+    Start,
+    /// G69: rotation off.
+    Cancel,
+}
+
+impl RotationMode {
+    /// The G code.
+    pub fn gcode(self) -> &'static str {
+        match self {
+            RotationMode::Start => "G68",
+            RotationMode::Cancel => "G69",
+        }
+    }
+}
+
+/// Group 17 (mill): polar coordinate command.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PolarMode {
+    /// G16: the plane's first axis word is a radius, the second an angle.
+    Start,
+    /// G15: Cartesian words.
+    Cancel,
+}
+
+impl PolarMode {
+    /// The G code.
+    pub fn gcode(self) -> &'static str {
+        match self {
+            PolarMode::Start => "G16",
+            PolarMode::Cancel => "G15",
+        }
+    }
+}
+
+/// Group 22 (mill): programmable mirror image.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum MirrorMode {
+    /// G51.1: mirror the axes named about the coordinates given.
+    Start,
+    /// G50.1: cancel it on the axes named.
+    Cancel,
+}
+
+impl MirrorMode {
+    /// The G code.
+    pub fn gcode(self) -> &'static str {
+        match self {
+            MirrorMode::Start => "G51.1",
+            MirrorMode::Cancel => "G50.1",
+        }
+    }
+}
+
+/// G90.1/G91.1 (mill): how I, J, K give an arc's centre (behaviour 13.12).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ArcCenter {
+    /// G90.1: the centre's coordinates.
+    Absolute,
+    /// G91.1: the centre from the start point (the only mode of the
+    /// Fanuc, Haas and YASNAC manuals).
+    Incremental,
+}
+
+impl ArcCenter {
+    /// The G code.
+    pub fn gcode(self) -> &'static str {
+        match self {
+            ArcCenter::Absolute => "G90.1",
+            ArcCenter::Incremental => "G91.1",
         }
     }
 }
@@ -413,6 +620,18 @@ pub enum NonModal {
     PositionOffset(PositionOffset),
     /// Coordinate system setting: G92 on the mill, G50 on the lathe.
     SetCoordinates,
+    /// G27: reference position return check (behaviour 13.6).
+    ReferenceCheck,
+    /// G30: return to the second, third or fourth reference position (P2–P4;
+    /// behaviour 13.5).
+    OtherReference,
+    /// G52: local coordinate system (behaviour 13.2).
+    LocalCoordinates,
+    /// G53: positioning in machine coordinates (behaviour 13.1).
+    MachineCoordinates,
+    /// G92.1: workpiece coordinate system preset, the G92 shift undone
+    /// (behaviour 13.4).
+    PresetCoordinates,
     /// Lathe G70–G76: a multiple repetitive cycle (behaviour 15).
     Repetitive(Repetitive),
 }
@@ -495,6 +714,11 @@ impl NonModal {
             (NonModal::PositionOffset(p), _) => p.gcode(),
             (NonModal::SetCoordinates, MachineKind::Mill) => "G92",
             (NonModal::SetCoordinates, MachineKind::Lathe) => "G50",
+            (NonModal::ReferenceCheck, _) => "G27",
+            (NonModal::OtherReference, _) => "G30",
+            (NonModal::LocalCoordinates, _) => "G52",
+            (NonModal::MachineCoordinates, _) => "G53",
+            (NonModal::PresetCoordinates, _) => "G92.1",
             (NonModal::Repetitive(r), _) => r.gcode(),
         }
     }

@@ -10,9 +10,10 @@ mod groups;
 mod mcodes;
 
 pub use groups::{
-    ArcDirection, CannedCycle, CutterCompensation, CuttingMode, Cycle, Distance, FeedMode,
-    LatheCycle, LengthOffset, Motion, NonModal, Plane, Polar, PolarSpelling, PositionOffset,
-    Repetitive, ReturnLevel, SurfaceSpeed, WorkSystem,
+    ArcCenter, ArcDirection, CannedCycle, CutterCompensation, CuttingMode, Cycle, Distance,
+    FeedMode, LatheCycle, LengthOffset, MAX_ADDITIONAL_WORK, MAX_HAAS_WORK, MirrorMode, Motion,
+    NonModal, Plane, Polar, PolarMode, PolarSpelling, PositionOffset, Repetitive, ReturnLevel,
+    RotationMode, ScalingMode, SurfaceSpeed, WorkCode, WorkSystem,
 };
 pub use mcodes::MCode;
 
@@ -50,6 +51,16 @@ pub enum Group {
     CuttingMode,
     /// 21 (lathe): polar coordinate interpolation.
     Polar,
+    /// 11 (mill): scaling G50/G51.
+    Scaling,
+    /// 16 (mill): coordinate system rotation G68/G69.
+    Rotation,
+    /// 17 (mill): polar coordinate command G15/G16.
+    PolarCoordinates,
+    /// 22 (mill): programmable mirror image G50.1/G51.1.
+    Mirror,
+    /// Arc centre mode G90.1/G91.1 (Mach3 and LinuxCNC; no Fanuc group).
+    ArcCenter,
 }
 
 impl Group {
@@ -58,7 +69,7 @@ impl Group {
         self as usize
     }
     /// Number of groups.
-    pub const COUNT: usize = 14;
+    pub const COUNT: usize = 19;
     /// Every group, in index order.
     pub const ALL: [Group; Group::COUNT] = [
         Group::NonModal,
@@ -75,6 +86,11 @@ impl Group {
         Group::SurfaceSpeed,
         Group::CuttingMode,
         Group::Polar,
+        Group::Scaling,
+        Group::Rotation,
+        Group::PolarCoordinates,
+        Group::Mirror,
+        Group::ArcCenter,
     ];
     /// The group's name in the manuals.
     pub fn label(self) -> &'static str {
@@ -93,6 +109,11 @@ impl Group {
             Group::SurfaceSpeed => "02/13 (constant surface speed)",
             Group::CuttingMode => "15 (cutting mode)",
             Group::Polar => "21 (polar coordinate interpolation)",
+            Group::Scaling => "11 (scaling)",
+            Group::Rotation => "16 (coordinate rotation)",
+            Group::PolarCoordinates => "17 (polar coordinates)",
+            Group::Mirror => "22 (programmable mirror image)",
+            Group::ArcCenter => "arc centre mode",
         }
     }
 }
@@ -210,10 +231,15 @@ pub enum Code {
     Length(LengthOffset),
     Cycle(CannedCycle),
     Return(ReturnLevel),
-    Work(WorkSystem),
+    Work(WorkCode),
     SurfaceSpeed(SurfaceSpeed),
     CuttingMode(CuttingMode),
     Polar(Polar),
+    Scaling(ScalingMode),
+    Rotation(RotationMode),
+    PolarCoordinates(PolarMode),
+    Mirror(MirrorMode),
+    ArcCenter(ArcCenter),
 }
 
 impl Code {
@@ -241,12 +267,16 @@ impl Code {
                 9 => C::NonModal(NonModal::ExactStop),
                 12 => C::NonModal(NonModal::CirclePocket(Cw)),
                 13 => C::NonModal(NonModal::CirclePocket(Ccw)),
+                15 => C::PolarCoordinates(PolarMode::Cancel),
+                16 => C::PolarCoordinates(PolarMode::Start),
                 17 => C::Plane(Plane::XY),
                 18 => C::Plane(Plane::ZX),
                 19 => C::Plane(Plane::YZ),
                 20 => C::Units(Units::Inch),
                 21 => C::Units(Units::Mm),
+                27 => C::NonModal(NonModal::ReferenceCheck),
                 28 => C::NonModal(NonModal::ReferenceReturn),
+                30 => C::NonModal(NonModal::OtherReference),
                 31 => C::NonModal(NonModal::Skip),
                 40 => C::CutterCompensation(CutterCompensation::Cancel),
                 43 => C::Length(LengthOffset::Add),
@@ -256,11 +286,17 @@ impl Code {
                 47 => C::NonModal(NonModal::PositionOffset(PositionOffset::DoubleExtension)),
                 48 => C::NonModal(NonModal::PositionOffset(PositionOffset::DoubleReduction)),
                 49 => C::Length(LengthOffset::Cancel),
-                54..=59 => C::Work(work_system(g.major)),
+                50 => C::Scaling(ScalingMode::Cancel),
+                51 => C::Scaling(ScalingMode::Start),
+                52 => C::NonModal(NonModal::LocalCoordinates),
+                53 => C::NonModal(NonModal::MachineCoordinates),
+                54..=59 => C::Work(WorkCode::Standard(work_system(g.major))),
                 61 => C::CuttingMode(CuttingMode::ExactStop),
                 62 => C::CuttingMode(CuttingMode::CornerOverride),
                 63 => C::CuttingMode(CuttingMode::Tapping),
                 64 => C::CuttingMode(CuttingMode::Cutting),
+                68 => C::Rotation(RotationMode::Start),
+                69 => C::Rotation(RotationMode::Cancel),
                 73 => C::Cycle(CannedCycle::Cycle(Cycle::HighSpeedPeck)),
                 74 => C::Cycle(CannedCycle::Cycle(Cycle::LeftHandTapping)),
                 76 => C::Cycle(CannedCycle::Cycle(Cycle::FineBoring)),
@@ -284,6 +320,7 @@ impl Code {
                 97 => C::SurfaceSpeed(SurfaceSpeed::Cancel),
                 98 => C::Return(ReturnLevel::Initial),
                 99 => C::Return(ReturnLevel::R),
+                154 => C::Work(WorkCode::Haas),
                 187 => C::NonModal(NonModal::Smoothness),
                 _ => return None,
             },
@@ -301,6 +338,12 @@ impl Code {
             (_, 7, 1) => C::NonModal(NonModal::Cylindrical),
             (MachineKind::Lathe, 12, 1) => C::Polar(Polar::On(PolarSpelling::Fanuc)),
             (MachineKind::Lathe, 13, 1) => C::Polar(Polar::Off(PolarSpelling::Fanuc)),
+            (_, 54, 1) => C::Work(WorkCode::Additional),
+            (MachineKind::Mill, 50, 1) => C::Mirror(MirrorMode::Cancel),
+            (MachineKind::Mill, 51, 1) => C::Mirror(MirrorMode::Start),
+            (MachineKind::Mill, 90, 1) => C::ArcCenter(ArcCenter::Absolute),
+            (MachineKind::Mill, 91, 1) => C::ArcCenter(ArcCenter::Incremental),
+            (MachineKind::Mill, 92, 1) => C::NonModal(NonModal::PresetCoordinates),
             _ => return None,
         })
     }
@@ -323,6 +366,11 @@ impl Code {
             Code::SurfaceSpeed(_) => Group::SurfaceSpeed,
             Code::CuttingMode(_) => Group::CuttingMode,
             Code::Polar(_) => Group::Polar,
+            Code::Scaling(_) => Group::Scaling,
+            Code::Rotation(_) => Group::Rotation,
+            Code::PolarCoordinates(_) => Group::PolarCoordinates,
+            Code::Mirror(_) => Group::Mirror,
+            Code::ArcCenter(_) => Group::ArcCenter,
         }
     }
 
@@ -367,6 +415,11 @@ impl Code {
             Code::SurfaceSpeed(c) => c.gcode(),
             Code::CuttingMode(c) => c.gcode(),
             Code::Polar(c) => c.gcode(),
+            Code::Scaling(c) => c.gcode(),
+            Code::Rotation(c) => c.gcode(),
+            Code::PolarCoordinates(c) => c.gcode(),
+            Code::Mirror(c) => c.gcode(),
+            Code::ArcCenter(c) => c.gcode(),
         }
     }
 }
@@ -387,10 +440,15 @@ fn lathe_code(system: GCodeSystem, major: u16) -> Option<Code> {
         3 => return Some(C::Motion(Motion::Arc(Ccw))),
         4 => return Some(C::NonModal(NonModal::Dwell)),
         18 => return Some(C::Plane(Plane::ZX)),
+        27 => return Some(C::NonModal(NonModal::ReferenceCheck)),
         28 => return Some(C::NonModal(NonModal::ReferenceReturn)),
+        30 => return Some(C::NonModal(NonModal::OtherReference)),
         40 => return Some(C::CutterCompensation(CutterCompensation::Cancel)),
         31 => return Some(C::NonModal(NonModal::Skip)),
-        54..=59 => return Some(C::Work(work_system(major))),
+        52 => return Some(C::NonModal(NonModal::LocalCoordinates)),
+        53 => return Some(C::NonModal(NonModal::MachineCoordinates)),
+        54..=59 => return Some(C::Work(WorkCode::Standard(work_system(major)))),
+        154 => return Some(C::Work(WorkCode::Haas)),
         // The lathe's canned cycle cancel (Fanuc T group 10): its drilling
         // cycles are refused (behaviour 14.9).
         80 => return Some(C::Cycle(CannedCycle::Cancel)),
@@ -465,7 +523,7 @@ pub struct Codes {
     /// values left behind (the `check` instruction count in
     /// docs/performance.md: clearing an array of `Option<Code>` cost two
     /// dozen instructions a block).
-    present: u16,
+    present: u32,
     /// Per group, its code, valid where `present` has the group's bit:
     /// keeping a code is one store, which the parser does for every G word.
     by_group: [Code; Group::COUNT],
@@ -571,7 +629,7 @@ impl Codes {
     );
     group_value!(
         /// Group 14.
-        work, Work, Work, WorkSystem
+        work, Work, Work, WorkCode
     );
     group_value!(
         /// Lathe group 02, mill group 13.
@@ -584,6 +642,26 @@ impl Codes {
     group_value!(
         /// Lathe group 21.
         polar, Polar, Polar, Polar
+    );
+    group_value!(
+        /// Group 11 (mill).
+        scaling, Scaling, Scaling, ScalingMode
+    );
+    group_value!(
+        /// Group 16 (mill).
+        rotation, Rotation, Rotation, RotationMode
+    );
+    group_value!(
+        /// Group 17 (mill).
+        polar_coordinates, PolarCoordinates, PolarCoordinates, PolarMode
+    );
+    group_value!(
+        /// Group 22 (mill).
+        mirror, Mirror, Mirror, MirrorMode
+    );
+    group_value!(
+        /// G90.1/G91.1 (mill).
+        arc_center, ArcCenter, ArcCenter, ArcCenter
     );
 }
 
@@ -630,11 +708,10 @@ fn unsupported_reason(table: CodeTable, g: GCode) -> String {
         50 if lathe && system_b_or_c => {
             "in G-code system B and C the coordinate system is set with G92 (setting gcode_system)"
         }
-        50 | 51 if !lathe => "scaling is not supported",
-        53 => "machine coordinate positioning is not supported",
+        51 if lathe => "scaling is the mill's (the lathe's G50 sets the coordinate system)",
         65..=67 => "macro calls are not supported",
-        68 | 69 => "coordinate rotation is not supported",
-        15 | 16 => "polar coordinates are not supported",
+        68 | 69 if lathe => "coordinate rotation is the mill's in offsetlab",
+        15 | 16 if lathe => "polar coordinates are the mill's in offsetlab",
         17 | 19 if lathe => "the lathe works in the ZX plane (G18) only",
         61..=64 | 9 | 8 | 93 | 187 if lathe => "this cutting-mode or feed code is a mill code",
         12 | 13 if lathe => {
@@ -744,5 +821,21 @@ mod tests {
         assert!(e.contains("G05.1"), "{e}");
         let e = g_group(CodeTable::LATHE, GCode::new(83)).unwrap_err();
         assert!(e.contains("drilling canned cycles"), "{e}");
+    }
+    #[test]
+    fn decimal_codes_write_back_what_was_read() {
+        for (major, minor, mill_only) in [
+            (50, 1, true),
+            (51, 1, true),
+            (54, 1, false),
+            (90, 1, true),
+            (91, 1, true),
+            (92, 1, true),
+        ] {
+            let g = GCode { major, minor };
+            let code = Code::of(CodeTable::MILL, g).unwrap();
+            assert_eq!(code.gcode(CodeTable::MILL), g.to_string());
+            assert_eq!(Code::of(CodeTable::LATHE, g).is_none(), mill_only, "{g}");
+        }
     }
 }
