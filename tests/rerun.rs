@@ -21,7 +21,7 @@ use offsetlab::{
 };
 use proptest::prelude::*;
 
-const FIXTURES: [&str; 8] = [
+const FIXTURES: [&str; 9] = [
     "contour_g45",
     "coordinates",
     "corners",
