@@ -121,7 +121,7 @@ fn behaviour1_23_haas_reads_p_with_a_point_as_seconds_fanuc_and_yasnac_refuse_it
 }
 
 #[test]
-fn behaviour7_24_the_profile_gives_the_dwell_p_rule() {
+fn behaviour7_26_the_profile_gives_the_dwell_p_rule() {
     let mut s = Settings::default();
     assert_eq!(s.dwell_p_decimal_point(), DwellPDecimalPoint::Error);
     s.control = Control::Fanuc;
@@ -230,4 +230,26 @@ fn behaviour5_9_a_t_code_in_a_g50_g28_or_g04_block_is_refused_not_dropped() {
     // X100 Z50 (G50) the offset motion goes to X100.4 Z49.8.
     let r = ok("G50 X100. Z50.\nT0101", &lathe);
     same(actual(&r, 1), [100.4, 0.0, 49.8]);
+}
+
+#[test]
+fn behaviour2_22_a_t_code_in_a_cycles_first_block_is_taken_not_dropped() {
+    // G71's first block (depth of cut and escape) with T0202: the turret
+    // indexes to tool 02 and its offset (X0.6 Z0.1) applies from the
+    // cycle's first move, as in the second block. It was dropped before.
+    let text = "G00 X50. Z2.\nG71 U2. R0.5 T0202\nG71 P10 Q20 U0.4 W0.1 F0.2\nN10 G00 X30.\nG01 Z-20.\nN20 X50.\n";
+    let r = ok(text, &lathe(&[(2, 0.6, 0.1)]));
+    assert!(
+        r.events
+            .iter()
+            .any(|e| e.line == 2 && matches!(e.kind, EventKind::ToolIndex { tool: 2 })),
+        "{:?}",
+        r.events
+    );
+    assert!(
+        explain(&r, 1)
+            .contains("the new offset applies from the cycle's first move: X 0.600 Z 0.100"),
+        "{}",
+        explain(&r, 1)
+    );
 }

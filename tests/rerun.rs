@@ -21,13 +21,14 @@ use offsetlab::{
 };
 use proptest::prelude::*;
 
-const FIXTURES: [&str; 8] = [
+const FIXTURES: [&str; 9] = [
     "contour_g45",
     "coordinates",
     "corners",
     "g54_g28",
     "haas_modes",
     "inch_plate",
+    "lathe_cycles",
     "lathe_taper",
     "pocket_g43_drill",
 ];

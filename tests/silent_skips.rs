@@ -343,6 +343,27 @@ const LATHE: &[Kind] = &[
         after: "",
         refused: "I K L P Q R T U W",
     },
+    Kind {
+        name: "G71 first block (depth of cut, retract)",
+        before: "G00 X50. Z2.\n",
+        block: "G71 U2. R0.5",
+        after: "G71 P10 Q20 U0.4 W0.1\nN10 G00 X30.\nG01 Z-20.\nN20 X50.\n",
+        refused: "I K L O Q W X Z -D",
+    },
+    Kind {
+        name: "G71 second block (the contour)",
+        before: "G00 X50. Z2.\nG71 U2. R0.5\n",
+        block: "G71 P10 Q20 U0.4 W0.1 F0.2",
+        after: "N10 G00 X30.\nG01 Z-20.\nN20 X50.\n",
+        refused: "I K L O R X Z -D",
+    },
+    Kind {
+        name: "G70 finishing",
+        before: "G00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.2\nN10 G00 X30.\nG01 Z-20.\nN20 X50.\n",
+        block: "G70 P10 Q20",
+        after: "",
+        refused: "I K L O R U W X Z",
+    },
 ];
 
 /// Each address with a value any block could hold.

@@ -155,6 +155,9 @@ impl Machine {
                 | NonModal::Cylindrical,
             )
             | None => {}
+            // G70–G76 are the lathe's (on the mill the parser reads those
+            // numbers as its canned cycles).
+            Some(NonModal::Repetitive(_)) => {}
         }
         let old_length = self.length_words(b, out)?;
         if centre_words {

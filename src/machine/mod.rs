@@ -17,7 +17,9 @@ mod lathe;
 mod mill;
 pub mod modal;
 mod modes;
+mod mrc;
 mod pocket;
+pub mod program;
 mod reference;
 pub mod state;
 mod transform;
@@ -72,6 +74,11 @@ pub(crate) struct Out {
     pub events: Vec<EventKind>,
     pub notes: Vec<String>,
     pub warnings: Vec<Diagnostic>,
+    /// The block's result depends on the program text before this byte
+    /// offset besides the block itself (a G70–G73 read its contour by
+    /// sequence number, behaviour 15.3): a run made again after an edit
+    /// there must run the block again.
+    pub reads: Option<u32>,
 }
 
 impl Out {
@@ -80,6 +87,7 @@ impl Out {
         self.events.clear();
         self.notes.clear();
         self.warnings.clear();
+        self.reads = None;
     }
 }
 
@@ -112,6 +120,9 @@ pub struct Machine {
     mirror_center: Xyz,
     cycle: cycles::CycleData,
     turning: lathe::TurningData,
+    /// The lathe's G70–G76 data and the contour being passed over after a
+    /// G71–G73 (behaviour 15).
+    mrc: mrc::MrcData,
     feed_warned: bool,
     /// A mode is in effect that every block must be checked against (G93,
     /// behaviour 14.8): no block takes the mill's fast path for plain moves.
@@ -187,6 +198,7 @@ impl Machine {
             mirror_center: add(start, origin),
             cycle: cycles::CycleData::default(),
             turning: lathe::TurningData::default(),
+            mrc: mrc::MrcData::default(),
             feed_warned: false,
             special: false,
             index: 0,
@@ -231,8 +243,7 @@ impl Machine {
                     (m.rotary_warned, m.arc_center_warned),
                     m.mirror,
                     m.mirror_center,
-                    m.cycle,
-                    m.turning,
+                    (m.cycle, m.turning, m.mrc),
                     m.feed_warned,
                     m.special,
                     m.corner_cut,
@@ -245,14 +256,16 @@ impl Machine {
             && key(self) == key(other)
     }
 
-    /// Runs one block. On error the block has no effect that matters: the
-    /// run stops there (behaviour 2.1).
+    /// Runs one block; `program` is the text it is part of, read again by
+    /// sequence number when a block asks (behaviour 15.3). On error the block
+    /// has no effect that matters: the run stops there (behaviour 2.1).
     pub(crate) fn execute(
         &mut self,
         block: &Block,
         index: u32,
         out: &mut Out,
         ahead: &mut dyn Ahead,
+        program: &mut dyn program::ProgramText,
     ) -> Result<Flow, Diagnostic> {
         self.index = index;
         self.line = block.span.line;
@@ -261,7 +274,7 @@ impl Machine {
         let after_corner = self.corner_cut.then(|| self.run_from_corner());
         match self.setup.machine {
             MachineKind::Mill => self.mill_block(block, out, ahead)?,
-            MachineKind::Lathe => self.lathe_block(block, out, ahead)?,
+            MachineKind::Lathe => self.lathe_block(block, out, ahead, program)?,
         }
         if let Some(end) = after_corner {
             Self::start_at_corner_end(out, end);
@@ -309,13 +322,19 @@ impl Machine {
         let lathe = self.setup.machine == MachineKind::Lathe;
         // The mill cuts the corner words (`corner.rs`) and reports its
         // rotary axes, not drawn (behaviour 13.14); section 14 models G187's
-        // E and the rotary word of G07.1 (`models_word`).
+        // E and the rotary word of G07.1 (`models_word`); G76's A is its tool
+        // angle (behaviour 15.12).
+        let g76 = b.codes().non_modal()
+            == Some(NonModal::Repetitive(
+                crate::syntax::codes::Repetitive::Threading,
+            ));
         let modelled = |a: Address| {
-            !lathe
-                && matches!(
-                    a,
-                    Address::CommaC | Address::CommaR | Address::A | Address::B | Address::C
-                )
+            (g76 && a == Address::A)
+                || (!lathe
+                    && matches!(
+                        a,
+                        Address::CommaC | Address::CommaR | Address::A | Address::B | Address::C
+                    ))
         };
         let Some(w) = b.words.iter().find(|w| {
             UNMODELLED.contains(&w.address)

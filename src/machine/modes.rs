@@ -96,7 +96,9 @@ impl Machine {
                 | NonModal::OtherReference
                 | NonModal::LocalCoordinates
                 | NonModal::MachineCoordinates
-                | NonModal::PresetCoordinates,
+                | NonModal::PresetCoordinates
+                // G70–G76 are the lathe's.
+                | NonModal::Repetitive(_),
             )
             | None => {}
         }
@@ -398,7 +400,9 @@ impl Machine {
                 | NonModal::OtherReference
                 | NonModal::LocalCoordinates
                 | NonModal::MachineCoordinates
-                | NonModal::PresetCoordinates,
+                | NonModal::PresetCoordinates
+                // G70–G76 are the lathe's.
+                | NonModal::Repetitive(_),
             ) => false,
             Some(NonModal::PositionOffset(_)) | None => {
                 moves

@@ -9,9 +9,9 @@
 //! are refused before (`unsupported-word`, [`Machine::refuse_unmodelled`],
 //! which lets through the rotary words, E and the comma words a block
 //! models), and the other machine's addresses too (`lathe-address`,
-//! `mill-address`). The codes of section 14 that check their own words
-//! (G31, G12/G13, G05.1, G08, G187, G07.1) take every address here and
-//! refuse with their own sentences. `tests/silent_skips.rs` runs every
+//! `mill-address`). The codes that check their own words (G31, G12/G13,
+//! G05.1, G08, G187, G07.1 of section 14, the lathe's G70–G76 of section 15)
+//! take every address here and refuse with their own sentences. `tests/silent_skips.rs` runs every
 //! address in every kind of block and holds each to being acted on or
 //! refused.
 
@@ -53,7 +53,7 @@ pub(crate) enum Path {
     /// Lathe single cycle G90/G92/G94 (system A names).
     LatheCycle(Motion),
     /// A code that checks its own words (G31, G12/G13, G05.1, G08, G187,
-    /// G07.1: behaviour 14): every address passes here.
+    /// G07.1: behaviour 14; G70–G76: behaviour 15): every address passes here.
     OwnWords(Code),
 }
 
@@ -144,7 +144,8 @@ impl Machine {
                 | NonModal::AiContour
                 | NonModal::LookAhead
                 | NonModal::Smoothness
-                | NonModal::Cylindrical),
+                | NonModal::Cylindrical
+                | NonModal::Repetitive(_)),
             ) => return Path::OwnWords(Code::NonModal(code)),
             // G09 stops at the end of a block that moves as any other.
             Some(NonModal::ExactStop) | None => {}
@@ -176,7 +177,10 @@ impl Machine {
                 | NonModal::MachineCoordinates
                 | NonModal::PresetCoordinates),
             ) => return Path::Coordinates(Code::NonModal(code)),
-            Some(NonModal::Skip) => return Path::OwnWords(Code::NonModal(NonModal::Skip)),
+            // G70–G76 refuse what they do not read (`mrc-word`, behaviour 15).
+            Some(code @ (NonModal::Skip | NonModal::Repetitive(_))) => {
+                return Path::OwnWords(Code::NonModal(code));
+            }
             // The parser gives the lathe none of the mill's one-shot codes
             // (seed 004, behaviour 14).
             Some(

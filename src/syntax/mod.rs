@@ -24,9 +24,10 @@ pub use block::{Address, Block, Word, WordKind};
 
 use crate::diag::{Diagnostic, Span};
 use crate::setup::{
-    DecimalInput, DwellPDecimalPoint, GCodeSystem, MachineKind, SameGroupCodes, Setup, Units,
+    DecimalInput, DepthWord, DwellPDecimalPoint, GCodeSystem, MachineKind, SameGroupCodes, Setup,
+    Units,
 };
-use codes::{Code, CodeTable, GCode, Group, MCode, g_group};
+use codes::{Code, CodeTable, GCode, Group, MCode, NonModal, Repetitive, g_group};
 use lexer::{Number, NumberError};
 
 /// Most diagnostics one program reports; past this one more says so.
@@ -76,8 +77,10 @@ pub struct ParseOptions {
     pub system: GCodeSystem,
     /// Two G codes of one modal group in a block (behaviour 1.11, 7.17).
     pub same_group: SameGroupCodes,
-    /// A decimal point in a dwell's P (behaviour 1.23, 7.24).
+    /// A decimal point in a dwell's P (behaviour 1.23, 7.26).
     pub dwell_p: DwellPDecimalPoint,
+    /// How D reads in a lathe G71/G72/G74–G76 block (behaviour 15.2).
+    pub depth_word: DepthWord,
 }
 
 impl ParseOptions {
@@ -105,6 +108,7 @@ impl From<&Setup> for ParseOptions {
             system: s.settings.gcode_system(),
             same_group: s.settings.same_group_codes(),
             dwell_p: s.settings.dwell_p_decimal_point(),
+            depth_word: s.settings.depth_word(),
         }
     }
 }
@@ -288,6 +292,12 @@ pub struct Blocks<'a> {
     units: Units,
     /// A mill canned cycle is active (K is then a repeat count).
     in_cycle: bool,
+    /// The lathe G70–G76 code of the block being read (P, Q, R, D read as
+    /// that cycle reads them: behaviour 15.2); None between blocks.
+    mrc: Option<Repetitive>,
+    /// `in_cycle || mrc.is_some()`: a word's address alone does not say how
+    /// it reads (one test per word, as the canned cycles' K had).
+    context: bool,
     /// The block read in two passes holds G05.1, whose Q (Q1/Q0) is no
     /// dimension to warn about (behaviour 14.4); set afresh by each two-pass
     /// reading (the one-pass reading leaves a block with a warning due to it).
@@ -320,6 +330,8 @@ impl<'a> Blocks<'a> {
             table: options.table(),
             options,
             in_cycle: false,
+            mrc: None,
+            context: false,
             whole_q: false,
             tape: Tape::Before,
             warned_integer: false,
@@ -353,6 +365,7 @@ impl<'a> Blocks<'a> {
             line: at.line,
             units: at.units,
             in_cycle: at.in_cycle,
+            context: at.in_cycle,
             tape: at.tape,
             warned_integer: at.warned_integer,
             programs: at.programs,
@@ -533,6 +546,11 @@ impl<'a> Blocks<'a> {
         // Nearly every block reads in one pass; the rest is read again, from
         // the context the block started with, the way the two-pass reading
         // (its specification) reads it.
+        if self.mrc.is_some() {
+            // A G70–G76 code counts for its own block only.
+            self.mrc = None;
+            self.context = self.in_cycle;
+        }
         let context = (self.units, self.in_cycle);
         let read = match FAST && self.one_pass {
             true => self.read_one_pass(i, line, counts, block),
@@ -540,6 +558,8 @@ impl<'a> Blocks<'a> {
         };
         let (end, mut last) = read.unwrap_or_else(|| {
             (self.units, self.in_cycle) = context;
+            self.mrc = None;
+            self.context = self.in_cycle;
             block.clear();
             self.read_two_pass(start, i, line, counts, block)
         });
@@ -601,9 +621,23 @@ impl<'a> Blocks<'a> {
     fn note_code(&mut self, code: Code) {
         match code {
             // A group 01 code ends the canned cycle (only the mill has one).
-            Code::Motion(_) | Code::Cycle(codes::CannedCycle::Cancel) => self.in_cycle = false,
-            Code::Cycle(codes::CannedCycle::Cycle(_)) => self.in_cycle = true,
+            // Only the mill has canned cycles and only the lathe G70–G76,
+            // so leaving a cycle leaves no context.
+            Code::Motion(_) | Code::Cycle(codes::CannedCycle::Cancel) => {
+                if self.in_cycle {
+                    self.in_cycle = false;
+                    self.context = false;
+                }
+            }
+            Code::Cycle(codes::CannedCycle::Cycle(_)) => {
+                self.in_cycle = true;
+                self.context = true;
+            }
             Code::Units(units) => self.units = units,
+            Code::NonModal(NonModal::Repetitive(r)) => {
+                self.mrc = Some(r);
+                self.context = true;
+            }
             Code::NonModal(_)
             | Code::Plane(_)
             | Code::Distance(_)
@@ -634,9 +668,10 @@ impl<'a> Blocks<'a> {
         n: Number,
         span: Span,
     ) -> Result<(Word, WordKind), Refusal> {
-        let kind = match address {
-            Address::K if self.in_cycle => WordKind::Integer,
-            _ => address.kind(),
+        let kind = if self.context {
+            self.context_kind(address)
+        } else {
+            address.kind()
         };
         let value = match kind {
             WordKind::Integer if address == Address::G => {
@@ -649,7 +684,7 @@ impl<'a> Blocks<'a> {
                 if n.point {
                     return Err(Refusal::DecimalPoint);
                 }
-                let limit = integer_limit(self.options, address, self.in_cycle);
+                let limit = integer_limit(self.options, address, self.in_cycle, self.mrc);
                 if n.negative && n.mantissa != 0 || n.mantissa > limit {
                     return Err(Refusal::Integer(limit));
                 }
@@ -683,6 +718,29 @@ impl<'a> Blocks<'a> {
             span,
         };
         Ok((word, kind))
+    }
+
+    /// How `address` reads in a mill canned cycle (K a repeat count,
+    /// behaviour 1.16) or a lathe G70–G76 block (behaviour 15.2): P and Q
+    /// are whole numbers there — sequence numbers in G70–G73, least input
+    /// increments or G76's `mmrraa` code in G74–G76 — and so are G73's R
+    /// and D (counts of divisions); D elsewhere reads as setting
+    /// `depth_word` says. Out of line: few blocks have either.
+    #[inline(never)]
+    #[cold]
+    fn context_kind(&self, address: Address) -> WordKind {
+        match (address, self.mrc) {
+            (Address::K, _) if self.in_cycle => WordKind::Integer,
+            (Address::P | Address::Q, Some(_)) => WordKind::Integer,
+            (Address::R | Address::D, Some(Repetitive::PatternRepeat)) => WordKind::Integer,
+            // G76's tool angle, in whole degrees (Haas: no decimal point).
+            (Address::A, Some(Repetitive::Threading)) => WordKind::Integer,
+            (Address::D, Some(_)) => match self.options.depth_word {
+                DepthWord::Increments => WordKind::Integer,
+                DepthWord::Dimension => WordKind::Dimension,
+            },
+            _ => address.kind(),
+        }
     }
 
     /// The value of a dimension word in the current units (decimal input,
@@ -764,8 +822,32 @@ impl<'a> Blocks<'a> {
     }
 }
 
-fn integer_limit(options: ParseOptions, address: Address, in_cycle: bool) -> u64 {
+fn count_lines(bytes: &[u8]) -> u32 {
+    let mut n = 0u32;
+    let mut i = 0;
+    while i < bytes.len() {
+        match bytes[i] {
+            b'\r' if bytes.get(i + 1) == Some(&b'\n') => {
+                n += 1;
+                i += 1;
+            }
+            b'\n' | b'\r' => n += 1,
+            _ => {}
+        }
+        i += 1;
+    }
+    n
+}
+
+fn integer_limit(
+    options: ParseOptions,
+    address: Address,
+    in_cycle: bool,
+    mrc: Option<Repetitive>,
+) -> u64 {
     match address {
+        // A lathe G70–G76 block's D is a depth or a count (behaviour 15.2).
+        Address::D if mrc.is_some() => MAX_INTEGER,
         Address::D | Address::H => u64::from(options.table_size),
         Address::T if options.machine == MachineKind::Lathe => 9999,
         Address::L => MAX_REPEATS,

@@ -10,7 +10,7 @@
 //! count in docs/performance.md).
 
 use super::lexer::{self, Number, NumberError};
-use super::{Address, Block, Blocks, Refusal, Tape, Word, WordKind, is_end};
+use super::{Address, Block, Blocks, Refusal, Tape, Word, WordKind, count_lines, is_end};
 use crate::diag::{Diagnostic, Span};
 use crate::setup::DwellPDecimalPoint;
 
@@ -377,23 +377,6 @@ impl Blocks<'_> {
         };
         Ok((word, WordKind::Integer))
     }
-}
-
-fn count_lines(bytes: &[u8]) -> u32 {
-    let mut n = 0u32;
-    let mut i = 0;
-    while i < bytes.len() {
-        match bytes[i] {
-            b'\r' if bytes.get(i + 1) == Some(&b'\n') => {
-                n += 1;
-                i += 1;
-            }
-            b'\n' | b'\r' => n += 1,
-            _ => {}
-        }
-        i += 1;
-    }
-    n
 }
 
 /// What a block's reading may have to take back.

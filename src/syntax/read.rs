@@ -7,6 +7,21 @@ use super::messages::unexpected_message;
 use super::program::Lead;
 use super::*;
 
+/// The addresses whose reading a G code later in the block can change: K
+/// (a mill canned cycle's repeat count) and P, Q, R, D, A (a lathe G70–G76
+/// block's words, behaviour 15.2).
+/// The words pushed so far are those before the G code: the block's own
+/// record of its addresses says whether any is one of these (no work per
+/// word; the `check` instruction count in docs/performance.md).
+const CONTEXT_ADDRESSES: [Address; 6] = [
+    Address::K,
+    Address::P,
+    Address::Q,
+    Address::R,
+    Address::D,
+    Address::A,
+];
+
 impl Blocks<'_> {
     /// Reads the words of a block from `i` (after any `/`) in one pass,
     /// typing each word as it is lexed with the G20/G21 and canned-cycle
@@ -32,7 +47,6 @@ impl Blocks<'_> {
         // A G20/G21 after a dimension word, or a cycle code changing the
         // cycle state after a K word, changes how that word is read.
         let mut read_dimension = false;
-        let mut read_k = false;
         loop {
             i = lexer::skip_blanks(bytes, i);
             let Some(&c) = bytes.get(i) else { break };
@@ -59,10 +73,11 @@ impl Blocks<'_> {
             let (word_end, next, number) = lexer::number(bytes, i + 1);
             let number = number.ok()?;
             if address == Address::G && counts {
-                let before = (self.units, self.in_cycle);
+                let before = (self.units, self.in_cycle, self.mrc);
                 self.note_context(number);
                 if (read_dimension && self.units != before.0)
-                    || (read_k && self.in_cycle != before.1)
+                    || ((self.in_cycle, self.mrc) != (before.1, before.2)
+                        && block.holds_any(&CONTEXT_ADDRESSES))
                 {
                     return None;
                 }
@@ -75,7 +90,6 @@ impl Blocks<'_> {
                 }
                 read_dimension = true;
             }
-            read_k |= address == Address::K;
             checks.admit(self.table, block, word).ok()?;
             last = word_end;
             i = next;

@@ -614,6 +614,13 @@ const PIECES: &[&str] = &[
     "K3",
     "K2.5",
     "K10000",
+    "G71",
+    "G73",
+    "G76",
+    "P10.",
+    "Q20",
+    "D.05",
+    "D7000",
     "R1.",
     "Q2",
     "U1.",
@@ -705,6 +712,12 @@ fn options_of(lathe: bool, inch: bool, calculator: bool, skip: bool) -> ParseOpt
         table_size: 50,
         block_skip: skip,
         dwell_p,
+        // Both readings of a lathe cycle's D (behaviour 15.2).
+        depth_word: if skip {
+            crate::setup::DepthWord::Increments
+        } else {
+            crate::setup::DepthWord::Dimension
+        },
         ..ParseOptions::default()
     }
 }
