@@ -56,7 +56,7 @@ impl Span {
         let line_start = bytes[..start]
             .iter()
             .rposition(|&b| b == b'\n' || b == b'\r')
-            .map_or(0, |p| p + 1);
+            .map_or(bom(text).min(start), |p| p + 1);
         let col = count_chars(&bytes[line_start..start]) + 1;
         let end_col = col + count_chars(&bytes[start..end]);
         (clamp_u32(col), clamp_u32(end_col))
@@ -82,7 +82,7 @@ impl<'t> Columns<'t> {
     pub fn new(text: &'t str) -> Columns<'t> {
         Columns {
             text,
-            pos: 0,
+            pos: bom(text),
             chars: 0,
         }
     }
@@ -107,6 +107,12 @@ impl<'t> Columns<'t> {
         let end_col = col + count_chars(&bytes[start..end]);
         (clamp_u32(col), clamp_u32(end_col))
     }
+}
+
+/// The bytes of a UTF-8 byte order mark opening `text` (3, or 0 without
+/// one): an encoding mark, not a character of the first line's columns.
+fn bom(text: &str) -> usize {
+    if text.starts_with('\u{feff}') { 3 } else { 0 }
 }
 
 /// Characters in a byte slice that may start or end inside a UTF-8 sequence
@@ -237,6 +243,15 @@ mod tests {
         finish(&mut diagnostics, &text);
         assert!(start.elapsed().as_secs() < 10, "{:?}", start.elapsed());
         assert_eq!(diagnostics[999].column, 20_000_003 + 2 * 999 + 1);
+    }
+
+    #[test]
+    fn a_byte_order_mark_opening_the_text_takes_no_column() {
+        let text = "\u{feff}G01 X1.\nY2.";
+        // "X1." starts at byte 7 (the mark is three bytes): column 5.
+        assert_eq!(Span::new(7, 10, 1).columns(text), (5, 8));
+        assert_eq!(Columns::new(text).of(Span::new(7, 10, 1)), (5, 8));
+        assert_eq!(Span::new(11, 14, 2).columns(text), (1, 4));
     }
 
     #[test]

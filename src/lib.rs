@@ -46,7 +46,7 @@ pub use run::again::{Earlier, Reuse, Tail, rerun_observed};
 #[cfg(not(target_arch = "wasm32"))]
 pub use run::pipeline::{PIPELINE_FROM_BYTES, run_on_two_threads, run_pipelined};
 pub use run::{
-    Checkpoint, Checkpoints, MAX_BLOCKS, MAX_MOVES, Observer, RunOptions, report_at, run,
+    Checkpoint, Checkpoints, MAX_BLOCKS, MAX_MOVES, Observer, Read, RunOptions, report_at, run,
     run_observed, run_with,
 };
 pub use setup::{MachineKind, Setup, Units};

@@ -235,6 +235,18 @@ pub enum SameGroupCodes {
     LastWins,
 }
 
+/// A decimal point in the P word of a dwell (G04, and the dwell at the
+/// bottom of a canned cycle) (behaviour 1.23, 7.26).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum DwellPDecimalPoint {
+    /// P is a whole number of milliseconds; `P3.` is an error (Fanuc,
+    /// YASNAC: a decimal point is not allowed in P).
+    Error,
+    /// `P3.` is 3 seconds and `P3` 3 milliseconds (Haas G04).
+    Seconds,
+}
+
 /// What G12/G13 mean on the mill (behaviour 7.20, 14.13).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -407,6 +419,10 @@ pub struct Settings {
     /// [`Settings::gcode_system`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub gcode_system: Option<GCodeSystem>,
+    /// A decimal point in a dwell's P (behaviour 7.26); read it with
+    /// [`Settings::dwell_p_decimal_point`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dwell_p_decimal_point: Option<DwellPDecimalPoint>,
     /// G12/G13 on the mill (behaviour 7.20); read it with
     /// [`Settings::circle_pocket`].
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -422,6 +438,15 @@ pub struct Settings {
     /// G68's R in G91 (behaviour 7.23).
     #[serde(skip_serializing_if = "is_default")]
     pub rotation_angle: RotationAngle,
+    /// How D reads in a lathe G71/G72/G74–G76 block (behaviour 7.24, 15.2);
+    /// read it with [`Settings::depth_word`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub depth_word: Option<DepthWord>,
+    /// What the G00 blocks that end a G71/G72 contour going back toward
+    /// the start are (behaviour 7.25, 15.6); read it with
+    /// [`Settings::trailing_rapids`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub trailing_rapids: Option<TrailingRapids>,
     /// Cutter compensation start-up and cancel type (behaviour 16.3); read
     /// it with [`Settings::cutter_start_up`].
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -474,6 +499,19 @@ impl Settings {
     pub fn gcode_system(&self) -> GCodeSystem {
         self.gcode_system.unwrap_or(match self.control {
             Control::Yasnac | Control::Fanuc | Control::Haas => GCodeSystem::A,
+        })
+    }
+
+    /// A decimal point in a dwell's P: Fanuc allows none in P (0i-MF/TF
+    /// operator's manuals, "Dwell (G04)": X takes a decimal point, P does
+    /// not; alarm PS0007, illegal use of decimal point), nor does YASNAC,
+    /// whose P is a whole number of milliseconds; Haas reads P with a point
+    /// as seconds and without one as milliseconds (mill and lathe operator's
+    /// manuals, G04), and its canned cycles' P the same way.
+    pub fn dwell_p_decimal_point(&self) -> DwellPDecimalPoint {
+        self.dwell_p_decimal_point.unwrap_or(match self.control {
+            Control::Yasnac | Control::Fanuc => DwellPDecimalPoint::Error,
+            Control::Haas => DwellPDecimalPoint::Seconds,
         })
     }
 
@@ -548,6 +586,58 @@ impl Settings {
                 Control::Yasnac | Control::Fanuc | Control::Haas => 2,
             })
     }
+
+    /// How the D word of the one-block G71/G72 (depth of cut), G74/G75
+    /// (relief) and G76 (first depth) reads (behaviour 7.24): Haas reads it
+    /// as a length with a decimal point (Haas lathe operator's manual, G71:
+    /// "D – depth of cut for each pass, positive radius", written `D0.05`);
+    /// the Fanuc Series 10/11 tape format of the 0i-TF (parameter FCV) in
+    /// least input increments, without a decimal point (`D7000` = 7 mm).
+    /// YASNAC (the seeds' control) writes it as Haas's YASNAC mode does:
+    /// a length.
+    pub fn trailing_rapids(&self) -> TrailingRapids {
+        // Fanuc checks every block from P to Q (a shape that turns back is
+        // PS0064/PS0329); Haas school programs end the contour with `G00
+        // G40 Z0.1` back to the start and run: our reading of the Haas
+        // profile takes those rapids as the exit.
+        self.trailing_rapids.unwrap_or(match self.control {
+            Control::Haas => TrailingRapids::Exit,
+            Control::Yasnac | Control::Fanuc => TrailingRapids::Shape,
+        })
+    }
+
+    /// How the D word of the one-block G71/G72 (depth of cut), G74/G75
+    /// (relief) and G76 (first depth) reads: see [`DepthWord`].
+    pub fn depth_word(&self) -> DepthWord {
+        self.depth_word.unwrap_or(match self.control {
+            Control::Fanuc => DepthWord::Increments,
+            Control::Yasnac | Control::Haas => DepthWord::Dimension,
+        })
+    }
+}
+
+/// What the G00 blocks that end a G71/G72 contour going back along the
+/// cut toward the start are (behaviour 7.25).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum TrailingRapids {
+    /// Part of the shape, which then turns back: Fanuc alarm PS0064/PS0329.
+    Shape,
+    /// The tool's exit: the roughing stops at the last block before them,
+    /// with a warning.
+    Exit,
+}
+
+/// How D reads in a lathe G71/G72/G74–G76 block (behaviour 7.24).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum DepthWord {
+    /// A length, read as a dimension word (decimal point: program units;
+    /// without: decimal input, behaviour 1.15): Haas, YASNAC.
+    Dimension,
+    /// A whole number of least input increments, no decimal point (Fanuc
+    /// Series 10/11 format: `D7000` = 7.000 mm).
+    Increments,
 }
 
 /// A point of the setup (start, reference, work offset), in setup units.

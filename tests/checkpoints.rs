@@ -62,6 +62,7 @@ fn reports_made_again_from_checkpoints_equal_the_kept_ones_for_every_fixture() {
         "cutter",
         "g54_g28",
         "inch_plate",
+        "lathe_cycles",
         "lathe_taper",
         "pocket_g43_drill",
     ] {

@@ -258,7 +258,6 @@ fn behaviour5_g28_clears_the_vector_until_the_axis_moves_again() {
 fn behaviour5_unsupported_lathe_codes_are_errors_with_a_reason() {
     let s = lathe(&[]);
     for (text, why) in [
-        ("G71 U2. R1.", "G70–G76"),
         ("G41 X10.", "nose radius"),
         ("G43 H1", "T-code offsets"),
         ("G32 Z-10. F1.5", "thread"),

@@ -171,6 +171,64 @@ fn behaviour4_8_quarter_circle_gives_the_concentric_arc() {
 }
 
 #[test]
+fn behaviour4_8_an_explicit_zero_centre_word_stays_zero() {
+    // Register 01 = 5. From X15 Y0, G45 X5. moves 5 + 5 = 10: programmed
+    // (20, 0), actual (25, 0), vector (+5, 0). Then a G91 quarter circle
+    // about the programmed centre (0, 0), from (20, 0) to (0, 20):
+    //   X -20 -> -20 - 5 = -25, Y +20 -> +20 + 5 = +25,
+    //   I -20 -> -25, J 0 stays 0 (a zero centre word has no direction).
+    // Actual centre = (25, 0) + (-25, 0) = (0, 0); actual end = (25 - 25,
+    // 0 + 25) = (0, 25): both 25 from the centre, the concentric arc of
+    // radius 20 + 5. (Extending J0 by +5 put the centre at (0, 5), 25.5
+    // from the start and 20 from the end: an arc-radius error.)
+    let text = "G90 G00 X15. Y0\nG91 G01 G45 X5. D01 F100.\nG03 G45 X-20. Y20. I-20. J0";
+    let r = ok(text, &mill(&[(1, 5.0)]));
+    same(actual(&r, 1), [25.0, 0.0, 0.0]);
+    same(programmed(&r, 2), [0.0, 20.0, 0.0]);
+    same(actual(&r, 2), [0.0, 25.0, 0.0]);
+    let arc = r.moves.last().unwrap().arc.unwrap();
+    same(arc.center, [0.0, 0.0, 0.0]);
+    same(arc.programmed_center, [0.0, 0.0, 0.0]);
+    assert!((arc.radius - 25.0).abs() < 1e-9);
+    assert!((arc.programmed_radius - 20.0).abs() < 1e-9);
+    let why = explain(&r, 2);
+    assert!(why.contains("J 0 stays 0"), "{why}");
+    assert!(why.contains("I -20.000 becomes -25.000"), "{why}");
+}
+
+#[test]
+fn behaviour4_9_a_full_circle_takes_g45_with_centre_words_alone() {
+    // Register 01 = 5, the tool offset (+5, 0) as above: programmed (20, 0),
+    // actual (25, 0). G02 G45 I-20. (YASNAC PC NC: "1/4, 3/4 or full
+    // circle"): no axis word, so the end is the start; I -20 -> -25 puts the
+    // actual centre at (25 - 25, 0) = (0, 0): a full circle of radius
+    // 20 + 5 = 25 about the programmed centre, ending where it started.
+    let text = "G90 G00 X15. Y0\nG91 G01 G45 X5. D01 F100.\nG02 G45 I-20.";
+    let r = ok(text, &mill(&[(1, 5.0)]));
+    same(programmed(&r, 2), [20.0, 0.0, 0.0]);
+    same(actual(&r, 2), [25.0, 0.0, 0.0]);
+    let m = r.moves.last().unwrap();
+    same(m.from, m.to);
+    let arc = m.arc.unwrap();
+    same(arc.center, [0.0, 0.0, 0.0]);
+    assert!((arc.radius - 25.0).abs() < 1e-9);
+    assert!((arc.programmed_radius - 20.0).abs() < 1e-9);
+    assert!((arc.sweep + std::f64::consts::TAU).abs() < 1e-9);
+    // In G90 the block is the same full circle. A straight move still needs
+    // an axis word, and reads no centre word (behaviour 2.22).
+    let g90 = "G90 G00 X15. Y0\nG91 G01 G45 X5. D01 F100.\nG90 G02 G45 I-20.";
+    same(actual(&ok(g90, &mill(&[(1, 5.0)])), 2), [25.0, 0.0, 0.0]);
+    assert_eq!(
+        errors("G01 G45 I-20. D01 F100.", &mill(&[(1, 5.0)])),
+        vec!["unused-word"]
+    );
+    assert_eq!(
+        errors("G01 G45 D01 F100.", &mill(&[(1, 5.0)])),
+        vec!["position-offset-without-axis"]
+    );
+}
+
+#[test]
 fn behaviour4_8_r_is_changed_as_a_radius() {
     let text = "G90 G00 X0 Y-10.\nG91 G46 Y10. D01\nG45 G03 X30. Y30. R30. F100.";
     let r = ok(text, &mill(&[(1, 5.0)]));

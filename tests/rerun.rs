@@ -21,7 +21,7 @@ use offsetlab::{
 };
 use proptest::prelude::*;
 
-const FIXTURES: [&str; 9] = [
+const FIXTURES: [&str; 10] = [
     "contour_g45",
     "coordinates",
     "corners",
@@ -29,6 +29,7 @@ const FIXTURES: [&str; 9] = [
     "g54_g28",
     "haas_modes",
     "inch_plate",
+    "lathe_cycles",
     "lathe_taper",
     "pocket_g43_drill",
 ];
@@ -164,6 +165,8 @@ fn edit() -> impl Strategy<Value = Edit> {
         1 => Just("G93\n".to_string()),
         1 => Just("G13 I6. K9. Q1. D01\n".to_string()),
         1 => Just("G61 ".to_string()),
+        1 => Just("\nO2000\n".to_string()),
+        1 => Just(" ; a note\n".to_string()),
     ];
     (
         0.0f64..1.0,

@@ -292,7 +292,8 @@ impl Machine {
                 | NonModal::LocalCoordinates
                 | NonModal::MachineCoordinates
                 | NonModal::PresetCoordinates
-                | NonModal::CornerArc => "the block makes no G01 move of its own",
+                | NonModal::CornerArc
+                | NonModal::Repetitive(_) => "the block makes no G01 move of its own",
                 NonModal::Skip => "a skip signal may end G31's move anywhere (behaviour 14.7)",
                 NonModal::CirclePocket(_) => "G12/G13 cut a pocket of their own (behaviour 14.12)",
                 NonModal::AiContour
@@ -358,7 +359,13 @@ impl Machine {
         probe.moves_left = usize::MAX;
         let mut scratch = Out::default();
         if probe
-            .execute(next, self.index + 1, &mut scratch, &mut NoneAhead)
+            .execute(
+                next,
+                self.index + 1,
+                &mut scratch,
+                &mut NoneAhead,
+                &mut super::program::NoText,
+            )
             .is_err()
         {
             return Ok(None);

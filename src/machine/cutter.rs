@@ -52,7 +52,8 @@ fn returns(code: NonModal) -> bool {
         | NonModal::SetCoordinates
         | NonModal::LocalCoordinates
         | NonModal::PresetCoordinates
-        | NonModal::CornerArc => false,
+        | NonModal::CornerArc
+        | NonModal::Repetitive(_) => false,
     }
 }
 
@@ -200,7 +201,13 @@ impl Machine {
             let radius_before = probe.cutter_radius();
             scratch.clear();
             let index = self.index.saturating_add(1 + k as u32);
-            let flow = match probe.execute(next, index, scratch, &mut NoneAhead) {
+            let flow = match probe.execute(
+                next,
+                index,
+                scratch,
+                &mut NoneAhead,
+                &mut super::program::NoText,
+            ) {
                 Ok(flow) => flow,
                 Err(_) => return Next::Unknown(Why::Error),
             };
@@ -386,6 +393,29 @@ impl Machine {
                     w.span,
                     format!(
                         "{}: a G39 block makes the corner arc only and takes no move (write the move in the next block)",
+                        w.address.letter()
+                    ),
+                ));
+            }
+        }
+        let arc_mode = codes.motion().unwrap_or(self.state.modal.motion).is_arc();
+        let direction_block = codes.non_modal() == Some(NonModal::CornerArc)
+            || (!arc_mode
+                && matches!(
+                    codes.cutter(),
+                    Some(CutterCompensation::Left | CutterCompensation::Right)
+                ));
+        if direction_block {
+            let (_, _, normal) = self.state.modal.plane.axes();
+            let word = [Address::I, Address::J, Address::K][normal];
+            if let Some(w) = b.get(word) {
+                return Err(self.error(
+                    "cutter-ijk",
+                    w.span,
+                    format!(
+                        "{}: the direction of the vector lies in the {} plane, which {} is not a word of",
+                        w.address.letter(),
+                        self.state.modal.plane.gcode(),
                         w.address.letter()
                     ),
                 ));

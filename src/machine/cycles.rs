@@ -1,5 +1,6 @@
 //! Canned cycles of the mill: G73, G74, G76, G81–G89 with G98/G99, R, Z, Q,
-//! P and K/L repeats; G80 cancels (behaviour 2.14–2.16, Fanuc/YASNAC M). Each cycle is
+//! P and K/L repeats; G80 cancels (behaviour 2.14–2.16, Fanuc/YASNAC M). And
+//! the dwell both machines' G04 makes with the same P (behaviour 2.9, 1.23). Each cycle is
 //! reported as its moves: rapid to the hole, rapid to R, the drilling legs,
 //! the retract. The tool length offset applies to the Z levels.
 
@@ -30,6 +31,55 @@ pub(crate) struct CycleData {
 }
 
 impl Machine {
+    /// G04: dwell P (ms) or X/U (s) (behaviour 2.9).
+    pub(super) fn dwell(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+        let p = b.get(Address::P);
+        // A time given twice is refused at the second word written.
+        let second = |a: &crate::syntax::Word, b: &crate::syntax::Word| {
+            if a.span.start > b.span.start {
+                a.span
+            } else {
+                b.span
+            }
+        };
+        if let (Some(x), Some(u)) = (b.get(Address::X), b.get(Address::U)) {
+            return Err(self.error(
+                "dwell-words",
+                second(x, u),
+                "G04 takes the dwell time once: X or U in seconds, not both",
+            ));
+        }
+        let time_word = b.get(Address::X).or_else(|| b.get(Address::U));
+        let seconds = match (p, time_word) {
+            (Some(p), Some(t)) => {
+                return Err(self.error(
+                    "dwell-words",
+                    second(p, t),
+                    "G04 takes the dwell time once: P in milliseconds or X in seconds",
+                ));
+            }
+            (Some(p), None) => milliseconds(p) / 1000.0,
+            (None, Some(t)) => {
+                if t.value < 0.0 {
+                    return Err(self.error("dwell-words", t.span, "a dwell time is not negative"));
+                }
+                t.value
+            }
+            (None, None) => 0.0,
+        };
+        for a in [Address::Y, Address::Z, Address::W] {
+            if let Some(w) = b.get(a) {
+                return Err(self.error(
+                    "dwell-words",
+                    w.span,
+                    format!("G04 is a dwell and takes no {} word", a.letter()),
+                ));
+            }
+        }
+        self.event(out, EventKind::Dwell { seconds });
+        Ok(())
+    }
+
     /// G73–G89: enters or changes the canned cycle mode.
     pub(super) fn start_cycle(&mut self, cycle: Cycle) {
         if self.state.modal.cycle.is_none() {
@@ -75,8 +125,8 @@ impl Machine {
             }
             self.cycle.q = Some(v.abs());
         }
-        if let Some(p) = b.value(Address::P) {
-            self.cycle.p = p;
+        if let Some(p) = b.get(Address::P) {
+            self.cycle.p = milliseconds(p);
         }
         let drills = [ia, ib, n].iter().any(|&i| b.has(AXES[i].0)) || b.has(Address::R);
         if !drills {
@@ -329,4 +379,11 @@ fn pecks(cycle: Cycle) -> bool {
         | Cycle::BoringManualRetract
         | Cycle::BoringDwell => false,
     }
+}
+
+/// A dwell's P in milliseconds: as written, or, written with a decimal
+/// point (the parser takes one only with setting `dwell_p_decimal_point =
+/// seconds`, Haas), in seconds (behaviour 1.23).
+fn milliseconds(p: &crate::syntax::Word) -> f64 {
+    if p.point { p.value * 1000.0 } else { p.value }
 }

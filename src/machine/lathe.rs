@@ -4,6 +4,7 @@
 //! [`crate::offsets::lathe`]'s; this file moves the tool by them.
 
 use super::modal::{ArcDirection, Distance, LatheCycle, Motion};
+use super::program::ProgramText;
 use super::{Ahead, ArcRequest, Machine, Mark, Out};
 use super::{EventKind, MoveKind};
 use crate::diag::Diagnostic;
@@ -24,7 +25,8 @@ pub(crate) struct TurningData {
 }
 
 impl Machine {
-    /// A lathe block. `_ahead` gives the blocks after it to the rules that
+    /// A lathe block; `program` is its text, read again by sequence
+    /// number for G70–G73 (behaviour 15.3). `_ahead` gives the blocks after it to the rules that
     /// need the next move (none yet: the chamfer words and tool nose radius
     /// compensation are refused until they are modelled).
     pub(super) fn lathe_block(
@@ -32,11 +34,20 @@ impl Machine {
         b: &Block,
         out: &mut Out,
         _ahead: &mut dyn Ahead,
+        program: &mut dyn ProgramText,
     ) -> Result<(), Diagnostic> {
+        if self.passing_over() {
+            self.pass_over(b, out);
+            return Ok(());
+        }
         self.refuse_polar_moves(b)?;
         self.refuse_unmodelled(b)?;
+        // A G71/G72/G74–G76 block's D is its depth (behaviour 15.2).
+        let cycle_d = matches!(b.codes().non_modal(), Some(NonModal::Repetitive(_)));
         for w in &b.words {
-            if matches!(w.address, Address::Y | Address::J | Address::D | Address::H) {
+            if matches!(w.address, Address::Y | Address::J | Address::H)
+                || (w.address == Address::D && !cycle_d)
+            {
                 let why = match w.address {
                     Address::D | Address::H => {
                         "the lathe takes its offsets from T codes (seed 004)"
@@ -50,6 +61,8 @@ impl Machine {
                 ));
             }
         }
+        self.refuse_calls(b)?;
+        self.refuse_unused(b, self.lathe_path(b))?;
         let before = self.state.modal;
         self.common_words(b, out)?;
         self.mode_codes(b, out, before)?;
@@ -59,10 +72,12 @@ impl Machine {
             return self.dwell(b, out);
         }
         for (abs, inc) in [(Address::X, Address::U), (Address::Z, Address::W)] {
-            if let (Some(_), Some(w)) = (b.get(abs), b.get(inc)) {
+            if let (Some(a), Some(w)) = (b.get(abs), b.get(inc)) {
+                // At the second word written.
+                let at = if a.span.start > w.span.start { a } else { w };
                 return Err(self.error(
                     "axis-conflict",
-                    w.span,
+                    at.span,
                     format!(
                         "{} and {} both set the {} target in one block: write one of them",
                         abs.letter(),
@@ -107,6 +122,7 @@ impl Machine {
                 return Ok(());
             }
             Some(NonModal::PresetCoordinates) => return self.g92_1(b, out),
+            Some(NonModal::Repetitive(cycle)) => return self.repetitive(b, cycle, out, program),
             // G31 moves as G01 whatever the mode (behaviour 14.7).
             Some(NonModal::Skip) => {
                 self.skip_note(b, out)?;
@@ -201,8 +217,15 @@ impl Machine {
                 ccw: direction == ArcDirection::Ccw,
                 ..ArcRequest::default()
             };
-            if let Some(r) = b.value(Address::R) {
-                req.radius = Some((self.mm(r), 0.0));
+            if let Some(r) = b.get(Address::R) {
+                if b.has(Address::I) || b.has(Address::K) {
+                    out.warnings.push(Diagnostic::warning(
+                        "arc-r-and-center",
+                        r.span,
+                        "R and I/K in one arc: R is used and I/K are ignored (Fanuc)",
+                    ));
+                }
+                req.radius = Some((self.mm(r.value), 0.0));
             } else {
                 if !(b.has(Address::I) || b.has(Address::K)) {
                     return Err(self.error(
@@ -287,7 +310,7 @@ impl Machine {
 
     /// The T word (behaviour 5, [`LatheState::command`]): returns true if the
     /// offset vector the machine should carry changed.
-    fn t_code(&mut self, b: &Block, out: &mut Out) -> bool {
+    pub(super) fn t_code(&mut self, b: &Block, out: &mut Out) -> bool {
         let Some(t) = b.get(Address::T) else {
             return false;
         };

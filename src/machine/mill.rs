@@ -73,6 +73,8 @@ impl Machine {
                 ));
             }
         }
+        self.refuse_calls(b)?;
+        self.refuse_unused(b, self.mill_path(b))?;
         let before = self.state.modal;
         self.common_words(b, out)?;
         self.mode_codes(b, out, before)?;
@@ -163,6 +165,9 @@ impl Machine {
                 | NonModal::Cylindrical,
             )
             | None => {}
+            // G70–G76 are the lathe's (on the mill the parser reads those
+            // numbers as its canned cycles).
+            Some(NonModal::Repetitive(_)) => {}
         }
         let old_length = self.length_words(b, out)?;
         if centre_words {
@@ -182,6 +187,17 @@ impl Machine {
     /// motion mode, then the move (those steps cost much of the machine's
     /// share of the `check` instruction count in docs/performance.md).
     pub(super) fn motion_block(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+        // I, J, K and R are read by arcs (and R, K by a canned cycle): in
+        // any other block they are refused (behaviour 2.22).
+        if b.holds_any(&[Address::I, Address::J, Address::K, Address::R]) {
+            let arc = match b.codes().motion() {
+                Some(m) => m.is_arc(),
+                None => self.state.modal.cycle.is_none() && self.state.modal.motion.is_arc(),
+            };
+            if !arc {
+                self.refuse_unused_motion_words(b)?;
+            }
+        }
         if let Some(f) = b.value(Address::F) {
             self.state.feed = Some(f);
         }
@@ -556,7 +572,8 @@ impl Machine {
         code: PositionOffset,
         out: &mut Out,
     ) -> Result<(), Diagnostic> {
-        position::check_block(b, code, self.setup.machine, self.state.modal.cycle)?;
+        let arc = self.state.modal.motion.is_arc();
+        position::check_block(b, code, self.setup.machine, self.state.modal.cycle, arc)?;
         let old_length = self.length_words(b, out)?;
         self.mill_motion(b, out, old_length, Some(code))
     }

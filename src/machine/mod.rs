@@ -18,10 +18,13 @@ mod lathe;
 mod mill;
 pub mod modal;
 mod modes;
+mod mrc;
 mod pocket;
+pub mod program;
 mod reference;
 pub mod state;
 mod transform;
+mod words;
 
 pub use state::{ArcInfo, BlockState, EventKind, Move, MoveKind};
 
@@ -80,6 +83,11 @@ pub(crate) struct Out {
     /// A second `Out` lent to a machine copy reading ahead, kept from block
     /// to block (cutter compensation reads ahead at every block).
     pub(crate) scratch: Option<Box<Out>>,
+    /// The block's result depends on the program text before this byte
+    /// offset besides the block itself (a G70–G73 read its contour by
+    /// sequence number, behaviour 15.3): a run made again after an edit
+    /// there must run the block again.
+    pub reads: Option<u32>,
 }
 
 impl Out {
@@ -104,6 +112,7 @@ impl Out {
         self.events.clear();
         self.notes.clear();
         self.warnings.clear();
+        self.reads = None;
     }
 }
 
@@ -136,6 +145,9 @@ pub struct Machine {
     mirror_center: Xyz,
     cycle: cycles::CycleData,
     turning: lathe::TurningData,
+    /// The lathe's G70–G76 data and the contour being passed over after a
+    /// G71–G73 (behaviour 15).
+    mrc: mrc::MrcData,
     feed_warned: bool,
     /// A mode is in effect that every block must be checked against (G93,
     /// behaviour 14.8; cutter radius compensation engaged, behaviour 16):
@@ -213,6 +225,7 @@ impl Machine {
             mirror_center: add(start, origin),
             cycle: cycles::CycleData::default(),
             turning: lathe::TurningData::default(),
+            mrc: mrc::MrcData::default(),
             feed_warned: false,
             special: false,
             index: 0,
@@ -266,8 +279,7 @@ impl Machine {
                     (m.rotary_warned, m.arc_center_warned),
                     m.mirror,
                     m.mirror_center,
-                    m.cycle,
-                    m.turning,
+                    (m.cycle, m.turning, m.mrc),
                     m.feed_warned,
                     m.special,
                     m.corner_cut,
@@ -280,14 +292,16 @@ impl Machine {
             && key(self) == key(other)
     }
 
-    /// Runs one block. On error the block has no effect that matters: the
-    /// run stops there (behaviour 2.1).
+    /// Runs one block; `program` is the text it is part of, read again by
+    /// sequence number when a block asks (behaviour 15.3). On error the block
+    /// has no effect that matters: the run stops there (behaviour 2.1).
     pub(crate) fn execute(
         &mut self,
         block: &Block,
         index: u32,
         out: &mut Out,
         ahead: &mut dyn Ahead,
+        program: &mut dyn program::ProgramText,
     ) -> Result<Flow, Diagnostic> {
         self.index = index;
         self.line = block.span.line;
@@ -296,7 +310,7 @@ impl Machine {
         let after_corner = self.corner_cut.then(|| self.run_from_corner());
         match self.setup.machine {
             MachineKind::Mill => self.mill_block(block, out, ahead)?,
-            MachineKind::Lathe => self.lathe_block(block, out, ahead)?,
+            MachineKind::Lathe => self.lathe_block(block, out, ahead, program)?,
         }
         if let Some(end) = after_corner {
             Self::start_at_corner_end(out, end);
@@ -344,13 +358,19 @@ impl Machine {
         let lathe = self.setup.machine == MachineKind::Lathe;
         // The mill cuts the corner words (`corner.rs`) and reports its
         // rotary axes, not drawn (behaviour 13.14); section 14 models G187's
-        // E and the rotary word of G07.1 (`models_word`).
+        // E and the rotary word of G07.1 (`models_word`); G76's A is its tool
+        // angle (behaviour 15.12).
+        let g76 = b.codes().non_modal()
+            == Some(NonModal::Repetitive(
+                crate::syntax::codes::Repetitive::Threading,
+            ));
         let modelled = |a: Address| {
-            !lathe
-                && matches!(
-                    a,
-                    Address::CommaC | Address::CommaR | Address::A | Address::B | Address::C
-                )
+            (g76 && a == Address::A)
+                || (!lathe
+                    && matches!(
+                        a,
+                        Address::CommaC | Address::CommaR | Address::A | Address::B | Address::C
+                    ))
         };
         let Some(w) = b.words.iter().find(|w| {
             UNMODELLED.contains(&w.address)
@@ -607,8 +627,15 @@ impl Machine {
             self.state.feed = Some(f);
         }
         if let Some(s) = b.value(Address::S) {
-            // G50 S on the lathe is the spindle speed limit, not a speed.
-            if !(machine == MachineKind::Lathe && c.non_modal() == Some(NonModal::SetCoordinates)) {
+            // G50 S on the lathe is the spindle speed limit, not a speed:
+            // said, since no state shows it (behaviour 2.19, 2.22).
+            if machine == MachineKind::Lathe && c.non_modal() == Some(NonModal::SetCoordinates) {
+                let g = crate::syntax::codes::Code::NonModal(NonModal::SetCoordinates)
+                    .gcode(self.state.table());
+                out.notes.push(format!(
+                    "{g} S{s}: the spindle speed limit, which constant surface speed (G96) keeps the spindle under; the spindle speed is not changed"
+                ));
+            } else {
                 self.state.spindle = Some(s);
             }
         }
@@ -634,10 +661,12 @@ impl Machine {
                 }
                 MCode::CoolantMist | MCode::CoolantFlood => EventKind::CoolantOn { m: m.number() },
                 MCode::CoolantOff => EventKind::CoolantOff,
-                // Subprograms are carried through until they are modelled.
+                // The calls never get here: `refuse_calls` stops their block
+                // first (behaviour 2.18).
                 MCode::LocalSubprogramCall
                 | MCode::SubprogramCall
                 | MCode::SubprogramReturn
+                | MCode::ExternalSubprogramCall
                 | MCode::Other(_) => EventKind::Auxiliary { m: m.number() },
             };
             self.event(out, kind);
@@ -651,40 +680,6 @@ impl Machine {
             Some(code) => self.work_code(b, code, out),
             None => Ok(()),
         }
-    }
-
-    /// G04: dwell P (ms) or X/U (s) (behaviour 2.9).
-    fn dwell(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
-        let p = b.get(Address::P);
-        let time_word = b.get(Address::X).or_else(|| b.get(Address::U));
-        let seconds = match (p, time_word) {
-            (Some(_), Some(t)) => {
-                return Err(self.error(
-                    "dwell-words",
-                    t.span,
-                    "G04 takes the dwell time once: P in milliseconds or X in seconds",
-                ));
-            }
-            (Some(p), None) => p.value / 1000.0,
-            (None, Some(t)) => {
-                if t.value < 0.0 {
-                    return Err(self.error("dwell-words", t.span, "a dwell time is not negative"));
-                }
-                t.value
-            }
-            (None, None) => 0.0,
-        };
-        for a in [Address::Y, Address::Z, Address::W] {
-            if let Some(w) = b.get(a) {
-                return Err(self.error(
-                    "dwell-words",
-                    w.span,
-                    format!("G04 is a dwell and takes no {} word", a.letter()),
-                ));
-            }
-        }
-        self.event(out, EventKind::Dwell { seconds });
-        Ok(())
     }
 
     /// Builds the circle of an arc move for both paths (behaviour 2.12, 4.8).

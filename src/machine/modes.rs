@@ -97,7 +97,9 @@ impl Machine {
                 | NonModal::LocalCoordinates
                 | NonModal::MachineCoordinates
                 | NonModal::PresetCoordinates
-                | NonModal::CornerArc,
+                | NonModal::CornerArc
+                // G70–G76 are the lathe's.
+                | NonModal::Repetitive(_),
             )
             | None => {}
         }
@@ -400,7 +402,9 @@ impl Machine {
                 | NonModal::OtherReference
                 | NonModal::LocalCoordinates
                 | NonModal::MachineCoordinates
-                | NonModal::PresetCoordinates,
+                | NonModal::PresetCoordinates
+                // G70–G76 are the lathe's.
+                | NonModal::Repetitive(_),
             ) => false,
             Some(NonModal::PositionOffset(_)) | None => {
                 moves

@@ -44,13 +44,15 @@ impl PositionState {
 
 /// The rules of a block holding G45–G48 before it moves (behaviour 4.9, 4.10,
 /// seed 003): only G00–G03 and G90/G91 may share the block, no canned cycle
-/// may be active, and the block needs an axis word. `cycle` is the active
-/// canned cycle.
+/// may be active, and the block needs an axis word — or, in G02/G03 (`arc`),
+/// a centre word: a full circle (YASNAC PC NC: "1/4, 3/4 or full circle").
+/// `cycle` is the active canned cycle.
 pub fn check_block(
     b: &Block,
     code: PositionOffset,
     machine: MachineKind,
     cycle: Option<Cycle>,
+    arc: bool,
 ) -> Result<(), Diagnostic> {
     for other in b.codes().each() {
         let allowed = match other {
@@ -95,15 +97,13 @@ pub fn check_block(
             ),
         ));
     }
-    if ![Address::X, Address::Y, Address::Z]
-        .iter()
-        .any(|a| b.has(*a))
-    {
+    let full_circle = arc && b.holds_any(&[Address::I, Address::J, Address::K]);
+    if !full_circle && !b.holds_any(&[Address::X, Address::Y, Address::Z]) {
         return Err(Diagnostic::error(
             "position-offset-without-axis",
             b.code_span(Group::NonModal),
             format!(
-                "{} needs an axis word to extend or reduce (behaviour 4.9); for a move by the offset alone write X0 in G91 (seed 003)",
+                "{} needs an axis word to extend or reduce, or in G02/G03 a centre word for a full circle (behaviour 4.9); for a move by the offset alone write X0 in G91 (seed 003)",
                 code.gcode()
             ),
         ));
@@ -152,13 +152,21 @@ impl PositionChange {
 
     /// The change to an arc's centre offset `offset` (mm, after mirror image)
     /// along `axis` (behaviour 4.8: I/J/K are incremental amounts, changed like
-    /// axis words), noted.
+    /// axis words), noted. A zero centre word stays zero: the extension is
+    /// along the axis's direction, and a zero has none (YASNAC PC NC).
     pub fn center(&self, axis: usize, offset: f64, notes: &mut Vec<String>) -> f64 {
+        let letter = ['I', 'J', 'K'][axis];
+        if offset.abs() <= 1e-9 {
+            notes.push(format!(
+                "{}: {letter} 0 stays 0 (a zero centre word has no direction to extend along, behaviour 4.8)",
+                name(self.code)
+            ));
+            return 0.0;
+        }
         let dc = change(self.code, offset, self.register, true, self.mirror[axis]);
         notes.push(format!(
-            "{}: {} {} becomes {}",
+            "{}: {letter} {} becomes {}",
             name(self.code),
-            ['I', 'J', 'K'][axis],
             self.show(offset),
             self.show(offset + dc)
         ));

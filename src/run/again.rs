@@ -156,12 +156,31 @@ impl<'a> Plan<'a> {
         }
         let (a, b) = (earlier.text.as_bytes(), text.as_bytes());
         let (prefix, suffix) = common_ends(a, b);
+        let bytes = b.len() as i64 - a.len() as i64;
+        // A block that read the text by sequence number (a G70–G73 and its
+        // contour, behaviour 15.3) up to a place past the edit's start may
+        // come out otherwise: the run resumes before the first such block,
+        // and catches up only after the last (each search reads the text
+        // from its start, so the text it depends on is all before `upto`).
+        let dependent = || {
+            earlier
+                .checkpoints
+                .reads
+                .iter()
+                .filter(|r| r.upto as usize > prefix)
+                .map(|r| r.start as usize)
+        };
+        let before = dependent().min().map_or(prefix, |s| prefix.min(s + 1));
+        let mut same_from = b.len() - suffix;
+        if let Some(last) = dependent().max().filter(|&s| s >= a.len() - suffix) {
+            same_from = same_from.max(shift(last as i64, bytes) as usize + 1);
+        }
         // The last checkpoint before the edit: the parser there had read
         // the text before it and looked one character further at most (the
         // LF after a CR), and no block before it read ahead into the edit
         // (its horizon). The first one, at the start, always qualifies.
         let resume = checkpoints
-            .partition_point(|c| c.parser.offset() == 0 || c.horizon < prefix)
+            .partition_point(|c| c.parser.offset() == 0 || c.horizon < before)
             .checked_sub(1)?;
         let limited = |d: &Diagnostic| {
             matches!(
@@ -172,8 +191,8 @@ impl<'a> Plan<'a> {
         Some(Plan {
             earlier,
             resume,
-            same_from: b.len() - suffix,
-            bytes: b.len() as i64 - a.len() as i64,
+            same_from,
+            bytes,
             tail_ok: !old.diagnostics.iter().any(limited),
         })
     }
@@ -202,6 +221,8 @@ impl<'a> Plan<'a> {
         making.run.events =
             old.events[..old.events.partition_point(|e| e.block < c.index)].to_vec();
         making.checkpoints.lines = earlier.lines[..c.index as usize].to_vec();
+        making.checkpoints.reads =
+            earlier.reads[..earlier.reads.partition_point(|r| r.index < c.index)].to_vec();
         let diagnostics = old
             .diagnostics
             .iter()
@@ -347,6 +368,16 @@ fn take_tail(
     checkpoints
         .lines
         .extend(earlier.lines[c.index as usize..].iter().map(|&l| line(l)));
+    // The blocks of the tail read no text the edit changed (`Plan::new`):
+    // what they read stays where it was.
+    let first_read = earlier.reads.partition_point(|r| r.index < c.index);
+    checkpoints
+        .reads
+        .extend(earlier.reads[first_read..].iter().map(|r| super::Read {
+            index: shift(i64::from(r.index), d.blocks) as u32,
+            start: shift(i64::from(r.start), d.bytes) as u32,
+            upto: r.upto,
+        }));
     r.parser.report_all(
         old.diagnostics
             .iter()

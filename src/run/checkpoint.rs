@@ -20,6 +20,23 @@ pub struct Checkpoints {
     pub points: Vec<Checkpoint>,
     /// Per executed block, its 1-based line.
     pub lines: Vec<u32>,
+    /// The blocks whose result depends on text other than their own (a
+    /// G70–G73 reads its contour by sequence number, behaviour 15.3), in
+    /// block order: a run made again after an edit of that text runs them
+    /// again (`again.rs`).
+    pub reads: Vec<Read>,
+}
+
+/// A block that read the program's text up to a place (behaviour 15.3).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Read {
+    /// The block's index among the executed blocks.
+    pub index: u32,
+    /// Byte offset of the block's start.
+    pub start: u32,
+    /// Its result depends on the text before this byte offset (the search
+    /// for a sequence number reads from the program's start).
+    pub upto: u32,
 }
 
 impl Checkpoints {

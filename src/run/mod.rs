@@ -17,11 +17,13 @@ mod ahead;
 mod checkpoint;
 #[cfg(not(target_arch = "wasm32"))]
 pub(crate) mod pipeline;
+mod sequence;
 
 use checkpoint::Totals;
-pub use checkpoint::{Checkpoint, Checkpoints};
+pub use checkpoint::{Checkpoint, Checkpoints, Read};
 
 use crate::diag::{self, Diagnostic};
+use crate::machine::program::ProgramText;
 use crate::machine::{Ahead, Flow, Machine, Out};
 use crate::report::{BlockReport, End, Event, Run, include_move};
 use crate::setup::{MachineKind, Setup};
@@ -89,6 +91,9 @@ enum Step {
 /// checkpoint, so both execute exactly the same way.
 struct Runner<'t> {
     parser: Blocks<'t>,
+    /// The text again, for the blocks that read it by sequence number
+    /// (behaviour 15.3).
+    sequences: sequence::Sequences<'t>,
     /// The blocks after the running one, when the machine asks.
     ahead: ahead::Reader<'t>,
     machine: Machine,
@@ -109,6 +114,7 @@ impl<'t> Runner<'t> {
     fn new(text: &'t str, setup: &Setup, options: RunOptions) -> Runner<'t> {
         let machine = Machine::new(Arc::new(setup.clone()));
         Runner::at(
+            text,
             Blocks::new(text, ParseOptions::from(setup)),
             machine,
             setup,
@@ -128,7 +134,7 @@ impl<'t> Runner<'t> {
         let mut r = Runner {
             index: at.index,
             move_count: at.move_count,
-            ..Runner::at(parser, at.machine.clone(), setup, options)
+            ..Runner::at(text, parser, at.machine.clone(), setup, options)
         };
         r.ahead.horizon = at.horizon;
         r
@@ -141,15 +147,22 @@ impl<'t> Runner<'t> {
         let mut r = Runner {
             index: at.index,
             move_count: at.move_count,
-            ..Runner::at(parser, at.machine.clone(), setup, options)
+            ..Runner::at(text, parser, at.machine.clone(), setup, options)
         };
         r.ahead.horizon = at.horizon;
         r
     }
 
-    fn at(parser: Blocks<'t>, machine: Machine, setup: &Setup, options: RunOptions) -> Runner<'t> {
+    fn at(
+        text: &'t str,
+        parser: Blocks<'t>,
+        machine: Machine,
+        setup: &Setup,
+        options: RunOptions,
+    ) -> Runner<'t> {
         Runner {
             parser,
+            sequences: sequence::Sequences::new(text, ParseOptions::from(setup)),
             ahead: ahead::Reader::new(setup.settings.block_skip),
             machine,
             block: Block::default(),
@@ -219,7 +232,7 @@ impl<'t> Runner<'t> {
             &self.options,
             (&mut self.index, &mut self.move_count, &mut self.stopped),
             self.block_skip,
-            &mut ahead,
+            (&mut ahead, &mut self.sequences),
         )
     }
 }
@@ -237,7 +250,7 @@ fn execute(
     options: &RunOptions,
     (index, move_count, stopped): (&mut u32, &mut usize, &mut bool),
     block_skip: bool,
-    ahead: &mut dyn Ahead,
+    (ahead, program): (&mut dyn Ahead, &mut dyn ProgramText),
 ) -> Option<Step> {
     if *stopped {
         return Some(Step::Passed);
@@ -262,7 +275,7 @@ fn execute(
         ))));
     }
     machine.moves_left = options.max_moves.saturating_sub(*move_count);
-    match machine.execute(block, *index, out, ahead) {
+    match machine.execute(block, *index, out, ahead, program) {
         Ok(flow) => {
             *index += 1;
             *move_count += out.moves.len();
@@ -439,6 +452,13 @@ impl Making {
             );
             if every > 0 {
                 self.checkpoints.lines.push(r.block.span.line);
+                if let Some(upto) = r.out.reads {
+                    self.checkpoints.reads.push(Read {
+                        index,
+                        start: r.block.span.start,
+                        upto,
+                    });
+                }
             }
         }
     }

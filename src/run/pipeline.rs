@@ -125,6 +125,7 @@ fn on_two_threads(text: &str, setup: &Setup, options: RunOptions) -> Option<Run>
         let mut totals = Totals::default();
         let machine = Machine::new(Arc::new(setup.clone()));
         let mut r = Runner::at(
+            text,
             Blocks::new("", ParseOptions::from(setup)),
             machine,
             setup,
@@ -151,7 +152,7 @@ fn on_two_threads(text: &str, setup: &Setup, options: RunOptions) -> Option<Run>
                     &r.options,
                     (&mut r.index, &mut r.move_count, &mut r.stopped),
                     r.block_skip,
-                    &mut ahead,
+                    (&mut ahead, &mut r.sequences),
                 );
                 match step {
                     Some(Step::Ran(flow)) => {

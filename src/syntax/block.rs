@@ -74,8 +74,8 @@ impl Address {
     };
 
     /// The address for a byte of program text, a letter of either case, if
-    /// offsetlab reads it: one load from a table (the parser's dispatch on a
-    /// word's letter).
+    /// the one-pass reading reads it (all but O, behaviour 1.21): one load
+    /// from a table (the parser's dispatch on a word's letter).
     #[inline]
     pub fn from_byte(c: u8) -> Option<Address> {
         const BY_BYTE: [Option<Address>; 256] = {
@@ -85,6 +85,11 @@ impl Address {
                 table[c] = Address::from_letter((c as u8).to_ascii_uppercase());
                 c += 1;
             }
+            // A program header (O, or `:` in ISO code) is read in two passes,
+            // where the programs of a file are told apart (behaviour 1.21):
+            // ordinary blocks pay nothing for it.
+            table[b'O' as usize] = None;
+            table[b'o' as usize] = None;
             table
         };
         BY_BYTE[usize::from(c)]
@@ -364,6 +369,17 @@ impl Block {
     pub fn holds_any(&self, addresses: &[Address]) -> bool {
         let words = addresses.iter().fold(0, |bits, a| bits | a.bit());
         self.addresses & words != 0
+    }
+
+    /// The first word whose address is not one of `allowed`, if any: a
+    /// cheap test first, then a look at the words.
+    #[inline]
+    pub fn first_outside(&self, allowed: &[Address]) -> Option<&Word> {
+        let mask = allowed.iter().fold(0, |bits, a| bits | a.bit());
+        if self.addresses & !mask == 0 {
+            return None;
+        }
+        self.words.iter().find(|w| mask & w.address.bit() == 0)
     }
 
     /// True if every word of the block has one of these addresses and every

@@ -25,9 +25,11 @@ impl Blocks<'_> {
     pub(super) fn refusal_message(&self, w: &RawWord, refusal: Refusal) -> (&'static str, String) {
         // The word as written.
         let text = &self.text[w.start..w.end];
-        let letter = match w.comma {
-            true => format!(",{}", w.letter as char),
-            false => (w.letter as char).to_string(),
+        let letter = match (w.comma, self.text.as_bytes()[w.start]) {
+            (true, _) => format!(",{}", w.letter as char),
+            // `:`, the program number address of ISO code.
+            (false, b':') => ":".to_string(),
+            (false, _) => (w.letter as char).to_string(),
         };
         match refusal {
             Refusal::Address => {
@@ -39,6 +41,10 @@ impl Blocks<'_> {
                 };
                 ("unsupported-address", msg)
             }
+            Refusal::Number(NumberError::Missing) if letter == ":" => (
+                "missing-number",
+                "`:` has no number: `:` is the program number address of ISO code (:1234, as O1234); a comment goes in ( )".to_string(),
+            ),
             Refusal::Number(NumberError::Missing) => (
                 "missing-number",
                 format!("{letter} has no number: an address letter needs a value"),
@@ -54,6 +60,12 @@ impl Blocks<'_> {
             Refusal::GCode => (
                 "malformed-number",
                 format!("{text}: a G code is a number such as G01 or G05.1"),
+            ),
+            Refusal::DecimalPoint if w.letter == b'P' => (
+                "decimal-point",
+                format!(
+                    "{text}: P takes a whole number, written without a decimal point (a dwell in milliseconds: P3000 for 3 s; setting dwell_p_decimal_point: seconds, the Haas rule, reads {text} as seconds)"
+                ),
             ),
             Refusal::DecimalPoint => (
                 "decimal-point",

@@ -13,13 +13,21 @@ mod block;
 pub mod codes;
 mod lexer;
 mod messages;
+mod program;
 mod read;
+mod resume;
+
+pub use resume::Resume;
+pub(crate) use resume::shift;
 
 pub use block::{Address, Block, Word, WordKind};
 
 use crate::diag::{Diagnostic, Span};
-use crate::setup::{DecimalInput, GCodeSystem, MachineKind, SameGroupCodes, Setup, Units};
-use codes::{Code, CodeTable, GCode, Group, MCode, g_group};
+use crate::setup::{
+    DecimalInput, DepthWord, DwellPDecimalPoint, GCodeSystem, MachineKind, SameGroupCodes, Setup,
+    Units,
+};
+use codes::{Code, CodeTable, GCode, Group, MCode, NonModal, Repetitive, g_group};
 use lexer::{Number, NumberError};
 
 /// Most diagnostics one program reports; past this one more says so.
@@ -69,6 +77,10 @@ pub struct ParseOptions {
     pub system: GCodeSystem,
     /// Two G codes of one modal group in a block (behaviour 1.11, 7.17).
     pub same_group: SameGroupCodes,
+    /// A decimal point in a dwell's P (behaviour 1.23, 7.26).
+    pub dwell_p: DwellPDecimalPoint,
+    /// How D reads in a lathe G71/G72/G74–G76 block (behaviour 15.2).
+    pub depth_word: DepthWord,
 }
 
 impl ParseOptions {
@@ -95,6 +107,8 @@ impl From<&Setup> for ParseOptions {
             block_skip: s.settings.block_skip,
             system: s.settings.gcode_system(),
             same_group: s.settings.same_group_codes(),
+            dwell_p: s.settings.dwell_p_decimal_point(),
+            depth_word: s.settings.depth_word(),
         }
     }
 }
@@ -131,66 +145,18 @@ pub fn parse(text: &str, options: &ParseOptions) -> Program {
     }
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
 enum Tape {
     /// No `%` and no block seen yet.
     Before,
+    /// The tape start `%` was read, and no block yet.
+    Started,
     /// Reading blocks.
     Reading,
-    /// A closing `%` was read: nothing after it is part of the program.
+    /// A closing `%` was read: nothing after it is part of the program but
+    /// another program (behaviour 1.3); or a later program's header stopped
+    /// the reading of blocks to run (behaviour 1.21).
     Ended,
-}
-
-/// Where the parser stands between two blocks: enough to go on from there
-/// (a run's checkpoint; the diagnostics so far are not part of it).
-#[derive(Clone, Copy, Debug)]
-pub struct Resume {
-    pos: usize,
-    line: u32,
-    units: Units,
-    in_cycle: bool,
-    tape: Tape,
-    warned_integer: bool,
-}
-
-impl Resume {
-    /// Byte offset of the next unread character.
-    pub fn offset(&self) -> usize {
-        self.pos
-    }
-
-    /// The line of the next unread character (1-based).
-    pub fn line(&self) -> u32 {
-        self.line
-    }
-
-    /// True when a parser at `other` reads the same text the way one here
-    /// does: the same G20/G21 and canned-cycle context, tape state and
-    /// warnings given (the place in the text aside).
-    pub fn same_course(&self, other: &Resume) -> bool {
-        (self.units, self.in_cycle, self.tape, self.warned_integer)
-            == (
-                other.units,
-                other.in_cycle,
-                other.tape,
-                other.warned_integer,
-            )
-    }
-
-    /// The same state `bytes` further on and `lines` lines further down
-    /// (the place of this point in a text edited before it).
-    pub fn shifted(self, bytes: i64, lines: i64) -> Resume {
-        Resume {
-            pos: shift(self.pos as i64, bytes) as usize,
-            line: shift(i64::from(self.line), lines) as u32,
-            ..self
-        }
-    }
-}
-
-/// `at + by`, never below 0 (places after an edit are past its start).
-pub(crate) fn shift(at: i64, by: i64) -> i64 {
-    (at + by).max(0)
 }
 
 /// A word as lexed, before it is typed.
@@ -326,12 +292,24 @@ pub struct Blocks<'a> {
     units: Units,
     /// A mill canned cycle is active (K is then a repeat count).
     in_cycle: bool,
+    /// The lathe G70–G76 code of the block being read (P, Q, R, D read as
+    /// that cycle reads them: behaviour 15.2); None between blocks.
+    mrc: Option<Repetitive>,
+    /// `in_cycle || mrc.is_some()`: a word's address alone does not say how
+    /// it reads (one test per word, as the canned cycles' K had).
+    context: bool,
     /// The block read in two passes holds G05.1, whose Q (Q1/Q0) is no
     /// dimension to warn about (behaviour 14.4); set afresh by each two-pass
     /// reading (the one-pass reading leaves a block with a warning due to it).
     whole_q: bool,
     tape: Tape,
     warned_integer: bool,
+    /// Which program of the file the parser is in (behaviour 1.21, 1.22).
+    programs: program::Programs,
+    /// A program header read in the current block besides an O word: a
+    /// `<NAME>` or a malformed number (behaviour 1.4, 1.21; two-pass
+    /// reading only).
+    header: Option<Span>,
     diagnostics: Vec<Diagnostic>,
     dropped: usize,
     raw: Vec<RawWord>,
@@ -345,15 +323,20 @@ impl<'a> Blocks<'a> {
     pub fn new(text: &'a str, options: ParseOptions) -> Blocks<'a> {
         Blocks {
             text,
-            pos: 0,
+            // A UTF-8 byte order mark is an encoding mark, not text (behaviour 1.9).
+            pos: if text.starts_with('\u{feff}') { 3 } else { 0 },
             line: 1,
             units: options.units,
             table: options.table(),
             options,
             in_cycle: false,
+            mrc: None,
+            context: false,
             whole_q: false,
             tape: Tape::Before,
             warned_integer: false,
+            programs: program::Programs::default(),
+            header: None,
             diagnostics: Vec::new(),
             dropped: 0,
             raw: Vec::with_capacity(16),
@@ -370,6 +353,7 @@ impl<'a> Blocks<'a> {
             in_cycle: self.in_cycle,
             tape: self.tape,
             warned_integer: self.warned_integer,
+            programs: self.programs,
         }
     }
 
@@ -381,8 +365,10 @@ impl<'a> Blocks<'a> {
             line: at.line,
             units: at.units,
             in_cycle: at.in_cycle,
+            context: at.in_cycle,
             tape: at.tape,
             warned_integer: at.warned_integer,
+            programs: at.programs,
             ..Blocks::new(text, options)
         }
     }
@@ -467,46 +453,57 @@ impl<'a> Blocks<'a> {
     /// program. Blank and comment-only lines yield nothing.
     pub fn next_into(&mut self, block: &mut Block) -> bool {
         let bytes = self.text.as_bytes();
-        while self.pos < bytes.len() && self.tape != Tape::Ended {
-            let line = self.line;
-            let (end, found) = self.parse_block(self.pos, line, block);
-            self.pos = match bytes.get(end) {
-                None => end,
-                Some(b'\r') if bytes.get(end + 1) == Some(&b'\n') => {
-                    self.line += 1;
-                    end + 2
+        loop {
+            while self.pos < bytes.len() && self.tape != Tape::Ended {
+                let line = self.line;
+                let (end, found) = self.parse_block::<true>(self.pos, line, block);
+                self.pos = self.after_block(end);
+                if found {
+                    return true;
                 }
-                Some(b'\n' | b'\r') => {
-                    self.line += 1;
-                    end + 1
-                }
-                Some(_) => end + 1,
-            };
-            if found {
-                return true;
+            }
+            // The tape's end, or a later program: out of line, rare.
+            if !self.go_on_after_end(block) {
+                return false;
             }
         }
-        if self.tape == Tape::Ended {
-            let rest = &self.text[self.pos.min(self.text.len())..];
-            if let Some(off) = rest.find(|c: char| !c.is_whitespace()) {
-                let at = self.pos + off;
-                let line = self.line + count_lines(&bytes[self.pos..at]);
-                self.report(Diagnostic::warning(
-                    "text-after-tape-end",
-                    Span::new(at, at + 1, line),
-                    "text after the closing % is not read: % marks the end of the tape",
-                ));
+    }
+
+    /// The position after the end of block at `end` (its end-of-block
+    /// character), counting the line it ends.
+    #[inline(always)]
+    fn after_block(&mut self, end: usize) -> usize {
+        let bytes = self.text.as_bytes();
+        match bytes.get(end) {
+            None => end,
+            Some(b'\r') if bytes.get(end + 1) == Some(&b'\n') => {
+                self.line += 1;
+                end + 2
             }
-            self.pos = bytes.len();
+            Some(b'\n' | b'\r') => {
+                self.line += 1;
+                end + 1
+            }
+            Some(_) => end + 1,
         }
-        false
     }
 
     /// Parses the block that starts at `start`, up to its end-of-block
     /// character (newline or `;` outside a comment). Returns the position of
     /// that character (or the end of the text) and whether it is a block to
     /// execute.
-    fn parse_block(&mut self, start: usize, line: u32, block: &mut Block) -> (usize, bool) {
+    ///
+    /// `FAST`: the one-pass reading is tried first (the blocks to run); the
+    /// later programs of a file, read for their diagnostics only, take the
+    /// two-pass reading, which gives the same blocks (a copy of its own
+    /// keeps the hot loop's as it was: the `check` instruction count in
+    /// docs/performance.md).
+    fn parse_block<const FAST: bool>(
+        &mut self,
+        start: usize,
+        line: u32,
+        block: &mut Block,
+    ) -> (usize, bool) {
         let bytes = self.text.as_bytes();
         let n = bytes.len();
         let mut i = lexer::skip_blanks(bytes, start);
@@ -516,10 +513,13 @@ impl<'a> Blocks<'a> {
         if bytes[i] == b'%' {
             // Tape start before any block, tape end after (behaviour 1.3); the rest
             // of the line is not read.
-            self.tape = if self.tape == Tape::Before {
-                Tape::Reading
-            } else {
-                Tape::Ended
+            self.tape = match self.tape {
+                Tape::Before => Tape::Started,
+                Tape::Started | Tape::Ended => Tape::Ended,
+                Tape::Reading => {
+                    self.programs.block = true;
+                    Tape::Ended
+                }
             };
             while i < n && bytes[i] != b'\n' && bytes[i] != b'\r' {
                 i += 1;
@@ -546,21 +546,29 @@ impl<'a> Blocks<'a> {
         // Nearly every block reads in one pass; the rest is read again, from
         // the context the block started with, the way the two-pass reading
         // (its specification) reads it.
+        if self.mrc.is_some() {
+            // A G70–G76 code counts for its own block only.
+            self.mrc = None;
+            self.context = self.in_cycle;
+        }
         let context = (self.units, self.in_cycle);
-        let read = match self.one_pass {
+        let read = match FAST && self.one_pass {
             true => self.read_one_pass(i, line, counts, block),
             false => None,
         };
         let (end, mut last) = read.unwrap_or_else(|| {
             (self.units, self.in_cycle) = context;
+            self.mrc = None;
+            self.context = self.in_cycle;
             block.clear();
-            self.read_two_pass(i, line, counts, block)
+            self.read_two_pass(start, i, line, counts, block)
         });
         while last > first && matches!(bytes[last - 1], b' ' | b'\t') {
             last -= 1;
         }
         block.span = Span::new(first, last, line);
-        if self.tape == Tape::Before {
+        // (A later program's header ends the reading: the tape stays Ended.)
+        if self.tape < Tape::Reading {
             self.tape = Tape::Reading;
         }
         (end, !block.words.is_empty() || block.error)
@@ -613,9 +621,23 @@ impl<'a> Blocks<'a> {
     fn note_code(&mut self, code: Code) {
         match code {
             // A group 01 code ends the canned cycle (only the mill has one).
-            Code::Motion(_) | Code::Cycle(codes::CannedCycle::Cancel) => self.in_cycle = false,
-            Code::Cycle(codes::CannedCycle::Cycle(_)) => self.in_cycle = true,
+            // Only the mill has canned cycles and only the lathe G70–G76,
+            // so leaving a cycle leaves no context.
+            Code::Motion(_) | Code::Cycle(codes::CannedCycle::Cancel) => {
+                if self.in_cycle {
+                    self.in_cycle = false;
+                    self.context = false;
+                }
+            }
+            Code::Cycle(codes::CannedCycle::Cycle(_)) => {
+                self.in_cycle = true;
+                self.context = true;
+            }
             Code::Units(units) => self.units = units,
+            Code::NonModal(NonModal::Repetitive(r)) => {
+                self.mrc = Some(r);
+                self.context = true;
+            }
             Code::NonModal(_)
             | Code::Plane(_)
             | Code::Distance(_)
@@ -646,9 +668,10 @@ impl<'a> Blocks<'a> {
         n: Number,
         span: Span,
     ) -> Result<(Word, WordKind), Refusal> {
-        let kind = match address {
-            Address::K if self.in_cycle => WordKind::Integer,
-            _ => address.kind(),
+        let kind = if self.context {
+            self.context_kind(address)
+        } else {
+            address.kind()
         };
         let value = match kind {
             WordKind::Integer if address == Address::G => {
@@ -661,7 +684,7 @@ impl<'a> Blocks<'a> {
                 if n.point {
                     return Err(Refusal::DecimalPoint);
                 }
-                let limit = integer_limit(self.options, address, self.in_cycle);
+                let limit = integer_limit(self.options, address, self.in_cycle, self.mrc);
                 if n.negative && n.mantissa != 0 || n.mantissa > limit {
                     return Err(Refusal::Integer(limit));
                 }
@@ -697,6 +720,29 @@ impl<'a> Blocks<'a> {
         Ok((word, kind))
     }
 
+    /// How `address` reads in a mill canned cycle (K a repeat count,
+    /// behaviour 1.16) or a lathe G70–G76 block (behaviour 15.2): P and Q
+    /// are whole numbers there — sequence numbers in G70–G73, least input
+    /// increments or G76's `mmrraa` code in G74–G76 — and so are G73's R
+    /// and D (counts of divisions); D elsewhere reads as setting
+    /// `depth_word` says. Out of line: few blocks have either.
+    #[inline(never)]
+    #[cold]
+    fn context_kind(&self, address: Address) -> WordKind {
+        match (address, self.mrc) {
+            (Address::K, _) if self.in_cycle => WordKind::Integer,
+            (Address::P | Address::Q, Some(_)) => WordKind::Integer,
+            (Address::R | Address::D, Some(Repetitive::PatternRepeat)) => WordKind::Integer,
+            // G76's tool angle, in whole degrees (Haas: no decimal point).
+            (Address::A, Some(Repetitive::Threading)) => WordKind::Integer,
+            (Address::D, Some(_)) => match self.options.depth_word {
+                DepthWord::Increments => WordKind::Integer,
+                DepthWord::Dimension => WordKind::Dimension,
+            },
+            _ => address.kind(),
+        }
+    }
+
     /// The value of a dimension word in the current units (decimal input,
     /// behaviour 1).
     fn dimension(&self, n: Number) -> f64 {
@@ -726,7 +772,13 @@ impl<'a> Blocks<'a> {
         let read = address
             .ok_or(Refusal::Address)
             .and_then(|a| Ok((a, w.number.map_err(Refusal::Number)?)))
-            .and_then(|(a, n)| self.read_word(a, n, span));
+            .and_then(|(a, n)| {
+                self.read_word(a, n, span).or_else(|refusal| match refusal {
+                    // Haas: a dwell's P with a point is seconds (behaviour 1.23).
+                    Refusal::DecimalPoint => self.dwell_seconds(a, n, span),
+                    _ => Err(refusal),
+                })
+            });
         match read {
             Ok((word, kind)) => {
                 if kind == WordKind::Dimension
@@ -787,8 +839,15 @@ fn count_lines(bytes: &[u8]) -> u32 {
     n
 }
 
-fn integer_limit(options: ParseOptions, address: Address, in_cycle: bool) -> u64 {
+fn integer_limit(
+    options: ParseOptions,
+    address: Address,
+    in_cycle: bool,
+    mrc: Option<Repetitive>,
+) -> u64 {
     match address {
+        // A lathe G70–G76 block's D is a depth or a count (behaviour 15.2).
+        Address::D if mrc.is_some() => MAX_INTEGER,
         Address::D | Address::H => u64::from(options.table_size),
         Address::T if options.machine == MachineKind::Lathe => 9999,
         Address::L => MAX_REPEATS,

@@ -4,7 +4,23 @@
 //! and diagnostics ([`super::Blocks::next_into`] chooses).
 
 use super::messages::unexpected_message;
+use super::program::Lead;
 use super::*;
+
+/// The addresses whose reading a G code later in the block can change: K
+/// (a mill canned cycle's repeat count) and P, Q, R, D, A (a lathe G70–G76
+/// block's words, behaviour 15.2).
+/// The words pushed so far are those before the G code: the block's own
+/// record of its addresses says whether any is one of these (no work per
+/// word; the `check` instruction count in docs/performance.md).
+const CONTEXT_ADDRESSES: [Address; 6] = [
+    Address::K,
+    Address::P,
+    Address::Q,
+    Address::R,
+    Address::D,
+    Address::A,
+];
 
 impl Blocks<'_> {
     /// Reads the words of a block from `i` (after any `/`) in one pass,
@@ -31,7 +47,6 @@ impl Blocks<'_> {
         // A G20/G21 after a dimension word, or a cycle code changing the
         // cycle state after a K word, changes how that word is read.
         let mut read_dimension = false;
-        let mut read_k = false;
         loop {
             i = lexer::skip_blanks(bytes, i);
             let Some(&c) = bytes.get(i) else { break };
@@ -58,10 +73,11 @@ impl Blocks<'_> {
             let (word_end, next, number) = lexer::number(bytes, i + 1);
             let number = number.ok()?;
             if address == Address::G && counts {
-                let before = (self.units, self.in_cycle);
+                let before = (self.units, self.in_cycle, self.mrc);
                 self.note_context(number);
                 if (read_dimension && self.units != before.0)
-                    || (read_k && self.in_cycle != before.1)
+                    || ((self.in_cycle, self.mrc) != (before.1, before.2)
+                        && block.holds_any(&CONTEXT_ADDRESSES))
                 {
                     return None;
                 }
@@ -74,7 +90,6 @@ impl Blocks<'_> {
                 }
                 read_dimension = true;
             }
-            read_k |= address == Address::K;
             checks.admit(self.table, block, word).ok()?;
             last = word_end;
             i = next;
@@ -82,7 +97,8 @@ impl Blocks<'_> {
         Some((i, last))
     }
 
-    /// Reads the words of a block from `i` (after any `/`) in two passes:
+    /// Reads the words of a block from `i` (after any `/`; the block starts
+    /// at `start`) in two passes:
     /// lexes the whole block (reporting comment and character errors, and
     /// noting the G codes that change how numbers are read), then types
     /// every word with the block's context and checks it against the words
@@ -95,6 +111,7 @@ impl Blocks<'_> {
     #[inline(never)]
     pub(super) fn read_two_pass(
         &mut self,
+        start: usize,
         mut i: usize,
         line: u32,
         counts: bool,
@@ -102,9 +119,22 @@ impl Blocks<'_> {
     ) -> (usize, usize) {
         let bytes = self.text.as_bytes();
         let n = bytes.len();
-        let mut last = i;
+        let mark = self.mark();
+        self.header = None;
         self.raw.clear();
         self.whole_q = false;
+        i = lexer::skip_blanks(bytes, i);
+        let mut last = i;
+
+        // What a block may start with besides words: a program header, or
+        // a line of another dialect (behaviour 1.4, 1.21, 1.22).
+        if let Some(b'O' | b'o' | b':' | b'<' | b'$') = bytes.get(i) {
+            match self.block_lead(i, line, block) {
+                Lead::Words => {}
+                Lead::Name(after) => (i, last) = (after, after),
+                Lead::Refused(end) => (i, last) = (end, end),
+            }
+        }
 
         // Lex: comments, words, and anything else as an error. Words are
         // typed once the whole block is lexed, because a G code anywhere in
@@ -116,9 +146,13 @@ impl Blocks<'_> {
                 break;
             }
             let c = bytes[i];
-            if c.is_ascii_alphabetic() {
+            if c.is_ascii_alphabetic() || c == b':' {
                 let (word_end, _, number) = lexer::number(bytes, i + 1);
-                let letter = c.to_ascii_uppercase();
+                // `:` is the program number address in ISO code (behaviour 1.4).
+                let letter = match c {
+                    b':' => b'O',
+                    _ => c.to_ascii_uppercase(),
+                };
                 if letter == b'G'
                     && counts
                     && let Ok(number) = number
@@ -165,7 +199,7 @@ impl Blocks<'_> {
                 let mut j = i + 1;
                 while j < n
                     && !bytes[j].is_ascii_alphabetic()
-                    && bytes[j] != b'('
+                    && !matches!(bytes[j], b'(' | b':')
                     && !is_end(bytes[j])
                 {
                     j += 1;
@@ -205,6 +239,21 @@ impl Blocks<'_> {
             }
         }
         self.raw = raw;
+        // A program header (O, `:`, <NAME>, or a malformed number).
+        let header = self
+            .header
+            .take()
+            .or_else(|| block.get(Address::O).map(|w| w.span));
+        if let Some(span) = header {
+            self.program_header(span, block);
+        }
+        if block.error
+            && start > 0
+            && bytes[start - 1] == b';'
+            && let Some(read) = self.semicolon_comment(mark, start, line, block)
+        {
+            return read;
+        }
         (end, last)
     }
 }

@@ -59,6 +59,21 @@ const CHOICES = [
     help: 'G68 R… is the angle whatever G90/G91 say (Fanuc RIN = 0), or in G91 it adds to the rotation in force (RIN = 1).',
   },
   {
+    id: 'depth_word', label: 'D of G71–G76', machine: 'lathe', controlDefault: true,
+    options: [['dimension', 'a length (D0.5)'], ['increments', 'least increments (D500)']],
+    help: 'The one-block G71/G72 depth of cut, G74/G75 relief and G76 first depth: Haas and YASNAC write a length with a decimal point; Fanuc’s Series 10/11 format counts least increments, no decimal point.',
+  },
+  {
+    id: 'trailing_rapids', label: 'G00 ending a G71 contour', machine: 'lathe', controlDefault: true,
+    options: [['shape', 'part of the shape'], ['exit', 'the tool’s exit']],
+    help: 'G00 blocks that end a G71/G72 contour going back toward the start: Fanuc checks them as the shape (alarm PS0064); the Haas profile takes them as the exit, with a warning.',
+  },
+  {
+    id: 'dwell_p_decimal_point', label: 'Decimal point in P', controlDefault: true,
+    options: [['error', 'an error'], ['seconds', 'seconds']],
+    help: 'G04 P3. (and a canned cycle’s dwell P): YASNAC and Fanuc take P in milliseconds without a point and refuse P3.; Haas reads P3. as 3 seconds and P3 as 3 milliseconds.',
+  },
+  {
     id: 'decimal_input', label: 'Decimal input', options: [['increment', 'increment'], ['calculator', 'calculator']],
     help: 'A dimension without a point: X12345 is 12.345 mm (increment, Fanuc/YASNAC) or 12345 mm (calculator).',
   },

@@ -7,7 +7,8 @@ export const MAX_POSITION = 99999.999;
 export const WORK_SYSTEMS = ['G54', 'G55', 'G56', 'G57', 'G58', 'G59'];
 
 // The settings whose default is the control's (same_group_codes,
-// gcode_system, …) have none here: absent means "as the control".
+// gcode_system, dwell_p_decimal_point, …) have none here: absent means "as
+// the control".
 export const DEFAULT_SETTINGS = {
   control: 'yasnac',
   decimal_input: 'increment',

@@ -643,6 +643,69 @@ pub enum NonModal {
     /// G39 (mill): corner circular interpolation in cutter compensation
     /// (behaviour 16).
     CornerArc,
+    /// Lathe G70–G76: a multiple repetitive cycle (behaviour 15).
+    Repetitive(Repetitive),
+}
+
+/// The lathe's multiple repetitive cycles, group 00 (Fanuc 0i-TF operator's
+/// manual B-64604EN-1, "Multiple repetitive cycle (G70–G76)"; behaviour 15).
+/// G-code system C numbers them G72–G78 (behaviour 15.1).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Repetitive {
+    /// G70: finishing cycle along the P–Q contour.
+    Finishing,
+    /// G71: stock removal in turning (cuts along Z, depth in X).
+    TurningStock,
+    /// G72: stock removal in facing (cuts along X, depth in Z).
+    FacingStock,
+    /// G73: pattern repeating.
+    PatternRepeat,
+    /// G74: end face peck drilling (pecks along Z).
+    FacePeck,
+    /// G75: outer/inner diameter grooving (pecks along X).
+    DiameterPeck,
+    /// G76: multiple threading cycle.
+    Threading,
+}
+
+impl Repetitive {
+    /// The G code in G-code systems A and B.
+    pub fn gcode(self) -> &'static str {
+        match self {
+            Repetitive::Finishing => "G70",
+            Repetitive::TurningStock => "G71",
+            Repetitive::FacingStock => "G72",
+            Repetitive::PatternRepeat => "G73",
+            Repetitive::FacePeck => "G74",
+            Repetitive::DiameterPeck => "G75",
+            Repetitive::Threading => "G76",
+        }
+    }
+
+    /// The G code in G-code system C (each number two higher).
+    pub fn gcode_system_c(self) -> &'static str {
+        match self {
+            Repetitive::Finishing => "G72",
+            Repetitive::TurningStock => "G73",
+            Repetitive::FacingStock => "G74",
+            Repetitive::PatternRepeat => "G75",
+            Repetitive::FacePeck => "G76",
+            Repetitive::DiameterPeck => "G77",
+            Repetitive::Threading => "G78",
+        }
+    }
+
+    /// True for the cycles that read a P–Q contour (G70–G73): their P and Q
+    /// are sequence numbers.
+    pub fn reads_contour(self) -> bool {
+        match self {
+            Repetitive::Finishing
+            | Repetitive::TurningStock
+            | Repetitive::FacingStock
+            | Repetitive::PatternRepeat => true,
+            Repetitive::FacePeck | Repetitive::DiameterPeck | Repetitive::Threading => false,
+        }
+    }
 }
 
 impl NonModal {
@@ -668,6 +731,7 @@ impl NonModal {
             (NonModal::MachineCoordinates, _) => "G53",
             (NonModal::PresetCoordinates, _) => "G92.1",
             (NonModal::CornerArc, _) => "G39",
+            (NonModal::Repetitive(r), _) => r.gcode(),
         }
     }
 }

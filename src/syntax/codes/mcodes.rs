@@ -38,6 +38,9 @@ pub enum MCode {
     SubprogramCall,
     /// M99: end of subprogram, return to the caller.
     SubprogramReturn,
+    /// M198 (Fanuc): call of a subprogram kept outside the program memory
+    /// (memory card, data server).
+    ExternalSubprogramCall,
     /// Any other M code, carried through.
     Other(u32),
 }
@@ -63,6 +66,7 @@ impl MCode {
             97 => MCode::LocalSubprogramCall,
             98 => MCode::SubprogramCall,
             99 => MCode::SubprogramReturn,
+            198 => MCode::ExternalSubprogramCall,
             other => MCode::Other(other),
         }
     }
@@ -85,6 +89,7 @@ impl MCode {
             MCode::LocalSubprogramCall => 97,
             MCode::SubprogramCall => 98,
             MCode::SubprogramReturn => 99,
+            MCode::ExternalSubprogramCall => 198,
             MCode::Other(n) => n,
         }
     }
@@ -103,6 +108,7 @@ impl MCode {
             MCode::LocalSubprogramCall
             | MCode::SubprogramCall
             | MCode::SubprogramReturn
+            | MCode::ExternalSubprogramCall
             | MCode::Other(_) => 100 + self.number(),
         }
     }
@@ -124,6 +130,7 @@ impl MCode {
             | MCode::LocalSubprogramCall
             | MCode::SubprogramCall
             | MCode::SubprogramReturn
+            | MCode::ExternalSubprogramCall
             | MCode::Other(_) => false,
         }
     }

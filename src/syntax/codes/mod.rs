@@ -12,8 +12,8 @@ mod mcodes;
 pub use groups::{
     ArcCenter, ArcDirection, CannedCycle, CutterCompensation, CuttingMode, Cycle, Distance,
     FeedMode, LatheCycle, LengthOffset, MAX_ADDITIONAL_WORK, MAX_HAAS_WORK, MirrorMode, Motion,
-    NonModal, Plane, Polar, PolarMode, PolarSpelling, PositionOffset, ReturnLevel, RotationMode,
-    ScalingMode, SurfaceSpeed, WorkCode, WorkSystem,
+    NonModal, Plane, Polar, PolarMode, PolarSpelling, PositionOffset, Repetitive, ReturnLevel,
+    RotationMode, ScalingMode, SurfaceSpeed, WorkCode, WorkSystem,
 };
 pub use mcodes::MCode;
 
@@ -394,6 +394,7 @@ impl Code {
                         (LatheCycle::Facing, true) => "G24",
                     };
                 }
+                Code::NonModal(NonModal::Repetitive(r)) if c => return r.gcode_system_c(),
                 Code::Units(Units::Inch) if c => return "G70",
                 Code::Units(Units::Mm) if c => return "G71",
                 Code::NonModal(NonModal::SetCoordinates) => return "G92",
@@ -463,6 +464,7 @@ fn lathe_code(system: GCodeSystem, major: u16) -> Option<Code> {
     let turning = C::Motion(Motion::LatheCycle(LatheCycle::Turning));
     let threading = C::Motion(Motion::LatheCycle(LatheCycle::Threading));
     let facing = C::Motion(Motion::LatheCycle(LatheCycle::Facing));
+    let mrc = |r| C::NonModal(NonModal::Repetitive(r));
     Some(match (system, major) {
         (GCodeSystem::A | GCodeSystem::B, 20) | (GCodeSystem::C, 70) => C::Units(Units::Inch),
         (GCodeSystem::A | GCodeSystem::B, 21) | (GCodeSystem::C, 71) => C::Units(Units::Mm),
@@ -478,6 +480,23 @@ fn lathe_code(system: GCodeSystem, major: u16) -> Option<Code> {
         (GCodeSystem::A, 99) | (GCodeSystem::B | GCodeSystem::C, 95) => {
             C::FeedMode(FeedMode::PerRevolution)
         }
+        // The multiple repetitive cycles: G70–G76 in systems A and B,
+        // G72–G78 in C (Fanuc 0i-TF, "G code list"; behaviour 15.1).
+        (GCodeSystem::A | GCodeSystem::B, 70) | (GCodeSystem::C, 72) => mrc(Repetitive::Finishing),
+        (GCodeSystem::A | GCodeSystem::B, 71) | (GCodeSystem::C, 73) => {
+            mrc(Repetitive::TurningStock)
+        }
+        (GCodeSystem::A | GCodeSystem::B, 72) | (GCodeSystem::C, 74) => {
+            mrc(Repetitive::FacingStock)
+        }
+        (GCodeSystem::A | GCodeSystem::B, 73) | (GCodeSystem::C, 75) => {
+            mrc(Repetitive::PatternRepeat)
+        }
+        (GCodeSystem::A | GCodeSystem::B, 74) | (GCodeSystem::C, 76) => mrc(Repetitive::FacePeck),
+        (GCodeSystem::A | GCodeSystem::B, 75) | (GCodeSystem::C, 77) => {
+            mrc(Repetitive::DiameterPeck)
+        }
+        (GCodeSystem::A | GCodeSystem::B, 76) | (GCodeSystem::C, 78) => mrc(Repetitive::Threading),
         (GCodeSystem::B | GCodeSystem::C, 90) => C::Distance(Distance::Absolute),
         (GCodeSystem::B | GCodeSystem::C, 91) => C::Distance(Distance::Incremental),
         _ => return None,
@@ -691,9 +710,8 @@ fn unsupported_reason(table: CodeTable, g: GCode) -> String {
             "in G-code system B and C the coordinate system is set with G92 (setting gcode_system)"
         }
         51 if lathe => "scaling is the mill's (the lathe's G50 sets the coordinate system)",
-        65..=67 => "macro calls are not supported",
+        65..=67 => "macro calls are not run yet",
         68 | 69 if lathe => "coordinate rotation is the mill's in offsetlab",
-        70..=76 if lathe => "multiple repetitive cycles (G70–G76) are not supported yet",
         15 | 16 if lathe => "polar coordinates are the mill's in offsetlab",
         17 | 19 if lathe => "the lathe works in the ZX plane (G18) only",
         61..=64 | 9 | 8 | 93 | 187 if lathe => "this cutting-mode or feed code is a mill code",
