@@ -185,3 +185,44 @@ fn behaviour1_7_words_read_but_not_modelled_are_refused_by_the_machine() {
     let r = run("G01 U1. ,C1. F0.1\nW-1.", &lathe(&[]));
     assert!(r.diagnostics[0].message.starts_with(",C: chamfering"));
 }
+
+#[test]
+fn behaviour7_27_to_7_30_the_profiles_give_the_cutter_settings() {
+    use offsetlab::setup::{
+        CutterCancelWithoutMotion, CutterInterference, CutterOutsideCorner, CutterStartUp,
+    };
+    // Table 12.2: type A, the Fanuc corners and two blocks read past on
+    // every profile; G40 alone takes the vector off but on Haas.
+    for control in [Control::Yasnac, Control::Fanuc, Control::Haas] {
+        let s = Settings {
+            control,
+            ..Settings::default()
+        };
+        assert_eq!(s.cutter_start_up(), CutterStartUp::A);
+        assert_eq!(s.cutter_outside_corner(), CutterOutsideCorner::Vectors);
+        assert_eq!(s.cutter_blocks_without_motion(), 2);
+        assert_eq!(s.cutter_interference_check, CutterInterference::Alarm);
+        let want = match control {
+            Control::Haas => CutterCancelWithoutMotion::NextMove,
+            Control::Yasnac | Control::Fanuc => CutterCancelWithoutMotion::Move,
+        };
+        assert_eq!(s.cutter_cancel_without_motion(), want);
+    }
+    // Set in a document, they win; out of range, the setup is refused.
+    let setup = Setup::from_json(
+        r#"{"settings":{"control":"haas","cutter_start_up":"B","cutter_cancel_without_motion":"move","cutter_blocks_without_motion":4,"cutter_outside_corner":"arc","cutter_interference_check":"off"}}"#,
+    )
+    .unwrap();
+    let s = &setup.settings;
+    assert_eq!(s.cutter_start_up(), CutterStartUp::B);
+    assert_eq!(
+        s.cutter_cancel_without_motion(),
+        CutterCancelWithoutMotion::Move
+    );
+    assert_eq!(s.cutter_blocks_without_motion(), 4);
+    assert_eq!(s.cutter_outside_corner(), CutterOutsideCorner::Arc);
+    assert_eq!(s.cutter_interference_check, CutterInterference::Off);
+    assert!(setup.to_json().contains("\"cutter_start_up\": \"B\""));
+    let e = Setup::from_json(r#"{"settings":{"cutter_blocks_without_motion":9}}"#).unwrap_err();
+    assert_eq!(e.diagnostics[0].code, "setup-range");
+}

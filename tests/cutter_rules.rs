@@ -237,6 +237,12 @@ fn behaviour16_15_mirror_image_turns_g41_into_g42() {
     same(end(&r, 2), [-100.0, 5.0, 0.0]);
     let g42 = ok("G01 G42 D01 X-50. F100.\nX-100.\nG40 X-150.", &r5());
     same(end(&g42, 1), end(&r, 1));
+    // Programmable mirror image G51.1 X0 does the same (behaviour 13.8).
+    let r = ok(
+        "G51.1 X0\nG01 G41 D01 X50. F100.\nX100.\nG40 X150.\nG50.1 X0",
+        &r5(),
+    );
+    same(end(&r, 2), [-50.0, 5.0, 0.0]);
 }
 
 // ----- 16.16 the plane ------------------------------------------------------

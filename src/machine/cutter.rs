@@ -681,7 +681,10 @@ impl Machine {
         };
         let next = self.cutter_next(ahead, out);
         let (corner, next_path, o2, cancels) = match next {
-            Next::Move { path: n, offset } if offset == 0.0 => {
+            Next::Move {
+                path: n,
+                offset: 0.0,
+            } => {
                 let c = self.corner_or_alarm(b, &path, &n, o, o, Rule::Cancel(t))?;
                 (c, n, o, true)
             }

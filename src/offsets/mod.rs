@@ -8,6 +8,7 @@
 //! - [`lathe`]: lathe T-code tool position offset (behaviour 5, seed 004);
 //! - [`cutter`]: cutter radius compensation C, G40–G42 and G39 (behaviour 16),
 //!   a folder with its plane geometry.
+//!
 //! The machine owns positions and modal state and calls these; a family
 //! never moves the tool and imports nothing of the machine.
 

@@ -106,7 +106,8 @@ export function stateRows(b) {
       cancel: 'cancel mode', start_up: 'start-up', offset: 'offset mode', cancelling: 'cancel (this block)',
     }[c.phase] ?? c.phase;
     const d = c.d > 0 ? `D${two(c.d)} = ${fmt(c.radius, u)}` : 'D00 (none)';
-    rows.push(['Cutter radius (G41/G42)', `${c.mode} · ${d} · ${role}`, 'cutter']);
+    const text = c.mode === 'G40' && c.phase === 'cancel' ? 'G40 · cancel mode' : `${c.mode} · ${d} · ${role}`;
+    rows.push(['Cutter radius (G41/G42)', text, 'cutter']);
     rows.push(['Cutter offset vector', vector(c.vector, u), 'cutter-vector']);
   }
   if (b.lathe_offset) {
