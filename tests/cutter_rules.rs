@@ -252,6 +252,22 @@ fn behaviour16_16_the_plane_cannot_change_in_compensation() {
     let (code, line, message) = alarm("G01 G41 D01 X50. F100.\nG18 X100.", &r5());
     assert_eq!((code, line), ("cutter-plane", 2));
     assert!(message.contains("PS0037"), "{message}");
+    // Once cancelled, the next block is in cancel mode again: a new plane,
+    // a canned cycle, G45 and a chamfer all run (16.2).
+    for after in [
+        "G18 G01 Z-5.",
+        "G81 X10. Y10. Z-5. R2.\nG80",
+        "G91 G45 X10. D01\nG90",
+        "G01 X200. ,C2.\nY50.",
+    ] {
+        let text = format!("G01 G41 D01 X50. F100.\nX100.\nG40 X150.\n{after}\nM30");
+        let r = ok(&text, &r5());
+        assert_eq!(
+            at_line(&r, &text, 4).cutter.unwrap().phase,
+            "cancel",
+            "{after}"
+        );
+    }
 }
 
 // ----- 16.17 the length offset and G45–G48 ------------------------------

@@ -329,7 +329,10 @@ impl Machine {
     /// The refusals of behaviour 16.16–16.19, before the block runs.
     fn cutter_checks(&self, b: &Block) -> Result<(), Diagnostic> {
         let now = self.state.cutter;
-        let engaged = now.engaged();
+        // G41/G42 is the mode, or a vector is on (a cancel block's own
+        // role, `cancelling`, has none left).
+        let vector_on = matches!(now.phase, Phase::StartUp | Phase::Offset);
+        let engaged = now.mode != CutterCompensation::Cancel || vector_on;
         let codes = b.codes();
         if engaged
             && let Some(plane) = codes.plane()
@@ -441,7 +444,7 @@ impl Machine {
                 ));
             }
         }
-        if matches!(codes.cycle(), Some(CannedCycle::Cycle(_))) && now.phase != Phase::Cancel {
+        if matches!(codes.cycle(), Some(CannedCycle::Cycle(_))) && vector_on {
             return Err(self.error(
                 "cutter-in-cycle",
                 b.code_span(crate::syntax::codes::Group::Cycle),
@@ -452,6 +455,20 @@ impl Machine {
             ));
         }
         Ok(())
+    }
+
+    /// The block after a cancel block that does not ask for the
+    /// compensation: it is back in cancel mode (behaviour 16.2) and runs as
+    /// any block does, a chamfer's look-ahead and the fast path included.
+    /// True when that is so (the role is then set back to cancel).
+    pub(super) fn cutter_after_cancel(&mut self, b: &Block) -> bool {
+        let c = self.state.cutter;
+        if c.mode == CutterCompensation::Cancel && c.phase == Phase::Cancelling && !concerns(b) {
+            self.state.cutter.phase = Phase::Cancel;
+            self.update_special();
+            return true;
+        }
+        false
     }
 
     /// A mill block while cutter compensation is engaged, or one that

@@ -47,7 +47,8 @@ impl Machine {
         if !self.special && b.holds_only(&MOTION_WORDS, &[Group::Motion]) {
             return self.motion_block(b, out);
         }
-        if self.state.cutter.engaged() || super::cutter::concerns(b) {
+        if self.state.cutter.engaged() && !self.cutter_after_cancel(b) || super::cutter::concerns(b)
+        {
             return self.cutter_block(b, out, ahead);
         }
         if b.holds_any(&CORNER_WORDS) {

@@ -26,6 +26,13 @@ pub const TANGENT: f64 = 1e-6;
 /// as touching (a tangent line and circle computed from rounded words).
 const TOUCH: f64 = 1e-7;
 
+/// A turn whose sine is under this (about 1.1°) is taken as tangent when
+/// the offset paths do not meet: two arcs of an S-curve written with four
+/// decimals meet at a tangent the words only round off, and their offset
+/// circles may then miss by a hair; the tool goes on at the common point's
+/// offset rather than stop at an alarm (our convention).
+const NEAR_TANGENT: f64 = 0.02;
+
 fn add(a: P2, b: P2) -> P2 {
     [a[0] + b[0], a[1] + b[1]]
 }
@@ -438,7 +445,11 @@ pub fn corner(
     let end1 = add(p, mul(n1, o));
     let start2 = add(q, mul(n2, o));
     let near = mul(add(end1, start2), 0.5);
-    let meet = |o2: f64| crossing_near(prev.offset(o, t1), next.offset(o2, t2), near);
+    let near_tangent = cos > 0.0 && sin.abs() < NEAR_TANGENT;
+    let meet = |o2: f64| {
+        crossing_near(prev.offset(o, t1), next.offset(o2, t2), near)
+            .or_else(|| near_tangent.then_some(end1))
+    };
     let tangent = cos > 0.0 && sin.abs() < TANGENT;
     // 90° of turn or less: an obtuse corner (α of 90° or more).
     let obtuse = cos >= 0.0;
@@ -682,6 +693,30 @@ mod tests {
         let c = corner(&X, &arc, 1.0, 1.0, Rule::Offset(Outside::Vectors)).unwrap();
         assert_eq!(c.kind, Kind::Inside);
         points(&c, &[[48.0, 1.0]]);
+    }
+
+    #[test]
+    fn behaviour16_5_an_s_curve_that_nearly_meets_takes_the_common_offset_point() {
+        // A G03 of radius 10 about (0, 0) whose end the words put 0.0004
+        // off its circle, at (10.0004, 0), then a G02 of radius 10 about
+        // (20.0004, 0.001): the two turn the other ways, their tangents
+        // agree within 10⁻⁴ rad. G41 r 1: the offset circles (radius 9
+        // from the first arc's start, 11) miss by 0.0004; the tool ends 1
+        // left of the common point, (9.0004, 0), instead of an alarm.
+        let first = Path::Arc {
+            from: [0.0, -10.0],
+            to: [10.0004, 0.0],
+            center: [0.0, 0.0],
+            ccw: true,
+        };
+        let second = Path::Arc {
+            from: [10.0004, 0.0],
+            to: [20.0004, -9.999],
+            center: [20.0004, 0.001],
+            ccw: false,
+        };
+        let c = corner(&first, &second, 1.0, 1.0, Rule::Offset(Outside::Vectors)).unwrap();
+        points(&c, &[[9.0004, 0.0]]);
     }
 
     #[test]
