@@ -39,7 +39,7 @@ fn behaviour1_4_a_name_in_angle_brackets_opens_the_program() {
 }
 
 #[test]
-fn behaviour1_4_a_name_after_o_is_refused() {
+fn behaviour1_4_a_name_after_o_is_read_as_the_name_with_a_warning() {
     for (text, shown) in [
         ("OCIRCLE(CIRCLE)\nG00 X1.", "`OCIRCLE`"),
         ("O7997A(CUTOFF)\nG00 X1.", "`O7997A`"),
@@ -49,8 +49,11 @@ fn behaviour1_4_a_name_after_o_is_refused() {
         let prog = p(text);
         assert_eq!(places(&prog), vec![(1, 1, "program-name")], "{text}");
         let d = &prog.diagnostics[0];
+        assert!(!d.is_error(), "a warning: {}", d.message);
         assert!(d.message.contains(shown), "{}", d.message);
         assert!(d.message.contains("O1234 (NAME)"), "{}", d.message);
+        // The name line is a header and no block, as <NAME> is.
+        assert_eq!(prog.blocks.len(), 1, "{text}");
         // The comment after the name is no part of the error.
         assert_eq!(d.end_column as usize, 1 + shown.len() - 2, "{text}");
         // The next line is read as usual.
