@@ -9,10 +9,10 @@
 //! point before any of them. Pure geometry: the machine owns the state and
 //! applies it.
 
-use super::modal::Plane;
 use crate::geometry::Xyz;
 use crate::setup::{DecimalInput, Units};
 use crate::syntax::Word;
+use crate::syntax::codes::Plane;
 
 /// Where the current coordinate system lies on the machine (behaviour 13.1–13.4):
 /// its zero, and the parts beyond the work system's row that make it.

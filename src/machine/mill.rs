@@ -34,7 +34,7 @@ pub(super) const MOTION_WORDS: [Address; 10] = [
 impl Machine {
     /// A mill block. `ahead` gives the blocks after it to the rules that need
     /// the next move: the chamfer and corner words `,C`/`,R` (`corner.rs`)
-    /// and cutter radius compensation (`cutter.rs`), which every block
+    /// and cutter radius compensation (`cutter/`), which every block
     /// passes through while G41/G42 is the mode or a vector is on.
     pub(super) fn mill_block(
         &mut self,
@@ -150,7 +150,7 @@ impl Machine {
                 return self.position_offset_block(b, code, out);
             }
             Some(NonModal::Skip) => return self.skip(b, out),
-            // The corner arc is cutter compensation's (`cutter.rs`), which
+            // The corner arc is cutter compensation's (`cutter/`), which
             // runs the block's other words through here first.
             Some(NonModal::CornerArc) => return Ok(()),
             Some(NonModal::CirclePocket(direction)) => {

@@ -618,7 +618,7 @@ impl Machine {
             modal.surface_speed = surface_speed;
         }
         // Group 07: the mode; what it does to the path is the cutter
-        // compensation's (`cutter.rs`, behaviour 16). The lathe's table has
+        // compensation's (`cutter/`, behaviour 16). The lathe's table has
         // G40 alone.
         if let Some(mode) = c.cutter() {
             self.state.cutter.mode = mode;

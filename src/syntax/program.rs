@@ -147,14 +147,20 @@ impl Blocks<'_> {
         if !name {
             return Lead::Words;
         }
-        let end = comment_or_end(bytes, i, line_end);
+        let end = trim_end(bytes, i, comment_or_end(bytes, i, line_end));
         let msg = format!(
-            "`{}` is not a program number: a program number is O and digits (O1234, O01234); write the name in a comment after it, O1234 (NAME), or, on a Fanuc 30i, as a file name alone on the line, <NAME>",
+            "`{}` is a program name written after O: Fanuc and Haas controls take only digits there (O1234, O01234) and would not register the program; offsetlab reads it as the program's name and runs on. Write O1234 (NAME), or, on a Fanuc 30i, <NAME> alone on the line",
             quote(&self.text[i..end])
         );
-        // Still a header: it starts a program (behaviour 1.21).
+        // A header like any other (behaviour 1.4, 1.21): it moves nothing,
+        // so the run goes on, with a warning that says what a control does.
         self.header = Some(Span::new(i, end, line));
-        self.refuse_line(block, "program-name", i, end, line, &msg)
+        self.report(Diagnostic::warning(
+            "program-name",
+            Span::new(i, end, line),
+            msg,
+        ));
+        Lead::Name(end)
     }
 
     /// Reports `msg` over `start..end` and skips the rest of the line.

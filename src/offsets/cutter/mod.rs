@@ -8,7 +8,7 @@
 //! This family keeps the compensation's state (the mode, D and its value,
 //! the block's role — start-up, offset mode, cancel — and the vector from
 //! the programmed to the actual end point) and writes its sentences; the
-//! machine (`machine/cutter.rs`) reads the blocks ahead, applies the
+//! machine (`machine/cutter/`) reads the blocks ahead, applies the
 //! corners to the moves and raises the alarms.
 
 pub mod geometry;

@@ -1,0 +1,184 @@
+//! Cutter compensation reads the next move in the plane (behaviour 16.9):
+//! worked out from the words of a plain move, else on a copy of the
+//! machine, past the blocks that make no move in the plane.
+
+use super::{Next, Why, add3, returns, sub3};
+use crate::machine::arc::{self};
+use crate::machine::mill::MOTION_WORDS;
+use crate::machine::{Ahead, Machine, NoneAhead, Out};
+use crate::offsets::cutter::geometry::{self as geo, Path};
+use crate::setup::CutterCancelWithoutMotion;
+use crate::syntax::codes::{CannedCycle, CutterCompensation, Group, Motion, NonModal};
+use crate::syntax::{Address, Block};
+
+impl Machine {
+    /// Reads ahead to the next move in the plane (behaviour 16.9): the
+    /// blocks after this one run on a copy of the machine, as the machine
+    /// will run them, until one moves in the plane, past at most
+    /// `cutter_blocks_without_motion` blocks that do not.
+    pub(super) fn cutter_next(&self, ahead: &mut dyn Ahead, out: &mut Out) -> Next {
+        let mut scratch = out.scratch.take().unwrap_or_default();
+        scratch.quiet = true;
+        let next = self.read_next(ahead, &mut scratch);
+        out.scratch = Some(scratch);
+        next
+    }
+
+    pub(super) fn read_next(&self, ahead: &mut dyn Ahead, scratch: &mut Out) -> Next {
+        if let Some(next) = ahead.peek(0)
+            && let Some(path) = self.plain_next_path(next)
+        {
+            // A plain move reads the register this block read.
+            let offset = self.cutter_offset(self.state.cutter.mode, self.state.cutter.radius);
+            return Next::Move { path, offset };
+        }
+        let limit = usize::from(self.setup.settings.cutter_blocks_without_motion());
+        let mut probe = self.clone();
+        probe.reading_ahead = true;
+        // The copy wants programmed moves: no vector to solve arcs with,
+        // and plain moves take the fast path.
+        probe.state.cutter.vector = [0.0; 3];
+        probe.corner_cut = false;
+        probe.corner_end = None;
+        probe.moves_left = usize::MAX;
+        probe.update_special();
+        for k in 0..=limit {
+            let Some(next) = ahead.peek(k) else {
+                return Next::Unknown(Why::End);
+            };
+            if next.error {
+                return Next::Unknown(Why::Error);
+            }
+            let codes = next.codes();
+            match codes.non_modal() {
+                Some(NonModal::CornerArc) => return Next::Unknown(Why::CornerArc),
+                Some(code) if returns(code) && self.names_plane_axis(next) => {
+                    return Next::Unknown(Why::Return);
+                }
+                _ => {}
+            }
+            if matches!(codes.cycle(), Some(CannedCycle::Cycle(_))) {
+                return Next::Unknown(Why::Return);
+            }
+            let before = probe.state.cutter;
+            let radius_before = probe.cutter_radius();
+            scratch.clear();
+            let index = self.index.saturating_add(1 + k as u32);
+            let flow = match probe.execute(
+                next,
+                index,
+                scratch,
+                &mut NoneAhead,
+                &mut crate::machine::program::NoText,
+            ) {
+                Ok(flow) => flow,
+                Err(_) => return Next::Unknown(Why::Error),
+            };
+            let shift = sub3(probe.state.coords.zero, self.state.coords.zero);
+            let mode = probe.state.cutter.mode;
+            let radius = probe.cutter_radius();
+            let offset = probe.cutter_offset(mode, radius);
+            if let Some(path) = scratch.moves.iter().find_map(|m| self.move_path(m, shift)) {
+                return Next::Move { path, offset };
+            }
+            if matches!(
+                codes.cutter(),
+                Some(CutterCompensation::Left | CutterCompensation::Right)
+            ) && let Some(d) = probe.ijk_direction(next)
+                && !probe.state.modal.motion.is_arc()
+            {
+                let at = self.in_plane(add3(probe.state.programmed, shift));
+                let path = Path::Line {
+                    from: at,
+                    to: [at[0] + d[0], at[1] + d[1]],
+                };
+                return Next::Move { path, offset };
+            }
+            let was_on = before.mode != CutterCompensation::Cancel && radius_before != 0.0;
+            if offset == 0.0
+                && was_on
+                && self.setup.settings.cutter_cancel_without_motion()
+                    == CutterCancelWithoutMotion::Move
+            {
+                return Next::Unknown(Why::CancelHere);
+            }
+            if flow == crate::machine::Flow::End {
+                return Next::Unknown(Why::End);
+            }
+        }
+        Next::Unknown(Why::TooFar(limit))
+    }
+
+    /// The programmed path of the next block when it is a plain move
+    /// (motion words alone, no transformation, no canned cycle): what the
+    /// machine would make of its words, worked out here without running it
+    /// on a copy (the copy costs as much as the block: the 1M-block check
+    /// with G41, docs/performance.md). None when it is not such a block, or
+    /// makes no move in the plane, or its arc needs the machine's checks:
+    /// the copy reads it then.
+    pub(super) fn plain_next_path(&self, b: &Block) -> Option<Path> {
+        if b.error
+            || !self.plain_words
+            || self.state.modal.cycle.is_some()
+            || !b.holds_only(&MOTION_WORDS, &[Group::Motion])
+        {
+            return None;
+        }
+        let motion = b.codes().motion().unwrap_or(self.state.modal.motion);
+        let (ia, ib, _) = self.state.modal.plane.axes();
+        let incremental = self.state.modal.distance == crate::machine::modal::Distance::Incremental;
+        let axes = [Address::X, Address::Y, Address::Z];
+        let mut to = self.state.programmed;
+        for axis in [ia, ib] {
+            if let Some(v) = b.value(axes[axis]) {
+                to[axis] = self.target(axis, self.mm(v), incremental);
+            }
+        }
+        let from = self.in_plane(self.state.programmed);
+        let to = self.in_plane(to);
+        match motion {
+            Motion::Rapid | Motion::Linear => {
+                (geo::dist(from, to) > 1e-9).then_some(Path::Line { from, to })
+            }
+            Motion::Arc(direction) => {
+                let ccw = (direction == crate::machine::modal::ArcDirection::Ccw)
+                    != (self.mirror[ia] != self.mirror[ib]);
+                if let Some(r) = b.value(Address::R) {
+                    if geo::dist(from, to) < 1e-9 {
+                        return None;
+                    }
+                    let center =
+                        arc::center_of_radius(from, to, self.mm(r), ccw, self.arc_tolerance())?;
+                    return Some(Path::Arc {
+                        from,
+                        to,
+                        center,
+                        ccw,
+                    });
+                }
+                let centre_words = [Address::I, Address::J, Address::K];
+                let (ci, cj) = (b.value(centre_words[ia]), b.value(centre_words[ib]));
+                if ci.is_none() && cj.is_none() {
+                    return None;
+                }
+                let sign = |i: usize| if self.mirror[i] { -1.0 } else { 1.0 };
+                let center = [
+                    from[0] + self.mm(ci.unwrap_or(0.0)) * sign(ia),
+                    from[1] + self.mm(cj.unwrap_or(0.0)) * sign(ib),
+                ];
+                let r0 = geo::dist(from, center);
+                let r1 = geo::dist(to, center);
+                if r0 < 1e-9 || (r0 - r1).abs() > self.arc_tolerance() {
+                    return None;
+                }
+                Some(Path::Arc {
+                    from,
+                    to,
+                    center,
+                    ccw,
+                })
+            }
+            Motion::LatheCycle(_) => None,
+        }
+    }
+}

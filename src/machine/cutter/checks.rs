@@ -1,0 +1,142 @@
+//! What cutter compensation refuses before a block runs (behaviour 16.10,
+//! 16.14, 16.16–16.19): a plane change, G45–G48, chamfers, G39 out of offset
+//! mode, I/J/K it does not read, a canned cycle with the vector on.
+
+use crate::diag::Diagnostic;
+use crate::machine::Machine;
+use crate::offsets::cutter::Phase;
+use crate::syntax::codes::{CannedCycle, CutterCompensation, NonModal};
+use crate::syntax::{Address, Block};
+
+impl Machine {
+    /// The refusals of behaviour 16.16–16.19, before the block runs.
+    pub(super) fn cutter_checks(&self, b: &Block) -> Result<(), Diagnostic> {
+        let now = self.state.cutter;
+        // G41/G42 is the mode, or a vector is on (a cancel block's own
+        // role, `cancelling`, has none left).
+        let vector_on = matches!(now.phase, Phase::StartUp | Phase::Offset);
+        let engaged = now.mode != CutterCompensation::Cancel || vector_on;
+        let codes = b.codes();
+        if engaged
+            && let Some(plane) = codes.plane()
+            && plane != self.state.modal.plane
+        {
+            return Err(self.error(
+                "cutter-plane",
+                b.code_span(crate::syntax::codes::Group::Plane),
+                format!(
+                    "{}: the plane cannot change while {} is the mode or its vector is on: cancel with G40 first (Fanuc alarm PS0037)",
+                    plane.gcode(),
+                    now.mode.gcode()
+                ),
+            ));
+        }
+        if engaged && let Some(NonModal::PositionOffset(p)) = codes.non_modal() {
+            return Err(self.error(
+                "cutter-position-offset",
+                b.code_span(crate::syntax::codes::Group::NonModal),
+                format!(
+                    "{}: tool position offset cannot be used in cutter compensation ({}): cancel with G40 first (Fanuc alarm PS0042)",
+                    p.gcode(),
+                    now.mode.gcode()
+                ),
+            ));
+        }
+        if let Some(w) = b.get(Address::CommaC).or_else(|| b.get(Address::CommaR)) {
+            let changes = codes.cutter().is_some_and(|c| c != now.mode);
+            let why = if changes || !engaged {
+                "a chamfer or corner rounding cannot be made in a block that starts, cancels or changes cutter compensation (Fanuc alarm PS0039)"
+            } else {
+                "a chamfer or corner rounding in cutter compensation is not modelled yet"
+            };
+            return Err(self.error(
+                if changes || !engaged {
+                    "cutter-corner-words"
+                } else {
+                    "corner-not-modelled"
+                },
+                w.span,
+                format!("{}: {why}", w.address.letter()),
+            ));
+        }
+        if codes.non_modal() == Some(NonModal::CornerArc) {
+            let on = now.mode != CutterCompensation::Cancel
+                && codes.cutter().is_none_or(|c| c == now.mode)
+                && matches!(now.phase, Phase::StartUp | Phase::Offset);
+            if !on {
+                return Err(self.error(
+                    "cutter-g39",
+                    b.code_span(crate::syntax::codes::Group::NonModal),
+                    "G39 (corner arc) works in offset mode only: after a G41/G42 start-up, before G40",
+                ));
+            }
+            if let Some(w) = [Address::X, Address::Y, Address::Z]
+                .iter()
+                .find_map(|a| b.get(*a))
+            {
+                return Err(self.error(
+                    "cutter-g39",
+                    w.span,
+                    format!(
+                        "{}: a G39 block makes the corner arc only and takes no move (write the move in the next block)",
+                        w.address.letter()
+                    ),
+                ));
+            }
+        }
+        let arc_mode = codes.motion().unwrap_or(self.state.modal.motion).is_arc();
+        let direction_block = codes.non_modal() == Some(NonModal::CornerArc)
+            || (!arc_mode
+                && matches!(
+                    codes.cutter(),
+                    Some(CutterCompensation::Left | CutterCompensation::Right)
+                ));
+        if direction_block {
+            let (_, _, normal) = self.state.modal.plane.axes();
+            let word = [Address::I, Address::J, Address::K][normal];
+            if let Some(w) = b.get(word) {
+                return Err(self.error(
+                    "cutter-ijk",
+                    w.span,
+                    format!(
+                        "{}: the direction of the vector lies in the {} plane, which {} is not a word of",
+                        w.address.letter(),
+                        self.state.modal.plane.gcode(),
+                        w.address.letter()
+                    ),
+                ));
+            }
+        }
+        if let Some(code) = codes.cutter()
+            && b.holds_any(&[Address::I, Address::J, Address::K])
+        {
+            let arc = codes.motion().unwrap_or(self.state.modal.motion).is_arc();
+            if !arc && (code == CutterCompensation::Cancel || self.names_plane_axis(b)) {
+                let w = b
+                    .get(Address::I)
+                    .or_else(|| b.get(Address::J))
+                    .or_else(|| b.get(Address::K));
+                return Err(self.error(
+                    "cutter-ijk",
+                    w.map_or(b.span, |w| w.span),
+                    format!(
+                        "{}: I/J/K in a {} block with a move (the direction of the corner vector) are not modelled yet; offsetlab models them in a G41/G42 block without a move",
+                        w.map_or("I", |w| w.address.letter()),
+                        code.gcode()
+                    ),
+                ));
+            }
+        }
+        if matches!(codes.cycle(), Some(CannedCycle::Cycle(_))) && vector_on {
+            return Err(self.error(
+                "cutter-in-cycle",
+                b.code_span(crate::syntax::codes::Group::Cycle),
+                format!(
+                    "a canned cycle cannot start while the compensation's vector is on ({}): cancel with G40 first (Fanuc ignores cutter compensation in canned cycles)",
+                    now.mode.gcode()
+                ),
+            ));
+        }
+        Ok(())
+    }
+}

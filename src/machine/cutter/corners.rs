@@ -1,0 +1,355 @@
+//! A block in start-up or offset mode ends at its corner with the next move
+//! (behaviour 16.3–16.10, 16.12): the corner by the family's rules, the
+//! block's move made to end there, the moves the corner adds, the
+//! interference check.
+
+use super::{Next, Why, sub3};
+use crate::diag::Diagnostic;
+use crate::geometry::{Xyz, show};
+use crate::machine::arc::{self, P2};
+use crate::machine::{Ahead, ArcInfo, Machine, MoveKind, Out};
+use crate::offsets::cutter::geometry::{
+    self as geo, Corner, NoIntersection, Outside, Path, Rule, Step, Type,
+};
+use crate::offsets::cutter::{self as crc, Phase, Words};
+use crate::setup::{CutterInterference, CutterOutsideCorner, CutterStartUp};
+use crate::syntax::Block;
+use crate::syntax::codes::Motion;
+
+impl Machine {
+    /// Sets the compensation's vector to `v` (plane) and returns the actual
+    /// position with it.
+    pub(super) fn set_cutter_vector(&mut self, v: P2) -> Xyz {
+        let (ia, ib, _) = self.state.modal.plane.axes();
+        let mut vector = [0.0; 3];
+        vector[ia] = v[0];
+        vector[ib] = v[1];
+        self.state.cutter.vector = vector;
+        self.actual()
+    }
+
+    /// A start-up block (behaviour 16.3, 16.4): from the programmed start to
+    /// the corner its type makes with the next move.
+    pub(super) fn start_up(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+        ahead: &mut dyn Ahead,
+        (i, path): (usize, Path),
+        words: Words,
+    ) -> Result<(), Diagnostic> {
+        self.state.cutter.phase = Phase::StartUp;
+        let t = match self.setup.settings.cutter_start_up() {
+            CutterStartUp::A => Type::A,
+            CutterStartUp::B => Type::B,
+        };
+        let o = words.offset;
+        let next = self.cutter_next(ahead, out);
+        let (rule, next_path) = match next {
+            Next::Move { path: n, .. } => (Rule::StartUp(t), Some(n)),
+            Next::Unknown(why) => {
+                self.look_ahead_note(b, out, why);
+                (Rule::Perpendicular, None)
+            }
+        };
+        let next_for_corner = next_path.unwrap_or(path);
+        let corner = self.corner_or_alarm(b, &path, &next_for_corner, o, o, rule)?;
+        out.note(|| crc::start_up_note(&words, t, &corner, &path, next_path.as_ref()));
+        self.apply_corner(b, out, i, &corner, false)
+    }
+
+    /// A block in offset mode that moves in the plane (behaviour 16.5–16.10,
+    /// 16.12): its end is the corner with the next move.
+    pub(super) fn offset_move(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+        ahead: &mut dyn Ahead,
+        (i, path): (usize, Path),
+        before: crc::CutterState,
+        words: Words,
+    ) -> Result<(), Diagnostic> {
+        let o = words.offset;
+        let t = match self.setup.settings.cutter_start_up() {
+            CutterStartUp::A => Type::A,
+            CutterStartUp::B => Type::B,
+        };
+        let outside = match self.setup.settings.cutter_outside_corner() {
+            CutterOutsideCorner::Vectors => Outside::Vectors,
+            CutterOutsideCorner::Arc => Outside::Arc,
+        };
+        let next = self.cutter_next(ahead, out);
+        let (corner, next_path, o2, cancels) = match next {
+            Next::Move {
+                path: n,
+                offset: 0.0,
+            } => {
+                let c = self.corner_or_alarm(b, &path, &n, o, o, Rule::Cancel(t))?;
+                (c, n, o, true)
+            }
+            Next::Move { path: n, offset } => {
+                // The corner is made with this block's radius on both
+                // sides: a new D counts from the next block's end
+                // (behaviour 16.8).
+                let o2 = o.abs() * offset.signum();
+                let c = self.corner_or_alarm(b, &path, &n, o, o2, Rule::Offset(outside))?;
+                (c, n, o2, false)
+            }
+            Next::Unknown(why) => {
+                self.look_ahead_note(b, out, why);
+                let c = self.corner_or_alarm(b, &path, &path, o, o, Rule::Perpendicular)?;
+                (c, path, o, false)
+            }
+        };
+        out.note(|| {
+            if cancels {
+                crc::before_cancel_note(&words, t, &corner, &path, &next_path)
+            } else {
+                crc::corner_note(&words, &corner, &path, &next_path, o2)
+            }
+        });
+        if before.radius != self.state.cutter.radius {
+            out.note(|| format!(
+                "the radius changed from {} to {}: this block starts on the old offset and ends on the new one",
+                show(before.radius.abs(), self.units()),
+                show(self.state.cutter.radius.abs(), self.units())
+            ));
+        }
+        self.apply_corner(b, out, i, &corner, true)
+    }
+
+    /// The corner by `rule`, or the alarm when an intersection it needs
+    /// does not exist (behaviour 16.12: Fanuc PS0033).
+    pub(super) fn corner_or_alarm(
+        &self,
+        b: &Block,
+        prev: &Path,
+        next: &Path,
+        o1: f64,
+        o2: f64,
+        rule: Rule,
+    ) -> Result<Corner, Diagnostic> {
+        geo::corner(prev, next, o1, o2, rule).map_err(|NoIntersection| {
+            self.error(
+                "cutter-no-intersection",
+                b.span,
+                format!(
+                    "the offset paths of this block and the next do not meet at their inside corner: the tool of radius {} cannot reach it (Fanuc alarm PS0033)",
+                    show(o1.abs(), self.units())
+                ),
+            )
+        })
+    }
+
+    /// Says why the corner at this block's end is not known, and warns when
+    /// the control cannot see the next move (behaviour 16.9).
+    pub(super) fn look_ahead_note(&self, b: &Block, out: &mut Out, why: Why) {
+        let text = match why {
+            Why::End => "the program ends: no next move in the plane".to_string(),
+            Why::Error => "the next block cannot run (its error stops the run there)".to_string(),
+            Why::Return => {
+                "a reference return or canned cycle follows: the compensation is cancelled for it"
+                    .to_string()
+            }
+            Why::CornerArc => "G39 follows: its arc turns the corner".to_string(),
+            Why::CancelHere => "the next block cancels without a move".to_string(),
+            Why::TooFar(n) => {
+                let msg = format!(
+                    "no move in the plane within the next {} blocks: the control cannot see the corner, so the tool ends perpendicular to this block and the next move starts from there (overcut or undercut at the corner; setting cutter_blocks_without_motion = {n})",
+                    n + 1
+                );
+                out.warnings.push(Diagnostic::warning(
+                    "cutter-look-ahead",
+                    b.span,
+                    msg.clone(),
+                ));
+                msg
+            }
+        };
+        out.note(|| text);
+    }
+
+    /// Makes move `i` of the block end at the corner's first point and adds
+    /// its other steps; checks the move for interference when `check`
+    /// (offset mode: behaviour 16.12).
+    pub(super) fn apply_corner(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+        i: usize,
+        corner: &Corner,
+        check: bool,
+    ) -> Result<(), Diagnostic> {
+        let p1 = self.in_plane(self.state.programmed);
+        let Some(first) = corner.steps().first() else {
+            return Ok(());
+        };
+        let e = first.end();
+        let end = self.set_cutter_vector([e[0] - p1[0], e[1] - p1[1]]);
+        self.finish_offset_move(b, out, i, end, check)?;
+        let kind = match self.state.modal.motion {
+            Motion::Rapid => MoveKind::Rapid,
+            Motion::Linear | Motion::Arc(_) | Motion::LatheCycle(_) => MoveKind::Feed,
+        };
+        for step in &corner.steps()[1..] {
+            let from = self.mark();
+            let e = step.end();
+            self.set_cutter_vector([e[0] - p1[0], e[1] - p1[1]]);
+            match *step {
+                Step::Line(_) => self.emit(out, from, kind, kind == MoveKind::Feed, None),
+                Step::Arc { center, ccw, .. } => {
+                    let info = self.corner_arc_info(from, center, ccw)?;
+                    let kind = if info.sweep > 0.0 {
+                        MoveKind::ArcCcw
+                    } else {
+                        MoveKind::ArcCw
+                    };
+                    self.emit(out, from, kind, true, Some(info));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Ends move `i` at `end` (actual): a straight move as it is, an arc
+    /// about its programmed centre with the offset radius; with `check`,
+    /// the interference check (behaviour 16.12).
+    pub(super) fn finish_offset_move(
+        &self,
+        b: &Block,
+        out: &mut Out,
+        i: usize,
+        end: Xyz,
+        check: bool,
+    ) -> Result<(), Diagnostic> {
+        let (ia, ib, _) = self.state.modal.plane.axes();
+        let m = out.moves[i];
+        let p = |x: Xyz| [x[ia], x[ib]];
+        let interferes;
+        let mut arc_info = None;
+        let mut kind = m.kind;
+        if let Some(info) = m.arc {
+            // The actual centre is the programmed one carried by the
+            // vectors other than the compensation's (constant in an arc
+            // block: G45–G48 are refused, the length offset cannot change
+            // in G02/G03).
+            let shift = self.other_vectors();
+            let c = [
+                info.programmed_center[ia] + shift[ia],
+                info.programmed_center[ib] + shift[ib],
+            ];
+            let ccw = info.programmed_sweep > 0.0;
+            let (a0, a1) = (p(m.from), p(end));
+            let (r0, r1) = (geo::dist(a0, c), geo::dist(a1, c));
+            let tol = self.arc_tolerance();
+            if r0 < 1e-6 || r1 < 1e-6 {
+                return Err(self.error(
+                    "cutter-arc-center",
+                    b.span,
+                    format!(
+                        "the offset arc's {} is its centre: the tool radius equals the arc's radius {} (Fanuc alarm PS0038)",
+                        if r0 < 1e-6 { "start" } else { "end" },
+                        show(info.programmed_radius, self.units())
+                    ),
+                ));
+            }
+            if (r0 - r1).abs() > tol {
+                return Err(self.error(
+                    "cutter-arc-radius",
+                    b.span,
+                    format!(
+                        "the offset arc starts {} and ends {} from its centre (difference over {}): the compensation radius changed in an arc block (change D on a straight move)",
+                        show(r0, self.units()),
+                        show(r1, self.units()),
+                        show(tol, self.units())
+                    ),
+                ));
+            }
+            let circle = arc::from_center(a0, a1, c, ccw, tol).map_err(|_| {
+                self.error("cutter-arc-radius", b.span, "the offset arc cannot be made")
+            })?;
+            let path = Path::Arc {
+                from: p(m.programmed_from),
+                to: p(m.programmed_to),
+                center: p(info.programmed_center),
+                ccw,
+            };
+            let offset_radius = path
+                .offset_radius(self.cutter_offset(self.state.cutter.mode, self.state.cutter.radius))
+                .unwrap_or(r0);
+            interferes = geo::arc_interferes(info.programmed_sweep, circle.sweep, offset_radius);
+            let mut center = m.from;
+            center[ia] = c[0];
+            center[ib] = c[1];
+            arc_info = Some(ArcInfo {
+                center,
+                radius: circle.radius,
+                sweep: circle.sweep,
+                start_angle: circle.start_angle,
+                ..info
+            });
+            kind = if circle.sweep > 0.0 {
+                MoveKind::ArcCcw
+            } else {
+                MoveKind::ArcCw
+            };
+        } else {
+            interferes = geo::line_reverses(
+                (p(m.programmed_from), p(m.programmed_to)),
+                (p(m.from), p(end)),
+            );
+        }
+        if check && interferes {
+            let what = if m.arc.is_some() {
+                "the tool does not fit this arc: its offset path runs the other way round"
+            } else {
+                "the offset path of this block runs against its programmed direction"
+            };
+            match self.setup.settings.cutter_interference_check {
+                CutterInterference::Alarm => {
+                    return Err(self.error(
+                        "cutter-interference",
+                        b.span,
+                        format!(
+                            "interference: {what}; the tool would cut into the part — alarm PS0041 stops the program here (the path is drawn up to the block before)"
+                        ),
+                    ));
+                }
+                CutterInterference::Off => {
+                    out.warnings.push(Diagnostic::warning(
+                        "cutter-interference",
+                        b.span,
+                        format!(
+                            "interference: {what}; with the check off (setting cutter_interference_check) the tool cuts into the part here"
+                        ),
+                    ));
+                    out.note(|| format!("interference: {what} (check off: overcut)"));
+                }
+            }
+        }
+        let m = &mut out.moves[i];
+        m.to = end;
+        m.kind = kind;
+        if arc_info.is_some() {
+            m.arc = arc_info;
+        }
+        Ok(())
+    }
+
+    /// Actual − programmed now, less the compensation's vector: what the
+    /// other offsets carry.
+    pub(super) fn other_vectors(&self) -> Xyz {
+        sub3(
+            sub3(self.actual(), self.state.programmed),
+            self.state.cutter.vector,
+        )
+    }
+
+    /// The radius check's tolerance (behaviour 2.13).
+    pub(super) fn arc_tolerance(&self) -> f64 {
+        match self.units() {
+            crate::setup::Units::Mm => 0.01,
+            crate::setup::Units::Inch => 0.0005 * 25.4,
+        }
+    }
+}

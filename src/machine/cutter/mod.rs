@@ -1,0 +1,348 @@
+//! Cutter radius compensation C on the mill (behaviour 16): the machine's
+//! side of it. A block runs as it always does, with the compensation's
+//! vector standing still; then, as a control does with its buffer, the next
+//! blocks are read ahead (on a copy of the machine, as the chamfer of
+//! `corner.rs` reads its next move) to learn the next move in the plane,
+//! the corner between the two is made by the family's rules
+//! (`offsets/cutter/geometry.rs`), and the block's move is made to end
+//! where the corner says, with the moves the corner adds. The alarms
+//! (Fanuc PS0033, PS0034, PS0037–PS0042) stop the run at their block, the
+//! path drawn up to it.
+//!
+//! `ahead.rs` reads the next move, `checks.rs` refuses what the
+//! compensation forbids, `corners.rs` makes a block end at its corner, and
+//! `codes.rs` does what G39, G40 without a move, I/J/K and the returns ask.
+
+mod ahead;
+mod checks;
+mod codes;
+mod corners;
+
+use super::arc::P2;
+use super::mill::MOTION_WORDS;
+use super::modal::FeedMode;
+use super::{Ahead, Machine, Move, MoveKind, Out};
+use crate::diag::Diagnostic;
+use crate::geometry::Xyz;
+use crate::offsets::cutter::geometry::{self as geo, Path};
+use crate::offsets::cutter::{self as crc, Phase, Words};
+use crate::syntax::codes::{CutterCompensation, Group, NonModal};
+use crate::syntax::{Address, Block};
+
+/// True when a block asks for the compensation while it is not engaged:
+/// a group 07 code, or G39 (which is refused outside offset mode).
+pub(super) fn concerns(b: &Block) -> bool {
+    b.codes().cutter().is_some() || b.codes().non_modal() == Some(NonModal::CornerArc)
+}
+
+/// The codes that position on a point given apart from the work
+/// coordinates, which cancel the compensation for their block (behaviour
+/// 16.18): G27, G28, G30 and G53.
+fn returns(code: NonModal) -> bool {
+    match code {
+        NonModal::ReferenceReturn
+        | NonModal::OtherReference
+        | NonModal::ReferenceCheck
+        | NonModal::MachineCoordinates => true,
+        NonModal::Dwell
+        | NonModal::ExactStop
+        | NonModal::Skip
+        | NonModal::AiContour
+        | NonModal::LookAhead
+        | NonModal::Smoothness
+        | NonModal::Cylindrical
+        | NonModal::CirclePocket(_)
+        | NonModal::PositionOffset(_)
+        | NonModal::SetCoordinates
+        | NonModal::LocalCoordinates
+        | NonModal::PresetCoordinates
+        | NonModal::CornerArc
+        | NonModal::Repetitive(_) => false,
+    }
+}
+
+/// What follows the running block, as read ahead (behaviour 16.9).
+#[derive(Clone, Copy, Debug)]
+enum Next {
+    /// A block that moves in the plane (or a G41/G42 with I/J/K's
+    /// direction): its programmed path in the running block's work
+    /// coordinates, and what it does with the compensation.
+    Move {
+        path: Path,
+        /// The offset it asks for (0: it cancels).
+        offset: f64,
+    },
+    /// The corner is not known: the vector ends perpendicular to the block.
+    Unknown(Why),
+}
+
+/// Why the next move is not known.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Why {
+    /// The program ends (M02/M30 or its text).
+    End,
+    /// The next block has an error (the run stops there).
+    Error,
+    /// A reference return or canned cycle follows (temporary cancel).
+    Return,
+    /// G39 follows: its arc turns the corner.
+    CornerArc,
+    /// G40 (or D00) without a move follows and takes the vector off there.
+    CancelHere,
+    /// More blocks without a move in the plane than the control reads.
+    TooFar(usize),
+}
+
+impl Machine {
+    /// The signed offset of the compensation now: + left, − right, the
+    /// register's sign and mirror image (an odd number of mirrored plane
+    /// axes turns G41 into G42, behaviour 16.15) included.
+    pub(super) fn cutter_offset(&self, mode: CutterCompensation, radius: f64) -> f64 {
+        let plane = self.state.modal.plane;
+        let (ia, ib, _) = plane.axes();
+        // The setting's mirror image and the programmable one (G51.1, or
+        // G51 with a negative factor) each reverse the turn of a plane with
+        // one mirrored axis (behaviour 13.8, 13.9).
+        let reversed =
+            (self.mirror[ia] != self.mirror[ib]) != self.state.modal.transforms.reverses(plane);
+        let flip = if reversed { -1.0 } else { 1.0 };
+        crc::side(mode) * radius * flip
+    }
+
+    /// Register D's value now (mm), read when the block runs (behaviour
+    /// 4.12).
+    pub(super) fn cutter_radius(&self) -> f64 {
+        self.mm(self.setup.mill_value(self.state.position.d))
+    }
+
+    pub(super) fn in_plane(&self, p: Xyz) -> P2 {
+        let (ia, ib, _) = self.state.modal.plane.axes();
+        [p[ia], p[ib]]
+    }
+
+    /// The programmed path of a move in the plane, None when it does not
+    /// move in the plane. `shift` takes its coordinates into the running
+    /// block's work coordinates.
+    pub(super) fn move_path(&self, m: &Move, shift: Xyz) -> Option<Path> {
+        let (ia, ib, _) = self.state.modal.plane.axes();
+        let at = |p: Xyz| [p[ia] + shift[ia], p[ib] + shift[ib]];
+        let (from, to) = (at(m.programmed_from), at(m.programmed_to));
+        match (&m.arc, m.kind) {
+            (Some(info), MoveKind::ArcCw | MoveKind::ArcCcw) => Some(Path::Arc {
+                from,
+                to,
+                center: at(info.programmed_center),
+                ccw: info.programmed_sweep > 0.0,
+            }),
+            _ if geo::dist(from, to) > 1e-9 => Some(Path::Line { from, to }),
+            _ => None,
+        }
+    }
+
+    /// The direction I/J/K give in a G41/G42 block with no move in the
+    /// plane (behaviour 16.14), after mirror image; None without them.
+    pub(super) fn ijk_direction(&self, b: &Block) -> Option<P2> {
+        let (ia, ib, _) = self.state.modal.plane.axes();
+        let words = [Address::I, Address::J, Address::K];
+        let (wa, wb) = (b.value(words[ia]), b.value(words[ib]));
+        if wa.is_none() && wb.is_none() {
+            return None;
+        }
+        let sign = |i: usize| if self.mirror[i] { -1.0 } else { 1.0 };
+        let d = [wa.unwrap_or(0.0) * sign(ia), wb.unwrap_or(0.0) * sign(ib)];
+        (d[0].hypot(d[1]) > 0.0).then(|| geo::unit(d))
+    }
+
+    /// True when a block names an axis of the plane.
+    pub(super) fn names_plane_axis(&self, b: &Block) -> bool {
+        let (ia, ib, _) = self.state.modal.plane.axes();
+        let axes = [Address::X, Address::Y, Address::Z];
+        b.has(axes[ia]) || b.has(axes[ib])
+    }
+
+    /// The block after a cancel block that does not ask for the
+    /// compensation: it is back in cancel mode (behaviour 16.2) and runs as
+    /// any block does, a chamfer's look-ahead and the fast path included.
+    /// True when that is so (the role is then set back to cancel).
+    pub(super) fn cutter_after_cancel(&mut self, b: &Block) -> bool {
+        let c = self.state.cutter;
+        if c.mode == CutterCompensation::Cancel && c.phase == Phase::Cancelling && !concerns(b) {
+            self.state.cutter.phase = Phase::Cancel;
+            self.update_special();
+            return true;
+        }
+        false
+    }
+
+    /// A mill block while cutter compensation is engaged, or one that
+    /// asks for it (behaviour 16). While it stays engaged no block takes
+    /// the fast path (`special`).
+    pub(super) fn cutter_block(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+        ahead: &mut dyn Ahead,
+    ) -> Result<(), Diagnostic> {
+        let done = self.compensate(b, out, ahead);
+        self.update_special();
+        done
+    }
+
+    fn compensate(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+        ahead: &mut dyn Ahead,
+    ) -> Result<(), Diagnostic> {
+        self.cutter_checks(b)?;
+        let before = self.state.cutter;
+        let start = self.mark();
+        let moves_before = out.moves.len();
+        let g28 = b.codes().non_modal().is_some_and(returns);
+        // The block runs with the compensation's vector off, so that its
+        // arcs are solved on the programmed circle (carried by the other
+        // offsets), then its moves are carried by the vector as it stood;
+        // the corner moves their ends below.
+        let saved = before.vector;
+        self.state.cutter.vector = [0.0; 3];
+        let ran = if b.holds_only(&MOTION_WORDS, &[Group::Motion])
+            && self.state.modal.feed_mode != FeedMode::InverseTime
+        {
+            self.motion_block(b, out)
+        } else {
+            self.mill_general(b, out)
+        };
+        self.state.cutter.vector = saved;
+        for m in &mut out.moves[moves_before..] {
+            m.from = add3(m.from, saved);
+            m.to = add3(m.to, saved);
+            if let Some(a) = &mut m.arc {
+                a.center = add3(a.center, saved);
+            }
+        }
+        ran?;
+        let mode = self.state.cutter.mode;
+        // The register is read when the block runs (behaviour 4.12); a block
+        // without D or a group 07 code reads the one the block before read,
+        // whose value the run cannot have changed.
+        let radius = if self.state.cutter.d != self.state.position.d
+            || b.holds(Address::D)
+            || b.codes().cutter().is_some()
+            || b.codes().units().is_some()
+        {
+            self.cutter_radius()
+        } else {
+            self.state.cutter.radius
+        };
+        self.state.cutter.d = self.state.position.d;
+        self.state.cutter.radius = radius;
+        let o = self.cutter_offset(mode, radius);
+        let engaged = matches!(before.phase, Phase::StartUp | Phase::Offset);
+        if self.reading_ahead {
+            // A copy reading ahead wants the modes and the programmed
+            // moves only; the vector stands still.
+            return Ok(());
+        }
+        if self.state.modal.cycle.is_some() {
+            // Fanuc ignores the compensation in canned cycles (the vector
+            // is off: `cutter_checks`).
+            self.state.cutter.phase = Phase::Cancel;
+            out.note(|| format!(
+                "{}: cutter compensation is ignored in a canned cycle (its holes are drilled where programmed)",
+                mode.gcode()
+            ));
+            return Ok(());
+        }
+        if g28 && engaged && self.names_plane_axis(b) {
+            return self.cutter_return(out, moves_before, before);
+        }
+        let own = (moves_before..out.moves.len())
+            .find_map(|i| self.move_path(&out.moves[i], [0.0; 3]).map(|p| (i, p)));
+        let words = Words {
+            mode,
+            d: self.state.position.d,
+            offset: o,
+            units: self.units(),
+        };
+        if b.codes().non_modal() == Some(NonModal::CornerArc) {
+            return self.corner_arc(b, out, ahead, words);
+        }
+        if !engaged {
+            self.state.cutter.phase = Phase::Cancel;
+            if o == 0.0 {
+                if let Some(code) = b.codes().cutter()
+                    && code != CutterCompensation::Cancel
+                {
+                    out.note(|| {
+                        format!(
+                            "{} with D{:02} = 0: no radius, no compensation until a D with a value",
+                            code.gcode(),
+                            self.state.position.d
+                        )
+                    });
+                }
+                return Ok(());
+            }
+            if let Some((i, path)) = own {
+                if path.is_arc() {
+                    return Err(self.error(
+                        "cutter-arc",
+                        b.span,
+                        format!(
+                            "{} start-up in a {} block: compensation starts on a G00 or G01 move (Fanuc alarm PS0034)",
+                            mode.gcode(),
+                            self.state.modal.motion.gcode()
+                        ),
+                    ));
+                }
+                return self.start_up(b, out, ahead, (i, path), words);
+            }
+            if let Some(d) = self.ijk_direction(b)
+                && b.codes().cutter().is_some()
+                && !self.state.modal.motion.is_arc()
+            {
+                self.state.cutter.phase = Phase::StartUp;
+                return self.direction_vector(out, d, words, "start-up");
+            }
+            if b.codes().cutter().is_some() || before.mode == CutterCompensation::Cancel {
+                out.note(|| {
+                    format!(
+                        "{}: compensation starts up with the next move in the plane",
+                        words.name()
+                    )
+                });
+            }
+            return Ok(());
+        }
+        if o == 0.0 {
+            return self.cancel(b, out, own, before, (start, moves_before));
+        }
+        self.state.cutter.phase = Phase::Offset;
+        if let Some((i, path)) = own {
+            return self.offset_move(b, out, ahead, (i, path), before, words);
+        }
+        if let Some(d) = self.ijk_direction(b)
+            && b.codes().cutter().is_some()
+            && !self.state.modal.motion.is_arc()
+        {
+            return self.direction_vector(out, d, words, "offset mode");
+        }
+        if before.radius != radius || before.mode != mode {
+            out.note(|| {
+                format!(
+                    "{}: no move in the plane here; the next move ends on the new offset",
+                    words.name()
+                )
+            });
+        }
+        Ok(())
+    }
+}
+
+fn sub3(a: Xyz, b: Xyz) -> Xyz {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+fn add3(a: Xyz, b: Xyz) -> Xyz {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+}
