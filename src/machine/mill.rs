@@ -187,6 +187,7 @@ impl Machine {
     /// apply (its other G codes, M, S, T, D, H words, U/W): the feed, the
     /// motion mode, then the move (those steps cost much of the machine's
     /// share of the `check` instruction count in docs/performance.md).
+    #[inline(always)]
     pub(super) fn motion_block(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
         // I, J, K and R are read by arcs (and R, K by a canned cycle): in
         // any other block they are refused (behaviour 2.22).
