@@ -21,10 +21,12 @@ use offsetlab::{
 };
 use proptest::prelude::*;
 
-const FIXTURES: [&str; 9] = [
+const FIXTURES: [&str; 11] = [
     "contour_g45",
     "coordinates",
     "corners",
+    "g10_lathe",
+    "g10_tables",
     "g54_g28",
     "haas_modes",
     "inch_plate",
