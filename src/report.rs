@@ -9,7 +9,7 @@ use serde::Serialize;
 
 use crate::diag::{Diagnostic, Span};
 use crate::geometry::{Xyz, to_units};
-use crate::machine::{BlockState, EventKind, Move};
+use crate::machine::{BlockState, DataSet, EventKind, Move};
 use crate::setup::{MachineKind, Units};
 
 /// An event with its place.
@@ -40,6 +40,8 @@ pub struct BlockReport {
     pub first_move: u32,
     /// Number of moves of this block.
     pub move_count: u32,
+    /// What a G10 block set (behaviour 17.8); empty for every other block.
+    pub data: Vec<DataSet>,
 }
 
 impl BlockReport {
@@ -150,15 +152,53 @@ pub struct Run {
     /// Why execution ended.
     pub end: End,
     /// Offset registers the executed blocks name (mill: D and H numbers;
-    /// lathe: the offset part of T codes), ascending, without 00.
+    /// lathe: the offset part of T codes) or set (G10), ascending, without
+    /// 00.
     pub registers: Vec<u16>,
+    /// The mill's offset memory type the run read its tables with
+    /// (behaviour 17.1).
+    pub offset_memory: crate::setup::OffsetMemory,
     /// Number of moves (also when the moves are not kept).
     pub move_count: usize,
     /// Bounds of both paths (mm), kept as the moves are made.
     pub bounds: Option<Bounds>,
 }
 
+/// A value the program set, as it stands at the run's end: the last G10
+/// that set it and where (behaviour 17.8).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SetByProgram {
+    /// 1-based line of the G10 block that set it last.
+    pub line: u32,
+    /// Its table, entry, field, value and the value before that block.
+    #[serde(flatten)]
+    pub set: DataSet,
+}
+
 impl Run {
+    /// The values G10 blocks set, each as the last one left it, in the
+    /// order they were first set (behaviour 17.8).
+    pub fn set_by_program(&self) -> Vec<SetByProgram> {
+        let mut out: Vec<SetByProgram> = Vec::new();
+        for e in &self.events {
+            let EventKind::DataSet(set) = &e.kind else {
+                continue;
+            };
+            let same = |s: &SetByProgram| {
+                (s.set.table, &s.set.key, s.set.field) == (set.table, &set.key, set.field)
+            };
+            let entry = SetByProgram {
+                line: e.line,
+                set: set.clone(),
+            };
+            match out.iter_mut().find(|s| same(s)) {
+                Some(s) => *s = entry,
+                None => out.push(entry),
+            }
+        }
+        out
+    }
+
     /// True if any diagnostic is an error.
     pub fn has_errors(&self) -> bool {
         self.diagnostics.iter().any(Diagnostic::is_error)

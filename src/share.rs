@@ -157,12 +157,21 @@ pub fn encode_plain(doc: &Document, embed: bool) -> String {
     }
     match s.machine {
         MachineKind::Mill => {
-            for (n, r) in &s.offsets {
-                let mut v = format!("offset={n:02}:{}", r.geometry);
-                if r.wear != 0.0 {
-                    v += &format!(",W{}", r.wear);
+            // Memory C's H and D tables apart: `H01:…` and `D01:…`.
+            let part = |name: String, p: crate::setup::MillPart| {
+                let mut v = format!("offset={name}:{}", p.geometry);
+                if p.wear != 0.0 {
+                    v += &format!(",W{}", p.wear);
                 }
-                parts.push(v);
+                v
+            };
+            for (n, r) in &s.offsets {
+                if r.is_split() {
+                    parts.push(part(format!("H{n:02}"), r.h_part()));
+                    parts.push(part(format!("D{n:02}"), r.d_part()));
+                } else {
+                    parts.push(part(format!("{n:02}"), r.h_part()));
+                }
             }
         }
         MachineKind::Lathe => {
@@ -173,6 +182,15 @@ pub fn encode_plain(doc: &Document, embed: bool) -> String {
                 }
                 if r.z_wear != 0.0 {
                     v += &format!(",ZW{}", r.z_wear);
+                }
+                if r.r != 0.0 {
+                    v += &format!(",R{}", r.r);
+                }
+                if r.r_wear != 0.0 {
+                    v += &format!(",RW{}", r.r_wear);
+                }
+                if r.t != 0 {
+                    v += &format!(",T{}", r.t);
                 }
                 parts.push(v);
             }

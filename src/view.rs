@@ -8,9 +8,10 @@ use serde::ser::{SerializeStruct, Serializer};
 
 use crate::diag::{Diagnostic, Severity};
 use crate::geometry::{Xyz, round6, to_units};
+use crate::machine::DataSet;
 use crate::machine::modal::ModalCodes;
 use crate::machine::{Move, MoveKind};
-use crate::report::{BlockReport, End, Event, Run};
+use crate::report::{BlockReport, End, Event, Run, SetByProgram};
 use crate::setup::{MachineKind, Units};
 
 /// A position in the units of its block.
@@ -223,6 +224,10 @@ pub struct BlockView<'a> {
     pub first_move: u32,
     /// Number of moves of the block.
     pub move_count: u32,
+    /// G10: the values the block set, absent for every other block
+    /// (behaviour 17.8).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub data_set: Vec<DataSet>,
 }
 
 /// Builds the report of one block.
@@ -307,6 +312,7 @@ fn block_view_at<'a>(b: &BlockReport, text: &'a str, columns: (u32, u32)) -> Blo
         explanation: b.explanation(),
         first_move: b.first_move,
         move_count: b.move_count,
+        data_set: b.data.clone(),
     }
 }
 
@@ -437,8 +443,16 @@ pub struct Summary {
     pub end: End,
     /// Bounds of the actual and programmed paths together.
     pub bounds: Option<BoundsView>,
-    /// Offset registers the program names (mill D/H, lathe T offset numbers).
+    /// Offset registers the program names (mill D/H, lathe T offset
+    /// numbers) or sets (G10).
     pub registers: Vec<u16>,
+    /// Mill: the offset memory type the tables were read with, `A`, `B` or
+    /// `C` (behaviour 17.1); absent on the lathe.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub offset_memory: Option<&'static str>,
+    /// The values G10 blocks set, each with the line of the last block that
+    /// set it (behaviour 17.8).
+    pub set_by_program: Vec<SetByProgram>,
 }
 
 /// The summary of a run.
@@ -457,6 +471,8 @@ pub fn summary(run: &Run) -> Summary {
             max: pos(b.max, run.units, run.machine),
         }),
         registers: run.registers.clone(),
+        offset_memory: (run.machine == MachineKind::Mill).then(|| run.offset_memory.as_str()),
+        set_by_program: run.set_by_program(),
     }
 }
 

@@ -60,6 +60,8 @@ fn reports_made_again_from_checkpoints_equal_the_kept_ones_for_every_fixture() {
         "coordinates",
         "corners",
         "cutter",
+        "g10_lathe",
+        "g10_tables",
         "g54_g28",
         "inch_plate",
         "lathe_cycles",

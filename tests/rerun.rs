@@ -21,11 +21,13 @@ use offsetlab::{
 };
 use proptest::prelude::*;
 
-const FIXTURES: [&str; 10] = [
+const FIXTURES: [&str; 12] = [
     "contour_g45",
     "coordinates",
     "corners",
     "cutter",
+    "g10_lathe",
+    "g10_tables",
     "g54_g28",
     "haas_modes",
     "inch_plate",

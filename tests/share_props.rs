@@ -3,7 +3,7 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use offsetlab::document::{ViewPlane, ViewState};
-use offsetlab::setup::{DecimalInput, LengthOffsetWithoutZ, Mirror};
+use offsetlab::setup::{DecimalInput, LengthOffsetWithoutZ, Mirror, OffsetMemory};
 use offsetlab::share::{decode, encode, encode_plain};
 use offsetlab::{Document, MachineKind, Setup};
 use proptest::prelude::*;
@@ -16,13 +16,21 @@ fn document() -> impl Strategy<Value = Document> {
     (
         any::<bool>(),
         "\\PC{0,300}",
-        prop::collection::btree_map(1u16..=99, (value(), value(), value(), value()), 0..6),
+        prop::collection::btree_map(
+            1u16..=99,
+            (
+                (value(), value(), value(), value()),
+                (value(), value(), 0u8..=9, any::<bool>()),
+            ),
+            0..6,
+        ),
         any::<(bool, bool, bool, bool, bool)>(),
         prop::option::of((0usize..4, 1u32..1000, -1000i64..1000, -1000i64..1000)),
         prop::option::of(0u32..100_000),
+        prop::option::of(0usize..3),
     )
         .prop_map(
-            |(lathe, program, regs, (calc, skip, next_z, mx, my), view, step)| {
+            |(lathe, program, regs, (calc, skip, next_z, mx, my), view, step, memory)| {
                 let mut s = Setup {
                     machine: if lathe {
                         MachineKind::Lathe
@@ -31,16 +39,27 @@ fn document() -> impl Strategy<Value = Document> {
                     },
                     ..Setup::default()
                 };
-                for (n, (a, b, c, d)) in regs {
-                    let spec = if lathe {
-                        format!("{n}=X{a},Z{b},XW{c},ZW{d}")
+                // Each offset memory type, or the control's (behaviour 17.1):
+                // in memory C a register may keep H and D apart.
+                s.settings.offset_memory =
+                    memory.map(|m| [OffsetMemory::A, OffsetMemory::B, OffsetMemory::C][m]);
+                let c = s.settings.offset_memory() == OffsetMemory::C;
+                for (n, ((a, b, c2, d), (e, f, tip, split))) in regs {
+                    let specs = if lathe {
+                        vec![format!("{n}=X{a},Z{b},XW{c2},ZW{d},R{e},RW{f},T{tip}")]
+                    } else if c && split {
+                        vec![format!("H{n}={a},W{b}"), format!("D{n}={c2},W{d}")]
                     } else {
-                        format!("{n}={a},W{b}")
+                        vec![format!("{n}={a},W{b}")]
                     };
-                    s.set_register(&spec).unwrap();
+                    for spec in specs {
+                        s.set_register(&spec).unwrap();
+                    }
                 }
-                // Geometry + wear must stay within ±999.999 too.
-                s.offsets.retain(|_, r| r.value().abs() <= 999.999);
+                // Geometry + wear must stay within ±999.999 too, in each table.
+                s.offsets.retain(|_, r| {
+                    r.h_part().value().abs() <= 999.999 && r.d_part().value().abs() <= 999.999
+                });
                 if calc {
                     s.settings.decimal_input = DecimalInput::Calculator;
                 }

@@ -122,7 +122,7 @@ pub fn setup_from(h: &[u8]) -> Setup {
         match s.machine {
             MachineKind::Mill => {
                 let wear = if wear { -v / 100.0 } else { 0.0 };
-                s.offsets.insert(n, MillRegister { geometry: v, wear });
+                s.offsets.insert(n, MillRegister::new(v, wear));
             }
             MachineKind::Lathe => {
                 s.lathe_offsets.insert(
@@ -132,6 +132,7 @@ pub fn setup_from(h: &[u8]) -> Setup {
                         z,
                         x_wear: if wear { -v / 100.0 } else { 0.0 },
                         z_wear: if wear { -z / 100.0 } else { 0.0 },
+                        ..LatheRegister::default()
                     },
                 );
             }

@@ -24,6 +24,8 @@ impl Machine {
     /// The machine position of the zero of work system `work` (mm): its
     /// row of the setup, machine zero when the setup leaves it out (behaviour
     /// 13.3).
+    /// The external work offset (`G10 L2 P0`, Fanuc EXT) is added to every
+    /// system (behaviour 17.9).
     pub(super) fn work_zero(&self, work: WorkSystem) -> Xyz {
         let unit = self.setup.units.mm();
         let p = match work.index() {
@@ -38,7 +40,8 @@ impl Machine {
                 _ => Default::default(),
             },
         };
-        scale(p.to_array(), unit)
+        let ext = self.setup.work_offsets.ext;
+        scale(add(p.to_array(), ext.to_array()), unit)
     }
 
     /// The zero of the current coordinate system from its three parts: the

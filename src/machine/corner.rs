@@ -293,7 +293,8 @@ impl Machine {
                 | NonModal::MachineCoordinates
                 | NonModal::PresetCoordinates
                 | NonModal::CornerArc
-                | NonModal::Repetitive(_) => "the block makes no G01 move of its own",
+                | NonModal::Repetitive(_)
+                | NonModal::DataSetting => "the block makes no G01 move of its own",
                 NonModal::Skip => "a skip signal may end G31's move anywhere (behaviour 14.7)",
                 NonModal::CirclePocket(_) => "G12/G13 cut a pocket of their own (behaviour 14.12)",
                 NonModal::AiContour

@@ -62,6 +62,10 @@ impl Machine {
             }
         }
         self.refuse_calls(b)?;
+        // G10 checks its own words and codes (behaviour 17.10).
+        if b.codes().non_modal() == Some(NonModal::DataSetting) {
+            return self.data_setting(b, out);
+        }
         self.refuse_unused(b, self.lathe_path(b))?;
         let before = self.state.modal;
         self.common_words(b, out)?;
@@ -128,10 +132,12 @@ impl Machine {
                 self.skip_note(b, out)?;
                 skip = true;
             }
-            // G04 was made above; G45–G48, G09, G05.1, G08, G187 and the
-            // pockets are the mill's, refused by the parser on the lathe.
+            // G04 was made above and G10 before; G45–G48, G09, G05.1, G08,
+            // G187 and the pockets are the mill's, refused by the parser on
+            // the lathe.
             Some(
-                NonModal::Dwell
+                NonModal::DataSetting
+                | NonModal::Dwell
                 | NonModal::PositionOffset(_)
                 | NonModal::ExactStop
                 | NonModal::AiContour

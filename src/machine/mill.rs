@@ -75,6 +75,10 @@ impl Machine {
             }
         }
         self.refuse_calls(b)?;
+        // G10 checks its own words and codes (behaviour 17.10).
+        if b.codes().non_modal() == Some(NonModal::DataSetting) {
+            return self.data_setting(b, out);
+        }
         self.refuse_unused(b, self.mill_path(b))?;
         let before = self.state.modal;
         self.common_words(b, out)?;
@@ -88,7 +92,7 @@ impl Machine {
         }
         if let Some(d) = b.get(Address::D) {
             let n = d.int() as u16;
-            let value = self.mm(self.setup.mill_value(n));
+            let value = self.mm(self.setup.d_value(n));
             self.state.position.select(n, value);
         }
 
@@ -167,8 +171,8 @@ impl Machine {
             )
             | None => {}
             // G70–G76 are the lathe's (on the mill the parser reads those
-            // numbers as its canned cycles).
-            Some(NonModal::Repetitive(_)) => {}
+            // numbers as its canned cycles); G10 was taken above.
+            Some(NonModal::Repetitive(_) | NonModal::DataSetting) => {}
         }
         let old_length = self.length_words(b, out)?;
         if centre_words {
@@ -232,7 +236,7 @@ impl Machine {
             code: code.map(|c| (c, b.code_span(Group::Length))),
             h: h.map(|w| {
                 let n = w.int() as u16;
-                (n, w.span, self.mm(self.setup.mill_value(n)))
+                (n, w.span, self.mm(self.setup.h_value(n)))
             }),
         };
         let motion = self.state.modal.motion;
@@ -289,7 +293,7 @@ impl Machine {
         let mut delta = [0.0; 3];
         let change = pos.map(|code| {
             let d = self.state.position.d;
-            let register = self.mm(self.setup.mill_value(d));
+            let register = self.mm(self.setup.d_value(d));
             self.state.position.value = register;
             let change = PositionChange {
                 code,

@@ -13,6 +13,7 @@ mod coords;
 mod corner;
 mod cutter;
 mod cycles;
+mod data;
 pub mod frame;
 mod lathe;
 mod mill;
@@ -26,7 +27,7 @@ pub mod state;
 mod transform;
 mod words;
 
-pub use state::{ArcInfo, BlockState, EventKind, Move, MoveKind};
+pub use state::{ArcInfo, BlockState, DataSet, EventKind, Move, MoveKind};
 
 use crate::diag::{Diagnostic, Span};
 use crate::geometry::{Xyz, add, scale, to_units};
@@ -183,7 +184,10 @@ impl Machine {
     /// A machine at the setup's start position, in its start state (behaviour 2.3).
     pub fn new(setup: Arc<Setup>) -> Machine {
         let unit = setup.units.mm();
-        let origin = scale(setup.work_offsets.get(0).to_array(), unit);
+        // G54's zero, with the external work offset every system carries
+        // (behaviour 17.9).
+        let w = &setup.work_offsets;
+        let origin = scale(add(w.get(0).to_array(), w.ext.to_array()), unit);
         let start = scale(setup.start.to_array(), unit);
         let start = match setup.machine {
             MachineKind::Mill => start,
@@ -254,7 +258,8 @@ impl Machine {
             || (self.state.cutter.engaged() && !self.reading_ahead);
     }
 
-    /// The setup this machine runs with.
+    /// The setup this machine runs with, with what G10 blocks have written
+    /// into its offset tables and work offsets (behaviour 17.8).
     pub(crate) fn setup(&self) -> &Setup {
         &self.setup
     }
@@ -264,7 +269,8 @@ impl Machine {
     /// run made again after an edit goes on with the earlier run's result
     /// from the first place where the two machines agree). The current
     /// block's place, the moves left and the overflow flag are set afresh
-    /// by every block; the setup is compared by whoever makes the run.
+    /// by every block; the setup is compared by whoever makes the run, and
+    /// what G10 blocks wrote into this machine's copy of it here.
     pub(crate) fn same_course(&self, other: &Machine) -> bool {
         // `==` would take -0.0 for 0.0 (a sign that can reach a report);
         // the Debug form of a float is its shortest round-trip text, which
@@ -287,9 +293,13 @@ impl Machine {
                 )
             )
         }
+        // The tables and work offsets a G10 wrote are the setup's (both
+        // machines started from the same one): the same values, the same
+        // course (behaviour 17.8). Written values are never -0.
         self.state.actual == other.state.actual
             && self.state.programmed == other.state.programmed
             && key(self) == key(other)
+            && (Arc::ptr_eq(&self.setup, &other.setup) || self.setup == other.setup)
     }
 
     /// Runs one block; `program` is the text it is part of, read again by
@@ -397,6 +407,13 @@ impl Machine {
         let code = b.codes().non_modal();
         match a {
             Address::E => code == Some(NonModal::Smoothness),
+            // The lathe G10's C adds to the nose radius (behaviour 17.6).
+            Address::C
+                if code == Some(NonModal::DataSetting)
+                    && self.setup.machine == MachineKind::Lathe =>
+            {
+                true
+            }
             Address::A | Address::B | Address::C => {
                 let rotary: &[Address] = match self.setup.machine {
                     MachineKind::Mill => &[Address::A, Address::B, Address::C],

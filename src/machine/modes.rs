@@ -98,8 +98,9 @@ impl Machine {
                 | NonModal::MachineCoordinates
                 | NonModal::PresetCoordinates
                 | NonModal::CornerArc
-                // G70–G76 are the lathe's.
-                | NonModal::Repetitive(_),
+                // G70–G76 are the lathe's; G10 takes no mode code's path.
+                | NonModal::Repetitive(_)
+                | NonModal::DataSetting,
             )
             | None => {}
         }
@@ -403,8 +404,9 @@ impl Machine {
                 | NonModal::LocalCoordinates
                 | NonModal::MachineCoordinates
                 | NonModal::PresetCoordinates
-                // G70–G76 are the lathe's.
-                | NonModal::Repetitive(_),
+                // G70–G76 are the lathe's; G10 moves nothing.
+                | NonModal::Repetitive(_)
+                | NonModal::DataSetting,
             ) => false,
             Some(NonModal::PositionOffset(_)) | None => {
                 moves

@@ -128,7 +128,7 @@ impl Machine {
         let finish = b.value(Address::K).map(|k| self.mm(k));
         let step = b.value(Address::Q).map(|q| self.mm(q));
         let d = self.state.position.d;
-        let tool = self.mm(self.setup.mill_value(d));
+        let tool = self.mm(self.setup.d_value(d));
         let units = self.units();
         let dec = units.decimals();
         let f = |mm: f64| format!("{:.dec$}", to_units(mm, units));

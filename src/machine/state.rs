@@ -205,6 +205,29 @@ pub enum EventKind {
     },
     /// G88: the operator retracts by hand.
     ManualRetract,
+    /// G10: a value of the offset tables or the work offsets set by the
+    /// program (behaviour 17.8).
+    DataSet(DataSet),
+}
+
+/// One value a G10 block set (behaviour 17.8), named as the setup document
+/// names it.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct DataSet {
+    /// The setup document's table: `offsets`, `lathe_offsets`,
+    /// `work_offsets` or `extended_work_offsets`.
+    pub table: &'static str,
+    /// The entry in it: `"01"`, `"G54"`, `"EXT"`.
+    pub key: String,
+    /// The field: mill `value` (offset memory A), `geometry`/`wear` (B),
+    /// `h_geometry`/`h_wear`/`d_geometry`/`d_wear` (C); lathe `x`, `z`,
+    /// `r`, `x_wear`, `z_wear`, `r_wear`, `t`; work offsets `x`, `y`, `z`.
+    pub field: &'static str,
+    /// The new value, as the document holds it (registers as numbers, work
+    /// offsets in the setup's units).
+    pub value: f64,
+    /// The value before.
+    pub was: f64,
 }
 
 /// The state of the machine after a block.

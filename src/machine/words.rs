@@ -10,7 +10,8 @@
 //! which lets through the rotary words, E and the comma words a block
 //! models), and the other machine's addresses too (`lathe-address`,
 //! `mill-address`). The codes that check their own words (G31, G12/G13,
-//! G05.1, G08, G187, G07.1 of section 14, the lathe's G70–G76 of section 15)
+//! G05.1, G08, G187, G07.1 of section 14, the lathe's G70–G76 of section 15,
+//! G10 of section 17)
 //! take every address here and refuse with their own sentences. `tests/silent_skips.rs` runs every
 //! address in every kind of block and holds each to being acted on or
 //! refused.
@@ -152,7 +153,8 @@ impl Machine {
                 | NonModal::LookAhead
                 | NonModal::Smoothness
                 | NonModal::Cylindrical
-                | NonModal::Repetitive(_)),
+                | NonModal::Repetitive(_)
+                | NonModal::DataSetting),
             ) => return Path::OwnWords(Code::NonModal(code)),
             Some(NonModal::CornerArc) => return Path::CornerArc,
             // G09 stops at the end of a block that moves as any other.
@@ -185,8 +187,9 @@ impl Machine {
                 | NonModal::MachineCoordinates
                 | NonModal::PresetCoordinates),
             ) => return Path::Coordinates(Code::NonModal(code)),
-            // G70–G76 refuse what they do not read (`mrc-word`, behaviour 15).
-            Some(code @ (NonModal::Skip | NonModal::Repetitive(_))) => {
+            // G70–G76 refuse what they do not read (`mrc-word`, behaviour
+            // 15), G10 too (`g10-words`, behaviour 17.10).
+            Some(code @ (NonModal::Skip | NonModal::Repetitive(_) | NonModal::DataSetting)) => {
                 return Path::OwnWords(Code::NonModal(code));
             }
             // The parser gives the lathe none of the mill's one-shot codes
@@ -348,11 +351,13 @@ impl Machine {
     }
 
     /// A word as the manuals write it, for a message.
-    fn word_text(&self, b: &Block, a: Address) -> String {
+    pub(super) fn word_text(&self, b: &Block, a: Address) -> String {
         let letter = a.letter();
         match b.get(a) {
             Some(w) if w.point || a.kind() != WordKind::Integer => {
-                format!("{letter}{}", crate::geometry::show(w.value, self.units()))
+                // The word's value is in the program's units already.
+                let d = self.units().decimals();
+                format!("{letter}{:.d$}", crate::geometry::round6(w.value))
             }
             Some(w) if a == T => format!("T{:04}", w.int()),
             Some(w) if matches!(a, H | D) => format!("{letter}{:02}", w.int()),

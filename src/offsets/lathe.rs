@@ -202,7 +202,7 @@ mod tests {
             x: 0.3,
             z: -0.2,
             x_wear: 0.1,
-            z_wear: 0.0,
+            ..LatheRegister::default()
         };
         let d = vector(&reg, LatheXOffset::Diameter, 1.0);
         assert!((d[0] - 0.4).abs() < 1e-12 && d[2] == -0.2);
@@ -214,8 +214,7 @@ mod tests {
         LatheRegister {
             x: 0.4,
             z: -0.2,
-            x_wear: 0.0,
-            z_wear: 0.0,
+            ..LatheRegister::default()
         }
     }
 

@@ -24,7 +24,7 @@ pub use checkpoint::{Checkpoint, Checkpoints, Read};
 
 use crate::diag::{self, Diagnostic};
 use crate::machine::program::ProgramText;
-use crate::machine::{Ahead, Flow, Machine, Out};
+use crate::machine::{Ahead, EventKind, Flow, Machine, Out};
 use crate::report::{BlockReport, End, Event, Run, include_move};
 use crate::setup::{MachineKind, Setup};
 use crate::syntax::{Address, Block, Blocks, ParseOptions};
@@ -495,6 +495,7 @@ fn fresh(setup: &Setup) -> Run {
         diagnostics: Vec::new(),
         block_count: 0,
         registers: Vec::new(),
+        offset_memory: setup.settings.offset_memory(),
         move_count: 0,
         bounds: None,
         end: End::Completed,
@@ -562,7 +563,22 @@ fn account(
     // Most blocks have no event and no warning: the tests skip setting
     // up the two drains (the `check` instruction count in
     // docs/performance.md guards it).
+    let mut data = Vec::new();
     if !out.events.is_empty() {
+        // A G10's values: the registers it set are the run's too, and its
+        // block's report carries them (behaviour 6.9, 17.8).
+        for e in &out.events {
+            if let EventKind::DataSet(set) = e {
+                if let ("offsets" | "lathe_offsets", Ok(n)) = (set.table, set.key.parse::<u16>())
+                    && !segment.registers.contains(&n)
+                {
+                    segment.registers.push(n);
+                }
+                if options.keep_blocks {
+                    data.push(set.clone());
+                }
+            }
+        }
         result.events.extend(out.events.drain(..).map(|kind| Event {
             block: index,
             line: block.span.line,
@@ -582,6 +598,7 @@ fn account(
             notes: std::mem::take(&mut out.notes),
             first_move: first_move as u32,
             move_count: out.moves.len() as u32,
+            data,
         });
     }
     let offset_words = match kind {
@@ -639,6 +656,15 @@ pub fn report_at(
                     notes: std::mem::take(&mut r.out.notes),
                     first_move: first_move as u32,
                     move_count: r.out.moves.len() as u32,
+                    data: r
+                        .out
+                        .events
+                        .iter()
+                        .filter_map(|e| match e {
+                            EventKind::DataSet(set) => Some(set.clone()),
+                            _ => None,
+                        })
+                        .collect(),
                 });
             }
             Step::Ran(_) | Step::Passed => {}

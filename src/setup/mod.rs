@@ -13,9 +13,10 @@ use crate::diag::{Diagnostic, Span};
 
 mod registers;
 mod settings;
+mod specs;
 
 use registers::register_map;
-pub use registers::{LatheRegister, MillRegister};
+pub use registers::{LatheRegister, MAX_TIP, MillPart, MillRegister};
 pub use settings::*;
 
 /// The only document version this build writes; every version up to it reads.
@@ -130,10 +131,16 @@ impl Position {
     }
 }
 
-/// Work coordinate systems G54–G59, as offsets of their zero from machine zero.
+/// Work coordinate systems G54–G59, as offsets of their zero from machine
+/// zero, and the external work offset added to every system.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct WorkOffsets {
+    /// The external workpiece zero point offset (Fanuc EXT, `G10 L2 P0`;
+    /// the Haas G52/common row): added to every work system's zero
+    /// (behaviour 17.9).
+    #[serde(rename = "EXT", skip_serializing_if = "is_default")]
+    pub ext: Position,
     #[serde(rename = "G54", skip_serializing_if = "is_default")]
     #[allow(missing_docs)]
     pub g54: Position,
@@ -166,8 +173,32 @@ impl WorkOffsets {
             _ => self.g59,
         }
     }
-    fn all(&self) -> [(&'static str, Position); 6] {
+    /// The offset of P `p` of `G10 L2` (0 = EXT, 1 = G54 … 6 = G59).
+    pub fn by_p(&self, p: usize) -> Position {
+        match p {
+            0 => self.ext,
+            n => self.get(n - 1),
+        }
+    }
+    /// The offset of P `p` of `G10 L2`, to change.
+    pub fn by_p_mut(&mut self, p: usize) -> &mut Position {
+        match p {
+            0 => &mut self.ext,
+            1 => &mut self.g54,
+            2 => &mut self.g55,
+            3 => &mut self.g56,
+            4 => &mut self.g57,
+            5 => &mut self.g58,
+            _ => &mut self.g59,
+        }
+    }
+    /// The name of P `p` of `G10 L2`: "EXT", "G54" … "G59".
+    pub fn name_of_p(p: usize) -> &'static str {
+        ["EXT", "G54", "G55", "G56", "G57", "G58", "G59"][p.min(6)]
+    }
+    fn all(&self) -> [(&'static str, Position); 7] {
         [
+            ("EXT", self.ext),
             ("G54", self.g54),
             ("G55", self.g55),
             ("G56", self.g56),
@@ -345,15 +376,42 @@ impl Setup {
                 ));
             }
         };
+        let memory = self.settings.offset_memory();
         for (&n, r) in &self.offsets {
             check_number(&mut out, n);
-            check_value(&mut out, format!("register {n:02} geometry"), r.geometry);
-            check_value(&mut out, format!("register {n:02} wear"), r.wear);
-            check_value(
-                &mut out,
-                format!("register {n:02} geometry + wear"),
-                r.value(),
-            );
+            let (h, d) = (r.h_part(), r.d_part());
+            let split = r.is_split();
+            let tables: &[(&str, registers::MillPart)] = if split {
+                &[("H", h), ("D", d)]
+            } else {
+                &[("", h)]
+            };
+            for (t, part) in tables {
+                check_value(
+                    &mut out,
+                    format!("register {t}{n:02} geometry"),
+                    part.geometry,
+                );
+                check_value(&mut out, format!("register {t}{n:02} wear"), part.wear);
+                check_value(
+                    &mut out,
+                    format!("register {t}{n:02} geometry + wear"),
+                    part.value(),
+                );
+            }
+            if split && memory != OffsetMemory::C {
+                out.push(setup_error(
+                    "setup-memory",
+                    format!(
+                        "register {n:02} gives H and D different values (h, d): that is offset memory C, and this setup's offset_memory is {} ({})",
+                        memory.as_str(),
+                        match memory {
+                            OffsetMemory::A => "one value per number, read by H and D",
+                            _ => "one geometry and wear per number, read by H and D",
+                        }
+                    ),
+                ));
+            }
         }
         for (&n, r) in &self.lathe_offsets {
             check_number(&mut out, n);
@@ -361,6 +419,17 @@ impl Setup {
             check_value(&mut out, format!("lathe register {n:02} Z"), r.z);
             check_value(&mut out, format!("lathe register {n:02} X wear"), r.x_wear);
             check_value(&mut out, format!("lathe register {n:02} Z wear"), r.z_wear);
+            check_value(&mut out, format!("lathe register {n:02} R"), r.r);
+            check_value(&mut out, format!("lathe register {n:02} R wear"), r.r_wear);
+            if r.t > MAX_TIP {
+                out.push(setup_error(
+                    "setup-range",
+                    format!(
+                        "lathe register {n:02} tip direction T = {} is outside 0 to {MAX_TIP}",
+                        r.t
+                    ),
+                ));
+            }
         }
         let max = self.units.max_dimension();
         let mut check_pos = |what: &str, p: Position| {
@@ -450,9 +519,24 @@ impl Setup {
         .unwrap_or(self.reference)
     }
 
-    /// The value register `n` holds for D and H (00 and unset read 0).
+    /// The value a D code reads from register `n` (00 and unset read 0):
+    /// in offset memory A and B the number's one value, which H reads too;
+    /// in C the D table's (behaviour 17.1). Kept for the callers that read
+    /// D; [`Setup::d_value`] and [`Setup::h_value`] say which table.
     pub fn mill_value(&self, n: u16) -> f64 {
+        self.d_value(n)
+    }
+
+    /// The value an H code reads from register `n`: geometry + wear of the
+    /// number (memory A, B) or of its H table (C) (behaviour 17.1).
+    pub fn h_value(&self, n: u16) -> f64 {
         self.offsets.get(&n).map_or(0.0, MillRegister::value)
+    }
+
+    /// The value a D code reads from register `n`: geometry + wear of the
+    /// number (memory A, B) or of its D table (C) (behaviour 17.1).
+    pub fn d_value(&self, n: u16) -> f64 {
+        self.offsets.get(&n).map_or(0.0, |r| r.d_part().value())
     }
 
     /// Lathe register `n` (00 and unset read 0).

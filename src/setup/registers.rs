@@ -1,26 +1,99 @@
-//! The offset registers of the setup: the mill's (D and H read them) and
-//! the lathe's (the offset part of T), their JSON forms, and the register
-//! specs of `--offset` (behaviour 1.18, 5.8, 7.13, 7.14).
+//! The offset registers of the setup: the mill's (D and H read them, as the
+//! offset memory type says) and the lathe's (the offset part of T), and
+//! their JSON forms (behaviour 1.18, 5.8, 7.13, 7.14, 17.1–17.3).
 
 use std::collections::BTreeMap;
 
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
-use super::{MachineKind, Setup, is_zero};
+use super::is_zero;
 
-/// One mill register: geometry + wear; their sum is used (behaviour 1.18).
+/// A geometry value and a wear value; their sum is used.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct MillRegister {
+pub struct MillPart {
     /// Geometry value.
     pub geometry: f64,
     /// Wear value.
     pub wear: f64,
 }
 
-impl MillRegister {
-    /// The value a D or H code reads.
+impl MillPart {
+    /// Geometry + wear.
     pub fn value(&self) -> f64 {
         self.geometry + self.wear
+    }
+}
+
+/// One mill register (behaviour 1.18, 17.1). In offset memory A and B the
+/// number has one value (A) or one geometry and wear (B), read by H and D
+/// alike: `geometry` and `wear`, `d` None. In memory C the H and D tables
+/// are apart: `geometry` and `wear` are the H table's, `d` the D table's —
+/// None when the setup gives the number one value for both (a register
+/// written as a number or `{geometry, wear}`), which is how every document
+/// written before memory types reads in every type.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct MillRegister {
+    /// Geometry value (memory C: the H table's).
+    pub geometry: f64,
+    /// Wear value (memory C: the H table's).
+    pub wear: f64,
+    /// Memory C: the D table's geometry and wear, when they are not the H
+    /// table's.
+    pub d: Option<MillPart>,
+}
+
+/// Registers are equal when H and D read the same parts: a D part equal to
+/// the H part is the same register as none (the form a document writes).
+impl PartialEq for MillRegister {
+    fn eq(&self, other: &Self) -> bool {
+        self.h_part() == other.h_part() && self.d_part() == other.d_part()
+    }
+}
+
+impl MillRegister {
+    /// A register of one geometry and wear for H and D.
+    pub fn new(geometry: f64, wear: f64) -> MillRegister {
+        MillRegister {
+            geometry,
+            wear,
+            d: None,
+        }
+    }
+
+    /// The value an H code reads (geometry + wear; memory A's one value).
+    pub fn value(&self) -> f64 {
+        self.geometry + self.wear
+    }
+
+    /// The H table's part (memory A and B: the number's one part).
+    pub fn h_part(&self) -> MillPart {
+        MillPart {
+            geometry: self.geometry,
+            wear: self.wear,
+        }
+    }
+
+    /// The D table's part (memory A and B: the same as H's).
+    pub fn d_part(&self) -> MillPart {
+        self.d.unwrap_or(self.h_part())
+    }
+
+    /// True when H and D read different parts (memory C only).
+    pub fn is_split(&self) -> bool {
+        self.d.is_some_and(|d| d != self.h_part())
+    }
+
+    /// Sets the H part, keeping what D reads.
+    pub fn set_h(&mut self, part: MillPart) {
+        let d = self.d_part();
+        self.geometry = part.geometry;
+        self.wear = part.wear;
+        self.set_d(d);
+    }
+
+    /// Sets the D part, keeping what H reads.
+    pub fn set_d(&mut self, part: MillPart) {
+        self.d = (part != self.h_part()).then_some(part);
     }
 }
 
@@ -33,16 +106,40 @@ struct MillRegisterFull {
     wear: f64,
 }
 
+/// Memory C's form: the H and D tables' parts of one number.
+#[derive(Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct MillRegisterSplit {
+    #[serde(default, skip_serializing_if = "is_zero")]
+    h: f64,
+    #[serde(default, skip_serializing_if = "is_zero")]
+    h_wear: f64,
+    #[serde(default, skip_serializing_if = "is_zero")]
+    d: f64,
+    #[serde(default, skip_serializing_if = "is_zero")]
+    d_wear: f64,
+}
+
 #[derive(Deserialize)]
 #[serde(untagged)]
 enum MillRegisterForm {
     Value(f64),
     Full(MillRegisterFull),
+    Split(MillRegisterSplit),
 }
 
 impl Serialize for MillRegister {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        if self.wear == 0.0 {
+        if self.is_split() {
+            let d = self.d_part();
+            MillRegisterSplit {
+                h: self.geometry,
+                h_wear: self.wear,
+                d: d.geometry,
+                d_wear: d.wear,
+            }
+            .serialize(s)
+        } else if self.wear == 0.0 {
             self.geometry.serialize(s)
         } else {
             MillRegisterFull {
@@ -58,23 +155,29 @@ impl<'de> Deserialize<'de> for MillRegister {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         match MillRegisterForm::deserialize(d).map_err(|_| {
             serde::de::Error::custom(
-                "a mill register is a number or {\"geometry\": …, \"wear\": …}",
+                "a mill register is a number, {\"geometry\": …, \"wear\": …}, or in offset memory C {\"h\": …, \"h_wear\": …, \"d\": …, \"d_wear\": …}",
             )
         })? {
-            MillRegisterForm::Value(v) => Ok(MillRegister {
-                geometry: v,
-                wear: 0.0,
-            }),
-            MillRegisterForm::Full(f) => Ok(MillRegister {
-                geometry: f.geometry,
-                wear: f.wear,
-            }),
+            MillRegisterForm::Value(v) => Ok(MillRegister::new(v, 0.0)),
+            MillRegisterForm::Full(f) => Ok(MillRegister::new(f.geometry, f.wear)),
+            MillRegisterForm::Split(f) => {
+                let mut r = MillRegister::new(f.h, f.h_wear);
+                r.set_d(MillPart {
+                    geometry: f.d,
+                    wear: f.d_wear,
+                });
+                // `{"h": 5}` says D reads 0 even where H and D agree
+                // nowhere else: kept apart unless the parts are equal.
+                Ok(r)
+            }
         }
     }
 }
 
-/// One lathe register: X (diameter or radius, see [`LatheXOffset`]) and Z,
-/// each geometry + wear (behaviour 5).
+/// One lathe register: X (diameter or radius, see
+/// [`super::LatheXOffset`]) and Z, the tool nose radius R, each geometry
+/// and wear, and the imaginary tool tip direction T, 0–9 (behaviour 5.8,
+/// 17.3).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct LatheRegister {
@@ -88,7 +191,24 @@ pub struct LatheRegister {
     /// Z wear.
     #[serde(skip_serializing_if = "is_zero")]
     pub z_wear: f64,
+    /// Tool nose radius, geometry.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub r: f64,
+    /// Tool nose radius, wear.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub r_wear: f64,
+    /// Imaginary tool tip direction, 0 to 9.
+    #[serde(skip_serializing_if = "is_zero_tip")]
+    pub t: u8,
 }
+
+fn is_zero_tip(t: &u8) -> bool {
+    *t == 0
+}
+
+/// The largest imaginary tool tip direction (0–9: Fanuc 0i-TF, "Imaginary
+/// tool nose"; Haas lathe operator's manual, "Tool tip direction").
+pub const MAX_TIP: u8 = 9;
 
 impl LatheRegister {
     /// X value used (geometry + wear), as stored (diameter or radius).
@@ -98,6 +218,10 @@ impl LatheRegister {
     /// Z value used (geometry + wear).
     pub fn z_value(&self) -> f64 {
         self.z + self.z_wear
+    }
+    /// Tool nose radius used (geometry + wear).
+    pub fn r_value(&self) -> f64 {
+        self.r + self.r_wear
     }
 }
 
@@ -143,63 +267,4 @@ pub(super) fn parse_register_number(k: &str) -> Result<u16, String> {
     }
     t.parse::<u16>()
         .map_err(|_| format!("register number `{k}` is not a number"))
-}
-
-impl Setup {
-    /// Sets one register from a command-line style spec: mill `NN=VALUE`
-    /// (`01=5.0`, `1=-2.5`), lathe `NN=X<v>,Z<v>` (`08=X0.4,Z-0.2`).
-    /// Wear can follow as `W<v>` (mill) or `XW<v>`/`ZW<v>` (lathe).
-    pub fn set_register(&mut self, spec: &str) -> Result<(), String> {
-        let (num, value) = spec
-            .split_once('=')
-            .ok_or_else(|| format!("offset `{spec}`: expected NN=VALUE"))?;
-        let n = parse_register_number(num).map_err(|e| format!("offset `{spec}`: {e}"))?;
-        let number = |t: &str| -> Result<f64, String> {
-            let t = t.trim();
-            t.parse::<f64>()
-                .ok()
-                .filter(|v| v.is_finite() && !t.is_empty())
-                .ok_or_else(|| format!("offset `{spec}`: `{t}` is not a number"))
-        };
-        match self.machine {
-            MachineKind::Mill => {
-                let mut reg = MillRegister::default();
-                for (i, part) in value.split(',').enumerate() {
-                    let p = part.trim();
-                    let upper = p.to_ascii_uppercase();
-                    if let Some(w) = upper.strip_prefix('W') {
-                        reg.wear = number(w)?;
-                    } else if i == 0 {
-                        reg.geometry = number(upper.strip_prefix('G').unwrap_or(&upper))?;
-                    } else {
-                        return Err(format!(
-                            "offset `{spec}`: mill registers are NN=VALUE or NN=VALUE,W<wear>"
-                        ));
-                    }
-                }
-                self.offsets.insert(n, reg);
-            }
-            MachineKind::Lathe => {
-                let mut reg = LatheRegister::default();
-                for part in value.split(',') {
-                    let p = part.trim().to_ascii_uppercase();
-                    if let Some(v) = p.strip_prefix("XW") {
-                        reg.x_wear = number(v)?;
-                    } else if let Some(v) = p.strip_prefix("ZW") {
-                        reg.z_wear = number(v)?;
-                    } else if let Some(v) = p.strip_prefix('X') {
-                        reg.x = number(v)?;
-                    } else if let Some(v) = p.strip_prefix('Z') {
-                        reg.z = number(v)?;
-                    } else {
-                        return Err(format!(
-                            "offset `{spec}`: lathe registers are NN=X<v>,Z<v> (wear: XW<v>, ZW<v>)"
-                        ));
-                    }
-                }
-                self.lathe_offsets.insert(n, reg);
-            }
-        }
-        Ok(())
-    }
 }

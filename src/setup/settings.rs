@@ -285,6 +285,33 @@ pub enum CutterInterference {
 /// parameter No. 19625).
 pub const MAX_CUTTER_BLOCKS_WITHOUT_MOTION: u8 = 6;
 
+/// How the mill's offset memory keeps the values D and H read (behaviour
+/// 7.32, 17.1): Fanuc's tool compensation memory A, B or C.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum OffsetMemory {
+    /// One value per number, read by H and D alike (the seeds' YASNAC
+    /// memory; Fanuc memory A). `G10 L11` (or `L1`) sets it.
+    A,
+    /// Geometry and wear per number, shared by H and D (Fanuc memory B):
+    /// `G10 L10` geometry, `L11` wear.
+    B,
+    /// Separate H and D tables, each geometry and wear (Fanuc memory C, the
+    /// Haas offset page): `G10 L10`/`L11` H geometry/wear, `L12`/`L13` D
+    /// geometry/wear.
+    C,
+}
+
+impl OffsetMemory {
+    /// "A", "B" or "C".
+    pub fn as_str(self) -> &'static str {
+        match self {
+            OffsetMemory::A => "A",
+            OffsetMemory::B => "B",
+            OffsetMemory::C => "C",
+        }
+    }
+}
+
 /// Settings where controls disagree; the seeds' behaviour is the default.
 /// A setting whose default depends on the control is an `Option` read
 /// through its accessor (`None`: the control's default).
@@ -370,6 +397,10 @@ pub struct Settings {
     /// The interference check (behaviour 16.12).
     #[serde(skip_serializing_if = "is_default")]
     pub cutter_interference_check: CutterInterference,
+    /// The mill's offset memory type (behaviour 7.32, 17.1); read it with
+    /// [`Settings::offset_memory`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub offset_memory: Option<OffsetMemory>,
 }
 
 impl Settings {
@@ -507,6 +538,24 @@ impl Settings {
             .unwrap_or(match self.control {
                 Control::Yasnac | Control::Fanuc | Control::Haas => 2,
             })
+    }
+
+    /// The mill's offset memory: YASNAC keeps one value per number, read by
+    /// H and D alike (seed 001, table 3.4.1.2: one setting range of "offset
+    /// values"; seed 003: "the offset value" changed by MDI), Fanuc's memory
+    /// A; Haas keeps separate length (H) and diameter (D) columns, each
+    /// geometry and wear (Haas mill operator's manual, "Tool offsets"; G10
+    /// L10–L13), Fanuc's memory C. Fanuc's memory type is an option of the
+    /// control (0i-MF/0i-B connection manuals, "Tool compensation memory");
+    /// the profile takes memory C, the one Fanuc machining centres show as
+    /// H and D geometry and wear columns and CAM posts write with G10
+    /// L10–L13 (our reading: the standard option set is not in the manuals
+    /// at hand).
+    pub fn offset_memory(&self) -> OffsetMemory {
+        self.offset_memory.unwrap_or(match self.control {
+            Control::Yasnac => OffsetMemory::A,
+            Control::Fanuc | Control::Haas => OffsetMemory::C,
+        })
     }
 
     /// How the D word of the one-block G71/G72 (depth of cut), G74/G75

@@ -70,6 +70,9 @@ impl Blocks<'_> {
                 self.mrc = Some(r);
                 self.context = true;
             }
+            // The lathe G10's Q is the tool tip direction, a digit: no
+            // dimension to warn about (behaviour 17.6).
+            Code::NonModal(NonModal::DataSetting) => self.whole_q = true,
             Code::NonModal(_)
             | Code::Plane(_)
             | Code::Distance(_)

@@ -57,7 +57,8 @@ fn returns(code: NonModal) -> bool {
         | NonModal::LocalCoordinates
         | NonModal::PresetCoordinates
         | NonModal::CornerArc
-        | NonModal::Repetitive(_) => false,
+        | NonModal::Repetitive(_)
+        | NonModal::DataSetting => false,
     }
 }
 

@@ -645,6 +645,9 @@ pub enum NonModal {
     CornerArc,
     /// Lathe G70–G76: a multiple repetitive cycle (behaviour 15).
     Repetitive(Repetitive),
+    /// G10: programmable data input, the offset tables and work offsets
+    /// set from the program (behaviour 17).
+    DataSetting,
 }
 
 /// The lathe's multiple repetitive cycles, group 00 (Fanuc 0i-TF operator's
@@ -732,6 +735,7 @@ impl NonModal {
             (NonModal::PresetCoordinates, _) => "G92.1",
             (NonModal::CornerArc, _) => "G39",
             (NonModal::Repetitive(r), _) => r.gcode(),
+            (NonModal::DataSetting, _) => "G10",
         }
     }
 }

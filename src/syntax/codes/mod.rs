@@ -265,6 +265,7 @@ impl Code {
                 4 => C::NonModal(NonModal::Dwell),
                 8 => C::NonModal(NonModal::LookAhead),
                 9 => C::NonModal(NonModal::ExactStop),
+                10 => C::NonModal(NonModal::DataSetting),
                 12 => C::NonModal(NonModal::CirclePocket(Cw)),
                 13 => C::NonModal(NonModal::CirclePocket(Ccw)),
                 15 => C::PolarCoordinates(PolarMode::Cancel),
@@ -442,6 +443,7 @@ fn lathe_code(system: GCodeSystem, major: u16) -> Option<Code> {
         2 => return Some(C::Motion(Motion::Arc(Cw))),
         3 => return Some(C::Motion(Motion::Arc(Ccw))),
         4 => return Some(C::NonModal(NonModal::Dwell)),
+        10 => return Some(C::NonModal(NonModal::DataSetting)),
         18 => return Some(C::Plane(Plane::ZX)),
         27 => return Some(C::NonModal(NonModal::ReferenceCheck)),
         28 => return Some(C::NonModal(NonModal::ReferenceReturn)),
@@ -704,7 +706,6 @@ fn unsupported_reason(table: CodeTable, g: GCode) -> String {
         39 if lathe => "corner circular interpolation is a mill code (cutter compensation)",
         43 | 44 | 49 if lathe => "the lathe uses T-code offsets, not G43/G44/G49 (seed 004)",
         45..=48 if lathe => "the lathe uses T-code offsets, not G45–G48 (seed 004)",
-        10 => "programmable data input is not supported; enter offsets in the offset table",
         32..=34 => "thread cutting blocks are not supported",
         50 if lathe && system_b_or_c => {
             "in G-code system B and C the coordinate system is set with G92 (setting gcode_system)"
