@@ -21,7 +21,7 @@ use offsetlab::{
 };
 use proptest::prelude::*;
 
-const FIXTURES: [&str; 9] = [
+const FIXTURES: [&str; 10] = [
     "contour_g45",
     "coordinates",
     "corners",
@@ -31,6 +31,7 @@ const FIXTURES: [&str; 9] = [
     "lathe_cycles",
     "lathe_taper",
     "pocket_g43_drill",
+    "polar",
 ];
 
 fn page(every: u32) -> RunOptions {

@@ -479,7 +479,7 @@ impl Machine {
         let start = self.mark();
         let (path, arc) = match motion {
             Motion::Arc(direction) => {
-                let circle = self.polar_circle(b, direction, target, vz)?;
+                let circle = self.polar_circle(b, out, direction, target, vz)?;
                 (Path::Arc(circle.0), Some(circle.1))
             }
             _ => (Path::Line(f0, f1), None),
@@ -514,6 +514,7 @@ impl Machine {
     fn polar_circle(
         &self,
         b: &Block,
+        out: &mut Out,
         direction: ArcDirection,
         target: Xyz,
         vz: f64,
@@ -531,11 +532,11 @@ impl Machine {
         };
         if let Some(r) = b.get(Address::R) {
             if b.has(Address::I) || b.has(Address::J) {
-                // Never both: R wins, as on a lathe arc (behaviour 2.13).
-                return Err(self.error(
+                // R wins, as on any arc (behaviour 2.13).
+                out.warnings.push(Diagnostic::warning(
                     "arc-r-and-center",
                     r.span,
-                    "R and I/J in one arc: write one of them (in polar coordinate interpolation offsetlab reads R or I and J)",
+                    "R and I/J in one arc: R is used and I/J are ignored (Fanuc)",
                 ));
             }
             req.radius = Some((self.mm(r.value), 0.0));
