@@ -39,16 +39,20 @@ pub enum ViewPlane {
     YZ,
     /// Lathe: Z right, X (as radius) up.
     ZX,
+    /// Lathe face view (polar coordinate interpolation): X (as radius)
+    /// right, C up.
+    XC,
 }
 
 impl ViewPlane {
-    /// "XY", "XZ", "YZ" or "ZX".
+    /// "XY", "XZ", "YZ", "ZX" or "XC".
     pub fn as_str(self) -> &'static str {
         match self {
             ViewPlane::XY => "XY",
             ViewPlane::XZ => "XZ",
             ViewPlane::YZ => "YZ",
             ViewPlane::ZX => "ZX",
+            ViewPlane::XC => "XC",
         }
     }
 
@@ -59,6 +63,7 @@ impl ViewPlane {
             "XZ" => ViewPlane::XZ,
             "YZ" => ViewPlane::YZ,
             "ZX" => ViewPlane::ZX,
+            "XC" => ViewPlane::XC,
             _ => return None,
         })
     }

@@ -18,12 +18,27 @@ const POINTS: [&str; 4] = ["from", "to", "programmed_from", "programmed_to"];
 const ARC_POINTS: [&str; 2] = ["center", "programmed_center"];
 
 /// The CSV columns of a machine's moves, in order. A lathe position has no
-/// `y`, so the lathe has no `_y` columns.
+/// `y`, so the lathe has no `_y` columns (but see [`run_columns`]).
 pub fn csv_columns(machine: MachineKind) -> Vec<String> {
-    let axes: &[&str] = match machine {
-        MachineKind::Mill => &["x", "y", "z"],
-        MachineKind::Lathe => &["x", "z"],
-    };
+    columns(machine == MachineKind::Mill)
+}
+
+/// The CSV columns of a run's moves: a lathe run that moved in polar
+/// coordinate interpolation has the `_y` columns too, the hypothetical axis
+/// (behaviour 14.16).
+pub fn run_columns(run: &Run) -> Vec<String> {
+    let off_plane = |p: &crate::geometry::Xyz| p[1] != 0.0;
+    let y = run.machine == MachineKind::Mill
+        || run.moves.iter().any(|m| {
+            [m.from, m.to, m.programmed_from, m.programmed_to]
+                .iter()
+                .any(off_plane)
+        });
+    columns(y)
+}
+
+fn columns(y: bool) -> Vec<String> {
+    let axes: &[&str] = if y { &["x", "y", "z"] } else { &["x", "z"] };
     let mut columns: Vec<String> = ["line", "block", "kind", "rate"]
         .iter()
         .map(|s| s.to_string())
@@ -89,9 +104,9 @@ fn cell(value: Option<&Value>) -> String {
 }
 
 /// The moves of a run as CSV (RFC 4180, `\r\n` line ends): a header of
-/// [`csv_columns`], then one row per move.
+/// [`run_columns`], then one row per move.
 pub fn moves_csv(run: &Run) -> String {
-    let columns = csv_columns(run.machine);
+    let columns = run_columns(run);
     let mut out = columns.join(",");
     out.push_str("\r\n");
     for m in &run.moves {
@@ -211,6 +226,37 @@ mod tests {
             }
             assert!(arcs >= 1, "{machine:?} has an arc row");
         }
+    }
+
+    #[test]
+    fn behaviour14_16_a_lathe_run_in_polar_interpolation_exports_its_y_columns() {
+        // The face point (10, 10) is the lathe's X20. and Y10. (the
+        // hypothetical axis C10.).
+        let setup = Setup {
+            machine: MachineKind::Lathe,
+            ..Setup::default()
+        };
+        let run = crate::run(
+            "G98 G00 X40. Z-1.\nG12.1\nG01 X20. C10. F100.\nG13.1\n",
+            &setup,
+        );
+        assert!(!run.has_errors(), "{:?}", run.diagnostics);
+        let csv = moves_csv(&run);
+        let lines: Vec<&str> = csv.split("\r\n").filter(|l| !l.is_empty()).collect();
+        let header: Vec<&str> = lines[0].split(',').collect();
+        assert_eq!(header, run_columns(&run));
+        assert_eq!(
+            &header[4..10],
+            ["from_x", "from_y", "from_z", "to_x", "to_y", "to_z"]
+        );
+        assert!(
+            lines[2].starts_with("3,2,feed,,40,,-1,20,10,-1,"),
+            "{}",
+            lines[2]
+        );
+        // A turning run keeps its columns without y.
+        let turning = crate::run("G00 X40. Z-1.\n", &setup);
+        assert_eq!(run_columns(&turning), csv_columns(MachineKind::Lathe));
     }
 
     #[test]

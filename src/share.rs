@@ -498,7 +498,8 @@ fn decode_plain(fragment: &str) -> Result<Link, LinkError> {
                 };
             }
             "plane" => {
-                let plane = ViewPlane::parse(v).ok_or_else(|| bad(key, v, "XY, XZ, YZ or ZX"))?;
+                let plane =
+                    ViewPlane::parse(v).ok_or_else(|| bad(key, v, "XY, XZ, YZ, ZX or XC"))?;
                 view.get_or_insert_with(ViewState::default).plane = plane;
             }
             "zoom" => view.get_or_insert_with(ViewState::default).zoom = number(key, v)?,

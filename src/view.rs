@@ -26,11 +26,14 @@ pub struct Pos {
     pub z: f64,
 }
 
-/// Converts a position (mm) for reporting.
+/// Converts a position (mm) for reporting. A lathe position has a `y` only
+/// off the XZ plane: in polar coordinate interpolation, where Y is the
+/// hypothetical axis of the face plane (behaviour 6.2, 14.16).
 pub fn pos(p: Xyz, units: Units, machine: MachineKind) -> Pos {
+    let y = to_units(p[1], units);
     Pos {
         x: to_units(p[0], units),
-        y: (machine == MachineKind::Mill).then(|| to_units(p[1], units)),
+        y: (machine == MachineKind::Mill || y != 0.0).then_some(y),
         z: to_units(p[2], units),
     }
 }
@@ -154,6 +157,20 @@ pub struct TransformsView {
     pub rotation: Option<RotationView>,
 }
 
+/// Polar coordinate interpolation on the lathe (behaviour 14.16): where the
+/// machine's axes stand for the block's face point.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct PolarView {
+    /// How far the C axis has turned since G12.1, degrees
+    /// (counter-clockwise seen from the tailstock).
+    pub c: f64,
+    /// The machine's X (a diameter, as the lathe shows X): the actual
+    /// point's distance from the spindle axis, doubled.
+    pub x: f64,
+    /// The same as a radius.
+    pub radius: f64,
+}
+
 /// The rotary axes a program named (degrees): reported, not drawn
 /// (behaviour 13.14).
 #[derive(Clone, Copy, Debug, Serialize)]
@@ -198,6 +215,10 @@ pub struct BlockView<'a> {
     /// Mill: the rotary axes, absent until a block names one.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub rotary: Option<RotaryView>,
+    /// Lathe: the machine's C and X in polar coordinate interpolation,
+    /// absent outside it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub polar: Option<PolarView>,
     /// Modal codes after the block.
     pub modal: ModalCodes,
     /// Modal feed.
@@ -275,6 +296,14 @@ fn block_view_at<'a>(b: &BlockReport, text: &'a str, columns: (u32, u32)) -> Blo
             a: s.rotary[0].map(round6),
             b: s.rotary[1].map(round6),
             c: s.rotary[2].map(round6),
+        }),
+        polar: s.polar.map(|p| {
+            let x = p.machine_x(s.programmed);
+            PolarView {
+                c: round6(p.angle.to_degrees()),
+                x: to_units(x, u),
+                radius: to_units(x / 2.0, u),
+            }
         }),
         modal: s.modal_codes(),
         feed: s.feed,

@@ -67,6 +67,7 @@ fn reports_made_again_from_checkpoints_equal_the_kept_ones_for_every_fixture() {
         "lathe_cycles",
         "lathe_taper",
         "pocket_g43_drill",
+        "polar",
     ] {
         let (text, setup) = fixture(name);
         assert_same_reports(&text, &setup);

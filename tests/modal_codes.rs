@@ -283,17 +283,22 @@ fn behaviour14_10_g07_1_cylindrical_interpolation_is_reported_not_drawn() {
 }
 
 #[test]
-fn behaviour14_11_polar_interpolation_is_kept_and_its_moves_refused() {
+fn behaviour14_11_polar_interpolation_is_kept_shown_and_stands_in_blocks_of_its_own() {
     for (on, off) in [("G12.1", "G13.1"), ("G112", "G113")] {
         let text = format!("{on}\n{off}\nG01 X10. F0.1");
         let r = ok(&text, &lathe(&[]));
         assert_eq!(modal(&r, 0, MachineKind::Lathe).polar, Some(on));
         assert!(explain(&r, 0).starts_with(&format!("{on} polar coordinate interpolation on")));
         assert_eq!(modal(&r, 1, MachineKind::Lathe).polar, Some(off));
-        let r = run(&format!("{on}\nG01 X20. C5. F0.1"), &lathe(&[]));
+        assert!(explain(&r, 1).starts_with(&format!("{off} polar coordinate interpolation off")));
+        // G12.1 and G13.1 stand in blocks of their own (Fanuc).
+        let r = run(&format!("{on} X20. C5."), &lathe(&[]));
         let e = r.diagnostics.iter().find(|d| d.is_error()).unwrap();
-        assert_eq!(e.code, "polar-interpolation");
-        assert!(e.message.contains(off), "{}", e.message);
+        assert_eq!(
+            (e.code, e.column),
+            ("polar-interpolation", on.len() as u32 + 2)
+        );
+        assert!(e.message.contains("blocks of their own"), "{}", e.message);
     }
     // The start state is G13.1; the mill refuses the codes with the reason.
     let r = ok("G00 X1.", &lathe(&[]));

@@ -21,7 +21,7 @@ use offsetlab::{
 };
 use proptest::prelude::*;
 
-const FIXTURES: [&str; 12] = [
+const FIXTURES: [&str; 13] = [
     "contour_g45",
     "coordinates",
     "corners",
@@ -34,6 +34,7 @@ const FIXTURES: [&str; 12] = [
     "lathe_cycles",
     "lathe_taper",
     "pocket_g43_drill",
+    "polar",
 ];
 
 fn page(every: u32) -> RunOptions {

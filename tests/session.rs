@@ -217,6 +217,44 @@ fn view_state_is_plane_zoom_pan_and_step() {
 }
 
 #[test]
+fn behaviour14_16_the_lathe_has_the_face_view_xc_beside_zx() {
+    // A face contour in polar coordinate interpolation: the lathe is drawn
+    // in ZX first, and its face view XC can be chosen; the mill's planes
+    // cannot, nor XC on the mill.
+    let program = "G98 G00 X40. Z2.\nG01 Z-1. F100.\nG12.1\nG01 X20. C-10.\nC10.\nX-20.\nC-10.\nX20.\nG13.1\n";
+    let mut s = Session::new();
+    run(&mut s, program, Some(r#"{"machine":"lathe"}"#));
+    assert_eq!(s.view().plane.as_deref(), Some("ZX"));
+    assert!(s.set_plane("xc"));
+    assert_eq!(s.view().plane.as_deref(), Some("XC"));
+    assert!(!s.set_plane("XY"));
+    assert_eq!(s.view().plane.as_deref(), Some("XC"));
+    assert!(s.set_plane("ZX") && s.set_plane("XC"));
+    // An edit keeps the face view; the document carries it, and a link
+    // made of it reads back the same.
+    run(
+        &mut s,
+        &program.replace("C10.", "C12."),
+        Some(r#"{"machine":"lathe"}"#),
+    );
+    assert_eq!(s.view().plane.as_deref(), Some("XC"));
+    let d = s.document();
+    assert_eq!(d.view.map(|v| v.plane.as_str()), Some("XC"));
+    assert_eq!(Document::from_json(&d.to_json()).unwrap(), d);
+    let link = offsetlab::share::link("http://127.0.0.1:8000/", &d, false).unwrap();
+    assert_eq!(offsetlab::share::decode(&link).unwrap().document, d);
+    // The frame drawn in XC is the face: the square's corners ±10 on both
+    // axes fit the view with the spindle axis at the origin.
+    assert!(draw(&mut s, 600, 600, 1.0));
+    let svg = s.render_svg(600, 600);
+    assert!(svg.contains("lathe · XC · mm"), "{svg}");
+    // A mill run goes back to its own first plane; XC is not the mill's.
+    run(&mut s, SQUARE, Some(SQUARE_SETUP));
+    assert_eq!(s.view().plane.as_deref(), Some("XY"));
+    assert!(!s.set_plane("XC"));
+}
+
+#[test]
 fn block_at_line_is_the_last_block_at_or_before_the_line() {
     let s = square();
     // Line 1 is a comment before any block.

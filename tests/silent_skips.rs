@@ -367,6 +367,37 @@ const LATHE: &[Kind] = &[
         after: "",
         refused: "I K L P Q R T U W",
     },
+    // Polar coordinate interpolation (behaviour 14.15, 14.18): the mode's
+    // codes stand alone, its moves read the face plane's words.
+    Kind {
+        name: "G12.1 polar interpolation on",
+        before: "G98 G00 X40. Z-1.\n",
+        block: "G12.1",
+        after: "G01 X20. C10.\nG13.1\n",
+        refused: "X U Z W I K R T P Q L",
+    },
+    Kind {
+        name: "G01 in polar interpolation",
+        before: "G98 G00 X40. Z-1.\nG12.1\n",
+        block: "G01 X20. C10. F100.",
+        after: "G13.1\n",
+        refused: "I K R Q P L U T",
+    },
+    Kind {
+        name: "G03 in polar interpolation",
+        before: "G98 G00 X40. Z-1.\nG12.1\nG01 X20. C5. F100.\n",
+        block: "G03 X10. C10. R5.",
+        after: "G13.1\n",
+        // I and J with R: R is used, with a warning (behaviour 2.13).
+        refused: "K Q P L U T -J",
+    },
+    Kind {
+        name: "G13.1 polar interpolation off",
+        before: "G98 G00 X40. Z-1.\nG12.1\nG01 X20. C10. F100.\n",
+        block: "G13.1",
+        after: "G00 X60.\n",
+        refused: "X U Z W I K R T P Q L",
+    },
     Kind {
         name: "G71 first block (depth of cut, retract)",
         before: "G00 X50. Z2.\n",
@@ -530,6 +561,31 @@ fn behaviour2_22_every_address_in_every_mill_block_is_acted_on_or_refused() {
 #[test]
 fn behaviour2_22_every_address_in_every_lathe_block_is_acted_on_or_refused() {
     audit(LATHE, &lathe(&[(1, 0.4, -0.2), (2, 0.6, 0.1)]), LATHE_NEVER);
+}
+
+#[test]
+fn behaviour2_22_every_address_in_haas_polar_interpolation_is_acted_on_or_refused() {
+    // Haas's G112 reads Y for the hypothetical axis and moves at rapid too
+    // (behaviour 14.15); C is refused there (`polar-words`).
+    const HAAS_POLAR: &[Kind] = &[
+        Kind {
+            name: "G01 in G112",
+            before: "G98 G00 X40. Z-1.\nG112\n",
+            block: "G01 X10. Y10. F100.",
+            after: "G113\n",
+            refused: "I K R Q P L U T -Y",
+        },
+        Kind {
+            name: "G00 in G112",
+            before: "G98 G00 X40. Z-1.\nG112\n",
+            block: "G00 Z1.",
+            after: "G113\n",
+            refused: "I K R Q P L W T -Y",
+        },
+    ];
+    let mut setup = lathe(&[(1, 0.4, -0.2), (2, 0.6, 0.1)]);
+    setup.settings.control = offsetlab::setup::Control::Haas;
+    audit(HAAS_POLAR, &setup, LATHE_NEVER);
 }
 
 #[test]

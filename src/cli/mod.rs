@@ -60,7 +60,7 @@ enum Command {
         /// The block the page shows first (0 = the first executed block).
         #[arg(long, value_name = "N")]
         step: Option<u32>,
-        /// The view plane: XY, XZ, YZ (mill) or ZX (lathe).
+        /// The view plane: XY, XZ, YZ (mill), ZX or XC, the face view (lathe).
         #[arg(long, value_name = "PLANE")]
         plane: Option<String>,
         /// Decode LINK (a URL, a #fragment or the fragment) and print its
@@ -212,8 +212,11 @@ fn execute(cli: Cli, out: &mut impl Write) -> Result<ExitCode, Fatal> {
             }
             let (_, mut doc) = load(&common)?;
             if let Some(p) = plane {
-                let plane = ViewPlane::parse(&p)
-                    .ok_or_else(|| Fatal(format!("--plane {p}: expected XY, XZ, YZ or ZX")))?;
+                let plane = ViewPlane::parse(&p).ok_or_else(|| {
+                    Fatal(format!(
+                        "--plane {p}: expected XY, XZ, YZ (mill), ZX or XC (lathe)"
+                    ))
+                })?;
                 doc.view.get_or_insert_with(ViewState::default).plane = plane;
             }
             if step.is_some() {

@@ -3,7 +3,7 @@
 //! A). The T-code tool position offset's rules and sentences are
 //! [`crate::offsets::lathe`]'s; this file moves the tool by them.
 
-use super::modal::{ArcDirection, Distance, LatheCycle, Motion};
+use super::modal::{ArcDirection, Distance, LatheCycle, Motion, Plane};
 use super::program::ProgramText;
 use super::{Ahead, ArcRequest, Machine, Mark, Out};
 use super::{EventKind, MoveKind};
@@ -40,12 +40,18 @@ impl Machine {
             self.pass_over(b, out);
             return Ok(());
         }
-        self.refuse_polar_moves(b)?;
+        self.refuse_polar(b)?;
         self.refuse_unmodelled(b)?;
-        // A G71/G72/G74–G76 block's D is its depth (behaviour 15.2).
+        // A G71/G72/G74–G76 block's D is its depth (behaviour 15.2); in
+        // polar coordinate interpolation J is an arc's centre and Y Haas's
+        // hypothetical axis (behaviour 14.15).
         let cycle_d = matches!(b.codes().non_modal(), Some(NonModal::Repetitive(_)));
+        let polar = self.in_polar_mode(b);
         for w in &b.words {
-            if matches!(w.address, Address::Y | Address::J | Address::H)
+            let polar_word = polar
+                && (w.address == Address::J
+                    || (w.address == Address::Y && self.polar_axis() == Address::Y));
+            if (matches!(w.address, Address::Y | Address::J | Address::H) && !polar_word)
                 || (w.address == Address::D && !cycle_d)
             {
                 let why = match w.address {
@@ -96,6 +102,9 @@ impl Machine {
             if let Motion::LatheCycle(_) = m {
                 self.turning = TurningData::default();
             }
+        }
+        if self.state.polar.is_some() {
+            return self.polar_move(b, out);
         }
         let positioning = matches!(
             c.non_modal(),
@@ -212,6 +221,19 @@ impl Machine {
                 "arc-r-no-motion",
                 b.span,
                 "an R arc whose end is its start makes no circle (a full circle needs I and K); the block makes no arc",
+            ));
+        }
+        if motion.is_arc() && self.state.modal.plane != Plane::ZX {
+            // G17 is the face plane of polar coordinate interpolation; a
+            // turning arc lies in ZX (behaviour 5.11, 14.15).
+            return Err(self.error(
+                "arc-plane",
+                b.span,
+                format!(
+                    "{} outside polar coordinate interpolation lies in the ZX plane: select G18 (the plane in force is {}, the face plane of G12.1/G112)",
+                    Code::Motion(motion).gcode(self.state.table()),
+                    self.state.modal.plane.gcode()
+                ),
             ));
         }
         if let Motion::Arc(direction) = motion

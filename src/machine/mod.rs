@@ -21,13 +21,14 @@ pub mod modal;
 mod modes;
 mod mrc;
 mod pocket;
+mod polar;
 pub mod program;
 mod reference;
 pub mod state;
 mod transform;
 mod words;
 
-pub use state::{ArcInfo, BlockState, DataSet, EventKind, Move, MoveKind};
+pub use state::{ArcInfo, BlockState, DataSet, EventKind, Move, MoveKind, PolarState};
 
 use crate::diag::{Diagnostic, Span};
 use crate::geometry::{Xyz, add, scale, to_units};
@@ -212,6 +213,7 @@ impl Machine {
                 ..frame::Coordinates::default()
             },
             rotary: [None; 3],
+            polar: None,
         };
         let mirror = if setup.machine == MachineKind::Mill {
             setup.settings.mirror.axes()
@@ -421,6 +423,8 @@ impl Machine {
                 };
                 (code == Some(NonModal::Cylindrical) && rotary.contains(&a))
                     || self.state.modal.cylinder.is_some_and(|(axis, _)| axis == a)
+                    // The hypothetical axis of polar interpolation (behaviour 14.15).
+                    || (self.in_polar_mode(b) && a == self.polar_axis())
             }
             _ => false,
         }
@@ -701,7 +705,17 @@ impl Machine {
 
     /// Builds the circle of an arc move for both paths (behaviour 2.12, 4.8).
     fn arc_geometry(&self, b: &Block, req: &ArcRequest) -> Result<ArcInfo, Diagnostic> {
-        let plane = self.state.modal.plane;
+        self.arc_geometry_in(b, req, self.state.modal.plane)
+    }
+
+    /// [`Machine::arc_geometry`] in a given plane (the face plane of polar
+    /// coordinate interpolation is the lathe's XY: behaviour 14.15).
+    fn arc_geometry_in(
+        &self,
+        b: &Block,
+        req: &ArcRequest,
+        plane: modal::Plane,
+    ) -> Result<ArcInfo, Diagnostic> {
         let (ia, ib, _) = plane.axes();
         let lathe = self.setup.machine == MachineKind::Lathe;
         // The lathe's X is a diameter: its arcs are drawn in radius space.

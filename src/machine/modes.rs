@@ -104,19 +104,7 @@ impl Machine {
             )
             | None => {}
         }
-        if let Some(polar) = c.polar()
-            && polar != before.polar
-        {
-            self.state.modal.polar = polar;
-            out.notes.push(if polar.is_on() {
-                format!(
-                    "{} polar coordinate interpolation on: X and the C axis make a plane of the face (Fanuc G12.1, Haas G112); offsetlab keeps the mode and refuses the moves in it, as its lathe view is the ZX plane",
-                    polar.gcode()
-                )
-            } else {
-                format!("{} polar coordinate interpolation off", polar.gcode())
-            });
-        }
+        self.polar_code(b, out, before);
         self.cylinder_word(b, out);
         self.update_special();
         Ok(())
@@ -333,47 +321,6 @@ impl Machine {
                 crate::geometry::to_units(r, u),
                 crate::geometry::to_units(r * w.value.to_radians(), u)
             ));
-        }
-    }
-
-    /// On the lathe, a block that moves in polar coordinate interpolation
-    /// (or with G12.1 itself) is refused: the mode is kept, its geometry is
-    /// not drawn (behaviour 14.11).
-    pub(super) fn refuse_polar_moves(&self, b: &Block) -> Result<(), Diagnostic> {
-        let on = match b.codes().polar() {
-            Some(p) => p.is_on(),
-            None => self.state.modal.polar.is_on(),
-        };
-        if !on {
-            return Ok(());
-        }
-        const MOVING: [Address; 10] = [
-            Address::X,
-            Address::U,
-            Address::Z,
-            Address::W,
-            Address::C,
-            Address::Y,
-            Address::I,
-            Address::J,
-            Address::K,
-            Address::R,
-        ];
-        match b.words.iter().find(|w| MOVING.contains(&w.address)) {
-            Some(w) => Err(self.error(
-                "polar-interpolation",
-                w.span,
-                format!(
-                    "{}: moves in polar coordinate interpolation ({}) are not modelled yet: the face contour of X and C has no place in the lathe's ZX view; cancel it with {}",
-                    w.address.letter(),
-                    self.state.modal.polar.gcode(),
-                    match self.state.modal.polar {
-                        crate::syntax::codes::Polar::On(crate::syntax::codes::PolarSpelling::Haas) => "G113",
-                        _ => "G13.1",
-                    }
-                ),
-            )),
-            None => Ok(()),
         }
     }
 

@@ -265,6 +265,40 @@ pub struct BlockState {
     /// The rotary axes A, B, C (degrees), once a block names them: reported,
     /// not drawn (behaviour 13.14).
     pub rotary: [Option<f64>; 3],
+    /// Lathe: polar coordinate interpolation in force, with the C axis's
+    /// turn (behaviour 14.11, 14.16).
+    pub polar: Option<PolarState>,
+}
+
+/// Polar coordinate interpolation in force (lathe, behaviour 14.15–14.17):
+/// the positions are the face plane's — X (a diameter-valued coordinate,
+/// as everywhere on the lathe) and the hypothetical axis as Y — and the
+/// machine turns C and moves X to follow them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PolarState {
+    /// How far the C axis has turned since G12.1 (radians, counter-clockwise
+    /// seen from the tailstock, unwound: one and a half turns is 3π).
+    pub angle: f64,
+    /// The X part of the T vector the tool carried at G12.1 (mm, a
+    /// diameter): it acts along the machine's X axis, which turns with C
+    /// in the face plane (behaviour 14.17).
+    pub x_offset: f64,
+}
+
+impl PolarState {
+    /// The offset vector in the face plane at the C angle `angle` (mm, X
+    /// diameter-valued, the hypothetical axis as Y), with the Z part `z`.
+    pub fn vector(&self, angle: f64, z: f64) -> Xyz {
+        let (sin, cos) = angle.sin_cos();
+        [self.x_offset * cos, self.x_offset / 2.0 * sin, z]
+    }
+
+    /// Where the machine's X axis stands for the face point of `programmed`
+    /// (mm, a diameter): twice its distance from the spindle axis, plus the
+    /// X offset.
+    pub fn machine_x(&self, programmed: Xyz) -> f64 {
+        2.0 * (programmed[0] / 2.0).hypot(programmed[1]) + self.x_offset
+    }
 }
 
 impl BlockState {
@@ -281,7 +315,15 @@ impl BlockState {
     /// The actual position in machine coordinates (mm): where the machine's
     /// axes stand (behaviour 13.1).
     pub fn machine_position(&self) -> Xyz {
-        crate::geometry::add(self.actual, self.coords.zero)
+        match &self.polar {
+            // The face plane's point is the machine's X and C (behaviour 14.16).
+            Some(p) => [
+                p.machine_x(self.programmed) + self.coords.zero[0],
+                0.0,
+                self.actual[2] + self.coords.zero[2],
+            ],
+            None => crate::geometry::add(self.actual, self.coords.zero),
+        }
     }
 
     /// The table the block's codes are written back with.

@@ -55,6 +55,11 @@ pub(crate) enum Path {
     LatheArc(Motion),
     /// Lathe single cycle G90/G92/G94 (system A names).
     LatheCycle(Motion),
+    /// Lathe, in polar coordinate interpolation: a line of the face plane
+    /// (behaviour 14.15).
+    PolarLine(Motion),
+    /// Lathe, in polar coordinate interpolation: an arc of the face plane.
+    PolarArc(Motion),
     /// A code that checks its own words (G31, G12/G13, G05.1, G08, G187,
     /// G07.1: behaviour 14; G70–G76: behaviour 15): every address passes here.
     OwnWords(Code),
@@ -97,6 +102,10 @@ impl Path {
             Path::LatheLine(_) => &[T, X, Z, U, W],
             Path::LatheArc(_) => &[T, X, Z, U, W, I, K, R],
             Path::LatheCycle(_) => &[T, X, Z, U, W, R],
+            // The hypothetical axis is C or Y as the setting says; the other
+            // one, H and T are refused before (`polar-words`, behaviour 14.18).
+            Path::PolarLine(_) => &[X, Z, U, W, C, Y],
+            Path::PolarArc(_) => &[X, Z, U, W, C, Y, I, J, R],
             Path::OwnWords(_) => &ALL,
             Path::CornerArc => &[S, I, J, K],
         }
@@ -110,7 +119,9 @@ impl Path {
             | Path::Arc(motion)
             | Path::LatheLine(motion)
             | Path::LatheArc(motion)
-            | Path::LatheCycle(motion) => Code::Motion(motion).gcode(table).to_string(),
+            | Path::LatheCycle(motion)
+            | Path::PolarLine(motion)
+            | Path::PolarArc(motion) => Code::Motion(motion).gcode(table).to_string(),
             Path::Cycle(code) | Path::PositionOffset(code, _) => code.gcode(table).to_string(),
             Path::Dwell => "G04".to_string(),
             Path::SetCoordinates => Code::NonModal(NonModal::SetCoordinates)
@@ -206,7 +217,14 @@ impl Machine {
             )
             | None => {}
         }
-        match c.motion().unwrap_or(self.state.modal.motion) {
+        let motion = c.motion().unwrap_or(self.state.modal.motion);
+        if self.in_polar_mode(b) {
+            return match motion {
+                m @ Motion::Arc(_) => Path::PolarArc(m),
+                m => Path::PolarLine(m),
+            };
+        }
+        match motion {
             m @ Motion::LatheCycle(_) => Path::LatheCycle(m),
             m @ Motion::Arc(_) => Path::LatheArc(m),
             m @ (Motion::Rapid | Motion::Linear) => Path::LatheLine(m),
@@ -372,7 +390,13 @@ impl Machine {
 fn unused_message(text: &str, a: Address, mill: bool, path: Path, name: &str) -> String {
     let what = match (a, mill) {
         (I | J | K, true) => "I, J and K are the centre of a G02/G03 arc",
+        (I | K, false) if matches!(path, Path::PolarLine(_) | Path::PolarArc(_)) => {
+            "in polar coordinate interpolation I and J are the centre of a G02/G03 arc in the face plane (K, along Z, is not in it)"
+        }
         (I | K, false) => "I and K are the centre of a G02/G03 arc",
+        (J, false) => {
+            "J is the centre of a G02/G03 arc along the hypothetical axis of polar coordinate interpolation"
+        }
         (R, true) => "R is an arc's radius or a canned cycle's R level",
         (R, false) => "R is an arc's radius or the taper of a G90/G92/G94 cycle",
         (Q, true) => "Q is the peck depth (G73/G83) or the shift (G76/G87) of a canned cycle",

@@ -312,6 +312,9 @@ pub fn path_extent(toolpath: &Toolpath, plane: Plane) -> Option<Extent> {
     if let (Some(e), true) = (&mut extent, plane.has_centre_line()) {
         e.include(e.min_u, 0.0);
     }
+    if let (Some(e), true) = (&mut extent, plane.has_spindle_centre()) {
+        e.include(0.0, 0.0);
+    }
     extent
 }
 

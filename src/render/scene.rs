@@ -76,11 +76,11 @@ impl Scene {
         }
     }
 
-    /// Makes the plane one the machine has: the lathe is drawn in ZX only,
-    /// the mill in XY, XZ or YZ.
+    /// Makes the plane one the machine has: the lathe is drawn in ZX or in
+    /// its face view XC, the mill in XY, XZ or YZ.
     pub fn adapt_to(&mut self, machine: MachineKind) {
         let lathe = machine == MachineKind::Lathe;
-        if lathe != self.plane.has_centre_line() {
+        if lathe != self.plane.is_lathe() {
             self.plane = Plane::for_machine(machine);
         }
     }

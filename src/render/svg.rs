@@ -231,6 +231,14 @@ mod tests {
     use crate::render::style;
     use crate::render::test_support::{group, square, toolpath_on, toolpath_to_stop};
 
+    fn render_in(tp: &Toolpath, plane: crate::render::Plane, w: f64, h: f64) -> String {
+        let scene = crate::render::Scene {
+            plane,
+            ..crate::render::Scene::default()
+        };
+        render_scene(tp, &scene, w, h)
+    }
+
     #[test]
     fn square_draws_both_paths_as_groups_with_their_styles() {
         let svg = render(&square(), 800.0, 500.0);
@@ -349,6 +357,53 @@ mod tests {
         let small = render(&tp, 600.0, 400.0);
         assert!(small.contains(">lathe · ZX · mm</text>") && small.contains(">centre</text>"));
         assert!(!small.contains("programmed → actual end"));
+    }
+
+    /// A 20 × 20 square on the face, centred on the spindle axis, with a
+    /// rounded corner (behaviour 14.16): in the face view it is a square
+    /// around the origin; in ZX, moves along X at one Z.
+    const FACE_SQUARE: &str = "G98 G00 X40. Z2.\nG01 Z-1. F100.\nG12.1\nG01 X20. C-10.\nC5.\nG03 X10. C10. R5.\nG01 X-20.\nC-10.\nX20.\nG13.1\nG00 Z5.\n";
+
+    #[test]
+    fn behaviour14_16_the_face_view_draws_the_polar_contour_around_the_spindle_axis() {
+        let tp = toolpath_on(FACE_SQUARE, crate::MachineKind::Lathe);
+        let svg = render_in(&tp, crate::render::Plane::LatheXc, 600.0, 600.0);
+        assert!(svg.contains("lathe · XC · mm"));
+        let axes = group(&svg, "axes");
+        assert!(axes.contains(">X (radius)</text>") && axes.contains(">C</text>"));
+        // The programmed feed path's corners: x from -10 to 10 and C from
+        // -10 to 10 (X20. is a radius of 10), drawn as a square: equal
+        // spans on screen.
+        let programmed = group(&svg, "programmed");
+        let path = programmed
+            .split("<path ")
+            .find(|p| p.contains(style::PROGRAMMED_FEED.color))
+            .expect("programmed feed path");
+        let d = &path[path.find("d=\"").unwrap() + 3..];
+        let d = &d[..d.find('"').unwrap()];
+        let points: Vec<(f64, f64)> = d
+            .split(['M', 'L'])
+            .filter(|s| !s.trim().is_empty())
+            .map(|p| {
+                let mut it = p.split_whitespace().map(|v| v.parse::<f64>().unwrap());
+                (it.next().unwrap(), it.next().unwrap())
+            })
+            .collect();
+        let span = |f: fn(&(f64, f64)) -> f64| {
+            let v: Vec<f64> = points.iter().map(f).collect();
+            let max = v.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
+            let min = v.iter().cloned().fold(f64::INFINITY, f64::min);
+            max - min
+        };
+        // The feed path also holds the plunge G01 Z-1. (a point here: it
+        // moves along Z only) and the lead-in from X40. (radius 20) to the
+        // first corner: from x = 20 to -10 across, C from -10 to 10 up.
+        let (across, up) = (span(|p| p.0), span(|p| p.1));
+        assert!((across / up - 30.0 / 20.0).abs() < 0.02, "{across} / {up}");
+        insta::assert_snapshot!("face_view_of_a_polar_square", svg);
+        // The ZX view keeps showing the face moves along X at Z-1.
+        let zx = render_in(&tp, crate::render::Plane::LatheZx, 600.0, 600.0);
+        assert!(zx.contains("lathe · ZX · mm"));
     }
 
     #[test]

@@ -18,6 +18,11 @@ pub enum Plane {
     /// The lathe's view: Z right, X up **as a radius** (the diameter halved),
     /// so the part profile is drawn true to size above its centre line.
     LatheZx,
+    /// The lathe's face view, looking along Z from the tailstock: X right
+    /// **as a radius**, the hypothetical axis C of polar coordinate
+    /// interpolation up (the toolpath's Y), the spindle axis at the origin
+    /// (behaviour 14.16).
+    LatheXc,
 }
 
 impl Plane {
@@ -39,6 +44,7 @@ impl Plane {
             Plane::Xz => (x, z),
             Plane::Yz => (y, z),
             Plane::LatheZx => (z, x / 2.0),
+            Plane::LatheXc => (x / 2.0, y),
         }
     }
 
@@ -49,6 +55,7 @@ impl Plane {
             Plane::Xz => ("X", "Z"),
             Plane::Yz => ("Y", "Z"),
             Plane::LatheZx => ("Z", "X (radius)"),
+            Plane::LatheXc => ("X (radius)", "C"),
         }
     }
 
@@ -59,17 +66,19 @@ impl Plane {
             Plane::Xz => "XZ",
             Plane::Yz => "YZ",
             Plane::LatheZx => "ZX",
+            Plane::LatheXc => "XC",
         }
     }
 
     /// Reads a view name as [`Plane::name`] writes it (any case): XY, XZ,
-    /// YZ or ZX.
+    /// YZ, ZX or XC.
     pub fn parse(name: &str) -> Option<Plane> {
         Some(match name.to_ascii_uppercase().as_str() {
             "XY" => Plane::Xy,
             "XZ" => Plane::Xz,
             "YZ" => Plane::Yz,
             "ZX" => Plane::LatheZx,
+            "XC" => Plane::LatheXc,
             _ => return None,
         })
     }
@@ -77,6 +86,18 @@ impl Plane {
     /// True when the horizontal axis (vertical = 0) is a lathe's centre line.
     pub fn has_centre_line(self) -> bool {
         self == Plane::LatheZx
+    }
+
+    /// True for the lathe's views (ZX and the face, XC); the others are the
+    /// mill's.
+    pub fn is_lathe(self) -> bool {
+        matches!(self, Plane::LatheZx | Plane::LatheXc)
+    }
+
+    /// True when the origin is the spindle axis seen end on (the face
+    /// view): the drawing always holds it.
+    pub fn has_spindle_centre(self) -> bool {
+        self == Plane::LatheXc
     }
 }
 

@@ -21,7 +21,7 @@ use crate::toolpath::Toolpath;
 /// clears the current block.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct ViewChange {
-    /// `XY`, `XZ`, `YZ` (mill) or `ZX` (lathe).
+    /// `XY`, `XZ`, `YZ` (mill), `ZX` or `XC` (lathe).
     pub plane: Option<String>,
     /// 1 fits the whole path.
     pub zoom: Option<f64>,
@@ -231,11 +231,12 @@ impl View {
         self.view()
     }
 
-    /// Chooses the plane drawn (`XY`, `XZ`, `YZ` on the mill; the lathe
-    /// has `ZX` only). False, changing nothing, for another name.
+    /// Chooses the plane drawn (`XY`, `XZ`, `YZ` on the mill; `ZX` and the
+    /// face view `XC` on the lathe). False, changing nothing, for another
+    /// name.
     pub fn set_plane(&mut self, machine: MachineKind, name: &str) -> bool {
         match Plane::parse(name) {
-            Some(plane) if plane.has_centre_line() == (machine == MachineKind::Lathe) => {
+            Some(plane) if plane.is_lathe() == (machine == MachineKind::Lathe) => {
                 self.scene.plane = plane;
                 true
             }

@@ -401,6 +401,11 @@ pub struct Settings {
     /// [`Settings::offset_memory`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub offset_memory: Option<OffsetMemory>,
+    /// How a program writes the face plane in polar coordinate
+    /// interpolation (behaviour 7.33, 14.11); read it with
+    /// [`Settings::polar_interpolation`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub polar_interpolation: Option<PolarInterpolation>,
 }
 
 impl Settings {
@@ -558,6 +563,22 @@ impl Settings {
         })
     }
 
+    /// The words of polar coordinate interpolation on the lathe (behaviour
+    /// 7.33): the Fanuc T manuals write the face in X, a diameter as
+    /// everywhere on the lathe, and C, the hypothetical axis, with G01–G03
+    /// only (0i-TF/0i-TD operator's manuals, "Polar coordinate interpolation
+    /// (G12.1, G13.1)": their sample program's arcs close only so; G00 is
+    /// alarm PS0146); the Haas lathe's G112 is "XY to XC interpolation": X
+    /// is a radius and Y the hypothetical axis, and the manual's example
+    /// retracts at rapid inside the mode. YASNAC follows Fanuc (our
+    /// convention: the YASNAC manuals at hand do not describe the mode).
+    pub fn polar_interpolation(&self) -> PolarInterpolation {
+        self.polar_interpolation.unwrap_or(match self.control {
+            Control::Haas => PolarInterpolation::Haas,
+            Control::Yasnac | Control::Fanuc => PolarInterpolation::Fanuc,
+        })
+    }
+
     /// How the D word of the one-block G71/G72 (depth of cut), G74/G75
     /// (relief) and G76 (first depth) reads: see [`DepthWord`].
     pub fn depth_word(&self) -> DepthWord {
@@ -590,4 +611,16 @@ pub enum DepthWord {
     /// A whole number of least input increments, no decimal point (Fanuc
     /// Series 10/11 format: `D7000` = 7.000 mm).
     Increments,
+}
+
+/// How a lathe program writes the face plane of polar coordinate
+/// interpolation, G12.1/G112 (behaviour 7.33, 14.11).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PolarInterpolation {
+    /// X a diameter, C the hypothetical axis; G01, G02, G03 only (Fanuc T).
+    Fanuc,
+    /// X a radius, Y the hypothetical axis, G00 allowed (Haas G112, "XY to
+    /// XC").
+    Haas,
 }

@@ -110,7 +110,7 @@ impl Session {
         self.session.set_theme(name);
     }
 
-    /// The view state: `{ plane: "XY"|"XZ"|"YZ"|"ZX", zoom, pan: [u, v],
+    /// The view state: `{ plane: "XY"|"XZ"|"YZ"|"ZX"|"XC", zoom, pan: [u, v],
     /// step }` ([`ViewChange`]; step null without a current block).
     pub fn view(&self) -> Result<JsValue, JsError> {
         to_js(&self.session.view())

@@ -69,6 +69,11 @@ const CHOICES = [
     help: 'G00 blocks that end a G71/G72 contour going back toward the start: Fanuc checks them as the shape (alarm PS0064); the Haas profile takes them as the exit, with a warning.',
   },
   {
+    id: 'polar_interpolation', label: 'G12.1/G112 words', machine: 'lathe', controlDefault: true,
+    options: [['fanuc', 'X diameter, C (Fanuc)'], ['haas', 'X radius, Y (Haas)']],
+    help: 'The face plane of polar coordinate interpolation: Fanuc writes X as a diameter and C for the hypothetical axis, moving with G01–G03 only; Haas’s G112 writes X as a radius and Y (XY to XC) and also moves at rapid (YASNAC as Fanuc).',
+  },
+  {
     id: 'dwell_p_decimal_point', label: 'Decimal point in P', controlDefault: true,
     options: [['error', 'an error'], ['seconds', 'seconds']],
     help: 'G04 P3. (and a canned cycle’s dwell P): YASNAC and Fanuc take P in milliseconds without a point and refuse P3.; Haas reads P3. as 3 seconds and P3 as 3 milliseconds.',

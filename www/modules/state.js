@@ -81,6 +81,15 @@ export function stateRows(b) {
   ];
   if (b.coordinates) rows.push(['Coordinate system', coordinates(b.coordinates, u), 'coordinates']);
   if (b.transforms) rows.push(['Transformations', transforms(b.transforms, u), 'transforms']);
+  if (b.polar) {
+    // Polar coordinate interpolation (behaviour 14.16): the face point is
+    // the position's X and Y; the machine turns C and moves X to follow.
+    rows.push([
+      'Polar interpolation (machine)',
+      `C${b.polar.c.toFixed(3)}° from its place at G12.1 · X${fmt(b.polar.x, u)} (radius ${fmt(b.polar.radius, u)})`,
+      'polar',
+    ]);
+  }
   if (b.rotary) {
     const axes = ['a', 'b', 'c'].filter((k) => b.rotary[k] !== undefined && b.rotary[k] !== null);
     rows.push(['Rotary axes (not drawn)', axes.map((k) => `${k.toUpperCase()}${b.rotary[k].toFixed(3)}°`).join(' '), 'rotary']);

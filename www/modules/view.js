@@ -34,15 +34,17 @@ export function viewReported(view) {
   for (const f of listeners) f(viewState());
 }
 
-/** Shows the planes the machine has (mill: XY XZ YZ; lathe: ZX). */
+/** The lathe's views: ZX, and XC, the face of polar coordinate interpolation. */
+const LATHE_PLANES = new Set(['ZX', 'XC']);
+
+/** Shows the planes the machine has (mill: XY XZ YZ; lathe: ZX and the face, XC). */
 export function setMachinePlanes(machine) {
   const select = document.getElementById('plane');
   for (const option of select.options) {
-    const lathe = option.value === 'ZX';
+    const lathe = LATHE_PLANES.has(option.value);
     option.hidden = lathe !== (machine === 'lathe');
     option.disabled = option.hidden;
   }
-  select.disabled = machine === 'lathe';
 }
 
 const send = (op, extra = {}) => post({ type: 'view', op, ...extra });

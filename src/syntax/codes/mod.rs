@@ -444,6 +444,9 @@ fn lathe_code(system: GCodeSystem, major: u16) -> Option<Code> {
         3 => return Some(C::Motion(Motion::Arc(Ccw))),
         4 => return Some(C::NonModal(NonModal::Dwell)),
         10 => return Some(C::NonModal(NonModal::DataSetting)),
+        // G17: the XY plane of live tooling, which polar coordinate
+        // interpolation uses (Haas writes it before G112; behaviour 14.15).
+        17 => return Some(C::Plane(Plane::XY)),
         18 => return Some(C::Plane(Plane::ZX)),
         27 => return Some(C::NonModal(NonModal::ReferenceCheck)),
         28 => return Some(C::NonModal(NonModal::ReferenceReturn)),
@@ -714,7 +717,9 @@ fn unsupported_reason(table: CodeTable, g: GCode) -> String {
         65..=67 => "macro calls are not run yet",
         68 | 69 if lathe => "coordinate rotation is the mill's in offsetlab",
         15 | 16 if lathe => "polar coordinates are the mill's in offsetlab",
-        17 | 19 if lathe => "the lathe works in the ZX plane (G18) only",
+        19 if lathe => {
+            "the lathe's planes are G18 (ZX, turning) and G17 (the face, for polar coordinate interpolation); the YZ plane of a Y-axis lathe is not modelled"
+        }
         61..=64 | 9 | 8 | 93 | 187 if lathe => "this cutting-mode or feed code is a mill code",
         12 | 13 if lathe => {
             "circular pocket milling is a mill code; polar coordinate interpolation is G12.1/G13.1 (Haas G112/G113)"
