@@ -73,6 +73,14 @@ impl<'t> Reader<'t> {
         }
         let next = self.for_index.and_then(|i| i.checked_add(1)) == Some(index);
         self.for_index = Some(index);
+        if self.blocks.is_empty() && self.side.is_none() {
+            // Nothing read past a batch: nothing to forget (cutter
+            // compensation asks at every block; the 1M-block `check` with
+            // G41, docs/performance.md).
+            self.done = false;
+            self.forked = forked;
+            return;
+        }
         if next && forked && self.forked && !self.blocks.is_empty() {
             self.blocks.pop_front();
             return;

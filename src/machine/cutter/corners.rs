@@ -223,12 +223,14 @@ impl Machine {
         check: bool,
     ) -> Result<(), Diagnostic> {
         let (ia, ib, _) = self.state.modal.plane.axes();
-        let m = out.moves[i];
+        // Read in place: a move with its arc is a few hundred bytes.
+        let m = &out.moves[i];
+        let is_arc = m.arc.is_some();
         let p = |x: Xyz| [x[ia], x[ib]];
         let interferes;
         let mut arc_info = None;
         let mut kind = m.kind;
-        if let Some(info) = m.arc {
+        if let Some(info) = &m.arc {
             // The actual centre is the programmed one carried by the
             // vectors other than the compensation's (constant in an arc
             // block: G45–G48 are refused, the length offset cannot change
@@ -286,7 +288,7 @@ impl Machine {
                 radius: circle.radius,
                 sweep: circle.sweep,
                 start_angle: circle.start_angle,
-                ..info
+                ..*info
             });
             kind = if circle.sweep > 0.0 {
                 MoveKind::ArcCcw
@@ -300,7 +302,7 @@ impl Machine {
             );
         }
         if check && interferes {
-            let what = if m.arc.is_some() {
+            let what = if is_arc {
                 "the tool does not fit this arc: its offset path runs the other way round"
             } else {
                 "the offset path of this block runs against its programmed direction"

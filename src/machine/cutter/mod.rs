@@ -195,7 +195,12 @@ impl Machine {
         out: &mut Out,
         ahead: &mut dyn Ahead,
     ) -> Result<(), Diagnostic> {
-        self.cutter_checks(b)?;
+        // A block of motion words alone has nothing the checks refuse (no
+        // plane, G45–G48, G39, group 07 or cycle code, no ,C/,R).
+        let plain = b.holds_only(&MOTION_WORDS, &[Group::Motion]);
+        if !plain {
+            self.cutter_checks(b)?;
+        }
         let before = self.state.cutter;
         let start = self.mark();
         let moves_before = out.moves.len();
@@ -206,8 +211,7 @@ impl Machine {
         // the corner moves their ends below.
         let saved = before.vector;
         self.state.cutter.vector = [0.0; 3];
-        let ran = if b.holds_only(&MOTION_WORDS, &[Group::Motion])
-            && self.state.modal.feed_mode != FeedMode::InverseTime
+        let ran = if plain && self.state.modal.feed_mode != FeedMode::InverseTime
         {
             self.motion_block(b, out)
         } else {
