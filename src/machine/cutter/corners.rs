@@ -120,6 +120,7 @@ impl Machine {
 
     /// The corner by `rule`, or the alarm when an intersection it needs
     /// does not exist (behaviour 16.12: Fanuc PS0033).
+    #[inline]
     pub(super) fn corner_or_alarm(
         &self,
         b: &Block,

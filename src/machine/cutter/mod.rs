@@ -124,6 +124,7 @@ impl Machine {
     /// The programmed path of a move in the plane, None when it does not
     /// move in the plane. `shift` takes its coordinates into the running
     /// block's work coordinates.
+    #[inline]
     pub(super) fn move_path(&self, m: &Move, shift: Xyz) -> Option<Path> {
         let (ia, ib, _) = self.state.modal.plane.axes();
         let at = |p: Xyz| [p[ia] + shift[ia], p[ib] + shift[ib]];
@@ -261,8 +262,15 @@ impl Machine {
         if g28 && engaged && self.names_plane_axis(b) {
             return self.cutter_return(out, moves_before, before);
         }
-        let own = (moves_before..out.moves.len())
-            .find_map(|i| self.move_path(&out.moves[i], [0.0; 3]).map(|p| (i, p)));
+        // The block's own move in the plane (a plain loop: it runs at every
+        // block in offset mode).
+        let mut own = None;
+        for i in moves_before..out.moves.len() {
+            if let Some(p) = self.move_path(&out.moves[i], [0.0; 3]) {
+                own = Some((i, p));
+                break;
+            }
+        }
         let words = Words {
             mode,
             d: self.state.position.d,
