@@ -407,11 +407,17 @@ impl Corner {
     }
 
     fn points(kind: Kind, alpha: (f64, f64, bool), points: &[P2]) -> Corner {
-        let mut steps = [Step::Line([0.0, 0.0]); 4];
-        for (slot, p) in steps.iter_mut().zip(points) {
+        // Written in place (a corner is made at every block in offset mode).
+        let mut c = Corner {
+            steps: [Step::Line([0.0, 0.0]); 4],
+            count: points.len().min(4) as u8,
+            kind,
+            turn: alpha,
+        };
+        for (slot, p) in c.steps.iter_mut().zip(points) {
             *slot = Step::Line(*p);
         }
-        Corner::new(kind, alpha, &steps[..points.len().min(4)])
+        c
     }
 }
 
