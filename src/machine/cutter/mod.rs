@@ -212,8 +212,7 @@ impl Machine {
         // the corner moves their ends below.
         let saved = before.vector;
         self.state.cutter.vector = [0.0; 3];
-        let ran = if plain && self.state.modal.feed_mode != FeedMode::InverseTime
-        {
+        let ran = if plain && self.state.modal.feed_mode != FeedMode::InverseTime {
             self.motion_block(b, out)
         } else {
             self.mill_general(b, out)
