@@ -79,27 +79,26 @@ impl Machine {
             CutterOutsideCorner::Arc => Outside::Arc,
         };
         let next = self.cutter_next(ahead, out);
-        let (corner, next_path, o2, cancels) = match next {
+        // The rule first, the corner once: a corner is a few hundred bytes,
+        // made at every block in offset mode.
+        let (rule, next_path, o2, cancels) = match next {
             Next::Move {
                 path: n,
                 offset: 0.0,
-            } => {
-                let c = self.corner_or_alarm(b, &path, &n, o, o, Rule::Cancel(t))?;
-                (c, n, o, true)
-            }
+            } => (Rule::Cancel(t), n, o, true),
+            // The corner is made with this block's radius on both sides: a
+            // new D counts from the next block's end (behaviour 16.8).
             Next::Move { path: n, offset } => {
-                // The corner is made with this block's radius on both
-                // sides: a new D counts from the next block's end
-                // (behaviour 16.8).
-                let o2 = o.abs() * offset.signum();
-                let c = self.corner_or_alarm(b, &path, &n, o, o2, Rule::Offset(outside))?;
-                (c, n, o2, false)
+                (Rule::Offset(outside), n, o.abs() * offset.signum(), false)
             }
             Next::Unknown(why) => {
                 self.look_ahead_note(b, out, why);
-                let c = self.corner_or_alarm(b, &path, &path, o, o, Rule::Perpendicular)?;
-                (c, path, o, false)
+                (Rule::Perpendicular, path, o, false)
             }
+        };
+        let corner = match geo::corner(&path, &next_path, o, o2, rule) {
+            Ok(c) => c,
+            Err(NoIntersection) => return Err(self.no_intersection(b, o)),
         };
         out.note(|| {
             if cancels {
@@ -130,16 +129,21 @@ impl Machine {
         o2: f64,
         rule: Rule,
     ) -> Result<Corner, Diagnostic> {
-        geo::corner(prev, next, o1, o2, rule).map_err(|NoIntersection| {
-            self.error(
-                "cutter-no-intersection",
-                b.span,
-                format!(
-                    "the offset paths of this block and the next do not meet at their inside corner: the tool of radius {} cannot reach it (Fanuc alarm PS0033)",
-                    show(o1.abs(), self.units())
-                ),
-            )
-        })
+        geo::corner(prev, next, o1, o2, rule).map_err(|NoIntersection| self.no_intersection(b, o1))
+    }
+
+    /// The alarm when the intersection a corner needs does not exist
+    /// (behaviour 16.12: Fanuc PS0033); `o1` the block's offset.
+    #[cold]
+    fn no_intersection(&self, b: &Block, o1: f64) -> Diagnostic {
+        self.error(
+            "cutter-no-intersection",
+            b.span,
+            format!(
+                "the offset paths of this block and the next do not meet at their inside corner: the tool of radius {} cannot reach it (Fanuc alarm PS0033)",
+                show(o1.abs(), self.units())
+            ),
+        )
     }
 
     /// Says why the corner at this block's end is not known, and warns when

@@ -210,6 +210,7 @@ impl Points {
 }
 
 /// The points where two offset paths meet (none, one or two).
+#[inline]
 fn crossings(a: Offset, b: Offset) -> Points {
     match (a, b) {
         (Offset::Line { point: p, dir: d }, Offset::Line { point: q, dir: e }) => {
@@ -262,6 +263,7 @@ fn crossings(a: Offset, b: Offset) -> Points {
 }
 
 /// The crossing of two offset paths nearest to `near`.
+#[inline]
 fn crossing_near(a: Offset, b: Offset, near: P2) -> Option<P2> {
     crossings(a, b)
         .iter()
@@ -406,6 +408,7 @@ impl Corner {
         }
     }
 
+    #[inline]
     fn points(kind: Kind, alpha: (f64, f64, bool), points: &[P2]) -> Corner {
         // Written in place (a corner is made at every block in offset mode).
         let mut c = Corner {
