@@ -191,7 +191,23 @@ impl Machine {
         };
         let e = first.end();
         let end = self.set_cutter_vector([e[0] - p1[0], e[1] - p1[1]]);
-        self.finish_offset_move(b, out, i, end, check)?;
+        if out.moves[i].arc.is_none() {
+            // A straight move ends at the corner as it is (most blocks:
+            // the `check` with G41, docs/performance.md).
+            let (ia, ib, _) = self.state.modal.plane.axes();
+            let m = &out.moves[i];
+            let p = |x: Xyz| [x[ia], x[ib]];
+            let interferes = geo::line_reverses(
+                (p(m.programmed_from), p(m.programmed_to)),
+                (p(m.from), p(end)),
+            );
+            if check && interferes {
+                self.interference(b, out, false)?;
+            }
+            out.moves[i].to = end;
+        } else {
+            self.finish_offset_move(b, out, i, end, check)?;
+        }
         let kind = match self.state.modal.motion {
             Motion::Rapid => MoveKind::Rapid,
             Motion::Linear | Motion::Arc(_) | Motion::LatheCycle(_) => MoveKind::Feed,
@@ -307,38 +323,47 @@ impl Machine {
             );
         }
         if check && interferes {
-            let what = if is_arc {
-                "the tool does not fit this arc: its offset path runs the other way round"
-            } else {
-                "the offset path of this block runs against its programmed direction"
-            };
-            match self.setup.settings.cutter_interference_check {
-                CutterInterference::Alarm => {
-                    return Err(self.error(
-                        "cutter-interference",
-                        b.span,
-                        format!(
-                            "interference: {what}; the tool would cut into the part — alarm PS0041 stops the program here (the path is drawn up to the block before)"
-                        ),
-                    ));
-                }
-                CutterInterference::Off => {
-                    out.warnings.push(Diagnostic::warning(
-                        "cutter-interference",
-                        b.span,
-                        format!(
-                            "interference: {what}; with the check off (setting cutter_interference_check) the tool cuts into the part here"
-                        ),
-                    ));
-                    out.note(|| format!("interference: {what} (check off: overcut)"));
-                }
-            }
+            self.interference(b, out, is_arc)?;
         }
         let m = &mut out.moves[i];
         m.to = end;
         m.kind = kind;
         if arc_info.is_some() {
             m.arc = arc_info;
+        }
+        Ok(())
+    }
+
+    /// The interference check's answer for a block whose offset path runs
+    /// against its programmed one (behaviour 16.12): the alarm, or with the
+    /// check off a warning.
+    #[cold]
+    fn interference(&self, b: &Block, out: &mut Out, is_arc: bool) -> Result<(), Diagnostic> {
+        let what = if is_arc {
+            "the tool does not fit this arc: its offset path runs the other way round"
+        } else {
+            "the offset path of this block runs against its programmed direction"
+        };
+        match self.setup.settings.cutter_interference_check {
+            CutterInterference::Alarm => {
+                return Err(self.error(
+                    "cutter-interference",
+                    b.span,
+                    format!(
+                        "interference: {what}; the tool would cut into the part — alarm PS0041 stops the program here (the path is drawn up to the block before)"
+                    ),
+                ));
+            }
+            CutterInterference::Off => {
+                out.warnings.push(Diagnostic::warning(
+                    "cutter-interference",
+                    b.span,
+                    format!(
+                        "interference: {what}; with the check off (setting cutter_interference_check) the tool cuts into the part here"
+                    ),
+                ));
+                out.note(|| format!("interference: {what} (check off: overcut)"));
+            }
         }
         Ok(())
     }
