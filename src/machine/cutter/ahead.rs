@@ -17,14 +17,7 @@ impl Machine {
     /// will run them, until one moves in the plane, past at most
     /// `cutter_blocks_without_motion` blocks that do not.
     pub(super) fn cutter_next(&self, ahead: &mut dyn Ahead, out: &mut Out) -> Next {
-        let mut scratch = out.scratch.take().unwrap_or_default();
-        scratch.quiet = true;
-        let next = self.read_next(ahead, &mut scratch);
-        out.scratch = Some(scratch);
-        next
-    }
-
-    pub(super) fn read_next(&self, ahead: &mut dyn Ahead, scratch: &mut Out) -> Next {
+        // A plain move next (most blocks) needs no copy and no scratch.
         if let Some(next) = ahead.peek(0)
             && let Some(path) = self.plain_next_path(next, self.state.modal.motion)
         {
@@ -35,6 +28,16 @@ impl Machine {
         if let Some(next) = self.plain_past_still(ahead) {
             return next;
         }
+        let mut scratch = out.scratch.take().unwrap_or_default();
+        scratch.quiet = true;
+        let next = self.read_next(ahead, &mut scratch);
+        out.scratch = Some(scratch);
+        next
+    }
+
+    /// [`Machine::cutter_next`] where the words alone do not tell: the
+    /// blocks run on a copy of the machine.
+    fn read_next(&self, ahead: &mut dyn Ahead, scratch: &mut Out) -> Next {
         let limit = usize::from(self.setup.settings.cutter_blocks_without_motion());
         let mut probe = self.clone();
         probe.reading_ahead = true;
