@@ -170,15 +170,23 @@ impl<'r> Ahead for Peek<'r, '_> {
         let mut k = k;
         if let Some(batch) = batch {
             let block_skip = self.reader.block_skip;
-            let mut runs = batch.iter().filter(|b| !(b.skip && block_skip));
-            let mut count = 0;
-            for b in runs.by_ref() {
-                if count == k {
+            // Without the block skip switch every block of the batch runs:
+            // the k-th is at hand (cutter compensation asks at every block).
+            if !block_skip {
+                if let Some(b) = batch.get(k) {
                     return Some(b);
                 }
-                count += 1;
+                k -= batch.len();
+            } else {
+                let mut count = 0;
+                for b in batch.iter().filter(|b| !b.skip) {
+                    if count == k {
+                        return Some(b);
+                    }
+                    count += 1;
+                }
+                k -= count;
             }
-            k -= count;
         }
         while self.reader.blocks.len() <= k {
             if !self.read_one() {
