@@ -210,7 +210,7 @@ impl Points {
 }
 
 /// The points where two offset paths meet (none, one or two).
-#[inline]
+#[inline(always)]
 fn crossings(a: Offset, b: Offset) -> Points {
     match (a, b) {
         (Offset::Line { point: p, dir: d }, Offset::Line { point: q, dir: e }) => {
@@ -408,7 +408,7 @@ impl Corner {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn points(kind: Kind, alpha: (f64, f64, bool), points: &[P2]) -> Corner {
         // Written in place (a corner is made at every block in offset mode).
         let mut c = Corner {
