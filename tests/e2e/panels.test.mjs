@@ -216,17 +216,17 @@ describe('settings', () => {
       assert.deepEqual(JSON.parse(await json.inputValue()), { machine: 'mill', offsets: { '01': 6 } });
       await json.fill('{ "machine": "mill", "offsets": { "01": 3, "07": 1.5 }, "settings": { "mirror": ["y"] } }');
       await waitForRun(page);
-      assert.equal(await field(page, 1, 'geometry').inputValue(), '3');
-      assert.equal(await field(page, 7, 'geometry').inputValue(), '1.5');
+      assert.equal(await field(page, 1, 'value').inputValue(), '3');
+      assert.equal(await field(page, 7, 'value').inputValue(), '1.5');
       assert.equal(await page.getByLabel('Mirror Y').isChecked(), true);
       // Not JSON: the reason is shown, the run reports the setup error, the form keeps its values.
       await json.fill('{ "offsets": ');
       await waitForRun(page);
       assert.match(await page.locator('#setup-reason').textContent(), /Not valid JSON/);
       assert.match(await page.locator('#diagnostics .code').first().textContent(), /setup-syntax/);
-      assert.equal(await field(page, 1, 'geometry').inputValue(), '3');
+      assert.equal(await field(page, 1, 'value').inputValue(), '3');
       // The form wins again: a form edit rewrites the document.
-      await field(page, 1, 'geometry').fill('4');
+      await field(page, 1, 'value').fill('4');
       await waitForRun(page);
       assert.match(await page.locator('#summary').textContent(), /0 errors/);
       assert.equal(JSON.parse(await json.inputValue()).offsets['01'], 4);

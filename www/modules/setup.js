@@ -103,10 +103,10 @@ export function millRegister(setup, n) {
   let h = [0, 0];
   let d = null;
   if (typeof v === 'number') h = [v, 0];
-  else if (v && ('h' in v || 'h_wear' in v || 'd' in v || 'd_wear' in v)) {
+  else if (v && typeof v === 'object' && ('h' in v || 'h_wear' in v || 'd' in v || 'd_wear' in v)) {
     h = [Number(v.h ?? 0), Number(v.h_wear ?? 0)];
     d = [Number(v.d ?? 0), Number(v.d_wear ?? 0)];
-  } else if (v) h = [Number(v.geometry ?? 0), Number(v.wear ?? 0)];
+  } else if (v && typeof v === 'object') h = [Number(v.geometry ?? 0), Number(v.wear ?? 0)];
   d = d ?? h;
   return {
     value: clean(h[0] + h[1]), geometry: h[0], wear: h[1], h: h[0], h_wear: h[1], d: d[0], d_wear: d[1],
