@@ -4,7 +4,7 @@
 
 use super::{Next, Why, add3, returns, sub3};
 use crate::machine::arc::{self};
-use crate::machine::mill::MOTION_WORDS;
+use crate::machine::words::MOTION_WORDS;
 use crate::machine::{Ahead, Machine, NoneAhead, Out};
 use crate::offsets::cutter::geometry::{self as geo, Path};
 use crate::setup::CutterCancelWithoutMotion;

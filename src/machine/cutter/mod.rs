@@ -19,8 +19,8 @@ mod codes;
 mod corners;
 
 use super::arc::P2;
-use super::mill::MOTION_WORDS;
 use super::modal::FeedMode;
+use super::words::MOTION_WORDS;
 use super::{Ahead, Machine, Move, MoveKind, Out};
 use crate::diag::Diagnostic;
 use crate::geometry::Xyz;
