@@ -88,6 +88,13 @@ pub struct ViewState {
     /// Offset of the view centre from the fitted centre.
     #[serde(default)]
     pub pan: [f64; 2],
+    /// The band the cutter sweeps is drawn (behaviour 16.20); absent: no.
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub swept: bool,
+}
+
+fn is_false(b: &bool) -> bool {
+    !*b
 }
 
 impl Default for ViewState {
@@ -96,6 +103,7 @@ impl Default for ViewState {
             plane: ViewPlane::XY,
             zoom: 1.0,
             pan: [0.0, 0.0],
+            swept: false,
         }
     }
 }

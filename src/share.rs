@@ -52,6 +52,7 @@ pub const PLAIN_KEYS: &[&str] = &[
     "plane",
     "zoom",
     "pan",
+    "swept",
     "step",
     "embed",
 ];
@@ -242,6 +243,9 @@ pub fn encode_plain(doc: &Document, embed: bool) -> String {
         }
         if v.pan != [0.0, 0.0] {
             parts.push(format!("pan={},{}", v.pan[0], v.pan[1]));
+        }
+        if v.swept {
+            parts.push("swept=1".to_owned());
         }
     }
     if let Some(step) = doc.step {
@@ -511,6 +515,13 @@ fn decode_plain(fragment: &str) -> Result<Link, LinkError> {
                 view.get_or_insert_with(ViewState::default).pan =
                     [number(key, p[0])?, number(key, p[1])?];
             }
+            "swept" => {
+                view.get_or_insert_with(ViewState::default).swept = match v.trim() {
+                    "1" | "true" | "on" => true,
+                    "0" | "false" | "off" => false,
+                    _ => return Err(bad(key, v, "1 or 0")),
+                }
+            }
             "step" => {
                 doc.step = Some(
                     v.trim()
@@ -601,6 +612,7 @@ mod tests {
                 plane: ViewPlane::XY,
                 zoom: 2.0,
                 pan: [5.0, -5.0],
+                swept: true,
             }),
             step: Some(1),
         }

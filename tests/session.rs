@@ -615,3 +615,64 @@ fn behaviour16_13_the_cutter_is_drawn_round_the_tool_while_g41_is_on() {
     s.set_step(6);
     assert_eq!(s.scene().cutter, None);
 }
+
+#[test]
+fn behaviour16_20_the_swept_width_is_drawn_under_the_current_block_when_asked() {
+    // D01 = 5 round a square with G41 (the program of 16.13). Block 2
+    // (Y40.) is on the left side of the square, the cutter on its left: its
+    // centre runs X-5 from (-5, 0) (the start-up's vector, perpendicular to
+    // Y40.) to the corner (-5, 45) before X60. The band is that line
+    // stroked 2·R = 2 × 5 = 10 mm wide, i.e. 10 × scale pixels.
+    let mut s = Session::new();
+    let text =
+        "G00 X-20. Y-20.\nG01 G41 D01 X0 Y0 F100.\nY40.\nX60.\nY0\nX0\nG40 X-20. Y-20.\nM30\n";
+    run(&mut s, text, Some(r#"{"offsets":{"01":5.0}}"#));
+    s.set_step(2);
+    let draw = |s: &Session| {
+        let mut svg = SvgSurface::new();
+        let frame = render::draw_scene(&mut svg, s.toolpath(), s.scene(), 640.0, 480.0);
+        (frame, svg.finish(640.0, 480.0))
+    };
+    // Off by default: no band, in the document neither.
+    assert!(!s.scene().swept);
+    let (_, off) = draw(&s);
+    assert!(!off.contains("class=\"swept\""), "a band while off");
+    assert!(!s.document().to_json().contains("swept"));
+    let v = s.set_view(&view_change(r#"{"swept":true}"#));
+    assert_eq!(v.swept, Some(true));
+    let (frame, on) = draw(&s);
+    let width = 2.0 * 5.0 * frame.transform.scale;
+    let band = on
+        .split("<g class=\"swept\">")
+        .nth(1)
+        .and_then(|rest| rest.split("</g>").next())
+        .expect("a swept group");
+    let num = |v: f64| {
+        let t = format!("{v:.2}");
+        t.trim_end_matches('0').trim_end_matches('.').to_owned()
+    };
+    assert!(
+        band.contains(&format!("stroke-width=\"{}\"", num(width))),
+        "{band}"
+    );
+    assert!(band.contains(render::style::LIGHT.swept), "{band}");
+    let (x0, y0) = frame.transform.to_screen(-5.0, 0.0);
+    let (x1, y1) = frame.transform.to_screen(-5.0, 45.0);
+    assert!(
+        band.contains(&format!("M{} {}", num(x0), num(y0)))
+            && band.contains(&format!("{} {}", num(x1), num(y1))),
+        "{band}"
+    );
+    // Under the paths: the band comes before the actual path.
+    assert!(on.find("class=\"swept\"") < on.find("class=\"actual\""));
+    // Carried by the document, and only when on.
+    let doc = s.document();
+    assert!(doc.view.as_ref().is_some_and(|v| v.swept));
+    assert!(doc.to_json().contains("\"swept\":true"));
+    // Another plane than the compensation's, or no compensation: no band.
+    s.set_view(&view_change(r#"{"plane":"XZ"}"#));
+    assert!(!draw(&s).1.contains("class=\"swept\""));
+    s.set_view(&view_change(r#"{"plane":"XY"}"#));
+    s.set_step(7);
+    assert!(!draw(&s).1.contains("class=\"swept\""));
+}

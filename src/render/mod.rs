@@ -390,6 +390,9 @@ fn draw_scene_as(
     // A layer kept from a drawing of the same paths at the same place (a
     // run whose path did not change: an edit of an N number, a comment, a
     // feed) is that drawing; during a gesture it is moved and scaled.
+    // The swept band is vectors under the paths, never on their kept layer
+    // (behaviour 16.20).
+    paths::draw_swept(surface, &frame, toolpath, scene, split);
     let reused = large && surface.reuse_layer(&frame.transform, !moving);
     let moved = reused && moving;
     if reused {

@@ -92,6 +92,50 @@ pub(super) fn draw_paths(
     }
 }
 
+/// At most this many moves of the current block are swept (behaviour
+/// 16.20): a block is a handful of moves, and a bound keeps any frame fast.
+pub(super) const MAX_SWEPT_MOVES: usize = 4096;
+
+/// The band the cutter sweeps along the current block's actual moves
+/// (behaviour 16.20): the tool centre's path stroked 2·R wide on screen,
+/// translucent, when the view is the compensation's plane. Vectors on the
+/// surface, drawn before (so under) the paths.
+pub(super) fn draw_swept(
+    pen: &mut impl Pen,
+    frame: &Frame,
+    tp: &Toolpath,
+    scene: &Scene,
+    split: usize,
+) {
+    let (Some(step), Some(cutter), true) = (scene.step, scene.cutter, scene.swept) else {
+        return;
+    };
+    if cutter.plane != frame.plane {
+        return;
+    }
+    let width = 2.0 * cutter.radius * frame.transform.scale;
+    if !(width.is_finite() && width > 0.0) {
+        return;
+    }
+    let first = tp.blocks.partition_point(|&b| b < step).min(split);
+    let moves = first..split.min(first + MAX_SWEPT_MOVES);
+    if moves.is_empty() {
+        return;
+    }
+    let stroke = Stroke {
+        color: frame.theme.swept,
+        width,
+        dash: &[],
+    };
+    pen.begin_group("swept");
+    // One stroke for rapid and feed moves alike: the band is the cutter's.
+    let begun = trace(pen, frame, tp, (false, true), moves.clone(), &stroke, false);
+    if trace(pen, frame, tp, (false, false), moves, &stroke, begun) {
+        pen.stroke();
+    }
+    pen.end_group();
+}
+
 /// One path (one stroke) drawn on `s` (for the tests: [`draw_paths`]
 /// draws a scene's): the moves of `range` on the
 /// programmed or the actual path, rapid ones with one stroke, the others

@@ -49,6 +49,9 @@ pub struct Scene {
     /// The cutter of cutter radius compensation at the current block
     /// (behaviour 16.13), drawn round the tool marker in its plane.
     pub cutter: Option<Cutter>,
+    /// Draw the band the cutter sweeps along the current block (behaviour
+    /// 16.20): off unless asked for.
+    pub swept: bool,
     /// Colours.
     pub theme: &'static Theme,
 }
@@ -62,6 +65,7 @@ impl Default for Scene {
             step: None,
             marker: None,
             cutter: None,
+            swept: false,
             theme: &LIGHT,
         }
     }

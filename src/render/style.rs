@@ -165,6 +165,8 @@ pub struct Theme {
     pub tool: &'static str,
     /// Under the current block's moves.
     pub highlight: &'static str,
+    /// The band the cutter sweeps (behaviour 16.20), under the paths.
+    pub swept: &'static str,
 }
 
 /// The light scheme (the constants above).
@@ -187,6 +189,7 @@ pub const LIGHT: Theme = Theme {
     arrow: "#c2255c",
     tool: "#2b8a3e",
     highlight: "rgba(252, 196, 25, 0.55)",
+    swept: "rgba(43, 138, 62, 0.22)",
 };
 
 /// The dark scheme: the same hues, lighter, on a dark background.
@@ -209,6 +212,7 @@ pub const DARK: Theme = Theme {
     arrow: "#f783ac",
     tool: "#51cf66",
     highlight: "rgba(252, 196, 25, 0.35)",
+    swept: "rgba(81, 207, 102, 0.22)",
 };
 
 impl Theme {

@@ -387,8 +387,15 @@ impl Session {
             let r = (p * 1e4).round() / 1e4;
             if r == 0.0 { 0.0 } else { r }
         });
-        let view = (plane != default_plane || zoom != 1.0 || pan != [0.0, 0.0])
-            .then_some(ViewState { plane, zoom, pan });
+        let swept = scene.swept;
+        let view = (plane != default_plane || zoom != 1.0 || pan != [0.0, 0.0] || swept).then_some(
+            ViewState {
+                plane,
+                zoom,
+                pan,
+                swept,
+            },
+        );
         Document {
             setup: self.last.setup.clone(),
             program: self.last.text.clone(),

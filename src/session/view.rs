@@ -30,6 +30,10 @@ pub struct ViewChange {
     /// The current block (None: none; set: negative clears it).
     #[serde(default)]
     pub step: Option<i64>,
+    /// Draw the band the cutter sweeps along the current block while
+    /// G41/G42 is on (behaviour 16.20).
+    #[serde(default)]
+    pub swept: Option<bool>,
 }
 
 /// A frame asked for, its sizes clamped to what a canvas can be.
@@ -210,6 +214,7 @@ impl View {
             zoom: Some(self.scene.zoom),
             pan: Some(self.scene.pan),
             step: self.scene.step.map(i64::from),
+            swept: Some(self.scene.swept),
         }
     }
 
@@ -224,6 +229,9 @@ impl View {
         }
         if let Some(pan) = change.pan {
             self.scene.set_pan(pan);
+        }
+        if let Some(swept) = change.swept {
+            self.scene.swept = swept;
         }
         if let Some(step) = change.step {
             self.set_step(run, i32::try_from(step).unwrap_or(i32::MAX));

@@ -4,7 +4,8 @@
 // drawn up to it), the offset table's columns per offset memory type and
 // the lathe's nose radius and tip, carried by links, and the registers a
 // program set with G10 shown apart from the user's.
-// Screenshots: lesson-cutter-contour.png, lesson-cutter-pocket.png,
+// Screenshots: lesson-cutter-contour.png, lesson-cutter-contour-swept.png,
+// lesson-cutter-pocket.png,
 // lesson-offsets-c-g10.png, lesson-offsets-lathe.png.
 
 import assert from 'node:assert/strict';
@@ -77,6 +78,33 @@ describe('cutter compensation lessons', () => {
       await cursorOn(page, n65);
       await waitForView(page, (v, s) => v.step === s, n65 - 3);
       assert.match(await stateText(page, 'cutter'), /^G40 · D01 = 5\.000 · cancel \(this block\)$/);
+    });
+  });
+
+  test('the outside contour: the swept width band drawn when ticked', async () => {
+    await withPage(async (page) => {
+      await loadExample(page, 'cutter-contour');
+      // The light theme's band, rgba(43, 138, 62, 0.22) on white:
+      // 255 − 0.22 × (255 − c) per channel = (208, 229, 212).
+      const band = [208, 229, 212];
+      const n40 = await lineOf(page, 'N40');
+      await cursorOn(page, n40);
+      await waitForView(page, (v, s) => v.step === s, n40 - 3);
+      assert.ok(await page.locator('#swept-option').isVisible(), 'offered on the mill');
+      assert.equal(await page.locator('#swept').isChecked(), false, 'off by default');
+      const plain = await shootCanvas(page, 'lesson-cutter-contour-unswept', (_, p) => countColor(p, MARKS.tool) > 50);
+      const before = countColor(plain.png, band, { tolerance: 12 });
+      await page.locator('#swept').check();
+      await waitForView(page, (v) => v.swept === true);
+      // N40's arc R10 swept by a cutter of radius 5: a band 10 mm wide
+      // along a quarter circle of radius 15, hundreds of pixels of it.
+      const { png } = await shootCanvas(page, 'lesson-cutter-contour-swept',
+        (_, p) => countColor(p, band, { tolerance: 12 }) > before + 300);
+      assert.ok(countColor(png, band, { tolerance: 12 }) > before + 300, 'the band is drawn');
+      // The document carries it.
+      assert.equal((await page.evaluate(() => window.offsetlab.viewState())).swept, true);
+      await page.locator('#swept').uncheck();
+      await waitForView(page, (v) => v.swept === undefined);
     });
   });
 

@@ -14,7 +14,8 @@ let post = () => {};
 let state = { plane: 'XY', zoom: 1, pan: [0, 0], step: null };
 const listeners = new Set();
 
-/** The view state last drawn: { plane, zoom, pan: [u, v], step }. */
+/** The view state last drawn: { plane, zoom, pan: [u, v], step }, and
+ * `swept: true` while the cutter's swept width is drawn (behaviour 16.20). */
 export function viewState() {
   return { ...state, pan: [...state.pan] };
 }
@@ -28,8 +29,12 @@ export function onViewChange(f) {
 /** Called with each state message of the worker. */
 export function viewReported(view) {
   state = { plane: view.plane, zoom: view.zoom, pan: view.pan, step: view.step };
+  // Only when on, so the documents and links of views without it stay as they were.
+  if (view.swept) state.swept = true;
   const select = document.getElementById('plane');
   if (select && select.value !== state.plane) select.value = state.plane;
+  const swept = document.getElementById('swept');
+  if (swept) swept.checked = Boolean(view.swept);
   document.body.dataset.view = JSON.stringify(state);
   for (const f of listeners) f(viewState());
 }
@@ -37,8 +42,11 @@ export function viewReported(view) {
 /** The lathe's views: ZX, and XC, the face of polar coordinate interpolation. */
 const LATHE_PLANES = new Set(['ZX', 'XC']);
 
-/** Shows the planes the machine has (mill: XY XZ YZ; lathe: ZX and the face, XC). */
+/** Shows the planes the machine has (mill: XY XZ YZ; lathe: ZX and the face, XC),
+ * and the swept width option on the mill only (cutter compensation is the mill's). */
 export function setMachinePlanes(machine) {
+  const option = document.getElementById('swept-option');
+  if (option) option.hidden = machine === 'lathe';
   const select = document.getElementById('plane');
   for (const option of select.options) {
     const lathe = LATHE_PLANES.has(option.value);
@@ -62,6 +70,9 @@ export function initView(canvas, postMessage) {
   document.getElementById('fit').addEventListener('click', () => send('fit'));
   document.getElementById('plane').addEventListener('change', (event) => {
     send('plane', { plane: event.target.value });
+  });
+  document.getElementById('swept').addEventListener('change', (event) => {
+    send('set', { view: { swept: event.target.checked } });
   });
 }
 
