@@ -280,11 +280,19 @@ mod tests {
                 plane: ViewPlane::ZX,
                 zoom: 2.5,
                 pan: [1.0, -2.0],
+                swept: true,
             }),
             step: Some(1),
         };
         assert_eq!(Document::from_json(&d.to_json()).unwrap(), d);
         assert_eq!(Document::from_json(&d.to_json_pretty()).unwrap(), d);
+        // The swept width is written only when on (behaviour 16.20).
+        assert!(d.to_json().contains("\"swept\":true"));
+        let off = ViewState {
+            swept: false,
+            ..ViewState::default()
+        };
+        assert!(!serde_json::to_string(&off).unwrap().contains("swept"));
     }
 
     #[test]
