@@ -117,7 +117,9 @@ impl Machine {
     /// makes no move in the plane, or its arc needs the machine's checks:
     /// the copy reads it then.
     pub(super) fn plain_next_path(&self, b: &Block) -> Option<Path> {
+        // The lathe's blocks (diameter X, U/W) are read on the copy.
         if b.error
+            || self.nose_lathe()
             || !self.plain_words
             || self.state.modal.cycle.is_some()
             || !b.holds_only(&MOTION_WORDS, &[Group::Motion])
