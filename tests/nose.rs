@@ -296,3 +296,29 @@ fn behaviour18_10_every_block_reports_r_tip_mode_and_vector() {
     let cancel = explain(&r, 4);
     assert!(cancel.contains("G40 cancel"), "{cancel}");
 }
+
+#[test]
+fn behaviour18_11_the_nose_fixture_turns_a_profile_and_bores_with_two_tools() {
+    // tests/data/nose.nc: offset 01 X0.4 Z−0.2 R0.8 tip 3, offset 02 X−0.3
+    // Z0.15 R0.4 tip 2 (also run by tests/rerun.rs and tests/checkpoints.rs).
+    let (text, setup) = fixture("nose");
+    let r = ok(&text, &setup);
+    // N20 (line 5), start-up: the face N25 goes +X at Z0, the centre 0.8 to
+    // its right (+Z): (Z 0.8, X 0); tip 3 moves it by (−0.8, −0.8): Z 0,
+    // X −1.6 as a diameter; the T offset adds X 0.4, Z −0.2.
+    same(end(&r, 5), [-1.2, 0.0, -0.2]);
+    // N35 (line 8) ends tangent to the arc N40: the centre 0.8 above
+    // (Z −20, X radius 20.8), tip 3: (Z −20.8, X radius 20), + T: X 40.4,
+    // Z −21.
+    same(end(&r, 8), [40.4, 0.0, -21.0]);
+    // N70 (line 15), the bore at X20 then in to X16 at Z−20 (G41, tip 2):
+    // heading −Z then (−5, −2): a left turn toward the tool, inside; the
+    // offset line x = 10 − 0.4 = 9.6 meets the taper's offset line. The
+    // taper from (−15, 10) to (−20, 8), direction (−5, −2)/√29, left
+    // normal (2, −5)/√29: points with (z + 15)·2 − (x − 10)·5 = 0.4·√29 =
+    // 2.154066; at x = 9.6: 2z + 30 + 2 = 2.154066, z = −14.922967. Tip 2
+    // moves by (−0.4, +0.4): Z −15.322967, X radius 10, + T: X 19.7,
+    // Z −15.172967.
+    same(end(&r, 15), [19.7, 0.0, -15.172967]);
+    assert!(explain(&r, 13).contains("tip 2"), "{}", explain(&r, 13));
+}

@@ -21,7 +21,7 @@ use offsetlab::{
 };
 use proptest::prelude::*;
 
-const FIXTURES: [&str; 13] = [
+const FIXTURES: [&str; 14] = [
     "contour_g45",
     "coordinates",
     "corners",
@@ -33,6 +33,7 @@ const FIXTURES: [&str; 13] = [
     "inch_plate",
     "lathe_cycles",
     "lathe_taper",
+    "nose",
     "pocket_g43_drill",
     "polar",
 ];
