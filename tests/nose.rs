@@ -270,6 +270,9 @@ fn behaviour18_9_what_the_mode_refuses() {
     let text = "T0101\nG00 X40. Z2.\nG42 G01 Z0 F0.1\nZ-20. T0202\n";
     let (code, line, column, _) = alarm(text, &s);
     assert_eq!((code, line, column), ("nose-t-change", 4, 7));
+    // Another plane than ZX (G17 is polar interpolation's face plane).
+    let (code, line, _, _) = alarm("G17\nT0101\nG42 G01 X10. Z0 F0.1\n", &s);
+    assert_eq!((code, line), ("nose-plane", 3));
     // Start-up in an arc (Fanuc PS0034).
     let text = "T0101\nG00 X40. Z2.\nG42 G02 X50. Z-3. R5. F0.1\n";
     assert_eq!(alarm(text, &s).0, "cutter-arc");

@@ -135,17 +135,21 @@ impl Machine {
     /// A point in the compensation plane (on the lathe X as a radius).
     pub(super) fn in_plane(&self, p: Xyz) -> P2 {
         let (ia, ib, _) = self.state.modal.plane.axes();
-        let s = self.plane_scale();
-        [p[ia] * s[0], p[ib] * s[1]]
+        if self.nose_lathe() {
+            return [p[ia], p[ib] * 0.5];
+        }
+        [p[ia], p[ib]]
     }
 
     /// The programmed path of a move in the plane, None when it does not
     /// move in the plane. `shift` takes its coordinates into the running
     /// block's work coordinates.
     pub(super) fn move_path(&self, m: &Move, shift: Xyz) -> Option<Path> {
+        if self.nose_lathe() {
+            return self.nose_move_path(m, shift);
+        }
         let (ia, ib, _) = self.state.modal.plane.axes();
-        let s = self.plane_scale();
-        let at = |p: Xyz| [(p[ia] + shift[ia]) * s[0], (p[ib] + shift[ib]) * s[1]];
+        let at = |p: Xyz| [p[ia] + shift[ia], p[ib] + shift[ib]];
         let (from, to) = (at(m.programmed_from), at(m.programmed_to));
         match (&m.arc, m.kind) {
             (Some(info), MoveKind::ArcCw | MoveKind::ArcCcw) => Some(Path::Arc {
@@ -233,9 +237,7 @@ impl Machine {
         let saved = before.vector;
         self.state.cutter.vector = [0.0; 3];
         let ran = if lathe {
-            // The cycles that read the program are refused above
-            // (`nose_checks`).
-            self.lathe_run(b, out, &mut super::program::NoText)
+            self.nose_run(b, out)
         } else if b.holds_only(&MOTION_WORDS, &[Group::Motion])
             && self.state.modal.feed_mode != FeedMode::InverseTime
         {

@@ -36,8 +36,49 @@ impl Machine {
         }
     }
 
+    /// A lathe block as tool nose radius compensation runs it, out of the
+    /// mill's way (the mill's compensation is the 1M-block G41 benchmark's
+    /// path, docs/performance.md). The cycles that read the program again
+    /// are refused before (`nose_checks`), so no program text is needed.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn nose_run(
+        &mut self,
+        b: &Block,
+        out: &mut crate::machine::Out,
+    ) -> Result<(), Diagnostic> {
+        self.lathe_run(b, out, &mut crate::machine::program::NoText)
+    }
+
+    /// [`Machine::move_path`] on the lathe: the programmed path of a move
+    /// in the plane, X as a radius (behaviour 18.1).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn nose_move_path(
+        &self,
+        m: &crate::machine::Move,
+        shift: crate::geometry::Xyz,
+    ) -> Option<crate::offsets::cutter::geometry::Path> {
+        use crate::machine::MoveKind;
+        use crate::offsets::cutter::geometry::{Path, dist};
+        // The ZX plane (`nose_checks` refuses another): (Z, X radius).
+        let at = |p: crate::geometry::Xyz| [p[2] + shift[2], (p[0] + shift[0]) * 0.5];
+        let (from, to) = (at(m.programmed_from), at(m.programmed_to));
+        match (&m.arc, m.kind) {
+            (Some(info), MoveKind::ArcCw | MoveKind::ArcCcw) => Some(Path::Arc {
+                from,
+                to,
+                center: at(info.programmed_center),
+                ccw: info.programmed_sweep > 0.0,
+            }),
+            _ if dist(from, to) > 1e-9 => Some(Path::Line { from, to }),
+            _ => None,
+        }
+    }
+
     /// The nose radius of the active T code's offset register (geometry +
     /// wear, mm; 0 with offset 00) and its tip direction (behaviour 18.1).
+    #[inline(never)]
     pub(super) fn nose_register(&self) -> (f64, u8) {
         let n = self.state.lathe.offset;
         if n == 0 {
@@ -66,6 +107,7 @@ impl Machine {
     /// (behaviour 18.7, 18.8): the single cycles G90/G92/G94 and the
     /// multiple repetitive cycles G70–G73 while G41/G42 is the mode or its
     /// vector is on, a T code naming another offset, polar interpolation.
+    #[inline(never)]
     pub(super) fn nose_checks(&self, b: &Block) -> Result<(), Diagnostic> {
         let now = self.state.cutter;
         let codes = b.codes();
@@ -117,6 +159,17 @@ impl Machine {
                     "T{:04}: a new offset number while {name} is on changes the nose radius and tip under the compensation, which is not modelled: cancel with G40 first",
                     t.int()
                 ),
+            ));
+        }
+        // Compensation works in the ZX plane, X as a radius (18.1); G17 is
+        // the face plane of polar interpolation only.
+        if codes.plane().unwrap_or(self.state.modal.plane) != crate::machine::modal::Plane::ZX
+            && !self.in_polar_mode(b)
+        {
+            return Err(self.error(
+                "nose-plane",
+                b.code_span(Group::Plane),
+                format!("{name}: tool nose radius compensation works in the ZX plane (G18)"),
             ));
         }
         if self.in_polar_mode(b) {
