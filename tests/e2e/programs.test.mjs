@@ -12,6 +12,20 @@ import {
 
 const { withPage } = useBrowser();
 
+const FACE = `O2002 (POLAR INTERPOLATION: A SQUARE ON THE FACE)
+T0100
+G98 G00 X40. Z2.
+G01 Z-1. F100.
+G12.1
+G01 X20. C-10.
+C10.
+X-20.
+C-10.
+X20.
+G13.1
+G00 Z5.
+M30`;
+
 /** Puts the cursor on `line` (1-based): the current block follows it. */
 async function cursorOn(page, line) {
   await page.locator('.cm-line').nth(line - 1).click();
@@ -135,6 +149,28 @@ describe('real programs', () => {
       await page.locator('#step-last').click();
       const { png } = await shootCanvas(page, 'mill-g52-g68-g16', (_, p) => countColor(p, COLORS.actualFeed) > 200);
       assert.ok(countColor(png, COLORS.actualFeed) > 200);
+    });
+  });
+
+  test('a lathe face contour in G12.1 is drawn in the face view XC, the machine C and X in the state panel', async () => {
+    await withPage(async (page) => {
+      await page.getByLabel('Machine').selectOption('lathe');
+      await page.getByLabel('Control').selectOption('fanuc');
+      await waitForRun(page);
+      await typeProgram(page, FACE);
+      await waitForRun(page);
+      assert.match(await page.locator('#summary').textContent(), /0 errors/);
+      // C10. from (10, -10): C turns +90° to 45°, X is 2 × √200 = 28.284
+      // (behaviour 14.16); T0100 takes no offset, so one move a side.
+      await cursorOn(page, 7);
+      await waitForView(page, (v) => v.step === 6);
+      assert.match(await stateText(page, 'polar'), /C45\.000° from its place at G12\.1 · X28\.284 \(radius 14\.142\)/);
+      assert.match(await page.locator('#state-panel .explanation').textContent(), /G01 in the XC plane of the face: a line to X20\.000 C10\.000/);
+      await page.locator('#plane').selectOption('XC');
+      await waitForView(page, (v) => v.plane === 'XC');
+      await page.locator('#step-last').click();
+      const { png } = await shootCanvas(page, 'lathe-g12-1-face-xc', (_, p) => countColor(p, COLORS.actualFeed) > 200);
+      assert.ok(countColor(png, COLORS.actualFeed) > 200, 'the square is drawn on the face');
     });
   });
 });
