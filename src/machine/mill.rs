@@ -16,20 +16,7 @@ use crate::syntax::Address;
 use crate::syntax::Block;
 use crate::syntax::codes::{CannedCycle, Group, NonModal, PositionOffset};
 
-/// The words of a block that only moves: sequence number, G codes of group
-/// 01, axes, arc centre and radius, feed ([`Machine::motion_block`]).
-pub(super) const MOTION_WORDS: [Address; 10] = [
-    Address::N,
-    Address::G,
-    Address::X,
-    Address::Y,
-    Address::Z,
-    Address::I,
-    Address::J,
-    Address::K,
-    Address::R,
-    Address::F,
-];
+use super::words::MOTION_WORDS;
 
 impl Machine {
     /// A mill block. `ahead` gives the blocks after it to the rules that need

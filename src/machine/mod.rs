@@ -9,6 +9,7 @@
 //! positions.
 
 pub mod arc;
+mod arcs;
 mod coords;
 mod corner;
 mod cutter;
@@ -28,10 +29,11 @@ pub mod state;
 mod transform;
 mod words;
 
+pub(crate) use arcs::ArcRequest;
 pub use state::{ArcInfo, BlockState, DataSet, EventKind, Move, MoveKind, PolarState};
 
 use crate::diag::{Diagnostic, Span};
-use crate::geometry::{Xyz, add, scale, to_units};
+use crate::geometry::{Xyz, add, scale};
 use crate::offsets::cutter::CutterState;
 use crate::offsets::lathe::LatheState;
 use crate::offsets::length::LengthState;
@@ -39,7 +41,6 @@ use crate::offsets::position::PositionState;
 use crate::setup::{MachineKind, Setup, Units};
 use crate::syntax::codes::{MCode, NonModal};
 use crate::syntax::{Address, Block};
-use arc::{ArcError, Circle};
 use modal::Modal;
 use std::sync::Arc;
 
@@ -702,133 +703,4 @@ impl Machine {
             None => Ok(()),
         }
     }
-
-    /// Builds the circle of an arc move for both paths (behaviour 2.12, 4.8).
-    fn arc_geometry(&self, b: &Block, req: &ArcRequest) -> Result<ArcInfo, Diagnostic> {
-        self.arc_geometry_in(b, req, self.state.modal.plane)
-    }
-
-    /// [`Machine::arc_geometry`] in a given plane (the face plane of polar
-    /// coordinate interpolation is the lathe's XY: behaviour 14.15).
-    fn arc_geometry_in(
-        &self,
-        b: &Block,
-        req: &ArcRequest,
-        plane: modal::Plane,
-    ) -> Result<ArcInfo, Diagnostic> {
-        let (ia, ib, _) = plane.axes();
-        let lathe = self.setup.machine == MachineKind::Lathe;
-        // The lathe's X is a diameter: its arcs are drawn in radius space.
-        let s = |axis: usize| if lathe && axis == 0 { 0.5 } else { 1.0 };
-        let to_plane = |p: Xyz| [p[ia] * s(ia), p[ib] * s(ib)];
-        let from_plane = |c: arc::P2, at: Xyz| {
-            let mut p = at;
-            p[ia] = c[0] / s(ia);
-            p[ib] = c[1] / s(ib);
-            p
-        };
-        let ccw = req.ccw;
-        let tol = match self.units() {
-            Units::Mm => 0.01,
-            Units::Inch => 0.0005 * 25.4,
-        };
-        let prog0 = self.state.programmed;
-        let act0 = self.actual();
-        let (p0, p1, a0, a1) = (
-            to_plane(prog0),
-            to_plane(req.target),
-            to_plane(act0),
-            to_plane(req.actual_end),
-        );
-        // When the offsets only move the arc (the same vector at both ends,
-        // nothing changed by G45–G48: nearly every arc), the actual circle is
-        // the programmed one moved by that vector; solving it again would
-        // only repeat the work.
-        let shift = [a0[0] - p0[0], a0[1] - p0[1]];
-        let moved = (a1[0] - p1[0] - shift[0]).abs() < 1e-9
-            && (a1[1] - p1[1] - shift[1]).abs() < 1e-9
-            && req.center_change == [0.0; 3]
-            && req.radius.is_none_or(|(_, dr)| dr == 0.0);
-        let prog = match req.radius {
-            Some((r, _)) => arc::from_radius(p0, p1, r, ccw, tol),
-            None => {
-                let c = req.center;
-                arc::from_center(p0, p1, [p0[0] + c[ia], p0[1] + c[ib]], ccw, tol)
-            }
-        };
-        let act = match (moved, &prog, req.radius) {
-            (true, Ok(circle), _) => Ok(Circle {
-                center: [circle.center[0] + shift[0], circle.center[1] + shift[1]],
-                ..*circle
-            }),
-            (_, _, Some((r, dr))) => arc::from_radius(a0, a1, r + dr, ccw, tol),
-            (_, _, None) => {
-                let c = req.center;
-                let dc = req.center_change;
-                let ac = [a0[0] + c[ia] + dc[ia], a0[1] + c[ib] + dc[ib]];
-                arc::from_center(a0, a1, ac, ccw, tol)
-            }
-        };
-        let unit = self.units();
-        let say = |e: ArcError, path: &str| -> String {
-            let d = unit.decimals();
-            let f = |v: f64| format!("{:.d$}", to_units(v, unit));
-            match e {
-                ArcError::RadiusMismatch { start, end } => format!(
-                    "the {path} arc's start is {} from its centre and its end {} (difference {} > {})",
-                    f(start),
-                    f(end),
-                    f((start - end).abs()),
-                    f(tol)
-                ),
-                ArcError::RadiusTooSmall { radius, half_chord } => format!(
-                    "the {path} arc's radius {} is less than half the distance from start to end ({})",
-                    f(radius),
-                    f(half_chord)
-                ),
-                ArcError::ZeroRadius => format!("the {path} arc's centre is its start point"),
-                ArcError::NoChord => format!(
-                    "the {path} arc's end is its start: an R arc makes no circle (a full circle needs the centre words)"
-                ),
-            }
-        };
-        let prog: Circle =
-            prog.map_err(|e| self.error("arc-radius", b.span, say(e, "programmed")))?;
-        let act: Circle = act.map_err(|e| {
-            let mut m = say(e, "actual");
-            m.push_str(
-                ": the offsets make this arc impossible (seed 003: build the arc from quarter circles whose ends lie on the axes through the centre)",
-            );
-            self.error("arc-radius", b.span, m)
-        })?;
-        Ok(ArcInfo {
-            plane,
-            center: from_plane(act.center, act0),
-            programmed_center: from_plane(prog.center, prog0),
-            radius: act.radius,
-            programmed_radius: prog.radius,
-            sweep: act.sweep,
-            programmed_sweep: prog.sweep,
-            start_angle: act.start_angle,
-            programmed_start_angle: prog.start_angle,
-            diameter_x: lathe,
-        })
-    }
-}
-
-/// What an arc block asks for, after offsets changed its words.
-#[derive(Clone, Copy, Debug, Default)]
-pub(crate) struct ArcRequest {
-    /// Programmed end point.
-    target: Xyz,
-    /// Actual end point.
-    actual_end: Xyz,
-    /// Counter-clockwise in the plane's frame (after mirror image).
-    ccw: bool,
-    /// Centre offsets I, J, K (mm, X/Y/Z order, after mirror image).
-    center: Xyz,
-    /// Changes G45–G48 made to I, J, K.
-    center_change: Xyz,
-    /// R (mm) and the change G45–G48 made to it.
-    radius: Option<(f64, f64)>,
 }

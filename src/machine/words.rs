@@ -27,6 +27,10 @@ use crate::syntax::{Address, Block, WordKind};
 
 use Address::*;
 
+/// The words of a block that only moves: sequence number, G codes of group
+/// 01, axes, arc centre and radius, feed ([`Machine::motion_block`]).
+pub(super) const MOTION_WORDS: [Address; 10] = [N, G, X, Y, Z, I, J, K, R, F];
+
 /// The kinds of block, by what the block does (its one-shot code, else its
 /// motion mode after the block's codes).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -73,6 +73,14 @@ impl<'t> Reader<'t> {
         }
         let next = self.for_index.and_then(|i| i.checked_add(1)) == Some(index);
         self.for_index = Some(index);
+        if self.blocks.is_empty() && self.side.is_none() {
+            // Nothing read past a batch: nothing to forget (cutter
+            // compensation asks at every block; the 1M-block `check` with
+            // G41, docs/performance.md).
+            self.done = false;
+            self.forked = forked;
+            return;
+        }
         if next && forked && self.forked && !self.blocks.is_empty() {
             self.blocks.pop_front();
             return;
@@ -162,15 +170,23 @@ impl<'r> Ahead for Peek<'r, '_> {
         let mut k = k;
         if let Some(batch) = batch {
             let block_skip = self.reader.block_skip;
-            let mut runs = batch.iter().filter(|b| !(b.skip && block_skip));
-            let mut count = 0;
-            for b in runs.by_ref() {
-                if count == k {
+            // Without the block skip switch every block of the batch runs:
+            // the k-th is at hand (cutter compensation asks at every block).
+            if !block_skip {
+                if let Some(b) = batch.get(k) {
                     return Some(b);
                 }
-                count += 1;
+                k -= batch.len();
+            } else {
+                let mut count = 0;
+                for b in batch.iter().filter(|b| !b.skip) {
+                    if count == k {
+                        return Some(b);
+                    }
+                    count += 1;
+                }
+                k -= count;
             }
-            k -= count;
         }
         while self.reader.blocks.len() <= k {
             if !self.read_one() {

@@ -134,19 +134,22 @@ fn on_two_threads(text: &str, setup: &Setup, options: RunOptions) -> Option<Run>
         let mut run_diagnostics: Vec<Diagnostic> = Vec::new();
         let mut warnings: Vec<(u32, Diagnostic)> = Vec::new();
         let options_parse = ParseOptions::from(setup);
-        for mut batch in filled.iter() {
+        for batch in filled.iter() {
             let then = batch.then.map(|at| (text, options_parse, at));
             for i in 0..batch.len {
                 let reported = batch.reported[i];
-                // The block runs from the runner (swapped in, not copied);
-                // the rest of the batch is what follows it.
-                let (head, rest) = batch.blocks[..batch.len].split_at_mut(i + 1);
-                std::mem::swap(&mut r.block, &mut head[i]);
+                // The block runs where the parser's thread read it (lent,
+                // not moved into the runner: a block is a few hundred bytes
+                // and the 1M-block `check`, target 6 in
+                // docs/performance.md, runs a million of them); the rest of
+                // the batch is what follows it.
+                let (head, rest) = batch.blocks[..batch.len].split_at(i + 1);
+                let block = &head[i];
                 let (index, first_move) = (r.index, r.move_count);
                 let from = From::Read { blocks: rest, then };
                 let mut ahead = r.ahead.at(index, from);
                 let step = super::execute(
-                    &r.block,
+                    block,
                     &mut r.machine,
                     &mut r.out,
                     &r.options,
@@ -157,21 +160,22 @@ fn on_two_threads(text: &str, setup: &Setup, options: RunOptions) -> Option<Run>
                 match step {
                     Some(Step::Ran(flow)) => {
                         let ran = (index, first_move, flow);
-                        r.account(
+                        super::account(
                             &mut result,
                             &mut totals,
                             &mut (),
+                            &r.options,
                             setup.machine,
+                            (block, &mut r.out, &r.machine),
                             ran,
-                            |_, w| warnings.push((reported, w)),
+                            |w| warnings.push((reported, w)),
                         );
                     }
                     Some(Step::Stopped(d)) => {
-                        stop(&mut result, &mut run_diagnostics, r.block.span.line, d);
+                        stop(&mut result, &mut run_diagnostics, block.span.line, d);
                     }
                     Some(Step::Passed) | None => {}
                 }
-                std::mem::swap(&mut r.block, &mut batch.blocks[i]);
             }
             // Gone only once the parser is done.
             let _ = give_back.send(batch);

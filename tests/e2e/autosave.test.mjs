@@ -95,9 +95,10 @@ const stored = (page, key) => page.evaluate((k) => JSON.parse(localStorage.getIt
 
 /** Asserts what the user sees of a mill setup with registers 01 = 5 and 02 = 95.3, W-0.05 and block skip on. */
 async function assertMillPanels(page) {
-  assert.equal(await page.locator('input[data-field="1.geometry"]').inputValue(), '5');
-  assert.equal(await page.locator('input[data-field="2.geometry"]').inputValue(), '95.3');
-  assert.equal(await page.locator('input[data-field="2.wear"]').inputValue(), '-0.05');
+  // The YASNAC profile's offset memory A: one value per number, a wear
+  // part of the document taken into it (behaviour 17.1): 95.3 - 0.05.
+  assert.equal(await page.locator('input[data-field="1.value"]').inputValue(), '5');
+  assert.equal(await page.locator('input[data-field="2.value"]').inputValue(), '95.25');
   assert.equal(await page.getByLabel('Block skip').isChecked(), true);
 }
 
@@ -105,7 +106,7 @@ describe('the autosave writes the document', () => {
   test('own work is saved as the document that `run --setup`, `link` and Open… (read_document) read, with program, setup, view and step', async () => {
     await withPage(async (page) => {
       await typeProgram(page, MILL_PROGRAM);
-      await page.locator('input[data-field="2.geometry"]').fill('4.5');
+      await page.locator('input[data-field="2.value"]').fill('4.5');
       await page.getByLabel('Block skip').check();
       await page.locator('#plane').selectOption('XZ');
       await page.locator('#zoom-in').click();
@@ -146,7 +147,7 @@ describe('the autosave writes the document', () => {
       await waitForRun(page);
       assert.match(await page.locator('#banner .text').textContent(), /^Opened “autosave\.json”\./);
       assert.equal(await page.evaluate(() => window.offsetlab.program()), MILL_PROGRAM);
-      assert.equal(await page.locator('input[data-field="2.geometry"]').inputValue(), '4.5');
+      assert.equal(await page.locator('input[data-field="2.value"]').inputValue(), '4.5');
       assert.equal(await page.getByLabel('Block skip').isChecked(), true);
       await waitForView(page, (v) => v.plane === 'XZ' && v.step === 1 && Math.abs(v.zoom - view.zoom) < 1e-5);
       // Opened from a file and untouched: the page's extra says so; the document is the same.
@@ -181,7 +182,7 @@ describe('the autosave writes the document', () => {
       await waitForRun(page);
       await page.locator('#advanced summary').click();
       assert.equal(await page.locator('#setup').inputValue(), typed);
-      assert.equal(await page.locator('input[data-field="1.geometry"]').inputValue(), '6');
+      assert.equal(await page.locator('input[data-field="1.value"]').inputValue(), '6');
       assert.equal(await page.evaluate(() => window.offsetlab.program()), SQUARE);
       // Mended: the extra goes.
       await page.locator('#setup').fill('{ "offsets": { "01": 7 } }');
@@ -206,7 +207,7 @@ describe('the autosave writes the document', () => {
       await page.locator('#restore-previous').click();
       await waitForRun(page);
       assert.equal(await page.evaluate(() => window.offsetlab.program()), SQUARE);
-      assert.equal(await page.locator('input[data-field="1.geometry"]').inputValue(), '7');
+      assert.equal(await page.locator('input[data-field="1.value"]').inputValue(), '7');
     });
   });
 });
@@ -316,7 +317,7 @@ describe('saved work of the first shape', () => {
           else assert.deepEqual(await viewOf(page), { plane: 'XY', zoom: 1, pan: [0, 0], step: null });
           if (name === 'setupText') {
             assert.equal(await page.locator('#setup').inputValue(), old.setupText);
-            assert.equal(await page.locator('input[data-field="1.geometry"]').inputValue(), '6');
+            assert.equal(await page.locator('input[data-field="1.value"]').inputValue(), '6');
             assert.match(await page.locator('#summary').textContent(), /stopped: bad setup/);
           }
           if (name === 'example') {

@@ -104,7 +104,9 @@ describe('view', () => {
       await waitForView(page, (v) => v.plane === 'YZ');
       await loadExample(page, 'lathe-taper');
       await waitForView(page, (v) => v.plane === 'ZX');
-      assert.equal(await page.locator('#plane').isDisabled(), true);
+      // The lathe's views: ZX and the face of polar interpolation, XC.
+      const shown = await page.locator('#plane option:not([hidden])').evaluateAll((os) => os.map((o) => o.value));
+      assert.deepEqual(shown, ['ZX', 'XC']);
       assert.match(await page.locator('#summary').textContent(), /0 errors · 0 warnings · lathe, mm/);
       // The offset table's four lathe columns fit the panel (the Z wear inputs ran past its right edge).
       const overflow = await page.evaluate(() => {
@@ -156,12 +158,14 @@ describe('examples', () => {
   test('each example sets its program, setup and note, and runs without errors; the previous work is one click away', async () => {
     await withPage(async (page) => {
       const ids = await page.locator('#example option').evaluateAll((os) => os.map((o) => o.value));
-      assert.deepEqual(ids, ['square', 'contour', 'zero-moves', 'length', 'lathe-seed', 'lathe-taper', 'cam']);
+      assert.deepEqual(ids, ['square', 'contour', 'zero-moves', 'length', 'lathe-seed', 'lathe-taper', 'cutter-contour', 'cutter-pocket', 'cam']);
       await typeProgram(page, 'G00 X5. Y5.;\n');
       const notes = new Set();
       for (const id of ids.slice(1)) {
         await loadExample(page, id);
-        assert.match(await page.locator('#summary').textContent(), / 0 errors · 0 warnings /, id);
+        // The pocket's lesson is the control's interference alarm (programs.test.mjs).
+        const errors = id === 'cutter-pocket' ? / 1 error · 0 warnings / : / 0 errors · 0 warnings /;
+        assert.match(await page.locator('#summary').textContent(), errors, id);
         const note = await page.locator('#example-note').textContent();
         assert.ok(note.length > 80, `${id} has a note`);
         notes.add(note);
@@ -183,7 +187,7 @@ describe('no lost work', () => {
   test('program, offsets, settings and view survive a reload', async () => {
     await withPage(async (page) => {
       await typeProgram(page, 'G91 G00 G46 X30. Y20. D02;\nG01 G47 X50. F100.;\n');
-      await page.locator('input[data-field="2.geometry"]').fill('4.5');
+      await page.locator('input[data-field="2.value"]').fill('4.5');
       await page.getByLabel('Block skip').check();
       await page.locator('#step-first').click();
       await waitForView(page, (v) => v.step === 0);
@@ -191,7 +195,7 @@ describe('no lost work', () => {
       await page.reload();
       await waitForRun(page);
       assert.equal(await page.evaluate(() => window.offsetlab.program()), 'G91 G00 G46 X30. Y20. D02;\nG01 G47 X50. F100.;\n');
-      assert.equal(await page.locator('input[data-field="2.geometry"]').inputValue(), '4.5');
+      assert.equal(await page.locator('input[data-field="2.value"]').inputValue(), '4.5');
       assert.equal(await page.getByLabel('Block skip').isChecked(), true);
       await waitForView(page, (v) => v.step === 0);
     });

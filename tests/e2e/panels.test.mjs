@@ -25,6 +25,13 @@ describe('offset table', () => {
       assert.equal(await page.locator('#offsets-units').textContent(), '(mm)');
       const first = page.locator('#offsets tbody tr').first();
       assert.match(await first.locator('th').textContent(), /^01 in program$/);
+      // The YASNAC profile's memory A: one value per number.
+      assert.deepEqual(await page.locator('#offsets thead th').allTextContents(), ['Register', 'value']);
+      assert.equal(await field(page, 1, 'value').inputValue(), '6');
+      // Memory B: a geometry and a wear per number, their sum read.
+      await page.locator('#set-offset_memory').selectOption('B');
+      await waitForRun(page);
+      assert.deepEqual(await page.locator('#offsets thead th').allTextContents(), ['Register', 'geometry', 'wear', 'sum']);
       assert.equal(await field(page, 1, 'geometry').inputValue(), '6');
       assert.equal(await first.locator('td.sum').textContent(), '6.000');
       const before = decode(await page.locator('#view').screenshot());
@@ -42,6 +49,7 @@ describe('offset table', () => {
         assert.equal(await geometry.getAttribute('aria-invalid'), 'true');
       }
       assert.equal((await setupJson(page)).offsets['01'], 6, 'an invalid value never reaches the setup');
+      assert.equal((await setupJson(page)).settings.offset_memory, 'B');
 
       // A valid value: the reason goes, the sum follows, the program re-runs.
       await geometry.fill('10');
@@ -78,7 +86,7 @@ describe('offset table', () => {
       await input.press('Enter');
       assert.equal(await page.locator('#offsets tbody tr').count(), 2);
       // The new row gets the focus; a value typed there is a new register.
-      assert.equal(await page.evaluate(() => document.activeElement.dataset.field), '5.geometry');
+      assert.equal(await page.evaluate(() => document.activeElement.dataset.field), '5.value');
       await page.keyboard.press('ControlOrMeta+A');
       await page.keyboard.type('2.5');
       await waitForRun(page);
@@ -93,12 +101,12 @@ describe('offset table', () => {
     });
   });
 
-  test('a lathe setup has X and Z columns with wear', async () => {
+  test('a lathe setup has X and Z columns with wear, the nose radius R with wear and the tip T', async () => {
     await withPage(async (page) => {
       await loadExample(page, 'lathe-taper');
       assert.match(await page.locator('#offsets-units').textContent(), /mm, X as a diameter/);
       const head = await page.locator('#offsets thead th').allTextContents();
-      assert.deepEqual(head, ['Register', 'X', 'X wear', 'Z', 'Z wear']);
+      assert.deepEqual(head, ['Register', '', 'X', 'Z', 'R', 'T']);
       assert.deepEqual(
         await page.locator('#offsets tbody th').allTextContents(),
         ['01 in program', '02 in program', '12 in program'],
@@ -208,17 +216,17 @@ describe('settings', () => {
       assert.deepEqual(JSON.parse(await json.inputValue()), { machine: 'mill', offsets: { '01': 6 } });
       await json.fill('{ "machine": "mill", "offsets": { "01": 3, "07": 1.5 }, "settings": { "mirror": ["y"] } }');
       await waitForRun(page);
-      assert.equal(await field(page, 1, 'geometry').inputValue(), '3');
-      assert.equal(await field(page, 7, 'geometry').inputValue(), '1.5');
+      assert.equal(await field(page, 1, 'value').inputValue(), '3');
+      assert.equal(await field(page, 7, 'value').inputValue(), '1.5');
       assert.equal(await page.getByLabel('Mirror Y').isChecked(), true);
       // Not JSON: the reason is shown, the run reports the setup error, the form keeps its values.
       await json.fill('{ "offsets": ');
       await waitForRun(page);
       assert.match(await page.locator('#setup-reason').textContent(), /Not valid JSON/);
       assert.match(await page.locator('#diagnostics .code').first().textContent(), /setup-syntax/);
-      assert.equal(await field(page, 1, 'geometry').inputValue(), '3');
+      assert.equal(await field(page, 1, 'value').inputValue(), '3');
       // The form wins again: a form edit rewrites the document.
-      await field(page, 1, 'geometry').fill('4');
+      await field(page, 1, 'value').fill('4');
       await waitForRun(page);
       assert.match(await page.locator('#summary').textContent(), /0 errors/);
       assert.equal(JSON.parse(await json.inputValue()).offsets['01'], 4);

@@ -87,9 +87,9 @@ describe('opening links', () => {
       await waitForView(opened, (v) => v.plane === 'XZ' && v.step === 3);
       // What the user sees: the program, the offset table, the settings, the plane and the block.
       assert.equal(await opened.evaluate(() => window.offsetlab.program()), MILL_PROGRAM);
-      assert.equal(await opened.locator('input[data-field="1.geometry"]').inputValue(), '5');
-      assert.equal(await opened.locator('input[data-field="2.geometry"]').inputValue(), '95.3');
-      assert.equal(await opened.locator('input[data-field="2.wear"]').inputValue(), '-0.05');
+      // Offset memory A (the YASNAC profile): one value, 95.3 - 0.05.
+      assert.equal(await opened.locator('input[data-field="1.value"]').inputValue(), '5');
+      assert.equal(await opened.locator('input[data-field="2.value"]').inputValue(), '95.25');
       assert.equal(await opened.getByLabel('Block skip').isChecked(), true);
       assert.equal(await opened.locator('#set-length_offset_without_z').inputValue(), 'next_z');
       assert.equal(await opened.locator('#plane').inputValue(), 'XZ');
@@ -209,7 +209,7 @@ describe('the Share button', () => {
   test('copies the compact link of the document (program, setup, view, step), shows its length; the plain and embed forms decode to it too', async () => {
     await withPage(async (page, { context }) => {
       await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(ctx.server.url).origin });
-      await page.locator('input[data-field="1.geometry"]').fill('7.5');
+      await page.locator('input[data-field="1.value"]').fill('7.5');
       await waitForRun(page);
       await page.locator('#plane').selectOption('YZ');
       await page.locator('#zoom-in').click();

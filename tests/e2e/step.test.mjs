@@ -48,7 +48,7 @@ describe('step-through', () => {
       assert.equal(await stateText(page, 'vector'), 'X+6.000 Y-6.000 Z0.000');
       assert.match(await page.locator('#state-panel dt').allTextContents().then((t) => t.join('|')),
         /Offset distance from the programmed end point/);
-      assert.match(await stateText(page, 'modal'), /^G01 G17 G91 G21 G94 G49 G80 G98 G54 G97 G64 G50 G69 G15 G50\.1$/);
+      assert.match(await stateText(page, 'modal'), /^G01 G17 G91 G21 G94 G40 G49 G80 G98 G54 G97 G64 G50 G69 G15 G50\.1$/);
       assert.equal(await stateText(page, 'length'), 'G49 · H00 (none) · Z vector 0.000');
       assert.match(await stateText(page, 'feed'), /^F200 · — · T00$/);
       assert.equal(await page.locator('#state-panel .explanation').textContent(),

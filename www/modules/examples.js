@@ -137,11 +137,62 @@ N90 M30
 `,
   },
   {
+    id: 'cutter-contour',
+    title: 'Outside contour with arcs (G41 D01, cutter compensation C)',
+    note: 'G41 keeps the cutter (D01 = 5) left of the path, so this clockwise contour is cut from outside. N30 starts up (type A): the tool centre ends 5 left of the next block’s start, perpendicular to it. The outside arcs become arcs of radius 15 about the same centres; the slight inside corner after N50 stops at the intersection of the two offset paths; the sharp outside corner at N55 (76°) adds extra vectors round it instead of cutting into the part. N65 cancels with G40 on a move. Step through: the green circle is the cutter, the state panel shows G41, D01 and the mode.',
+    setup: { machine: 'mill', offsets: { '01': 5.0 } },
+    program: `%
+O2002 (OUTSIDE CONTOUR WITH ARCS - CUTTER COMPENSATION C)
+(D01 = CUTTER RADIUS 5. / CLOCKWISE, G41 = TOOL LEFT = OUTSIDE)
+N10 G21 G17 G90 G40 G49 G80
+N15 G00 X-20. Y-20.
+N20 Z5.
+N25 G01 Z-3. F200.
+N30 G41 X0 Y-10. D01 F300. (START-UP)
+N35 Y40.
+N40 G02 X10. Y50. R10. (OUTSIDE ARC: RADIUS 10 + 5)
+N45 G01 X70.
+N50 G02 X80. Y40. R10.
+N55 G01 X90. Y0 (INSIDE CORNER, THEN A SHARP OUTSIDE ONE)
+N60 X-10.
+N65 G40 G00 X-20. Y-20. (CANCEL)
+N70 Z5.
+N75 M30
+%
+`,
+  },
+  {
+    id: 'cutter-pocket',
+    title: 'Pocket: inside corner and an arc too small for the cutter (alarm)',
+    note: 'G41 with D01 = 5 runs this pocket counter-clockwise with the cutter inside the wall. At the inside corner X60 Y0 the tool stops where the two offset lines meet (X55 Y5). The next corner is an inside arc of R3: a cutter of radius 5 cannot follow it (its offset radius would be 3 − 5 = −2), so the control stops with its interference alarm (Fanuc PS0041) at N45, and the path is drawn up to it. Make the arc R6. or D01 = 2.5 and the pocket runs to the end.',
+    setup: { machine: 'mill', offsets: { '01': 5.0 } },
+    program: `%
+O2003 (POCKET - INSIDE CORNER AND AN ARC SMALLER THAN THE CUTTER)
+(D01 = CUTTER RADIUS 5. / COUNTER-CLOCKWISE, G41 = TOOL INSIDE)
+N10 G21 G17 G90 G40 G49 G80
+N15 G00 X30. Y20.
+N20 Z5.
+N25 G01 Z-3. F200.
+N30 G41 Y0 D01 F300. (START-UP TO THE WALL)
+N35 X60. (INSIDE CORNER: OFFSET LINES MEET)
+N40 Y37.
+N45 G03 X57. Y40. R3. (R3 IS SMALLER THAN THE CUTTER: ALARM)
+N50 G01 X0
+N55 Y0
+N60 X30.
+N65 G40 X30. Y20.
+N70 G00 Z5.
+N75 M30
+%
+`,
+  },
+  {
     id: 'cam',
     title: 'CAM-style pocket and drilling (G43, G83)',
-    note: 'A post-processor style program: G28 returns, tool changes with G43 H01 (120.5) and H02 (95.3 − 0.05 wear), a pocket loop with an arc, then G83 peck drilling. See the length offsets in the XZ plane and the wear in the offset table.',
+    note: 'A post-processor style program: G28 returns, tool changes with G43 H01 (120.5) and H02 (95.3 − 0.05 wear), a pocket loop with an arc, then G83 peck drilling. See the length offsets in the XZ plane and the wear in the offset table (offset memory B: a geometry and a wear per number).',
     setup: {
       machine: 'mill',
+      settings: { offset_memory: 'B' },
       start: { x: 0, y: 0, z: 50 },
       reference: { x: 0, y: 0, z: 50 },
       offsets: { '01': 120.5, '02': { geometry: 95.3, wear: -0.05 } },

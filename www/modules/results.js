@@ -57,7 +57,7 @@ export function showResult({ summary, diagnostics }) {
     openSetup: openSetupJson,
   });
   editor.setDiagnostics(diagnostics);
-  setProgramRegisters(summary.registers ?? []);
+  setProgramRegisters(summary.registers ?? [], summary.set_by_program ?? [], summary.offset_memory ?? null);
   setMachinePlanes(summary.machine);
 }
 

@@ -88,6 +88,11 @@ const CHOICES = [
     help: 'G43/G44 H… in a block with no Z word: Z moves by the offset in that block (seed 001, YASNAC) or only at the next Z move (Fanuc TOS, LinuxCNC).',
   },
   {
+    id: 'offset_memory', label: 'Offset memory', machine: 'mill', controlDefault: true,
+    options: [['A', 'A: one value per number'], ['B', 'B: geometry + wear'], ['C', 'C: H and D apart']],
+    help: 'Where H and D values are kept. YASNAC: A, the seeds’ one tool offset memory, H01 and D01 the same value (G10 L11). Fanuc and Haas: C, an H table and a D table, each with geometry and wear (G10 L10/L11 H, L12/L13 D). B: one geometry and wear per number, shared by H and D (G10 L10/L11).',
+  },
+  {
     id: 'cutter_start_up', label: 'G41/G42 start-up and cancel', controlDefault: true,
     options: [['A', 'type A'], ['B', 'type B']],
     help: 'Type A (every profile: Fanuc SUP = 0, Haas setting 43 = A): the start-up ends perpendicular to the next block. Type B: the corner is compensated too (intersection, or a vector on each side).',

@@ -77,29 +77,77 @@ export function setSetting(setup, name, value) {
   else setup.settings = settings;
 }
 
-/** A mill register: { geometry, wear } (0 when absent). */
+/**
+ * The mill's offset memory type the setup names (behaviour 17.1, setting
+ * 7.32), or null when it is left "as the control": the core gives that one
+ * (the run's summary says which type it read the tables with).
+ */
+export function offsetMemorySetting(setup) {
+  const set = setup?.settings?.offset_memory;
+  return set === 'A' || set === 'B' || set === 'C' ? set : null;
+}
+
+/** A value of the table without the float noise of a sum (a millionth is finer than any increment). */
+export function clean(v) {
+  return Math.round(Number(v) * 1e6) / 1e6 + 0;
+}
+
+/**
+ * A mill register in each form (0 when absent): `value` (memory A's one
+ * value: geometry + wear), `geometry`/`wear` (memory B's pair, the H part),
+ * and memory C's `h`, `h_wear`, `d`, `d_wear`. A register written as one
+ * value or as {geometry, wear} gives H and D the same parts (behaviour 17.1).
+ */
 export function millRegister(setup, n) {
   const v = setup?.offsets?.[registerKey(n)];
-  if (typeof v === 'number') return { geometry: v, wear: 0 };
-  return { geometry: Number(v?.geometry ?? 0), wear: Number(v?.wear ?? 0) };
+  let h = [0, 0];
+  let d = null;
+  if (typeof v === 'number') h = [v, 0];
+  else if (v && typeof v === 'object' && ('h' in v || 'h_wear' in v || 'd' in v || 'd_wear' in v)) {
+    h = [Number(v.h ?? 0), Number(v.h_wear ?? 0)];
+    d = [Number(v.d ?? 0), Number(v.d_wear ?? 0)];
+  } else if (v && typeof v === 'object') h = [Number(v.geometry ?? 0), Number(v.wear ?? 0)];
+  d = d ?? h;
+  return {
+    value: clean(h[0] + h[1]), geometry: h[0], wear: h[1], h: h[0], h_wear: h[1], d: d[0], d_wear: d[1],
+  };
 }
 
-export function setMillRegister(setup, n, { geometry, wear }) {
+/**
+ * Writes a mill register in the form its memory type keeps (behaviour
+ * 17.2, as the core writes it): A one number; B a number or {geometry,
+ * wear}; C as B when H and D read the same parts, else {h, h_wear, d,
+ * d_wear} with zeros left out.
+ */
+export function setMillRegister(setup, n, reg, memory) {
   setup.offsets = { ...(setup.offsets || {}) };
-  setup.offsets[registerKey(n)] = wear === 0 ? geometry : { geometry, wear };
+  const key = registerKey(n);
+  const pair = (g, w) => (w === 0 ? g : { geometry: g, wear: w });
+  if (memory === 'A') setup.offsets[key] = clean(reg.value);
+  else if (memory === 'B') setup.offsets[key] = pair(reg.geometry, reg.wear);
+  else if (reg.h === reg.d && reg.h_wear === reg.d_wear) setup.offsets[key] = pair(reg.h, reg.h_wear);
+  else {
+    const out = {};
+    for (const f of ['h', 'h_wear', 'd', 'd_wear']) if (reg[f] !== 0) out[f] = reg[f];
+    setup.offsets[key] = out;
+  }
 }
 
-/** A lathe register: { x, z, x_wear, z_wear } (0 when absent). */
+/** A lathe register: { x, z, x_wear, z_wear, r, r_wear, t } (0 when absent). */
 export function latheRegister(setup, n) {
   const v = setup?.lathe_offsets?.[registerKey(n)] || {};
-  return { x: Number(v.x ?? 0), z: Number(v.z ?? 0), x_wear: Number(v.x_wear ?? 0), z_wear: Number(v.z_wear ?? 0) };
+  const out = {};
+  for (const f of LATHE_FIELDS) out[f] = Number(v[f] ?? 0);
+  return out;
 }
 
+const LATHE_FIELDS = ['x', 'z', 'x_wear', 'z_wear', 'r', 'r_wear', 't'];
+
+/** Writes a lathe register: x and z always, the wear, nose radius and tip when not 0. */
 export function setLatheRegister(setup, n, r) {
   setup.lathe_offsets = { ...(setup.lathe_offsets || {}) };
   const out = { x: r.x, z: r.z };
-  if (r.x_wear) out.x_wear = r.x_wear;
-  if (r.z_wear) out.z_wear = r.z_wear;
+  for (const f of LATHE_FIELDS.slice(2)) if (r[f]) out[f] = r[f];
   setup.lathe_offsets[registerKey(n)] = out;
 }
 

@@ -4,7 +4,7 @@
 
 use super::{Next, Why, add3, returns, sub3};
 use crate::machine::arc::{self};
-use crate::machine::mill::MOTION_WORDS;
+use crate::machine::words::MOTION_WORDS;
 use crate::machine::{Ahead, Machine, NoneAhead, Out};
 use crate::offsets::cutter::geometry::{self as geo, Path};
 use crate::setup::CutterCancelWithoutMotion;
@@ -17,6 +17,17 @@ impl Machine {
     /// will run them, until one moves in the plane, past at most
     /// `cutter_blocks_without_motion` blocks that do not.
     pub(super) fn cutter_next(&self, ahead: &mut dyn Ahead, out: &mut Out) -> Next {
+        // A plain move next (most blocks) needs no copy and no scratch.
+        if let Some(next) = ahead.peek(0)
+            && let Some(path) = self.plain_next_path(next, self.state.modal.motion)
+        {
+            // A plain move reads the register this block read.
+            let offset = self.cutter_offset(self.state.cutter.mode, self.state.cutter.radius);
+            return Next::Move { path, offset };
+        }
+        if let Some(next) = self.plain_past_still(ahead) {
+            return next;
+        }
         let mut scratch = out.scratch.take().unwrap_or_default();
         scratch.quiet = true;
         let next = self.read_next(ahead, &mut scratch);
@@ -24,14 +35,9 @@ impl Machine {
         next
     }
 
-    pub(super) fn read_next(&self, ahead: &mut dyn Ahead, scratch: &mut Out) -> Next {
-        if let Some(next) = ahead.peek(0)
-            && let Some(path) = self.plain_next_path(next)
-        {
-            // A plain move reads the register this block read.
-            let offset = self.cutter_offset(self.state.cutter.mode, self.state.cutter.radius);
-            return Next::Move { path, offset };
-        }
+    /// [`Machine::cutter_next`] where the words alone do not tell: the
+    /// blocks run on a copy of the machine.
+    fn read_next(&self, ahead: &mut dyn Ahead, scratch: &mut Out) -> Next {
         let limit = usize::from(self.setup.settings.cutter_blocks_without_motion());
         let mut probe = self.clone();
         probe.reading_ahead = true;
@@ -116,7 +122,7 @@ impl Machine {
     /// with G41, docs/performance.md). None when it is not such a block, or
     /// makes no move in the plane, or its arc needs the machine's checks:
     /// the copy reads it then.
-    pub(super) fn plain_next_path(&self, b: &Block) -> Option<Path> {
+    pub(super) fn plain_next_path(&self, b: &Block, motion: Motion) -> Option<Path> {
         // The lathe's blocks (diameter X, U/W) are read on the copy.
         if b.error
             || self.nose_lathe()
@@ -126,7 +132,7 @@ impl Machine {
         {
             return None;
         }
-        let motion = b.codes().motion().unwrap_or(self.state.modal.motion);
+        let motion = b.codes().motion().unwrap_or(motion);
         let (ia, ib, _) = self.state.modal.plane.axes();
         let incremental = self.state.modal.distance == crate::machine::modal::Distance::Incremental;
         let axes = [Address::X, Address::Y, Address::Z];
@@ -182,5 +188,104 @@ impl Machine {
             }
             Motion::LatheCycle(_) => None,
         }
+    }
+
+    /// The next move past plain G00/G01 blocks that make no move in the
+    /// plane (a Z step between two laps of a contour), worked out from
+    /// their words as [`Machine::plain_next_path`] does, without the copy
+    /// of the machine: what the copy would find, or None where only the
+    /// copy can tell (then it reads them). A block passed over this way
+    /// changes nothing the next block's path depends on but the motion
+    /// mode (no code but group 01's, no plane coordinate changed).
+    fn plain_past_still(&self, ahead: &mut dyn Ahead) -> Option<Next> {
+        // The lathe's blocks (diameter X, U/W) are read on the copy.
+        if self.nose_lathe() {
+            return None;
+        }
+        // The copy stops at a block that takes the tool beyond any
+        // machine's travel (an error): far within it, none can.
+        let small = |v: f64| v.abs() <= 1e6;
+        let s = &self.state;
+        // In G93 a block without F fails (behaviour 14.8): the copy tells.
+        if s.modal.feed_mode == crate::machine::modal::FeedMode::InverseTime {
+            return None;
+        }
+        if !(self.actual().iter().all(|v| small(*v))
+            && s.programmed.iter().all(|v| small(*v))
+            && s.cutter.vector.iter().all(|v| small(*v))
+            && small(s.length.target)
+            && small(s.length.vector))
+        {
+            return None;
+        }
+        // The copy reads the register again at each block.
+        let radius = self.cutter_radius();
+        if radius == 0.0 {
+            return None;
+        }
+        let limit = usize::from(self.setup.settings.cutter_blocks_without_motion());
+        let mut motion = self.state.modal.motion;
+        for k in 0..=limit {
+            let b = ahead.peek(k)?;
+            if let Some(m) = self.plain_still(b, motion, small) {
+                motion = m;
+                continue;
+            }
+            if k == 0 || !self.plain_within(b, small) {
+                return None;
+            }
+            let path = self.plain_next_path(b, motion)?;
+            let offset = self.cutter_offset(self.state.cutter.mode, radius);
+            return Some(Next::Move { path, offset });
+        }
+        None
+    }
+
+    /// The motion mode after `b` when it is a plain G00/G01 block (in mode
+    /// `motion` before it) that cannot fail and makes no move in the plane:
+    /// no arc words, its plane coordinates the ones the tool stands on, its
+    /// other axis within `small`. None otherwise.
+    fn plain_still(
+        &self,
+        b: &Block,
+        motion: Motion,
+        small: impl Fn(f64) -> bool,
+    ) -> Option<Motion> {
+        if b.error
+            || !self.plain_words
+            || self.state.modal.cycle.is_some()
+            || !b.holds_only(&MOTION_WORDS, &[Group::Motion])
+            || b.holds_any(&[Address::I, Address::J, Address::K, Address::R])
+        {
+            return None;
+        }
+        let motion = b.codes().motion().unwrap_or(motion);
+        if !matches!(motion, Motion::Rapid | Motion::Linear) || !self.plain_within(b, &small) {
+            return None;
+        }
+        let (ia, ib, _) = self.state.modal.plane.axes();
+        let incremental = self.state.modal.distance == crate::machine::modal::Distance::Incremental;
+        let axes = [Address::X, Address::Y, Address::Z];
+        for (axis, address) in axes.into_iter().enumerate() {
+            if let Some(v) = b.value(address) {
+                let t = self.target(axis, self.mm(v), incremental);
+                if (axis == ia || axis == ib) && t != self.state.programmed[axis] {
+                    return None;
+                }
+            }
+        }
+        Some(motion)
+    }
+
+    /// True when every axis word of `b` takes its axis to a point within
+    /// `small` (the tool stands within it: no block after it can fail for
+    /// its travel).
+    fn plain_within(&self, b: &Block, small: impl Fn(f64) -> bool) -> bool {
+        let incremental = self.state.modal.distance == crate::machine::modal::Distance::Incremental;
+        let axes = [Address::X, Address::Y, Address::Z];
+        axes.into_iter().enumerate().all(|(axis, address)| {
+            b.value(address)
+                .is_none_or(|v| small(self.target(axis, self.mm(v), incremental)))
+        })
     }
 }

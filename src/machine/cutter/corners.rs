@@ -96,27 +96,26 @@ impl Machine {
             CutterOutsideCorner::Arc => Outside::Arc,
         };
         let next = self.cutter_next(ahead, out);
-        let (corner, next_path, o2, cancels) = match next {
+        // The rule first, the corner once: a corner is a few hundred bytes,
+        // made at every block in offset mode.
+        let (rule, next_path, o2, cancels) = match next {
             Next::Move {
                 path: n,
                 offset: 0.0,
-            } => {
-                let c = self.corner_or_alarm(b, &path, &n, o, o, Rule::Cancel(t))?;
-                (c, n, o, true)
-            }
+            } => (Rule::Cancel(t), n, o, true),
+            // The corner is made with this block's radius on both sides: a
+            // new D counts from the next block's end (behaviour 16.8).
             Next::Move { path: n, offset } => {
-                // The corner is made with this block's radius on both
-                // sides: a new D counts from the next block's end
-                // (behaviour 16.8).
-                let o2 = o.abs() * offset.signum();
-                let c = self.corner_or_alarm(b, &path, &n, o, o2, Rule::Offset(outside))?;
-                (c, n, o2, false)
+                (Rule::Offset(outside), n, o.abs() * offset.signum(), false)
             }
             Next::Unknown(why) => {
                 self.look_ahead_note(b, out, why);
-                let c = self.corner_or_alarm(b, &path, &path, o, o, Rule::Perpendicular)?;
-                (c, path, o, false)
+                (Rule::Perpendicular, path, o, false)
             }
+        };
+        let corner = match geo::corner(&path, &next_path, o, o2, rule) {
+            Ok(c) => c,
+            Err(NoIntersection) => return Err(self.no_intersection(b, o)),
         };
         out.note(|| {
             if cancels {
@@ -137,6 +136,7 @@ impl Machine {
 
     /// The corner by `rule`, or the alarm when an intersection it needs
     /// does not exist (behaviour 16.12: Fanuc PS0033).
+    #[inline]
     pub(super) fn corner_or_alarm(
         &self,
         b: &Block,
@@ -146,16 +146,21 @@ impl Machine {
         o2: f64,
         rule: Rule,
     ) -> Result<Corner, Diagnostic> {
-        geo::corner(prev, next, o1, o2, rule).map_err(|NoIntersection| {
-            self.error(
-                "cutter-no-intersection",
-                b.span,
-                format!(
-                    "the offset paths of this block and the next do not meet at their inside corner: the tool of radius {} cannot reach it (Fanuc alarm PS0033)",
-                    show(o1.abs(), self.units())
-                ),
-            )
-        })
+        geo::corner(prev, next, o1, o2, rule).map_err(|NoIntersection| self.no_intersection(b, o1))
+    }
+
+    /// The alarm when the intersection a corner needs does not exist
+    /// (behaviour 16.12: Fanuc PS0033); `o1` the block's offset.
+    #[cold]
+    fn no_intersection(&self, b: &Block, o1: f64) -> Diagnostic {
+        self.error(
+            "cutter-no-intersection",
+            b.span,
+            format!(
+                "the offset paths of this block and the next do not meet at their inside corner: the tool of radius {} cannot reach it (Fanuc alarm PS0033)",
+                show(o1.abs(), self.units())
+            ),
+        )
     }
 
     /// Says why the corner at this block's end is not known, and warns when
@@ -203,7 +208,25 @@ impl Machine {
         };
         let e = first.end();
         let end = self.set_cutter_vector([e[0] - p1[0], e[1] - p1[1]]);
-        self.finish_offset_move(b, out, i, end, check)?;
+        if out.moves[i].arc.is_none() {
+            // A straight move ends at the corner as it is (most blocks:
+            // the `check` with G41, docs/performance.md).
+            let (ia, ib, _) = self.state.modal.plane.axes();
+            let m = &out.moves[i];
+            // On the lathe in radius, X halved (behaviour 18.1).
+            let k = self.plane_scale()[1];
+            let p = |x: Xyz| [x[ia], x[ib] * k];
+            let interferes = geo::line_reverses(
+                (p(m.programmed_from), p(m.programmed_to)),
+                (p(m.from), p(end)),
+            );
+            if check && interferes {
+                self.interference(b, out, false)?;
+            }
+            out.moves[i].to = end;
+        } else {
+            self.finish_offset_move(b, out, i, end, check)?;
+        }
         let kind = match self.state.modal.motion {
             Motion::Rapid => MoveKind::Rapid,
             Motion::Linear | Motion::Arc(_) | Motion::LatheCycle(_) => MoveKind::Feed,
@@ -240,13 +263,15 @@ impl Machine {
         check: bool,
     ) -> Result<(), Diagnostic> {
         let (ia, ib, _) = self.state.modal.plane.axes();
-        let m = out.moves[i];
+        // Read in place: a move with its arc is a few hundred bytes.
+        let m = &out.moves[i];
+        let is_arc = m.arc.is_some();
         let s = self.plane_scale();
         let p = |x: Xyz| [x[ia] * s[0], x[ib] * s[1]];
         let interferes;
         let mut arc_info = None;
         let mut kind = m.kind;
-        if let Some(info) = m.arc {
+        if let Some(info) = &m.arc {
             // The actual centre is the programmed one carried by the
             // vectors other than the compensation's (constant in an arc
             // block: G45–G48 are refused, the length offset cannot change
@@ -308,7 +333,7 @@ impl Machine {
                 radius: circle.radius,
                 sweep: circle.sweep,
                 start_angle: circle.start_angle,
-                ..info
+                ..*info
             });
             kind = if circle.sweep > 0.0 {
                 MoveKind::ArcCcw
@@ -322,38 +347,47 @@ impl Machine {
             );
         }
         if check && interferes {
-            let what = if m.arc.is_some() {
-                "the tool does not fit this arc: its offset path runs the other way round"
-            } else {
-                "the offset path of this block runs against its programmed direction"
-            };
-            match self.setup.settings.cutter_interference_check {
-                CutterInterference::Alarm => {
-                    return Err(self.error(
-                        "cutter-interference",
-                        b.span,
-                        format!(
-                            "interference: {what}; the tool would cut into the part — alarm PS0041 stops the program here (the path is drawn up to the block before)"
-                        ),
-                    ));
-                }
-                CutterInterference::Off => {
-                    out.warnings.push(Diagnostic::warning(
-                        "cutter-interference",
-                        b.span,
-                        format!(
-                            "interference: {what}; with the check off (setting cutter_interference_check) the tool cuts into the part here"
-                        ),
-                    ));
-                    out.note(|| format!("interference: {what} (check off: overcut)"));
-                }
-            }
+            self.interference(b, out, is_arc)?;
         }
         let m = &mut out.moves[i];
         m.to = end;
         m.kind = kind;
         if arc_info.is_some() {
             m.arc = arc_info;
+        }
+        Ok(())
+    }
+
+    /// The interference check's answer for a block whose offset path runs
+    /// against its programmed one (behaviour 16.12): the alarm, or with the
+    /// check off a warning.
+    #[cold]
+    fn interference(&self, b: &Block, out: &mut Out, is_arc: bool) -> Result<(), Diagnostic> {
+        let what = if is_arc {
+            "the tool does not fit this arc: its offset path runs the other way round"
+        } else {
+            "the offset path of this block runs against its programmed direction"
+        };
+        match self.setup.settings.cutter_interference_check {
+            CutterInterference::Alarm => {
+                return Err(self.error(
+                    "cutter-interference",
+                    b.span,
+                    format!(
+                        "interference: {what}; the tool would cut into the part — alarm PS0041 stops the program here (the path is drawn up to the block before)"
+                    ),
+                ));
+            }
+            CutterInterference::Off => {
+                out.warnings.push(Diagnostic::warning(
+                    "cutter-interference",
+                    b.span,
+                    format!(
+                        "interference: {what}; with the check off (setting cutter_interference_check) the tool cuts into the part here"
+                    ),
+                ));
+                out.note(|| format!("interference: {what} (check off: overcut)"));
+            }
         }
         Ok(())
     }

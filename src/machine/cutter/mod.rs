@@ -20,8 +20,8 @@ mod corners;
 mod nose;
 
 use super::arc::P2;
-use super::mill::MOTION_WORDS;
 use super::modal::FeedMode;
+use super::words::MOTION_WORDS;
 use super::{Ahead, Machine, Move, MoveKind, Out};
 use crate::diag::Diagnostic;
 use crate::geometry::Xyz;
@@ -144,6 +144,7 @@ impl Machine {
     /// The programmed path of a move in the plane, None when it does not
     /// move in the plane. `shift` takes its coordinates into the running
     /// block's work coordinates.
+    #[inline]
     pub(super) fn move_path(&self, m: &Move, shift: Xyz) -> Option<Path> {
         if self.nose_lathe() {
             return self.nose_move_path(m, shift);
@@ -223,9 +224,15 @@ impl Machine {
     ) -> Result<(), Diagnostic> {
         let lathe = self.nose_lathe();
         if lathe {
+            // Before the plain case: a G90 cycle goes on with X and Z alone.
             self.nose_checks(b)?;
         }
-        self.cutter_checks(b)?;
+        // A block of motion words alone has nothing the checks refuse (no
+        // plane, G45–G48, G39, group 07 or cycle code, no ,C/,R).
+        let plain = b.holds_only(&MOTION_WORDS, &[Group::Motion]);
+        if !plain {
+            self.cutter_checks(b)?;
+        }
         let before = self.state.cutter;
         let start = self.mark();
         let moves_before = out.moves.len();
@@ -238,9 +245,7 @@ impl Machine {
         self.state.cutter.vector = [0.0; 3];
         let ran = if lathe {
             self.nose_run(b, out)
-        } else if b.holds_only(&MOTION_WORDS, &[Group::Motion])
-            && self.state.modal.feed_mode != FeedMode::InverseTime
-        {
+        } else if plain && self.state.modal.feed_mode != FeedMode::InverseTime {
             self.motion_block(b, out)
         } else {
             self.mill_general(b, out)
@@ -293,8 +298,15 @@ impl Machine {
         if g28 && engaged && self.names_plane_axis(b) {
             return self.cutter_return(out, moves_before, before);
         }
-        let own = (moves_before..out.moves.len())
-            .find_map(|i| self.move_path(&out.moves[i], [0.0; 3]).map(|p| (i, p)));
+        // The block's own move in the plane (a plain loop: it runs at every
+        // block in offset mode).
+        let mut own = None;
+        for i in moves_before..out.moves.len() {
+            if let Some(p) = self.move_path(&out.moves[i], [0.0; 3]) {
+                own = Some((i, p));
+                break;
+            }
+        }
         let words = Words {
             mode,
             d: number,

@@ -210,6 +210,7 @@ impl Points {
 }
 
 /// The points where two offset paths meet (none, one or two).
+#[inline(always)]
 fn crossings(a: Offset, b: Offset) -> Points {
     match (a, b) {
         (Offset::Line { point: p, dir: d }, Offset::Line { point: q, dir: e }) => {
@@ -262,6 +263,7 @@ fn crossings(a: Offset, b: Offset) -> Points {
 }
 
 /// The crossing of two offset paths nearest to `near`.
+#[inline]
 fn crossing_near(a: Offset, b: Offset, near: P2) -> Option<P2> {
     crossings(a, b)
         .iter()
@@ -406,12 +408,19 @@ impl Corner {
         }
     }
 
+    #[inline(always)]
     fn points(kind: Kind, alpha: (f64, f64, bool), points: &[P2]) -> Corner {
-        let mut steps = [Step::Line([0.0, 0.0]); 4];
-        for (slot, p) in steps.iter_mut().zip(points) {
+        // Written in place (a corner is made at every block in offset mode).
+        let mut c = Corner {
+            steps: [Step::Line([0.0, 0.0]); 4],
+            count: points.len().min(4) as u8,
+            kind,
+            turn: alpha,
+        };
+        for (slot, p) in c.steps.iter_mut().zip(points) {
             *slot = Step::Line(*p);
         }
-        Corner::new(kind, alpha, &steps[..points.len().min(4)])
+        c
     }
 }
 
