@@ -105,7 +105,13 @@ export function stateRows(b) {
     const p = b.position_offset;
     const d = p.d > 0 ? `D${two(p.d)} = ${fmt(p.value, u)}` : 'D00 (none)';
     rows.push(['Tool position (D)', d, 'position']);
-    rows.push(['Offset distance from the programmed end point', vector(p.vector, u), 'vector']);
+    // With G41/G42 on, the actual end differs by the cutter's vector too
+    // (its own row below): this row is G45–G48's part alone.
+    const cutterOn = b.cutter && b.cutter.mode !== 'G40';
+    rows.push([
+      cutterOn ? 'G45–G48 offset distance from the programmed end point' : 'Offset distance from the programmed end point',
+      vector(p.vector, u), 'vector',
+    ]);
   }
   if (b.cutter) {
     // Cutter radius compensation C (behaviour 16): the mode, D and its
