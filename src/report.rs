@@ -102,6 +102,16 @@ fn carried_sentence(s: &BlockState) -> String {
                     s.lathe.offset
                 ));
             }
+            let c = s.cutter.vector;
+            if c != [0.0; 3] {
+                parts.push(format!(
+                    "X {} Z {} ({} nose radius, offset {:02})",
+                    f(c[0]),
+                    f(c[2]),
+                    s.cutter.mode.gcode(),
+                    s.cutter.d
+                ));
+            }
         }
     }
     if parts.is_empty() {

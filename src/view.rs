@@ -71,10 +71,15 @@ pub struct PositionView {
 pub struct CutterView {
     /// G40, G41 or G42.
     pub mode: &'static str,
-    /// The D number the radius was read from.
+    /// The D number the radius was read from (lathe: the T code's offset
+    /// number).
     pub d: u16,
-    /// Value of register D (a negative value swaps the side).
+    /// Value of register D (a negative value swaps the side; lathe: the
+    /// offset's nose radius, behaviour 18).
     pub radius: f64,
+    /// Lathe: the imaginary tool nose direction 0–9 (behaviour 18.2).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tip: Option<u8>,
     /// The block's role: `cancel` (cancel mode), `start_up`, `offset`
     /// (offset mode) or `cancelling` (this block cancelled).
     pub phase: &'static str,
@@ -233,7 +238,8 @@ pub struct BlockView<'a> {
     /// Mill: tool position offset.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub position_offset: Option<PositionView>,
-    /// Mill: cutter radius compensation.
+    /// Cutter radius compensation (mill), tool nose radius compensation
+    /// (lathe).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub cutter: Option<CutterView>,
     /// Lathe: T-code offset.
@@ -325,10 +331,11 @@ fn block_view_at<'a>(b: &BlockReport, text: &'a str, columns: (u32, u32)) -> Blo
             value: to_units(s.position.value, u),
             vector: pos(s.position.vector, u, m),
         }),
-        cutter: mill.then(|| CutterView {
+        cutter: Some(CutterView {
             mode: s.cutter.mode.gcode(),
             d: s.cutter.d,
             radius: to_units(s.cutter.radius, u),
+            tip: s.cutter.tip,
             phase: s.cutter.phase.as_str(),
             vector: pos(s.cutter.vector, u, m),
         }),

@@ -66,6 +66,7 @@ fn reports_made_again_from_checkpoints_equal_the_kept_ones_for_every_fixture() {
         "inch_plate",
         "lathe_cycles",
         "lathe_taper",
+        "nose",
         "pocket_g43_drill",
         "polar",
     ] {

@@ -165,12 +165,16 @@ fn behaviour16_13_every_block_reports_the_mode_d_radius_phase_and_vector() {
 }
 
 #[test]
-fn behaviour16_13_the_lathe_has_no_cutter_field() {
+fn behaviour16_13_the_lathe_reports_its_nose_radius_compensation() {
+    // The lathe reports group 07 too (behaviour 18.9): G40, no tip read
+    // outside compensation.
     let text = "G00 X10. Z5.";
     let r = ok(text, &lathe(&[]));
     let v = at_line(&r, text, 1);
-    assert!(v.cutter.is_none());
-    assert_eq!(v.modal.cutter, None);
+    let c = v.cutter.expect("the lathe reports its compensation");
+    assert_eq!(c.mode, "G40");
+    assert_eq!(c.phase, "cancel");
+    assert_eq!(v.modal.cutter, Some("G40"));
 }
 
 // ----- 16.14 G39 and I/J/K ----------------------------------------------

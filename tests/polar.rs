@@ -276,7 +276,7 @@ fn behaviour14_18_what_the_mode_refuses() {
         ("G01 X10. T0202", "polar-interpolation", 10),
         ("H5", "polar-words", 1),
         ("Y5.", "polar-words", 1),
-        ("G41 X10.", "unsupported-g-code", 1),
+        ("G41 X10.", "nose-polar", 1),
         ("G02 X10. C5.", "arc-without-center", 1),
     ] {
         let text = format!("{before}{block}\n");

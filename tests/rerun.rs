@@ -21,7 +21,7 @@ use offsetlab::{
 };
 use proptest::prelude::*;
 
-const FIXTURES: [&str; 13] = [
+const FIXTURES: [&str; 14] = [
     "contour_g45",
     "coordinates",
     "corners",
@@ -33,6 +33,7 @@ const FIXTURES: [&str; 13] = [
     "inch_plate",
     "lathe_cycles",
     "lathe_taper",
+    "nose",
     "pocket_g43_drill",
     "polar",
 ];
@@ -324,6 +325,31 @@ fn every_one_digit_edit_of_the_fixtures_equals_its_whole_run() {
         assert!(
             caught_up * 3 > edits,
             "{name}: {caught_up} of {edits} caught up"
+        );
+    }
+}
+
+#[test]
+fn a_digit_typed_at_the_end_of_a_cycles_q_block_runs_the_cycle_again() {
+    // lathe_cycles.nc: G71 P10 Q20 reads its contour up to the end of the
+    // N20 block, "N20 X52."; a "3" typed right after it makes X52.3, past
+    // the cycle's start X52 (mrc-over-start at the G71): the edit touches
+    // the text the cycle read though it begins where that text ends.
+    let (text, setup) = fixture("lathe_cycles");
+    let at = text.find("N20 X52.").unwrap() + "N20 X52.".len();
+    let edited = format!("{}3{}", &text[..at], &text[at..]);
+    for every in [1, 2, 7] {
+        let (earlier, _, _) = page_run(&text, &setup, every, None);
+        let (again, _, _) = page_run(&edited, &setup, every, Some((&text, &earlier)));
+        assert_same_as_whole(&edited, &setup, every, &again);
+        assert!(
+            again
+                .0
+                .diagnostics
+                .iter()
+                .any(|d| d.code == "mrc-over-start"),
+            "{:#?}",
+            again.0.diagnostics
         );
     }
 }

@@ -26,20 +26,36 @@ pub(crate) struct TurningData {
 
 impl Machine {
     /// A lathe block; `program` is its text, read again by sequence
-    /// number for G70–G73 (behaviour 15.3). `_ahead` gives the blocks after it to the rules that
-    /// need the next move (none yet: the chamfer words and tool nose radius
-    /// compensation are refused until they are modelled).
+    /// number for G70–G73 (behaviour 15.3). `ahead` gives the blocks after
+    /// it to tool nose radius compensation, which reads the next move
+    /// (behaviour 18, the mill's compensation in `cutter/`).
     pub(super) fn lathe_block(
         &mut self,
         b: &Block,
         out: &mut Out,
-        _ahead: &mut dyn Ahead,
+        ahead: &mut dyn Ahead,
         program: &mut dyn ProgramText,
     ) -> Result<(), Diagnostic> {
         if self.passing_over() {
             self.pass_over(b, out);
             return Ok(());
         }
+        if (self.state.cutter.engaged() && !self.cutter_after_cancel(b))
+            || super::cutter::concerns(b)
+        {
+            return self.cutter_block(b, out, ahead);
+        }
+        self.lathe_run(b, out, program)
+    }
+
+    /// A lathe block as it runs without tool nose radius compensation's
+    /// corners (the compensation runs it so, then moves its end).
+    pub(super) fn lathe_run(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+        program: &mut dyn ProgramText,
+    ) -> Result<(), Diagnostic> {
         self.refuse_polar(b)?;
         self.refuse_unmodelled(b)?;
         // A G71/G72/G74–G76 block's D is its depth (behaviour 15.2); in

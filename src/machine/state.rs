@@ -302,13 +302,11 @@ impl PolarState {
 }
 
 impl BlockState {
-    /// The modal codes as the manuals write them, group 07 included on
-    /// the mill (its mode is the cutter compensation's state).
+    /// The modal codes as the manuals write them, group 07 included (its
+    /// mode is the cutter or nose radius compensation's state).
     pub fn modal_codes(&self) -> super::modal::ModalCodes {
         let mut codes = self.modal.codes(self.table());
-        if self.machine == MachineKind::Mill {
-            codes.cutter = Some(self.cutter.mode.gcode());
-        }
+        codes.cutter = Some(self.cutter.mode.gcode());
         codes
     }
 

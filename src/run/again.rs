@@ -167,7 +167,10 @@ impl<'a> Plan<'a> {
                 .checkpoints
                 .reads
                 .iter()
-                .filter(|r| r.upto as usize > prefix)
+                // An edit right at the end of the text read (`upto` is
+                // exclusive) can still extend its last word ("X52." typed
+                // on to "X52.3"): it counts.
+                .filter(|r| r.upto as usize >= prefix)
                 .map(|r| r.start as usize)
         };
         let before = dependent().min().map_or(prefix, |s| prefix.min(s + 1));

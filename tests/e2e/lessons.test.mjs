@@ -248,4 +248,25 @@ describe('offset memory in the page', () => {
       assert.equal(back.machine, 'lathe');
     });
   });
+
+  test('the lathe profile: G42 with the nose radius and tip 3 in the state panel, the chamfer moved off the programmed line', async () => {
+    await withPage(async (page) => {
+      await loadExample(page, 'lathe-nose');
+      assert.match(await page.locator('#summary').textContent(), /0 errors/);
+      // N25, the start-up (line 7): the nose centre 0.8 right of the face's
+      // start (+Z), the imaginary nose 0.8 below it: X -1.600 as a diameter.
+      await cursorOn(page, 7);
+      await waitForView(page, (v) => v.step === 4);
+      assert.match(await stateText(page, 'cutter'), /G42 · offset 01 · R 0\.800 · tip 3 · start-up/);
+      assert.match(await stateText(page, 'actual'), /^X-1\.600 Z0\.000/);
+      // N40 (line 10), the diameter: cut on the programmed line (X40.), the
+      // tool 0.8 on in Z at the corner the arc makes.
+      await cursorOn(page, 10);
+      await waitForView(page, (v) => v.step === 7);
+      assert.match(await stateText(page, 'actual'), /^X40\.000 Z-20\.800/);
+      assert.match(await page.locator('#state-panel .explanation').textContent(), /nose R 0\.800 right, tip 3/);
+      const { png } = await shootCanvas(page, 'lesson-lathe-nose', (_, p) => countColor(p, COLORS.actualFeed) > 200);
+      assert.ok(countColor(png, COLORS.actualFeed) > 200);
+    });
+  });
 });

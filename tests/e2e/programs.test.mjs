@@ -72,6 +72,15 @@ G52 X0 Y0
 G00 Z50.
 M30`;
 
+const NOSE = `G10 P10001 X0 Z0 R0.4 Q3
+T0101
+G00 X40. Z2.
+G42 G01 Z0 F0.2
+Z-20.
+X60. Z-30.
+G40 G00 X80. Z5.
+M30`;
+
 describe('real programs', () => {
   test('a Fanuc lathe program roughs with G71 and finishes with G70, the T offset on every pass', async () => {
     await withPage(async (page) => {
@@ -94,6 +103,29 @@ describe('real programs', () => {
       await page.locator('#step-last').click();
       const { png } = await shootCanvas(page, 'lathe-g71-g70', (_, p) => countColor(p, COLORS.actualFeed) > 500);
       assert.ok(countColor(png, COLORS.actualFeed) > 500, 'the passes are drawn');
+    });
+  });
+
+  test('a lathe profile with tool nose radius compensation shows R and the tip in the state panel', async () => {
+    await withPage(async (page) => {
+      await page.getByLabel('Machine').selectOption('lathe');
+      await page.getByLabel('Control').selectOption('fanuc');
+      await waitForRun(page);
+      // G10 gives offset 01 the nose radius 0.4 and tip 3 (behaviour 18).
+      await typeProgram(page, NOSE);
+      assert.match(await page.locator('#summary').textContent(), /0 errors/);
+      await cursorOn(page, 4);
+      await waitForView(page, (v) => v.step === 3);
+      assert.equal(await stateText(page, 'cutter'), 'G42 · offset 01 · R 0.400 · tip 3 · start-up');
+      assert.match(await page.locator('#state-panel .explanation').textContent(), /the imaginary tool nose \(tip 3\)/);
+      // Line 5 ends at the inside corner: the nose centre at Z-19.834,
+      // tip 3 back by 0.4: Z-20.234, X on the diameter.
+      await cursorOn(page, 5);
+      await waitForView(page, (v) => v.step === 4);
+      assert.match(await stateText(page, 'actual'), /^X40\.000 Z-20\.234/);
+      await page.locator('#step-last').click();
+      const { png } = await shootCanvas(page, 'lathe-nose-radius', (_, p) => countColor(p, COLORS.actualFeed) > 100);
+      assert.ok(countColor(png, COLORS.actualFeed) > 100, 'the compensated path is drawn');
     });
   });
 

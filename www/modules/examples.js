@@ -137,6 +137,31 @@ N90 M30
 `,
   },
   {
+    id: 'lathe-nose',
+    title: 'Lathe profile with tool nose radius compensation (G42, tip 3)',
+    note: 'T0101 is an outside turning tool with a nose radius of 0.8 and imaginary tip 3: the program follows the corner of the square round the nose (toward the chuck and the centre line), not the nose centre. G42 keeps the nose right of the path as it cuts toward the chuck. N25 starts up (type A): the nose centre ends 0.8 right of the face’s start, so the imaginary nose is at X-1.600, below the centre line — which is why programs start a face there. On the face (N30) and the diameter (N40) the tool cuts on the programmed line; on the chamfer (N35) and the arc (N45) the imaginary nose would leave material, and G42 moves the tool to cut the true shape: step through and compare the two paths. N55 cancels with G40.',
+    setup: {
+      machine: 'lathe',
+      lathe_offsets: { '01': { x: 0, z: 0, r: 0.8, t: 3 } },
+    },
+    program: `%
+O3002 (PROFILE WITH TOOL NOSE RADIUS COMPENSATION)
+(T0101: NOSE RADIUS 0.8, TIP 3 - AN OUTSIDE TURNING TOOL)
+N10 G18 G21 G99
+N15 T0101
+N20 G00 X0 Z2. S1000 M03
+N25 G42 G01 Z0 F0.15 (START-UP ONTO THE FACE)
+N30 X30. (FACE)
+N35 X40. Z-5. (CHAMFER)
+N40 Z-20.
+N45 G02 X60. Z-30. R10. (CONVEX ARC)
+N50 G01 Z-45.
+N55 G40 G00 X80. Z5. (CANCEL)
+N60 M30
+%
+`,
+  },
+  {
     id: 'cutter-contour',
     title: 'Outside contour with arcs (G41 D01, cutter compensation C)',
     note: 'G41 keeps the cutter (D01 = 5) left of the path, so this clockwise contour is cut from outside. N30 starts up (type A): the tool centre ends 5 left of the next block’s start, perpendicular to it. The outside arcs become arcs of radius 15 about the same centres; the slight inside corner after N50 stops at the intersection of the two offset paths; the sharp outside corner at N55 (76°) adds extra vectors round it instead of cutting into the part. N65 cancels with G40 on a move. Step through: the green circle is the cutter, the state panel shows G41, D01 and the mode.',

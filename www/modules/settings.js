@@ -93,22 +93,22 @@ const CHOICES = [
     help: 'Where H and D values are kept. YASNAC: A, the seeds’ one tool offset memory, H01 and D01 the same value (G10 L11). Fanuc and Haas: C, an H table and a D table, each with geometry and wear (G10 L10/L11 H, L12/L13 D). B: one geometry and wear per number, shared by H and D (G10 L10/L11).',
   },
   {
-    id: 'cutter_start_up', label: 'G41/G42 start-up and cancel', machine: 'mill', controlDefault: true,
+    id: 'cutter_start_up', label: 'G41/G42 start-up and cancel', controlDefault: true,
     options: [['A', 'type A'], ['B', 'type B']],
     help: 'Type A (every profile: Fanuc SUP = 0, Haas setting 43 = A): the start-up ends perpendicular to the next block. Type B: the corner is compensated too (intersection, or a vector on each side).',
   },
   {
-    id: 'cutter_outside_corner', label: 'G41/G42 outside corners', machine: 'mill', controlDefault: true,
+    id: 'cutter_outside_corner', label: 'G41/G42 outside corners', controlDefault: true,
     options: [['vectors', 'intersection / extra vectors'], ['arc', 'an arc round the corner']],
     help: 'Fanuc (every profile): the intersection at 90° or more, the extra vectors under 90°. Arc: round the corner on the tool radius (Haas setting 58 = YASNAC, as offsetlab reads it).',
   },
   {
-    id: 'cutter_cancel_without_motion', label: 'G40 without a move', machine: 'mill', controlDefault: true,
+    id: 'cutter_cancel_without_motion', label: 'G40 without a move', controlDefault: true,
     options: [['move', 'the vector comes off there'], ['next_move', 'at the next X/Y move']],
     help: 'G40 (or D00) in a block with no move in the plane: Fanuc and YASNAC take the vector off in that block; Haas waits for the next X/Y move.',
   },
   {
-    id: 'cutter_blocks_without_motion', label: 'G41/G42 blocks read past', machine: 'mill', controlDefault: true,
+    id: 'cutter_blocks_without_motion', label: 'G41/G42 blocks read past', controlDefault: true,
     options: [0, 1, 2, 3, 4, 5, 6].map((n) => [String(n), String(n)]),
     get: (s) => {
       const v = settingOf(s, 'cutter_blocks_without_motion');
@@ -118,7 +118,7 @@ const CHOICES = [
     help: 'Blocks without a move in the plane the control reads past to find the next corner (2 on every profile; Fanuc sets it by parameter). More, and the corner is not seen: overcut.',
   },
   {
-    id: 'cutter_interference_check', label: 'G41/G42 interference check', machine: 'mill',
+    id: 'cutter_interference_check', label: 'G41/G42 interference check',
     options: [['alarm', 'on (alarm PS0041)'], ['off', 'off (overcut drawn)']],
     help: 'A block whose offset path runs backwards (a groove or an inside arc smaller than the tool) stops the program, as Fanuc parameter CNC = 0 does; off draws the overcut with a warning.',
   },

@@ -120,10 +120,15 @@ export function stateRows(b) {
     const role = {
       cancel: 'cancel mode', start_up: 'start-up', offset: 'offset mode', cancelling: 'cancel (this block)',
     }[c.phase] ?? c.phase;
-    const d = c.d > 0 ? `D${two(c.d)} = ${fmt(c.radius, u)}` : 'D00 (none)';
+    // On the lathe (behaviour 18) the register is the T code's offset, its
+    // nose radius R and imaginary tool nose direction.
+    const lathe = Boolean(b.lathe_offset);
+    let d;
+    if (lathe) d = c.d > 0 ? `offset ${two(c.d)} · R ${fmt(c.radius, u)} · tip ${c.tip ?? 0}` : 'offset 00 (none)';
+    else d = c.d > 0 ? `D${two(c.d)} = ${fmt(c.radius, u)}` : 'D00 (none)';
     const text = c.mode === 'G40' && c.phase === 'cancel' ? 'G40 · cancel mode' : `${c.mode} · ${d} · ${role}`;
-    rows.push(['Cutter radius (G41/G42)', text, 'cutter']);
-    rows.push(['Cutter offset vector', vector(c.vector, u), 'cutter-vector']);
+    rows.push([lathe ? 'Nose radius (G41/G42)' : 'Cutter radius (G41/G42)', text, 'cutter']);
+    rows.push([lathe ? 'Nose offset vector (X diameter)' : 'Cutter offset vector', vector(c.vector, u), 'cutter-vector']);
   }
   if (b.lathe_offset) {
     const t = b.lathe_offset;

@@ -123,7 +123,9 @@ impl Machine {
     /// makes no move in the plane, or its arc needs the machine's checks:
     /// the copy reads it then.
     pub(super) fn plain_next_path(&self, b: &Block, motion: Motion) -> Option<Path> {
+        // The lathe's blocks (diameter X, U/W) are read on the copy.
         if b.error
+            || self.nose_lathe()
             || !self.plain_words
             || self.state.modal.cycle.is_some()
             || !b.holds_only(&MOTION_WORDS, &[Group::Motion])
@@ -196,6 +198,10 @@ impl Machine {
     /// changes nothing the next block's path depends on but the motion
     /// mode (no code but group 01's, no plane coordinate changed).
     fn plain_past_still(&self, ahead: &mut dyn Ahead) -> Option<Next> {
+        // The lathe's blocks (diameter X, U/W) are read on the copy.
+        if self.nose_lathe() {
+            return None;
+        }
         // The copy stops at a block that takes the tool beyond any
         // machine's travel (an error): far within it, none can.
         let small = |v: f64| v.abs() <= 1e6;

@@ -27,9 +27,20 @@ impl Machine {
         let to = self.actual();
         // The actual centre: the corner carried by every vector but the
         // compensation's.
+        // In the plane's scale (the lathe's X a radius), the imaginary
+        // tool nose's arc about the corner moved by the tip's shift
+        // (behaviour 18.2).
         let other = self.other_vectors();
-        let c = [center[0] + other[ia], center[1] + other[ib]];
-        let (a0, a1) = ([from.act[ia], from.act[ib]], [to[ia], to[ib]]);
+        let s = self.plane_scale();
+        let tip = self.nose_tip();
+        let c = [
+            center[0] + other[ia] * s[0] + tip[0],
+            center[1] + other[ib] * s[1] + tip[1],
+        ];
+        let (a0, a1) = (
+            [from.act[ia] * s[0], from.act[ib] * s[1]],
+            [to[ia] * s[0], to[ib] * s[1]],
+        );
         let circle = arc::from_center(a0, a1, c, ccw, self.arc_tolerance()).map_err(|_| {
             self.error(
                 "cutter-arc-radius",
@@ -38,11 +49,11 @@ impl Machine {
             )
         })?;
         let mut actual_center = from.act;
-        actual_center[ia] = c[0];
-        actual_center[ib] = c[1];
+        actual_center[ia] = c[0] / s[0];
+        actual_center[ib] = c[1] / s[1];
         let mut programmed_center = from.prog;
-        programmed_center[ia] = center[0];
-        programmed_center[ib] = center[1];
+        programmed_center[ia] = center[0] / s[0];
+        programmed_center[ib] = center[1] / s[1];
         Ok(ArcInfo {
             plane,
             center: actual_center,
@@ -53,7 +64,7 @@ impl Machine {
             programmed_sweep: circle.sweep,
             start_angle: circle.start_angle,
             programmed_start_angle: circle.start_angle,
-            diameter_x: false,
+            diameter_x: self.nose_lathe(),
         })
     }
 
@@ -107,15 +118,17 @@ impl Machine {
     }
 
     /// "X50.000 Y0.000": a plane point as the control writes it.
+    /// On the lathe X is written as the diameter it is programmed in.
     pub(super) fn corner_name(&self, p: P2) -> String {
         let (ia, ib, _) = self.state.modal.plane.axes();
         let names = ['X', 'Y', 'Z'];
+        let s = self.plane_scale();
         format!(
             "{}{} {}{}",
             names[ia],
-            show(p[0], self.units()),
+            show(p[0] / s[0], self.units()),
             names[ib],
-            show(p[1], self.units())
+            show(p[1] / s[1], self.units())
         )
     }
 
@@ -156,6 +169,8 @@ impl Machine {
     ) -> Result<(), Diagnostic> {
         let code = if self.state.cutter.mode == CutterCompensation::Cancel {
             "G40".to_string()
+        } else if self.nose_lathe() {
+            format!("offset {:02} (nose radius 0)", self.state.lathe.offset)
         } else {
             format!("D{:02} (0)", self.state.position.d)
         };

@@ -19,11 +19,25 @@ use crate::syntax::codes::Motion;
 impl Machine {
     /// Sets the compensation's vector to `v` (plane) and returns the actual
     /// position with it.
+    /// On the lathe `v` is the nose centre's offset in radius; the vector
+    /// the tool carries is the imaginary tool nose's (`v` plus the tip's
+    /// shift while the vector is on, behaviour 18.2), X as a diameter.
     pub(super) fn set_cutter_vector(&mut self, v: P2) -> Xyz {
         let (ia, ib, _) = self.state.modal.plane.axes();
         let mut vector = [0.0; 3];
-        vector[ia] = v[0];
-        vector[ib] = v[1];
+        if self.nose_lathe() {
+            let t = if v == [0.0, 0.0] {
+                [0.0, 0.0]
+            } else {
+                self.nose_tip()
+            };
+            let s = self.plane_scale();
+            vector[ia] = (v[0] + t[0]) / s[0];
+            vector[ib] = (v[1] + t[1]) / s[1];
+        } else {
+            vector[ia] = v[0];
+            vector[ib] = v[1];
+        }
         self.state.cutter.vector = vector;
         self.actual()
     }
@@ -55,6 +69,9 @@ impl Machine {
         let next_for_corner = next_path.unwrap_or(path);
         let corner = self.corner_or_alarm(b, &path, &next_for_corner, o, o, rule)?;
         out.note(|| crc::start_up_note(&words, t, &corner, &path, next_path.as_ref()));
+        if let Some(tip) = words.tip {
+            out.note(|| self.nose_note(tip));
+        }
         self.apply_corner(b, out, i, &corner, false)
     }
 
@@ -196,7 +213,9 @@ impl Machine {
             // the `check` with G41, docs/performance.md).
             let (ia, ib, _) = self.state.modal.plane.axes();
             let m = &out.moves[i];
-            let p = |x: Xyz| [x[ia], x[ib]];
+            // On the lathe in radius, X halved (behaviour 18.1).
+            let k = self.plane_scale()[1];
+            let p = |x: Xyz| [x[ia], x[ib] * k];
             let interferes = geo::line_reverses(
                 (p(m.programmed_from), p(m.programmed_to)),
                 (p(m.from), p(end)),
@@ -247,7 +266,8 @@ impl Machine {
         // Read in place: a move with its arc is a few hundred bytes.
         let m = &out.moves[i];
         let is_arc = m.arc.is_some();
-        let p = |x: Xyz| [x[ia], x[ib]];
+        let s = self.plane_scale();
+        let p = |x: Xyz| [x[ia] * s[0], x[ib] * s[1]];
         let interferes;
         let mut arc_info = None;
         let mut kind = m.kind;
@@ -256,10 +276,14 @@ impl Machine {
             // vectors other than the compensation's (constant in an arc
             // block: G45–G48 are refused, the length offset cannot change
             // in G02/G03).
+            // On the lathe the tool's point is the imaginary tool nose: the
+            // arc it runs is the nose centre's moved by the tip's shift
+            // (behaviour 18.2).
             let shift = self.other_vectors();
+            let tip = self.nose_tip();
             let c = [
-                info.programmed_center[ia] + shift[ia],
-                info.programmed_center[ib] + shift[ib],
+                (info.programmed_center[ia] + shift[ia]) * s[0] + tip[0],
+                (info.programmed_center[ib] + shift[ib]) * s[1] + tip[1],
             ];
             let ccw = info.programmed_sweep > 0.0;
             let (a0, a1) = (p(m.from), p(end));
@@ -302,8 +326,8 @@ impl Machine {
                 .unwrap_or(r0);
             interferes = geo::arc_interferes(info.programmed_sweep, circle.sweep, offset_radius);
             let mut center = m.from;
-            center[ia] = c[0];
-            center[ib] = c[1];
+            center[ia] = c[0] / s[0];
+            center[ib] = c[1] / s[1];
             arc_info = Some(ArcInfo {
                 center,
                 radius: circle.radius,

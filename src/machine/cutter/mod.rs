@@ -17,6 +17,7 @@ mod ahead;
 mod checks;
 mod codes;
 mod corners;
+mod nose;
 
 use super::arc::P2;
 use super::modal::FeedMode;
@@ -112,12 +113,31 @@ impl Machine {
 
     /// Register D's value now (mm), read when the block runs (behaviour
     /// 4.12).
+    /// On the lathe, the nose radius of the T code's offset register
+    /// (behaviour 18.1).
     pub(super) fn cutter_radius(&self) -> f64 {
+        if self.nose_lathe() {
+            return self.nose_register().0;
+        }
         self.mm(self.setup.mill_value(self.state.position.d))
     }
 
+    /// The register number the compensation reads: D on the mill, the T
+    /// code's offset number on the lathe.
+    fn cutter_number(&self) -> u16 {
+        if self.nose_lathe() {
+            self.state.lathe.offset
+        } else {
+            self.state.position.d
+        }
+    }
+
+    /// A point in the compensation plane (on the lathe X as a radius).
     pub(super) fn in_plane(&self, p: Xyz) -> P2 {
         let (ia, ib, _) = self.state.modal.plane.axes();
+        if self.nose_lathe() {
+            return [p[ia], p[ib] * 0.5];
+        }
         [p[ia], p[ib]]
     }
 
@@ -126,6 +146,9 @@ impl Machine {
     /// block's work coordinates.
     #[inline]
     pub(super) fn move_path(&self, m: &Move, shift: Xyz) -> Option<Path> {
+        if self.nose_lathe() {
+            return self.nose_move_path(m, shift);
+        }
         let (ia, ib, _) = self.state.modal.plane.axes();
         let at = |p: Xyz| [p[ia] + shift[ia], p[ib] + shift[ib]];
         let (from, to) = (at(m.programmed_from), at(m.programmed_to));
@@ -155,11 +178,14 @@ impl Machine {
         (d[0].hypot(d[1]) > 0.0).then(|| geo::unit(d))
     }
 
-    /// True when a block names an axis of the plane.
+    /// True when a block names an axis of the plane (on the lathe U and W
+    /// too).
     pub(super) fn names_plane_axis(&self, b: &Block) -> bool {
         let (ia, ib, _) = self.state.modal.plane.axes();
         let axes = [Address::X, Address::Y, Address::Z];
-        b.has(axes[ia]) || b.has(axes[ib])
+        b.has(axes[ia])
+            || b.has(axes[ib])
+            || (self.nose_lathe() && (b.has(Address::U) || b.has(Address::W)))
     }
 
     /// The block after a cancel block that does not ask for the
@@ -196,6 +222,11 @@ impl Machine {
         out: &mut Out,
         ahead: &mut dyn Ahead,
     ) -> Result<(), Diagnostic> {
+        let lathe = self.nose_lathe();
+        if lathe {
+            // Before the plain case: a G90 cycle goes on with X and Z alone.
+            self.nose_checks(b)?;
+        }
         // A block of motion words alone has nothing the checks refuse (no
         // plane, G45–G48, G39, group 07 or cycle code, no ,C/,R).
         let plain = b.holds_only(&MOTION_WORDS, &[Group::Motion]);
@@ -212,7 +243,9 @@ impl Machine {
         // the corner moves their ends below.
         let saved = before.vector;
         self.state.cutter.vector = [0.0; 3];
-        let ran = if plain && self.state.modal.feed_mode != FeedMode::InverseTime {
+        let ran = if lathe {
+            self.nose_run(b, out)
+        } else if plain && self.state.modal.feed_mode != FeedMode::InverseTime {
             self.motion_block(b, out)
         } else {
             self.mill_general(b, out)
@@ -230,8 +263,10 @@ impl Machine {
         // The register is read when the block runs (behaviour 4.12); a block
         // without D or a group 07 code reads the one the block before read,
         // whose value the run cannot have changed.
-        let radius = if self.state.cutter.d != self.state.position.d
+        let number = self.cutter_number();
+        let radius = if self.state.cutter.d != number
             || b.holds(Address::D)
+            || (lathe && b.holds(Address::T))
             || b.codes().cutter().is_some()
             || b.codes().units().is_some()
         {
@@ -239,8 +274,10 @@ impl Machine {
         } else {
             self.state.cutter.radius
         };
-        self.state.cutter.d = self.state.position.d;
+        self.state.cutter.d = number;
         self.state.cutter.radius = radius;
+        // The lathe's tip direction, read with the radius (behaviour 18.2).
+        self.state.cutter.tip = lathe.then(|| self.nose_register().1);
         let o = self.cutter_offset(mode, radius);
         let engaged = matches!(before.phase, Phase::StartUp | Phase::Offset);
         if self.reading_ahead {
@@ -272,9 +309,10 @@ impl Machine {
         }
         let words = Words {
             mode,
-            d: self.state.position.d,
+            d: number,
             offset: o,
             units: self.units(),
+            tip: self.state.cutter.tip,
         };
         if b.codes().non_modal() == Some(NonModal::CornerArc) {
             return self.corner_arc(b, out, ahead, words);
@@ -286,11 +324,17 @@ impl Machine {
                     && code != CutterCompensation::Cancel
                 {
                     out.note(|| {
-                        format!(
-                            "{} with D{:02} = 0: no radius, no compensation until a D with a value",
-                            code.gcode(),
-                            self.state.position.d
-                        )
+                        if lathe {
+                            format!(
+                                "{} with offset {number:02}: its nose radius is 0, no compensation until a T code whose offset has one",
+                                code.gcode()
+                            )
+                        } else {
+                            format!(
+                                "{} with D{number:02} = 0: no radius, no compensation until a D with a value",
+                                code.gcode()
+                            )
+                        }
                     });
                 }
                 return Ok(());

@@ -7,7 +7,7 @@ use super::super::modal::{ArcDirection, Distance, Motion};
 use super::super::program::ProgramText;
 use super::Machine;
 use crate::diag::Diagnostic;
-use crate::syntax::codes::{MCode, NonModal, Repetitive};
+use crate::syntax::codes::{CutterCompensation, MCode, NonModal, Repetitive};
 use crate::syntax::{Address, Block};
 
 /// Most blocks one contour may have (bounds the memory a cycle takes).
@@ -267,6 +267,21 @@ impl Machine {
         }
         if let Some(u) = codes.units() {
             return Err(refuse(u.gcode().to_string()));
+        }
+        // Fanuc's cycles rough and finish the compensated shape when the
+        // contour holds G41/G42 (0i-TF, "Tool nose radius compensation in
+        // canned cycles"); not modelled yet: refused, never drawn
+        // uncompensated (behaviour 18.8).
+        if let Some(c @ (CutterCompensation::Left | CutterCompensation::Right)) = codes.cutter() {
+            return Err(self.error(
+                "nose-in-cycle",
+                blk.code_span(crate::syntax::codes::Group::Cutter),
+                format!(
+                    "{}: the contour block at line {line} starts tool nose radius compensation, and a {} with compensation is not modelled yet (run the contour as plain blocks, or the cycle without G41/G42)",
+                    c.gcode(),
+                    self.code_name(cycle)
+                ),
+            ));
         }
         if let Some(w) = codes.work() {
             return Err(refuse(w.gcode().to_string()));

@@ -100,7 +100,7 @@ impl Machine {
     }
 
     /// The cycle's G code as this program writes it.
-    fn code_name(&self, cycle: Repetitive) -> &'static str {
+    pub(super) fn code_name(&self, cycle: Repetitive) -> &'static str {
         let code = Code::NonModal(NonModal::Repetitive(cycle));
         code.gcode(CodeTable::of(&self.setup))
     }

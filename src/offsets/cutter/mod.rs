@@ -12,6 +12,7 @@
 //! corners to the moves and raises the alarms.
 
 pub mod geometry;
+pub mod nose;
 
 use crate::geometry::{Xyz, show};
 use crate::setup::Units;
@@ -60,6 +61,10 @@ pub struct CutterState {
     pub radius: f64,
     /// The block's role.
     pub phase: Phase,
+    /// On the lathe, the imaginary tool nose direction 0–9 of the offset
+    /// register (behaviour 18.2); `d` is then the T code's offset number
+    /// and `radius` the nose radius. None on the mill.
+    pub tip: Option<u8>,
     /// Actual − programmed at the block's end from the compensation (mm, in
     /// the compensation plane; zero along its normal).
     pub vector: Xyz,
@@ -94,11 +99,23 @@ pub struct Words {
     pub offset: f64,
     /// The units the sentence is written in.
     pub units: Units,
+    /// On the lathe, the tip direction (behaviour 18): `d` is then the T
+    /// code's offset number.
+    pub tip: Option<u8>,
 }
 
 impl Words {
     fn r(&self) -> String {
         show(self.offset.abs(), self.units)
+    }
+
+    /// "tool centre" on the mill, "nose centre" on the lathe.
+    pub fn centre(&self) -> &'static str {
+        if self.tip.is_some() {
+            "nose centre"
+        } else {
+            "tool centre"
+        }
     }
 
     /// "5.000 left" (or right).
@@ -110,6 +127,20 @@ impl Words {
     /// side.
     pub fn name(&self) -> String {
         let swapped = (side(self.mode) * self.offset) < 0.0;
+        if let Some(t) = self.tip {
+            return format!(
+                "{} offset {:02} (nose R {} {}, tip {t}{})",
+                self.mode.gcode(),
+                self.d,
+                self.r(),
+                which(self.offset),
+                if swapped {
+                    ": the negative radius swaps the side"
+                } else {
+                    ""
+                }
+            );
+        }
         format!(
             "{} D{:02} ({}{})",
             self.mode.gcode(),
@@ -155,29 +186,30 @@ pub fn start_up_note(
     next: Option<&Path>,
 ) -> String {
     let name = w.name();
+    let c = w.centre();
     let Some(next) = next else {
         return format!(
-            "{name} start-up: no move in the plane follows, so the tool centre ends {} of this block's end, perpendicular to it",
+            "{name} start-up: no move in the plane follows, so the {c} ends {} of this block's end, perpendicular to it",
             w.side_of()
         );
     };
     match (t, corner.kind) {
         (Type::A, _) => format!(
-            "{name} start-up (type A): the tool centre goes {} of the next block's start, perpendicular to its direction",
+            "{name} start-up (type A): the {c} goes {} of the next block's start, perpendicular to its direction",
             w.side_of()
         ),
         (Type::B, Kind::Tangent) => format!(
-            "{name} start-up (type B): the next block goes on in the same direction; the tool centre ends {} of this block's end",
+            "{name} start-up (type B): the next block goes on in the same direction; the {c} ends {} of this block's end",
             w.side_of()
         ),
         (Type::B, Kind::Inside | Kind::Obtuse) => format!(
-            "{name} start-up (type B): the tool centre goes to the intersection of {}, {} of both (corner {})",
+            "{name} start-up (type B): the {c} goes to the intersection of {}, {} of both (corner {})",
             offsets(prev, next),
             w.side_of(),
             angle(corner.alpha())
         ),
         (Type::B, _) => format!(
-            "{name} start-up (type B): outside corner of {} (under 90°): the tool centre goes {} of this block's end, then {} of the next block's start",
+            "{name} start-up (type B): outside corner of {} (under 90°): the {c} goes {} of this block's end, then {} of the next block's start",
             angle(corner.alpha()),
             w.side_of(),
             w.side_of()
@@ -281,6 +313,7 @@ mod tests {
             d: 1,
             offset,
             units: Units::Mm,
+            tip: None,
         }
     }
 

@@ -141,9 +141,8 @@ impl FeedMode {
     }
 }
 
-/// Group 07: cutter radius compensation C on the mill (behaviour 16); on
-/// the lathe only its cancel G40 (tool nose radius compensation is refused
-/// with its reason).
+/// Group 07: cutter radius compensation C on the mill (behaviour 16), tool
+/// nose radius compensation on the lathe (behaviour 18).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum CutterCompensation {
     /// G40: cancel.

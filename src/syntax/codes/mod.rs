@@ -35,7 +35,8 @@ pub enum Group {
     FeedMode,
     /// 06: inch / metric.
     Units,
-    /// 07: cutter compensation (G40–G42 on the mill, G40 on the lathe).
+    /// 07: cutter compensation (G40–G42; on the lathe tool nose radius
+    /// compensation, behaviour 18).
     Cutter,
     /// 08: tool length offset.
     Length,
@@ -452,6 +453,9 @@ fn lathe_code(system: GCodeSystem, major: u16) -> Option<Code> {
         28 => return Some(C::NonModal(NonModal::ReferenceReturn)),
         30 => return Some(C::NonModal(NonModal::OtherReference)),
         40 => return Some(C::CutterCompensation(CutterCompensation::Cancel)),
+        // Tool nose radius compensation (behaviour 18).
+        41 => return Some(C::CutterCompensation(CutterCompensation::Left)),
+        42 => return Some(C::CutterCompensation(CutterCompensation::Right)),
         31 => return Some(C::NonModal(NonModal::Skip)),
         52 => return Some(C::NonModal(NonModal::LocalCoordinates)),
         53 => return Some(C::NonModal(NonModal::MachineCoordinates)),
@@ -705,7 +709,6 @@ fn unsupported_reason(table: CodeTable, g: GCode) -> String {
         };
     }
     let why = match g.major {
-        41 | 42 => "tool nose radius compensation is not modelled",
         39 if lathe => "corner circular interpolation is a mill code (cutter compensation)",
         43 | 44 | 49 if lathe => "the lathe uses T-code offsets, not G43/G44/G49 (seed 004)",
         45..=48 if lathe => "the lathe uses T-code offsets, not G45–G48 (seed 004)",

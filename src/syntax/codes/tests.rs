@@ -59,8 +59,8 @@ fn every_code_writes_back_the_number_it_was_read_from() {
 
 #[test]
 fn unsupported_codes_say_why() {
-    let e = g_group(CodeTable::LATHE, GCode::new(41)).unwrap_err();
-    assert!(e.contains("tool nose radius"), "{e}");
+    let e = g_group(CodeTable::LATHE, GCode::new(43)).unwrap_err();
+    assert!(e.contains("T-code offsets"), "{e}");
     let e = g_group(CodeTable::MILL, GCode::new(7)).unwrap_err();
     assert!(e.contains("G07 is not a G code"), "{e}");
     let e = g_group(

@@ -1,0 +1,204 @@
+//! Tool nose radius compensation on the lathe (behaviour 18): the machine's
+//! side of what differs from the mill's compensation C. The lathe runs the
+//! same start-up, corners and cancel in the ZX plane; here are the plane's
+//! scale (the program's X is a diameter, the compensation works in radius:
+//! Fanuc 0i-TF, "Tool nose radius compensation"), the register the radius
+//! and tip come from (the T code's offset number), the shift from the nose
+//! centre to the imaginary tool nose, and what the lathe refuses in
+//! compensation (the cycles, a new offset number, polar interpolation).
+
+use super::P2;
+use crate::diag::Diagnostic;
+use crate::machine::Machine;
+use crate::machine::modal::Motion;
+use crate::offsets::cutter::{Phase, nose};
+use crate::setup::MachineKind;
+use crate::syntax::codes::{Code, CutterCompensation, Group, NonModal};
+use crate::syntax::{Address, Block};
+
+impl Machine {
+    /// True on the lathe, where G41/G42 are tool nose radius compensation.
+    #[inline(always)]
+    pub(super) fn nose_lathe(&self) -> bool {
+        self.setup.machine == MachineKind::Lathe
+    }
+
+    /// The factors from the program's coordinates to the compensation
+    /// plane's: the lathe's X (the plane's second axis, a diameter) is
+    /// halved, so that the offsets are the nose radius away on the part
+    /// (behaviour 18.1).
+    #[inline(always)]
+    pub(super) fn plane_scale(&self) -> P2 {
+        if self.nose_lathe() {
+            [1.0, 0.5]
+        } else {
+            [1.0, 1.0]
+        }
+    }
+
+    /// A lathe block as tool nose radius compensation runs it, out of the
+    /// mill's way (the mill's compensation is the 1M-block G41 benchmark's
+    /// path, docs/performance.md). The cycles that read the program again
+    /// are refused before (`nose_checks`), so no program text is needed.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn nose_run(
+        &mut self,
+        b: &Block,
+        out: &mut crate::machine::Out,
+    ) -> Result<(), Diagnostic> {
+        self.lathe_run(b, out, &mut crate::machine::program::NoText)
+    }
+
+    /// [`Machine::move_path`] on the lathe: the programmed path of a move
+    /// in the plane, X as a radius (behaviour 18.1).
+    #[cold]
+    #[inline(never)]
+    pub(super) fn nose_move_path(
+        &self,
+        m: &crate::machine::Move,
+        shift: crate::geometry::Xyz,
+    ) -> Option<crate::offsets::cutter::geometry::Path> {
+        use crate::machine::MoveKind;
+        use crate::offsets::cutter::geometry::{Path, dist};
+        // The ZX plane (`nose_checks` refuses another): (Z, X radius).
+        let at = |p: crate::geometry::Xyz| [p[2] + shift[2], (p[0] + shift[0]) * 0.5];
+        let (from, to) = (at(m.programmed_from), at(m.programmed_to));
+        match (&m.arc, m.kind) {
+            (Some(info), MoveKind::ArcCw | MoveKind::ArcCcw) => Some(Path::Arc {
+                from,
+                to,
+                center: at(info.programmed_center),
+                ccw: info.programmed_sweep > 0.0,
+            }),
+            _ if dist(from, to) > 1e-9 => Some(Path::Line { from, to }),
+            _ => None,
+        }
+    }
+
+    /// The nose radius of the active T code's offset register (geometry +
+    /// wear, mm; 0 with offset 00) and its tip direction (behaviour 18.1).
+    #[inline(never)]
+    pub(super) fn nose_register(&self) -> (f64, u8) {
+        let n = self.state.lathe.offset;
+        if n == 0 {
+            return (0.0, 0);
+        }
+        let reg = self.setup.lathe_register(n);
+        (self.mm(reg.r_value()), reg.t)
+    }
+
+    /// Imaginary tool nose − nose centre in the plane (Z, X radius; mm)
+    /// while the vector is on: the tip direction's vector times the nose
+    /// radius (behaviour 18.2); zero on the mill and for tips 0 and 9.
+    pub(super) fn nose_tip(&self) -> P2 {
+        let c = self.state.cutter;
+        match c.tip {
+            Some(t) => {
+                let v = nose::tip_vector(t);
+                let r = c.radius.abs();
+                [v[0] * r, v[1] * r]
+            }
+            None => [0.0, 0.0],
+        }
+    }
+
+    /// What tool nose radius compensation refuses before a lathe block runs
+    /// (behaviour 18.7, 18.8): the single cycles G90/G92/G94 and the
+    /// multiple repetitive cycles G70–G73 while G41/G42 is the mode or its
+    /// vector is on, a T code naming another offset, polar interpolation.
+    #[inline(never)]
+    pub(super) fn nose_checks(&self, b: &Block) -> Result<(), Diagnostic> {
+        let now = self.state.cutter;
+        let codes = b.codes();
+        let mode = codes.cutter().unwrap_or(now.mode);
+        let on = mode != CutterCompensation::Cancel || now.engaged();
+        if !on {
+            return Ok(());
+        }
+        let name = if mode == CutterCompensation::Cancel {
+            now.mode.gcode()
+        } else {
+            mode.gcode()
+        };
+        let axis = [Address::X, Address::U, Address::Z, Address::W, Address::R]
+            .iter()
+            .any(|a| b.has(*a));
+        if let Motion::LatheCycle(_) = codes.motion().unwrap_or(self.state.modal.motion)
+            && axis
+        {
+            let m = codes.motion().unwrap_or(self.state.modal.motion);
+            return Err(self.error(
+                "nose-in-cycle",
+                b.code_span(Group::Motion),
+                format!(
+                    "{} with {name}: the single cycles with tool nose radius compensation are not modelled yet (cancel with G40 before the cycle)",
+                    Code::Motion(m).gcode(self.state.table())
+                ),
+            ));
+        }
+        if let Some(NonModal::Repetitive(r)) = codes.non_modal() {
+            return Err(self.error(
+                "nose-in-cycle",
+                b.code_span(Group::NonModal),
+                format!(
+                    "{} with {name}: the multiple repetitive cycles with tool nose radius compensation are not modelled yet (cancel with G40 before the cycle)",
+                    Code::NonModal(NonModal::Repetitive(r)).gcode(self.state.table())
+                ),
+            ));
+        }
+        if let Some(t) = b.get(Address::T)
+            && (t.int() % 100) as u16 != self.state.lathe.offset
+            && (now.mode != CutterCompensation::Cancel
+                || matches!(now.phase, Phase::StartUp | Phase::Offset))
+        {
+            return Err(self.error(
+                "nose-t-change",
+                t.span,
+                format!(
+                    "T{:04}: a new offset number while {name} is on changes the nose radius and tip under the compensation, which is not modelled: cancel with G40 first",
+                    t.int()
+                ),
+            ));
+        }
+        // Compensation works in the ZX plane, X as a radius (18.1); G17 is
+        // the face plane of polar interpolation only.
+        if codes.plane().unwrap_or(self.state.modal.plane) != crate::machine::modal::Plane::ZX
+            && !self.in_polar_mode(b)
+        {
+            return Err(self.error(
+                "nose-plane",
+                b.code_span(Group::Plane),
+                format!("{name}: tool nose radius compensation works in the ZX plane (G18)"),
+            ));
+        }
+        if self.in_polar_mode(b) {
+            return Err(self.error(
+                "nose-polar",
+                b.span,
+                format!(
+                    "{name} in polar coordinate interpolation (the face plane) is not modelled: cancel with G40 before G12.1"
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// The sentence of a lathe start-up saying which point the program
+    /// follows and where it lies from the nose centre (behaviour 18.2).
+    pub(super) fn nose_note(&self, tip: u8) -> String {
+        let follows = nose::follows(tip);
+        let t = self.nose_tip();
+        if t == [0.0, 0.0] {
+            return format!(
+                "the program's points are {follows}: the tool runs on the offset path itself"
+            );
+        }
+        let u = self.units();
+        format!(
+            "the program's points are {follows}: the tool is placed so that it runs where the nose centre runs moved by Z {} X {} (X as a diameter), so on a face or a diameter it cuts on the programmed line",
+            crate::geometry::show_signed(t[0], u),
+            crate::geometry::show_signed(2.0 * t[1], u)
+        )
+    }
+}
