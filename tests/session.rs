@@ -676,3 +676,51 @@ fn behaviour16_20_the_swept_width_is_drawn_under_the_current_block_when_asked() 
     s.set_step(7);
     assert!(!draw(&s).1.contains("class=\"swept\""));
 }
+
+#[test]
+fn behaviour18_2_the_nose_circle_is_drawn_about_the_nose_centre() {
+    // T0101: nose R 0.8, tip 3. At N40 (the diameter X40. toward
+    // the chuck, G42) the program's point, the imaginary nose, ends at
+    // X40. Z-20.8 at N40 = block 6 (behaviour 18.2: cut on the line, 0.8 on in Z at the
+    // corner the arc makes). Tip 3's vector is (Z -1, X -1): the nose
+    // centre is 0.8 up (X +1.6 as a diameter) and 0.8 toward +Z from it:
+    // X41.6 Z-20.0. The circle of radius 0.8 is drawn there in the ZX view.
+    let mut s = Session::new();
+    let text = "G18 G21 G99\nT0101\nG00 X0 Z2.\nG42 G01 Z0 F0.15\nX30.\nX40. Z-5.\nZ-20.\nG02 X60. Z-30. R10.\nG01 Z-45.\nG40 G00 X80. Z5.\nM30\n";
+    run(
+        &mut s,
+        text,
+        Some(r#"{"machine":"lathe","lathe_offsets":{"01":{"x":0,"z":0,"r":0.8,"t":3}}}"#),
+    );
+    s.set_step(6);
+    let marker = s.scene().marker.unwrap()[0];
+    assert!(
+        (marker[0] - 40.0).abs() < 1e-9 && (marker[2] + 20.8).abs() < 1e-9,
+        "{marker:?}"
+    );
+    let cutter = s.scene().cutter.expect("the nose at a G42 block");
+    assert_eq!(cutter.plane, render::Plane::LatheZx);
+    assert!((cutter.radius - 0.8).abs() < 1e-12);
+    let centre = [marker[0] + cutter.centre[0], marker[2] + cutter.centre[2]];
+    assert!(
+        (centre[0] - 41.6).abs() < 1e-9 && (centre[1] + 20.0).abs() < 1e-9,
+        "{centre:?}"
+    );
+    // Drawn: a circle of radius 0.8 at the frame's scale, centred on the
+    // nose centre's screen point (Z right, X as a radius up).
+    let mut svg = SvgSurface::new();
+    let frame = render::draw_scene(&mut svg, s.toolpath(), s.scene(), 640.0, 480.0);
+    let (cx, cy) = frame.transform.to_screen(-20.0, 20.8);
+    let r = format!("{:.2}", 0.8 * frame.transform.scale);
+    let r = r.trim_end_matches('0').trim_end_matches('.');
+    let drawn = svg.finish(640.0, 480.0);
+    let cx = format!("{cx:.2}");
+    let cx = cx.trim_end_matches('0').trim_end_matches('.');
+    assert!(
+        drawn.contains(&format!("cx=\"{cx}\"")) && drawn.contains(&format!("r=\"{r}\"")),
+        "no circle of radius {r} at x {cx} ({cy})"
+    );
+    // After G40 (block 9) there is none.
+    s.set_step(9);
+    assert_eq!(s.scene().cutter, None);
+}

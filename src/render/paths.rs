@@ -110,7 +110,9 @@ pub(super) fn draw_swept(
     let (Some(step), Some(cutter), true) = (scene.step, scene.cutter, scene.swept) else {
         return;
     };
-    if cutter.plane != frame.plane {
+    // The actual path is the cutter's centre on the mill; on the lathe it is
+    // the imaginary nose, off the nose centre (behaviour 18.2): not swept.
+    if cutter.plane != frame.plane || cutter.centre != [0.0; 3] {
         return;
     }
     let width = 2.0 * cutter.radius * frame.transform.scale;

@@ -22,13 +22,21 @@ const MIN_ARROW_PX: f64 = 2.5;
 const MAX_ARROWS: usize = 20_000;
 
 /// The cutter G41/G42 offsets the tool by: its radius (the toolpath's
-/// units) and the view plane of the plane it compensates in.
+/// units), the view plane of the plane it compensates in, and where its
+/// centre lies from the tool marker.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Cutter {
-    /// |register D| in the toolpath's units.
+    /// |register D| (mill) or the nose radius R (lathe) in the toolpath's
+    /// units.
     pub radius: f64,
-    /// The view of the compensation plane (G17 XY, G18 XZ, G19 YZ).
+    /// The view of the compensation plane (G17 XY, G18 XZ, G19 YZ; the
+    /// lathe's ZX).
     pub plane: Plane,
+    /// From the tool marker to the circle's centre, in the toolpath's
+    /// coordinates (X a diameter on the lathe): zero on the mill; on the
+    /// lathe the nose centre lies this far from the imaginary tool nose the
+    /// program follows (behaviour 18.2).
+    pub centre: [f64; 3],
 }
 
 /// The view state of a session.
@@ -279,6 +287,11 @@ pub fn draw_marker(
     s.begin_group("tool");
     if let Some(c) = cutter.filter(|c| c.plane == f.plane) {
         let r = c.radius * f.transform.scale;
+        let a = screen(&[
+            actual[0] + c.centre[0],
+            actual[1] + c.centre[1],
+            actual[2] + c.centre[2],
+        ]);
         if r.is_finite() && r > 0.5 && a.0.is_finite() && a.1.is_finite() {
             let edge = Stroke {
                 color: f.theme.tool,

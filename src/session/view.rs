@@ -167,18 +167,36 @@ impl View {
             })
         });
         // The cutter's circle while G41/G42 is the mode or its vector is on
-        // (behaviour 16.13).
+        // (behaviour 16.13); on the lathe the nose's, about the nose centre
+        // (behaviour 18.2).
         self.scene.cutter = report.and_then(|b| {
             let c = b.state.cutter;
             let on = c.mode != crate::syntax::codes::CutterCompensation::Cancel
                 || matches!(c.phase, Phase::StartUp | Phase::Offset);
-            (b.state.machine == MachineKind::Mill && on && c.radius != 0.0).then(|| scene::Cutter {
-                radius: c.radius.abs() * k,
-                plane: match b.state.modal.plane {
-                    crate::machine::modal::Plane::XY => Plane::Xy,
-                    crate::machine::modal::Plane::ZX => Plane::Xz,
-                    crate::machine::modal::Plane::YZ => Plane::Yz,
+            if !on || c.radius == 0.0 {
+                return None;
+            }
+            let radius = c.radius.abs() * k;
+            Some(match b.state.machine {
+                MachineKind::Mill => scene::Cutter {
+                    radius,
+                    plane: match b.state.modal.plane {
+                        crate::machine::modal::Plane::XY => Plane::Xy,
+                        crate::machine::modal::Plane::ZX => Plane::Xz,
+                        crate::machine::modal::Plane::YZ => Plane::Yz,
+                    },
+                    centre: [0.0; 3],
                 },
+                MachineKind::Lathe => {
+                    // The imaginary nose is the centre + R × the tip's
+                    // vector (Z, X radius); X is a diameter in the path.
+                    let [tz, tx] = crate::offsets::cutter::nose::tip_vector(c.tip.unwrap_or(0));
+                    scene::Cutter {
+                        radius,
+                        plane: Plane::LatheZx,
+                        centre: [-2.0 * radius * tx, 0.0, -radius * tz],
+                    }
+                }
             })
         });
     }
