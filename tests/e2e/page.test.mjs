@@ -158,7 +158,7 @@ describe('examples', () => {
   test('each example sets its program, setup and note, and runs without errors; the previous work is one click away', async () => {
     await withPage(async (page) => {
       const ids = await page.locator('#example option').evaluateAll((os) => os.map((o) => o.value));
-      assert.deepEqual(ids, ['square', 'contour', 'zero-moves', 'length', 'lathe-seed', 'lathe-taper', 'cutter-contour', 'cutter-pocket', 'cam']);
+      assert.deepEqual(ids, ['square', 'contour', 'zero-moves', 'length', 'lathe-seed', 'lathe-taper', 'lathe-nose', 'cutter-contour', 'cutter-pocket', 'cam']);
       await typeProgram(page, 'G00 X5. Y5.;\n');
       const notes = new Set();
       for (const id of ids.slice(1)) {
