@@ -146,11 +146,7 @@ impl Machine {
     /// block's work coordinates.
     #[inline]
     pub(super) fn move_path(&self, m: &Move, shift: Xyz) -> Option<Path> {
-        if self.nose_lathe() {
-            return self.nose_move_path(m, shift);
-        }
-        let (ia, ib, _) = self.state.modal.plane.axes();
-        let at = |p: Xyz| [p[ia] + shift[ia], p[ib] + shift[ib]];
+        let at = |p: Xyz| self.in_plane(crate::geometry::add(p, shift));
         let (from, to) = (at(m.programmed_from), at(m.programmed_to));
         match (&m.arc, m.kind) {
             (Some(info), MoveKind::ArcCw | MoveKind::ArcCcw) => Some(Path::Arc {

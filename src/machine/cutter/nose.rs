@@ -50,32 +50,6 @@ impl Machine {
         self.lathe_run(b, out, &mut crate::machine::program::NoText)
     }
 
-    /// [`Machine::move_path`] on the lathe: the programmed path of a move
-    /// in the plane, X as a radius (behaviour 18.1).
-    #[cold]
-    #[inline(never)]
-    pub(super) fn nose_move_path(
-        &self,
-        m: &crate::machine::Move,
-        shift: crate::geometry::Xyz,
-    ) -> Option<crate::offsets::cutter::geometry::Path> {
-        use crate::machine::MoveKind;
-        use crate::offsets::cutter::geometry::{Path, dist};
-        // The ZX plane (`nose_checks` refuses another): (Z, X radius).
-        let at = |p: crate::geometry::Xyz| [p[2] + shift[2], (p[0] + shift[0]) * 0.5];
-        let (from, to) = (at(m.programmed_from), at(m.programmed_to));
-        match (&m.arc, m.kind) {
-            (Some(info), MoveKind::ArcCw | MoveKind::ArcCcw) => Some(Path::Arc {
-                from,
-                to,
-                center: at(info.programmed_center),
-                ccw: info.programmed_sweep > 0.0,
-            }),
-            _ if dist(from, to) > 1e-9 => Some(Path::Line { from, to }),
-            _ => None,
-        }
-    }
-
     /// The nose radius of the active T code's offset register (geometry +
     /// wear, mm; 0 with offset 00) and its tip direction (behaviour 18.1).
     #[inline(never)]
