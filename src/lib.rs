@@ -34,6 +34,7 @@ pub mod setup;
 pub mod share;
 pub mod syntax;
 pub mod toolpath;
+pub mod travel;
 pub mod view;
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;

@@ -172,6 +172,8 @@ pub struct Run {
     pub move_count: usize,
     /// Bounds of both paths (mm), kept as the moves are made.
     pub bounds: Option<Bounds>,
+    /// Path length and estimated time (behaviour 6.10).
+    pub travel: crate::travel::Travel,
 }
 
 /// A value the program set, as it stands at the run's end: the last G10

@@ -489,6 +489,50 @@ pub struct Summary {
     /// The values G10 blocks set, each with the line of the last block that
     /// set it (behaviour 17.8).
     pub set_by_program: Vec<SetByProgram>,
+    /// Path length (in `units`) and the time estimate (behaviour 6.10).
+    pub travel: TravelView,
+    /// The other machine, when the program's words belong to it and none to
+    /// this one (behaviour 1.24); set by those who hold the text
+    /// ([`Summary::with_hint`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub machine_hint: Option<HintView>,
+}
+
+/// How far the tool went and how long it took (behaviour 6.10).
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct TravelView {
+    /// Length of the rapid moves, in the summary's units.
+    pub rapid: f64,
+    /// Length of the feed moves, in the summary's units.
+    pub feed: f64,
+    /// Estimated cycle time, seconds (rapids at the setup's rapid rate,
+    /// feeds at F, dwells).
+    pub seconds: f64,
+    /// Of that, dwells.
+    pub dwell: f64,
+    /// Feed moves that had no rate (no F, or per revolution without S),
+    /// left out of `seconds`.
+    pub untimed: u32,
+}
+
+/// The machine a program reads as, and why (behaviour 1.24).
+#[derive(Clone, Debug, Serialize)]
+pub struct HintView {
+    /// `mill` or `lathe`.
+    pub machine: MachineKind,
+    /// What in the program says so.
+    pub reasons: Vec<&'static str>,
+}
+
+impl Summary {
+    /// The summary with the machine `text` reads as, if not this one.
+    pub fn with_hint(mut self, text: &str) -> Summary {
+        self.machine_hint = crate::syntax::machine_hint(text, self.machine).map(|h| HintView {
+            machine: h.machine,
+            reasons: h.reasons,
+        });
+        self
+    }
 }
 
 /// The summary of a run.
@@ -509,6 +553,14 @@ pub fn summary(run: &Run) -> Summary {
         registers: run.registers.clone(),
         offset_memory: (run.machine == MachineKind::Mill).then(|| run.offset_memory.as_str()),
         set_by_program: run.set_by_program(),
+        travel: TravelView {
+            rapid: to_units(run.travel.rapid, run.units),
+            feed: to_units(run.travel.feed, run.units),
+            seconds: (run.travel.seconds * 1000.0).round() / 1000.0,
+            dwell: (run.travel.dwell * 1000.0).round() / 1000.0,
+            untimed: run.travel.untimed,
+        },
+        machine_hint: None,
     }
 }
 
@@ -539,7 +591,7 @@ impl Serialize for Moves<'_> {
 impl Serialize for RunView<'_> {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         let mut st = s.serialize_struct("Run", 6)?;
-        st.serialize_field("summary", &summary(self.run))?;
+        st.serialize_field("summary", &summary(self.run).with_hint(self.text))?;
         st.serialize_field("blocks", &Blocks(self.run, self.text))?;
         st.serialize_field("moves", &Moves(self.run))?;
         st.serialize_field("events", &self.run.events as &[Event])?;

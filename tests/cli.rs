@@ -219,8 +219,12 @@ fn check_clean_program_exits_zero_with_bounds() {
     let text = String::from_utf8(out.stdout).unwrap();
     assert_eq!(
         text.trim(),
-        "<stdin>: 8 blocks, 7 moves, bounds X-30.000..86.000 Y-20.000..56.000 Z0.000..0.000 mm; 0 errors, 0 warnings"
+        "<stdin>: 8 blocks, 7 moves, bounds X-30.000..86.000 Y-20.000..56.000 Z0.000..0.000 mm; path 399.625 mm (rapid 91.625, feed 308.000), time 1 min 32.6 s; 0 errors, 0 warnings"
     );
+    // Behaviour 6.10 by hand: rapids (0,0) → (-30,-20) 36.056, the G46
+    // (24, 14) out and back 27.785 twice: 91.625; feeds 92 + 62 + 92 + 62 =
+    // 308 at F200: 92.4 s, and the rapids' longest axes 30, 24, 24 at
+    // 24,000 mm/min: 0.195 s.
 }
 
 #[test]
@@ -414,4 +418,65 @@ fn link_decode_errors_exit_2_with_the_reason() {
     let out = offsetlab(&["run"], b"");
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("no PROGRAM"));
+}
+
+#[test]
+fn behaviour1_24_a_lathe_program_on_the_mill_is_offered_the_lathe() {
+    let lathe = "G50 S2000\nG00 X40. Z2. T0101\nG01 U-4. W-20. F0.2\nM30\n";
+    // `check` stopped by the mill's errors: a note naming the lathe and why.
+    let out = offsetlab(&["check", "-"], lathe.as_bytes());
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    let note = text
+        .lines()
+        .find(|l| l.contains(": note: "))
+        .unwrap_or_else(|| panic!("{text}"));
+    assert!(note.ends_with("try --machine lathe"), "{note}");
+    for why in ["T0101", "U and W", "G50 S"] {
+        assert!(note.contains(why), "{why}: {note}");
+    }
+    // The JSON summary carries it.
+    let (v, _) = json(&["run", "--format", "json", "-"], lathe);
+    let hint = &v["summary"]["machine_hint"];
+    assert_eq!(hint["machine"], "lathe");
+    assert_eq!(hint["reasons"].as_array().unwrap().len(), 3, "{hint}");
+    // On the lathe it runs, and nothing is offered.
+    let (v, code) = json(
+        &["run", "--format", "json", "--machine", "lathe", "-"],
+        lathe,
+    );
+    assert_eq!(code, 0, "{v}");
+    assert!(v["summary"].get("machine_hint").is_none(), "{v}");
+}
+
+#[test]
+fn behaviour1_24_a_mill_program_on_the_lathe_is_offered_the_mill_and_mixed_words_are_not() {
+    let mill = "G90 G54 G00 X10. Y10.\nG43 Z5. H01\nM30\n";
+    let (v, code) = json(
+        &["run", "--format", "json", "--machine", "lathe", "-"],
+        mill,
+    );
+    assert_eq!(code, 1);
+    assert_eq!(v["summary"]["machine_hint"]["machine"], "mill", "{v}");
+    let reasons: Vec<&str> = v["summary"]["machine_hint"]["reasons"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| r.as_str().unwrap())
+        .collect();
+    assert_eq!(reasons.len(), 3, "Y, G43 and H: {reasons:?}");
+    // A program with words of both machines (a lathe with a Y axis) names
+    // neither: the choice stays the user's.
+    let both = "G00 X10. Y5. T0101\nM30\n";
+    let (v, _) = json(
+        &["run", "--format", "json", "--machine", "lathe", "-"],
+        both,
+    );
+    assert!(v["summary"].get("machine_hint").is_none(), "{v}");
+    let (v, _) = json(&["run", "--format", "json", "--machine", "mill", "-"], both);
+    assert!(v["summary"].get("machine_hint").is_none(), "{v}");
+    // Comments, and text after `;`, are not evidence.
+    let commented = "(U1. W2. T0101)\nG00 X1. Y1. ; see www.w3.org\nM30\n";
+    let (v, _) = json(&["run", "--format", "json", "-"], commented);
+    assert!(v["summary"].get("machine_hint").is_none(), "{v}");
 }

@@ -147,7 +147,7 @@ fn empty_input_is_an_empty_program() {
     assert_eq!(code(&out), 0);
     assert_eq!(
         stdout(&out),
-        "<stdin>: 0 blocks, 0 moves, no motion; 0 errors, 0 warnings\n"
+        "<stdin>: 0 blocks, 0 moves, no motion; path 0.000 mm (rapid 0.000, feed 0.000), time 0.0 s; 0 errors, 0 warnings\n"
     );
     let out = offsetlab(&["run", "--format", "json", "-"], b"");
     assert_eq!(code(&out), 0);

@@ -38,7 +38,7 @@ import {
   call, callAnswered, flushRun, initRunner, latestRun, onFileRead, post, readingFile, resendRun, runAnswered,
   scheduleRun, taskBegun, workerDid,
 } from './modules/runner.js';
-import { initSettings, renderSettings } from './modules/settings.js';
+import { initSettings, renderSettings, setMachine } from './modules/settings.js';
 import { cloneSetup } from './modules/setup.js';
 import { initShare } from './modules/share.js';
 import { initStepper } from './modules/stepper.js';
@@ -88,7 +88,7 @@ const editor = createEditor($('editor'), {
 });
 $('undo').addEventListener('click', () => editor.undo());
 $('redo').addEventListener('click', () => editor.redo());
-initResults(editor);
+initResults(editor, { onSwitchMachine: (kind) => change((s) => setMachine(s, kind), 'settings') });
 
 // --- the setup: one object, edited by the offset table, the settings form
 // and the raw JSON, which all follow it.

@@ -190,7 +190,7 @@ fn execute(cli: Cli, out: &mut impl Write) -> Result<ExitCode, Fatal> {
                 ..RunOptions::default()
             };
             let run = run_program(program, &doc.setup, options);
-            written(check(out, &name, &run))?;
+            written(check(out, &name, &run, program))?;
             Ok(exit(run.has_errors()))
         }
         Command::Link {
@@ -418,7 +418,7 @@ fn not_utf8(name: &str, e: std::str::Utf8Error) -> Fatal {
 }
 
 /// `check`: diagnostics as FILE:LINE:COL and one summary line.
-fn check(out: &mut impl Write, name: &str, run: &offsetlab::Run) -> io::Result<()> {
+fn check(out: &mut impl Write, name: &str, run: &offsetlab::Run, text: &str) -> io::Result<()> {
     for d in &run.diagnostics {
         writeln!(
             out,
@@ -430,7 +430,17 @@ fn check(out: &mut impl Write, name: &str, run: &offsetlab::Run) -> io::Result<(
             d.message
         )?;
     }
-    let s = summary(run);
+    let s = summary(run).with_hint(text);
+    // A program stopped by errors may be for the other machine (behaviour
+    // 1.24): say so once, with the option that runs it there.
+    if let (true, Some(h)) = (run.has_errors(), &s.machine_hint) {
+        let kind = h.machine.as_str();
+        writeln!(
+            out,
+            "{name}: note: this program reads as a {kind} program ({}): try --machine {kind}",
+            h.reasons.join("; ")
+        )?;
+    }
     let bounds = match s.bounds {
         Some(b) => {
             let dec = run.units.decimals();
@@ -443,9 +453,46 @@ fn check(out: &mut impl Write, name: &str, run: &offsetlab::Run) -> io::Result<(
         }
         None => "no motion".to_string(),
     };
+    let travel = travel_text(&s.travel, run.units);
     writeln!(
         out,
-        "{name}: {} blocks, {} moves, {bounds}; {} errors, {} warnings",
+        "{name}: {} blocks, {} moves, {bounds}; {travel}; {} errors, {} warnings",
         s.blocks, s.moves, s.errors, s.warnings
     )
+}
+
+/// The path length and the time estimate of `check`'s summary line
+/// (behaviour 6.10): `path 120.000 mm (rapid 20.000, feed 100.000), time
+/// 1 min 5.0 s`, and how many feed moves had no rate.
+fn travel_text(t: &offsetlab::view::TravelView, units: offsetlab::Units) -> String {
+    let dec = units.decimals();
+    let mut text = format!(
+        "path {:.dec$} {} (rapid {:.dec$}, feed {:.dec$}), time {}",
+        t.rapid + t.feed,
+        units.as_str(),
+        t.rapid,
+        t.feed,
+        duration(t.seconds)
+    );
+    if t.untimed > 0 {
+        text.push_str(&format!(
+            " + {} feed move{} without a rate",
+            t.untimed,
+            if t.untimed == 1 { "" } else { "s" }
+        ));
+    }
+    text
+}
+
+/// Seconds as `1 h 2 min 3.4 s`, `2 min 3.4 s` or `3.4 s`.
+fn duration(seconds: f64) -> String {
+    let tenths = (seconds * 10.0).round() as u64;
+    let (h, rest) = (tenths / 36_000, tenths % 36_000);
+    let (m, t) = (rest / 600, rest % 600);
+    let s = format!("{}.{} s", t / 10, t % 10);
+    match (h, m) {
+        (0, 0) => s,
+        (0, m) => format!("{m} min {s}"),
+        (h, m) => format!("{h} h {m} min {s}"),
+    }
 }

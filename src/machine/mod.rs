@@ -203,6 +203,7 @@ impl Machine {
             modal: Modal::start(setup.machine, setup.units),
             feed: None,
             spindle: None,
+            spindle_limit: None,
             tool: 0,
             next_tool: 0,
             length: LengthState::default(),
@@ -652,6 +653,7 @@ impl Machine {
             // G50 S on the lathe is the spindle speed limit, not a speed:
             // said, since no state shows it (behaviour 2.19, 2.22).
             if machine == MachineKind::Lathe && c.non_modal() == Some(NonModal::SetCoordinates) {
+                self.state.spindle_limit = Some(s);
                 let g = crate::syntax::codes::Code::NonModal(NonModal::SetCoordinates)
                     .gcode(self.state.table());
                 out.notes.push(format!(

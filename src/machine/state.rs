@@ -247,6 +247,9 @@ pub struct BlockState {
     pub feed: Option<f64>,
     /// Spindle speed word.
     pub spindle: Option<f64>,
+    /// Lathe: the spindle speed limit of G50 S (G92 S in G-code systems
+    /// B/C), which constant surface speed keeps under.
+    pub spindle_limit: Option<f64>,
     /// Mill: tool in the spindle (after M06) and the one selected by T.
     pub tool: u32,
     /// Mill: T selected for the next M06.

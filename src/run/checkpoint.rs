@@ -105,6 +105,8 @@ pub(super) struct Segment {
     pub(super) registers: Vec<u16>,
     /// Units of their first move.
     pub(super) first_units: Option<Units>,
+    /// Their path length and time.
+    pub(super) travel: crate::travel::Travel,
 }
 
 impl Segment {
@@ -116,6 +118,7 @@ impl Segment {
         self.registers.sort_unstable();
         self.registers.dedup();
         self.first_units = self.first_units.or(other.first_units);
+        self.travel.add(&other.travel);
     }
 }
 

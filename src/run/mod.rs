@@ -498,6 +498,7 @@ fn fresh(setup: &Setup) -> Run {
         offset_memory: setup.settings.offset_memory(),
         move_count: 0,
         bounds: None,
+        travel: Default::default(),
         end: End::Completed,
     }
 }
@@ -520,6 +521,7 @@ fn close(
     totals.close(checkpoints);
     let all = totals.before;
     result.bounds = all.bounds;
+    result.travel = all.travel;
     result.registers = all.registers;
     result.units = all.first_units.unwrap_or(result.end_units);
     diag::finish(&mut diagnostics, text);
@@ -557,6 +559,11 @@ fn account(
         include_move(&mut segment.bounds, m);
         observer.on_move(m);
     }
+    if !out.moves.is_empty() {
+        segment
+            .travel
+            .block(&out.moves, machine.state(), machine.setup().rapid_rate_mm());
+    }
     if options.keep_moves {
         result.moves.extend_from_slice(&out.moves);
     }
@@ -568,6 +575,9 @@ fn account(
         // A G10's values: the registers it set are the run's too, and its
         // block's report carries them (behaviour 6.9, 17.8).
         for e in &out.events {
+            if let EventKind::Dwell { seconds } = e {
+                segment.travel.dwell(*seconds);
+            }
             if let EventKind::DataSet(set) = e {
                 if let ("offsets" | "lathe_offsets", Ok(n)) = (set.table, set.key.parse::<u16>())
                     && !segment.registers.contains(&n)

@@ -245,7 +245,7 @@ impl Session {
         drop(earlier_text);
         self.view.after_run(&self.last.showing(), self.drawing);
         RunAnswer {
-            summary: summary(&self.last.run),
+            summary: summary(&self.last.run).with_hint(&self.last.text),
             diagnostics: &self.last.run.diagnostics,
         }
     }

@@ -34,6 +34,10 @@ pub const MAX_TABLE_SIZE: u16 = 999;
 /// Most additional work systems a setup holds (Haas G154 P1–P99; Fanuc's
 /// G54.1 reads the first 48).
 pub const MAX_EXTENDED_WORK: u16 = 99;
+/// The rapid rate a setup leaves out, in mm/min (behaviour 7.41).
+pub const DEFAULT_RAPID_RATE: f64 = 24_000.0;
+/// The largest rapid rate a setup may give, in its units per minute.
+pub const MAX_RAPID_RATE: f64 = 1_000_000.0;
 
 /// Milling machine (G43/G44/G45–G48) or lathe (T-code offsets).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -474,6 +478,16 @@ impl Setup {
                 ),
             ));
         }
+        if let Some(r) = self.settings.rapid_rate
+            && (!r.is_finite() || r <= 0.0 || r > MAX_RAPID_RATE)
+        {
+            out.push(setup_error(
+                "setup-range",
+                format!(
+                    "settings.rapid_rate = {r} must be more than 0 and at most {MAX_RAPID_RATE} (units per minute)"
+                ),
+            ));
+        }
         if let Some(d) = self.settings.peck_retract
             && (!d.is_finite() || d < 0.0 || d > max)
         {
@@ -542,6 +556,15 @@ impl Setup {
     /// Lathe register `n` (00 and unset read 0).
     pub fn lathe_register(&self, n: u16) -> LatheRegister {
         self.lathe_offsets.get(&n).copied().unwrap_or_default()
+    }
+
+    /// The rapid traverse rate in mm/min (behaviour 7.41): the setting, or
+    /// 24,000 mm/min, near the rapids of a small machining centre or
+    /// lathe (Haas VF-2 25.4 m/min, ST-10 24 m/min).
+    pub fn rapid_rate_mm(&self) -> f64 {
+        self.settings
+            .rapid_rate
+            .map_or(DEFAULT_RAPID_RATE, |r| r * self.units.mm())
     }
 
     /// The G73/G83 retract amount in millimetres.

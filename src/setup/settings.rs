@@ -341,6 +341,11 @@ pub struct Settings {
     /// (a machine parameter on a real control). Default 1 mm / 0.04 in.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub peck_retract: Option<f64>,
+    /// The rapid traverse rate of every axis, in setup units per minute,
+    /// for the cycle time estimate (behaviour 6.10, 7.41; a machine
+    /// parameter on a real control, Fanuc 1420). Default 24,000 mm/min.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rapid_rate: Option<f64>,
     /// Two G codes of one modal group in a block (behaviour 7.17); read it
     /// with [`Settings::same_group_codes`].
     #[serde(skip_serializing_if = "Option::is_none")]

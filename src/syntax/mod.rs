@@ -11,6 +11,7 @@
 
 mod block;
 pub mod codes;
+mod hint;
 mod lexer;
 mod messages;
 mod program;
@@ -18,6 +19,7 @@ mod read;
 mod resume;
 mod words;
 
+pub use hint::{MachineHint, machine_hint};
 pub use resume::Resume;
 pub(crate) use resume::shift;
 

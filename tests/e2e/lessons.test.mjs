@@ -112,7 +112,7 @@ describe('cutter compensation lessons', () => {
     await withPage(async (page) => {
       await loadExample(page, 'cutter-pocket');
       const n45 = await lineOf(page, 'N45');
-      assert.match(await page.locator('#summary').textContent(), new RegExp(` 1 error · 0 warnings · mill, mm · stopped at line ${n45}$`));
+      assert.match(await page.locator('#summary').textContent(), new RegExp(` 1 error · 0 warnings · mill, mm · stopped at line ${n45} · `));
       const item = page.locator('#diagnostics li.error');
       assert.equal(await item.count(), 1);
       assert.equal(await item.locator('.loc').textContent(), `${n45}:1`);

@@ -343,7 +343,8 @@ describe('link lengths', () => {
         compact: Number(compact.replace(/,/g, '')), plain: Number(plain.replace(/,/g, '')),
       }]));
     await withPage(async (page) => {
-      const titles = await page.locator('#example option').evaluateAll((os) => os.map((o) => [o.value, o.textContent]));
+      // Every option but the menu's "Choose an example…" (value '').
+      const titles = await page.locator('#example option').evaluateAll((os) => os.filter((o) => o.value).map((o) => [o.value, o.textContent]));
       assert.equal(rows.size, titles.length, 'a row per example (node scripts/link-lengths.mjs --write)');
       // The README's lengths are for the default base http://127.0.0.1:8000/.
       const extra = ctx.server.url.length - 'http://127.0.0.1:8000/'.length;

@@ -63,7 +63,7 @@ export function loadDocument(w, { ran = 0 } = {}) {
   renderOffsets({ force: true });
   renderSettings();
   if (work.setupText !== null) $('setup').value = work.setupText;
-  if (work.example) exampleSelect.value = work.example;
+  exampleSelect.value = work.example ?? '';
   showNote();
   persist();
 }
@@ -127,8 +127,11 @@ export async function sameDocument(a, b) {
 export function initDocuments(theEditor) {
   editor = theEditor;
   exampleSelect = $('example');
+  // Shown once the program is no longer an example as loaded (edited, or
+  // a link or file opened): the menu never names what is not there.
+  exampleSelect.add(new Option('Choose an example…', ''));
   for (const ex of EXAMPLES) exampleSelect.add(new Option(ex.title, ex.id));
-  if (work.example) exampleSelect.value = work.example;
+  exampleSelect.value = work.example ?? '';
   $('restore-previous').addEventListener('click', restorePrevious);
   $('examples').addEventListener('submit', (event) => {
     event.preventDefault();

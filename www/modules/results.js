@@ -21,8 +21,28 @@ let blockCount = 0;
 let currentBlock = null;
 let setupFailed = false; // the last run refused the setup
 
-export function initResults(theEditor) {
+let switchMachine = () => {};
+
+/** `onSwitchMachine(kind)`: the user accepted to run the program on the other machine. */
+export function initResults(theEditor, { onSwitchMachine } = {}) {
   editor = theEditor;
+  if (onSwitchMachine) switchMachine = onSwitchMachine;
+}
+
+/** Offers the machine the program's words belong to (behaviour 1.24), or withdraws the offer. */
+function offerMachine(hint) {
+  if (!hint) {
+    showBanner(null, { kind: 'machine' });
+    return;
+  }
+  showBanner(`This looks like a ${hint.machine} program: ${hint.reasons.join('; ')}.`, {
+    kind: 'machine',
+    action: `Switch to the ${hint.machine}`,
+    onAction: () => {
+      showBanner(null, { kind: 'machine' });
+      switchMachine(hint.machine);
+    },
+  });
 }
 
 /** The last run refused the setup (it ran with the default one). */
@@ -44,12 +64,34 @@ function endText(end) {
   }
 }
 
+/** Path length and the time estimate (behaviour 6.10): `path 399.6 mm (91.6 rapid)`, `≈ 1 min 33 s`. */
+function travelText({ travel, units, moves }) {
+  if (!travel || moves === 0) return [];
+  const d = units === 'inch' ? 2 : 1;
+  const path = `path ${(travel.rapid + travel.feed).toFixed(d)} ${units} (${travel.rapid.toFixed(d)} rapid)`;
+  const s = Math.round(travel.seconds);
+  const time = s >= 3600 ? `${Math.floor(s / 3600)} h ${Math.floor((s % 3600) / 60)} min`
+    : s >= 60 ? `${Math.floor(s / 60)} min ${s % 60} s` : `${travel.seconds.toFixed(1)} s`;
+  const untimed = travel.untimed > 0 ? ` + ${plural(travel.untimed, 'feed move')} without a rate` : '';
+  return [path, `≈ ${time}${untimed}`];
+}
+
+/** The extents of the run: `X-30…86 Y-20…56 Z0…0`. */
+function extentsText({ bounds, units }) {
+  if (!bounds) return [];
+  const d = units === 'inch' ? 3 : 2;
+  const n = (v) => String(Number(v.toFixed(d)));
+  const axes = ['x', 'y', 'z'].filter((a) => bounds.min[a] !== null && bounds.min[a] !== undefined);
+  return [axes.map((a) => `${a.toUpperCase()}${n(bounds.min[a])}…${n(bounds.max[a])}`).join(' ')];
+}
+
 /** A run's result: the summary line, the diagnostics, the registers it names, the machine's planes. */
 export function showResult({ summary, diagnostics }) {
   setupFailed = diagnostics.some((d) => d.line === 0 && d.code.startsWith('setup-'));
   summaryLine.textContent = [
     plural(summary.blocks, 'block'), plural(summary.moves, 'move'), plural(summary.errors, 'error'),
     plural(summary.warnings, 'warning'), `${summary.machine}, ${summary.units}`, endText(summary.end),
+    ...travelText(summary), ...extentsText(summary),
   ].join(' · ');
   summaryLine.classList.toggle('has-errors', summary.errors > 0);
   showDiagnostics($('diagnostics'), diagnostics, {
@@ -59,6 +101,7 @@ export function showResult({ summary, diagnostics }) {
   editor.setDiagnostics(diagnostics);
   setProgramRegisters(summary.registers ?? [], summary.set_by_program ?? [], summary.offset_memory ?? null);
   setMachinePlanes(summary.machine);
+  offerMachine(summary.machine_hint);
 }
 
 /** The worker's view state: the view, the current block and what changed it. */

@@ -12,11 +12,7 @@ const CHOICES = [
   {
     id: 'machine', label: 'Machine', options: [['mill', 'Mill'], ['lathe', 'Lathe']],
     get: (s) => machineOf(s),
-    set: (s, v) => {
-      s.machine = v;
-      // Mirror image is a mill switch: a lathe setup with it is refused.
-      if (v === 'lathe') setSetting(s, 'mirror', []);
-    },
+    set: (s, v) => setMachine(s, v),
     help: 'Mill: X Y Z with G43/G44 length (H) and G45–G48 position (D) offsets. Lathe: X as a diameter and Z, T-code offsets.',
   },
   {
@@ -211,6 +207,13 @@ function pointInput(def, input) {
     if (def.id === 'start') setStart(s, p);
     else setWorkOffset(s, def.id, p);
   }, 'settings');
+}
+
+/** Puts `setup` on the machine `kind` (`mill` or `lathe`). */
+export function setMachine(setup, kind) {
+  setup.machine = kind;
+  // Mirror image is a mill switch: a lathe setup with it is refused.
+  if (kind === 'lathe') setSetting(setup, 'mirror', []);
 }
 
 export function initSettings({ getSetup, change, replace }) {

@@ -45,9 +45,11 @@ export function setupDocument() {
   return work.setupText ?? JSON.stringify(work.setup);
 }
 
-/** The note of the example shown (none once it is edited). */
+/** The note of the example shown, and the menu naming it (neither once it is edited). */
 export function showNote() {
   document.getElementById('example-note').textContent = exampleById(work.example)?.note ?? '';
+  const menu = document.getElementById('example');
+  if (menu && menu.options.length > 0) menu.value = work.example ?? '';
 }
 
 /** The user changed the program or the setup: the work is now their own. */
