@@ -65,7 +65,8 @@ impl Machine {
             }
             // A lathe cycle compensates itself from its start point, where
             // the vector is taken off (behaviour 18.11, 18.15).
-            if matches!(codes.cycle(), Some(CannedCycle::Cycle(_))) || probe.nose_cycle_block(next) {
+            if matches!(codes.cycle(), Some(CannedCycle::Cycle(_))) || probe.nose_cycle_block(next)
+            {
                 return Next::Unknown(Why::Return);
             }
             let before = probe.state.cutter;

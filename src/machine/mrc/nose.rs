@@ -440,7 +440,10 @@ impl Machine {
             out.warnings.push(Diagnostic::warning(
                 code,
                 b.span,
-                format!("{name} with {}: {text}; it runs as programmed", mode.gcode()),
+                format!(
+                    "{name} with {}: {text}; it runs as programmed",
+                    mode.gcode()
+                ),
             ));
             return Ok(false);
         }
@@ -484,7 +487,8 @@ impl Machine {
             p_line: b.span.line,
             q_line: b.span.line,
         };
-        let Some(shape) = self.nose_shape(b, Repetitive::Finishing, &c, &mut Out::default())? else {
+        let Some(shape) = self.nose_shape(b, Repetitive::Finishing, &c, &mut Out::default())?
+        else {
             return Ok(false);
         };
         self.nose_take_off(out);
