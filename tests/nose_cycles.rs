@@ -249,3 +249,37 @@ G40
     // offset and the return to A takes the vector off.
     assert_eq!(g70[..5], want[..5]);
 }
+
+#[test]
+fn behaviour18_11_a_vector_before_the_cycle_is_taken_off_at_its_start() {
+    // G42 starts up on line 3 (−Z); the cycle follows, so the block ends
+    // perpendicular: centre (2, 30.8), nose (1.2, 30) — X60 Z1.2.
+    let text = "T0101
+G00 X60. Z5.
+G42 G00 X60. Z2.
+G71 U2. R0.5
+G71 P10 Q20 U0. W0. F0.2
+N10 G00 X20.
+G01 Z-10.
+N20 X60.
+G00 Z5.
+G40 G00 X70.
+";
+    let r = ok(text, &nose(0.8, 3, Control::Fanuc));
+    near(ends(&r, 3)[0], [60.0, 1.2]);
+    let g71 = ends(&r, 5);
+    // The cycle first takes the vector off: to A (X60 Z2) at rapid.
+    near(g71[0], [60.0, 2.0]);
+    // A square shoulder: the Z leg (centre r 10.8) meets the face leg
+    // (+X at Z−10, centre z −9.2) at (−9.2, 10.8): the nose (−10, 10), so
+    // the passes end on Z−10 as programmed; the contour's end X60 ends
+    // perpendicular: centre (−9.2, 30), nose X58.4 Z−10; back to A.
+    assert!(g71.iter().all(|p| p[1] >= -10.0 - 1e-9));
+    near(g71[g71.len() - 2], [58.4, -10.0]);
+    near(g71[g71.len() - 1], [60.0, 2.0]);
+    // G42 is still the mode: the next move starts up again (type A, the
+    // G40 block next): the nose X58.4 Z5.
+    near(ends(&r, 9)[0], [58.4, 5.0]);
+    let after = r.blocks.iter().find(|b| b.span.line == 5).unwrap();
+    assert!(after.explanation().contains("behaviour 18.11"));
+}

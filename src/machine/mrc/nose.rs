@@ -77,6 +77,11 @@ impl Machine {
         }
         let radius = self.cutter_radius();
         if radius == 0.0 {
+            out.notes.push(format!(
+                "{}: the contour asks for tool nose radius compensation, but offset {:02} has nose radius 0: the contour is cut as programmed (behaviour 18.1)",
+                self.code_name(cycle),
+                self.state.lathe.offset
+            ));
             return Ok(None);
         }
         let tip = self.nose_register().1;
@@ -133,7 +138,7 @@ impl Machine {
                 // Cancel mode, or the block that cancels: to the programmed
                 // end (behaviour 18.4).
                 if engaged && p.is_arc() {
-                    return Err(self.nose_arc_error(b, cycle, c, i, "cancel"));
+                    return Err(self.nose_arc_error(b, cycle, c, "cancel"));
                 }
                 moves[i].push(Piece {
                     to: p.end(),
@@ -144,7 +149,7 @@ impl Machine {
                 continue;
             }
             if !engaged && p.is_arc() {
-                return Err(self.nose_arc_error(b, cycle, c, i, "start-up"));
+                return Err(self.nose_arc_error(b, cycle, c, "start-up"));
             }
             let next = (i + 1..n).find_map(|j| paths[j].map(|q| (q, offsets[j])));
             let (rule, nextp, o2) = match next {
@@ -157,7 +162,7 @@ impl Machine {
             let steps = corner.steps();
             let e = steps.first().map_or(p.end(), Step::end);
             if engaged {
-                self.nose_interference(b, &p, o, (last, e))?;
+                self.nose_interference(b, out, &p, o, (last, e))?;
             }
             let own = match p {
                 Path::Arc { center, ccw, .. } => Some((add(center, shift), ccw)),
@@ -487,8 +492,11 @@ impl Machine {
             p_line: b.span.line,
             q_line: b.span.line,
         };
-        let Some(shape) = self.nose_shape(b, Repetitive::Finishing, &c, &mut Out::default())?
-        else {
+        // The contour's sentence is not this cycle's; its warnings are.
+        let mut scratch = Out::default();
+        let shape = self.nose_shape(b, Repetitive::Finishing, &c, &mut scratch)?;
+        out.warnings.append(&mut scratch.warnings);
+        let Some(shape) = shape else {
             return Ok(false);
         };
         self.nose_take_off(out);
@@ -516,6 +524,7 @@ impl Machine {
     fn nose_interference(
         &self,
         b: &Block,
+        out: &mut Out,
         p: &Path,
         o: f64,
         (from, to): (P2, P2),
@@ -537,30 +546,36 @@ impl Machine {
                     )
             }
         };
-        if bad && self.setup.settings.cutter_interference_check == CutterInterference::Alarm {
-            return Err(self.error(
+        if !bad {
+            return Ok(());
+        }
+        let what = "the nose's offset path runs against the programmed one (too narrow a groove or too small an arc for the nose radius)";
+        match self.setup.settings.cutter_interference_check {
+            CutterInterference::Alarm => Err(self.error(
                 "cutter-interference",
                 b.span,
-                "interference in the cycle's contour: the nose's offset path runs against the programmed one (too narrow a groove or too small an arc for the nose radius) — alarm PS0041",
-            ));
+                format!("interference in the cycle's contour: {what} — alarm PS0041"),
+            )),
+            CutterInterference::Off => {
+                out.warnings.push(Diagnostic::warning(
+                    "cutter-interference",
+                    b.span,
+                    format!(
+                        "interference in the cycle's contour: {what}; with the check off (setting cutter_interference_check) the tool cuts into the part"
+                    ),
+                ));
+                Ok(())
+            }
         }
-        Ok(())
     }
 
     #[cold]
-    fn nose_arc_error(
-        &self,
-        b: &Block,
-        cycle: Repetitive,
-        c: &Contour,
-        _i: usize,
-        what: &str,
-    ) -> Diagnostic {
+    fn nose_arc_error(&self, b: &Block, cycle: Repetitive, c: &Contour, what: &str) -> Diagnostic {
         self.error(
             "cutter-arc",
             b.span,
             format!(
-                "{}: the contour N… (lines {}–{}) makes its compensation {what} in a G02/G03 block: compensation starts and ends on a G00 or G01 move (Fanuc alarm PS0034)",
+                "{}: the contour (lines {}–{}) makes its compensation {what} in a G02/G03 block: compensation starts and ends on a G00 or G01 move (Fanuc alarm PS0034)",
                 self.code_name(cycle),
                 c.p_line,
                 c.q_line
