@@ -283,3 +283,33 @@ G40 G00 X70.
     let after = r.blocks.iter().find(|b| b.span.line == 5).unwrap();
     assert!(after.explanation().contains("behaviour 18.11"));
 }
+
+#[test]
+fn behaviour18_11_the_compensation_must_face_the_stock() {
+    // The shaft's stock lies above the contour (A at X60) and the cut
+    // travels −Z: left of the travel is −X, the part; G41 would put the
+    // nose on the part's side (Fanuc PS0328).
+    let text = SHAFT.replace("G42", "G41");
+    let r = run(&text, &nose(0.8, 3, Control::Haas));
+    let d = r.diagnostics.iter().find(|d| d.is_error()).unwrap();
+    assert_eq!((d.code, d.line), ("nose-side", 4));
+    assert!(d.message.contains("wants G42"), "{}", d.message);
+    // A bore: A at X10, the contour from X30 down to X20 going −Z; the
+    // stock lies toward A, below the contour (−X), and left of −Z travel
+    // is −X: G41 faces the stock, G42 the part.
+    let bore = "T0101
+G00 X10. Z2.
+G71 U1. R0.5
+G71 P10 Q20 U0. W0. F0.2
+N10 G00 G41 X30.
+G01 Z-10.
+X20. Z-20.
+N20 X10.
+";
+    ok(bore, &nose(0.4, 2, Control::Haas));
+    let wrong = bore.replace("G41", "G42");
+    assert_eq!(
+        errors(&wrong, &nose(0.4, 2, Control::Haas)),
+        vec!["nose-side"]
+    );
+}

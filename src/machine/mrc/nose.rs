@@ -38,6 +38,8 @@ pub(super) struct NoseShape {
     pub moves: Vec<Vec<Piece>>,
     /// The same as a contour (X diameter, Z) for the roughing passes.
     pub segs: Vec<Seg>,
+    /// The signed offsets (+ left) of the compensated segments.
+    pub sides: Vec<f64>,
 }
 
 /// (Z, X radius) of a contour point given as X diameter and Z.
@@ -209,7 +211,8 @@ impl Machine {
                 "the roughing passes cut down to it plus the finishing allowance"
             }
         ));
-        Ok(Some(NoseShape { moves, segs }))
+        let sides = offsets.into_iter().filter(|o| *o != 0.0).collect();
+        Ok(Some(NoseShape { moves, segs, sides }))
     }
 
     /// The compensated moves as a contour (X diameter, Z) the roughing
@@ -347,6 +350,41 @@ impl Machine {
             programmed_start_angle: prog.start_angle,
             diameter_x: true,
         })
+    }
+
+    /// G71/G72 check that the compensation puts the nose on the stock's
+    /// side of the contour (Fanuc alarm PS0328, "illegal work position in
+    /// the tool nose radius compensation": behaviour 18.11). `sq` is the
+    /// sign of the cut's travel (Z for G71, X for G72), `sp` the side of
+    /// the contour A lies on along the depth axis: the stock is left of the
+    /// travel when `sq·sp` > 0 in G71 (along Z, the depth X) and when
+    /// `−sq·sp` > 0 in G72 (along X, the depth Z).
+    pub(super) fn nose_side(
+        &self,
+        b: &Block,
+        cycle: Repetitive,
+        shape: Option<&NoseShape>,
+        (sq, sp): (f64, f64),
+    ) -> Result<(), Diagnostic> {
+        let Some(shape) = shape else { return Ok(()) };
+        let left = if cycle == Repetitive::FacingStock {
+            -sq * sp
+        } else {
+            sq * sp
+        };
+        if shape.sides.iter().all(|o| o * left > 0.0) {
+            return Ok(());
+        }
+        let want = if left > 0.0 { "G41" } else { "G42" };
+        Err(self.error(
+            "nose-side",
+            b.span,
+            format!(
+                "{}: the compensation puts the nose on the part's side of the contour: the stock lies {} of the cut, so this contour wants {want} (Fanuc alarm PS0328)",
+                self.code_name(cycle),
+                if left > 0.0 { "left" } else { "right" }
+            ),
+        ))
     }
 
     /// The contour once from the tool's position, shifted by `shift` (X

@@ -298,6 +298,7 @@ impl Machine {
             sq: super::sign(end[cut_axis] - a[cut_axis]),
             sp: super::sign(a[depth_axis] - a1[depth_axis]),
         };
+        self.nose_side(b, cycle, shape.as_ref(), (frame.sq, frame.sp))?;
         // The checks look at the contour as programmed; the passes cut the
         // one shifted by the finishing allowance.
         let programmed = pieces(frame, a, &c.segs, [0.0, 0.0]);
