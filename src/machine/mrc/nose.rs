@@ -480,14 +480,12 @@ impl Machine {
         };
         if let Some((code, text)) = why {
             self.nose_take_off(out);
-            out.warnings.push(Diagnostic::warning(
-                code,
-                b.span,
-                format!(
-                    "{name} with {}: {text}; it runs as programmed",
-                    mode.gcode()
-                ),
-            ));
+            let text = format!(
+                "{name} with {}: {text}; it runs as programmed (behaviour 18.16)",
+                mode.gcode()
+            );
+            out.notes.push(text.clone());
+            out.warnings.push(Diagnostic::warning(code, b.span, text));
             return Ok(false);
         }
         let tip = self.nose_register().1;
