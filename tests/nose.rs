@@ -233,34 +233,29 @@ fn behaviour18_6_an_interference_is_the_mills_alarm() {
 }
 
 #[test]
-fn behaviour18_7_single_cycles_in_compensation_are_refused() {
+fn behaviour18_7_a_cycle_in_the_g41_g42_block_itself_is_refused() {
     let s = nose(1, 0.0, 0.0, 0.4, 3);
-    let text = "T0101\nG00 X42. Z2.\nG42 G01 X40. Z0 F0.1\nG90 X38. Z-20. F0.2\n";
-    let (code, line, column, msg) = alarm(text, &s);
-    assert_eq!((code, line, column), ("nose-in-cycle", 4, 1));
+    // G42 and G90 in one block: the cycle compensates from the mode in
+    // force, so G42 goes in a block before (18.15).
+    let text = "T0101\nG00 X42. Z2.\nG42 G90 X38. Z-20. F0.2\n";
+    let (code, line, _, msg) = alarm(text, &s);
+    assert_eq!((code, line), ("nose-in-cycle", 3));
     assert!(msg.contains("G90 with G42"), "{msg}");
-    for cycle in ["G92 X38. Z-20. F1.5", "G94 X20. Z-2. F0.2"] {
-        let text = format!("T0101\nG00 X42. Z2.\nG42\n{cycle}\n");
-        assert_eq!(alarm(&text, &s).0, "nose-in-cycle", "{cycle}");
-    }
-    // With G40 first, the cycle runs.
+    // G42 before the cycle: it runs compensated.
     ok(
-        "T0101\nG00 X42. Z2.\nG42 G01 X40. Z0 F0.1\nG40 G00 X42. Z2.\nG90 X38. Z-20. F0.2\n",
+        "T0101\nG00 X42. Z2.\nG42\nG90 X38. Z-20. F0.2\nG40 G00 X50.\n",
         &s,
     );
 }
 
 #[test]
-fn behaviour18_8_repetitive_cycles_with_compensation_are_refused() {
+fn behaviour18_8_g74_to_g76_in_compensation_are_refused() {
     let s = nose(1, 0.0, 0.0, 0.4, 3);
-    // G42 in the contour's first block: refused at it, naming the cycle.
-    let text = "T0101\nG00 X42. Z2.\nG71 U1. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.2\nN10 G42 G00 X20.\nG01 Z-20.\nN20 X42.\nG40\n";
-    let (code, line, column, msg) = alarm(text, &s);
-    assert_eq!((code, line, column), ("nose-in-cycle", 5, 5));
-    assert!(msg.contains("G71"), "{msg}");
-    // A cycle block while G42 is the mode.
-    let text = "T0101\nG00 X42. Z2.\nG42\nG70 P10 Q20\nN10 G00 X20.\nG01 Z-20.\nN20 X42.\n";
+    let text = "T0101\nG00 X42. Z2.\nG42\nG75 R0.5\nG75 X30. Z-10. P1000 Q2000 F0.1\n";
     assert_eq!(alarm(text, &s).0, "nose-in-cycle");
+    // G70 while G42 is the mode now compensates its contour (18.12).
+    let text = "T0101\nG00 X42. Z2.\nG42\nG70 P10 Q20\nN10 G00 X20.\nG01 Z-20.\nN20 X42.\nG40\n";
+    ok(text, &s);
 }
 
 #[test]

@@ -40,6 +40,9 @@ impl Machine {
             self.pass_over(b, out);
             return Ok(());
         }
+        if self.nose_cycle_block(b) {
+            return self.nose_cycle_run(b, out, program);
+        }
         if (self.state.cutter.engaged() && !self.cutter_after_cancel(b))
             || super::cutter::concerns(b)
         {
@@ -447,7 +450,10 @@ impl Machine {
                 (x0, z0, MoveKind::Rapid),
             ],
         };
-        for (i, (x, z, kind)) in legs.into_iter().enumerate() {
+        // In G41/G42 the legs are compensated (behaviour 18.15).
+        let done = self.state.cutter.engaged()
+            && self.nose_single_cycle(b, cycle, [x0, z0], &legs, out)?;
+        for (i, (x, z, kind)) in legs.into_iter().enumerate().filter(|_| !done) {
             let start: Mark = self.mark();
             if i == 0 {
                 self.state.lathe.vector = self.state.lathe.target;

@@ -382,6 +382,14 @@ pub struct Settings {
     /// [`Settings::trailing_rapids`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub trailing_rapids: Option<TrailingRapids>,
+    /// Where a G70–G73 contour may write G40/G41/G42 (behaviour 7.34,
+    /// 18.11); read it with [`Settings::nose_in_contour`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub nose_in_contour: Option<NoseInContour>,
+    /// Tool nose radius compensation in G90/G94 (behaviour 7.35, 18.15);
+    /// read it with [`Settings::nose_single_cycles`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub nose_single_cycles: Option<NoseSingleCycles>,
     /// Cutter compensation start-up and cancel type (behaviour 16.3); read
     /// it with [`Settings::cutter_start_up`].
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -502,6 +510,28 @@ impl Settings {
         })
     }
 
+    /// Where a G70–G73 contour may write G40/G41/G42: in the contour on
+    /// Haas (its school programs start the compensation in the P block and
+    /// end it in the Q block) and YASNAC (our convention); only before the
+    /// cycle on Fanuc (our reading of the 0i-F / 30i-B manuals' restriction
+    /// on the shape program, alarm PS0325).
+    pub fn nose_in_contour(&self) -> NoseInContour {
+        self.nose_in_contour.unwrap_or(match self.control {
+            Control::Haas | Control::Yasnac => NoseInContour::Contour,
+            Control::Fanuc => NoseInContour::BeforeCycle,
+        })
+    }
+
+    /// G90/G94 with G41/G42 the mode: compensated on the side the tip
+    /// direction gives on every profile (Fanuc 0i-TF, our reading of "tool
+    /// nose radius compensation in canned cycles"; Haas and YASNAC our
+    /// convention); `off` runs them as programmed with a warning.
+    pub fn nose_single_cycles(&self) -> NoseSingleCycles {
+        self.nose_single_cycles.unwrap_or(match self.control {
+            Control::Haas | Control::Yasnac | Control::Fanuc => NoseSingleCycles::Tip,
+        })
+    }
+
     /// Cutter compensation start-up and cancel: type A on every profile —
     /// Fanuc's parameter SUP (No. 5003#0) is 0 as shipped, Haas's setting
     /// 43 is A by default; no YASNAC manual the project has describes a
@@ -604,6 +634,28 @@ pub enum TrailingRapids {
     /// The tool's exit: the roughing stops at the last block before them,
     /// with a warning.
     Exit,
+}
+
+/// Where a G70–G73 contour may write G40/G41/G42 (behaviour 7.34).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum NoseInContour {
+    /// In the contour: the compensation starts up at the block with
+    /// G41/G42 and is cancelled at the block with G40 (Haas).
+    Contour,
+    /// Before the cycle only: G40–G42 between P and Q is an alarm (PS0325),
+    /// the mode in force compensates the whole contour (Fanuc).
+    BeforeCycle,
+}
+
+/// Tool nose radius compensation in G90/G94 (behaviour 7.35).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum NoseSingleCycles {
+    /// The cycle's legs compensated, the side given by the tip direction.
+    Tip,
+    /// The cycle runs as programmed, with a warning.
+    Off,
 }
 
 /// How D reads in a lathe G71/G72/G74–G76 block (behaviour 7.24).

@@ -70,6 +70,16 @@ const CHOICES = [
     help: 'The face plane of polar coordinate interpolation: Fanuc writes X as a diameter and C for the hypothetical axis, moving with G01–G03 only; Haas’s G112 writes X as a radius and Y (XY to XC) and also moves at rapid (YASNAC as Fanuc).',
   },
   {
+    id: 'nose_in_contour', label: 'G41/G42 in a G70–G73 contour', machine: 'lathe', controlDefault: true,
+    options: [['contour', 'where written (Haas)'], ['before_cycle', 'before the cycle (Fanuc)']],
+    help: 'Tool nose radius compensation in G70–G73: Haas programs start it in the contour’s first block and cancel it in the last; Fanuc wants G41/G42 before the cycle and stops on G40–G42 inside the contour (alarm PS0325). Either way the cycle roughs and finishes the compensated shape.',
+  },
+  {
+    id: 'nose_single_cycles', label: 'G90/G94 in G41/G42', machine: 'lathe',
+    options: [['tip', 'compensated by the tip'], ['off', 'as programmed']],
+    help: 'A G90 or G94 while G41/G42 is on: its legs compensated on the side the tool’s tip direction gives, whatever G41/G42 says (Fanuc), or run as programmed with a warning. G92 threading is never compensated.',
+  },
+  {
     id: 'dwell_p_decimal_point', label: 'Decimal point in P', controlDefault: true,
     options: [['error', 'an error'], ['seconds', 'seconds']],
     help: 'G04 P3. (and a canned cycle’s dwell P): YASNAC and Fanuc take P in milliseconds without a point and refuse P3.; Haas reads P3. as 3 seconds and P3 as 3 milliseconds.',

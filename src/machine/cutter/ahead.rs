@@ -63,7 +63,10 @@ impl Machine {
                 }
                 _ => {}
             }
-            if matches!(codes.cycle(), Some(CannedCycle::Cycle(_))) {
+            // A lathe cycle compensates itself from its start point, where
+            // the vector is taken off (behaviour 18.11, 18.15).
+            if matches!(codes.cycle(), Some(CannedCycle::Cycle(_))) || probe.nose_cycle_block(next)
+            {
                 return Next::Unknown(Why::Return);
             }
             let before = probe.state.cutter;

@@ -137,7 +137,7 @@ impl Machine {
     /// The corner by `rule`, or the alarm when an intersection it needs
     /// does not exist (behaviour 16.12: Fanuc PS0033).
     #[inline]
-    pub(super) fn corner_or_alarm(
+    pub(in crate::machine) fn corner_or_alarm(
         &self,
         b: &Block,
         prev: &Path,
@@ -402,7 +402,7 @@ impl Machine {
     }
 
     /// The radius check's tolerance (behaviour 2.13).
-    pub(super) fn arc_tolerance(&self) -> f64 {
+    pub(in crate::machine) fn arc_tolerance(&self) -> f64 {
         match self.units() {
             crate::setup::Units::Mm => 0.01,
             crate::setup::Units::Inch => 0.0005 * 25.4,

@@ -13,13 +13,13 @@ use crate::machine::Machine;
 use crate::machine::modal::Motion;
 use crate::offsets::cutter::{Phase, nose};
 use crate::setup::MachineKind;
-use crate::syntax::codes::{Code, CutterCompensation, Group, NonModal};
+use crate::syntax::codes::{Code, CutterCompensation, Group, NonModal, Repetitive};
 use crate::syntax::{Address, Block};
 
 impl Machine {
     /// True on the lathe, where G41/G42 are tool nose radius compensation.
     #[inline(always)]
-    pub(super) fn nose_lathe(&self) -> bool {
+    pub(in crate::machine) fn nose_lathe(&self) -> bool {
         self.setup.machine == MachineKind::Lathe
     }
 
@@ -50,10 +50,55 @@ impl Machine {
         self.lathe_run(b, out, &mut crate::machine::program::NoText)
     }
 
+    /// True for a G70–G73 or G90/G92/G94 cycle block while G41/G42 is the
+    /// mode or its vector is on: the cycle compensates itself (behaviour
+    /// 18.11, 18.15) instead of the block-by-block compensation.
+    pub(in crate::machine) fn nose_cycle_block(&self, b: &Block) -> bool {
+        if !self.nose_lathe() || !self.state.cutter.engaged() || b.codes().cutter().is_some() {
+            return false;
+        }
+        if let Some(NonModal::Repetitive(r)) = b.codes().non_modal() {
+            return handled(r);
+        }
+        let axis = [Address::X, Address::U, Address::Z, Address::W, Address::R]
+            .iter()
+            .any(|a| b.has(*a));
+        axis && b.codes().non_modal().is_none()
+            && matches!(
+                b.codes().motion().unwrap_or(self.state.modal.motion),
+                Motion::LatheCycle(_)
+            )
+    }
+
+    /// A cycle block in G41/G42 (behaviour 18.11, 18.15): what the mode
+    /// refuses, then the cycle, which leaves the tool at its start point
+    /// without a vector.
+    #[cold]
+    #[inline(never)]
+    pub(in crate::machine) fn nose_cycle_run(
+        &mut self,
+        b: &Block,
+        out: &mut crate::machine::Out,
+        program: &mut dyn crate::machine::program::ProgramText,
+    ) -> Result<(), Diagnostic> {
+        self.nose_checks(b)?;
+        if self.state.cutter.mode == CutterCompensation::Cancel
+            && self.state.cutter.phase == Phase::Cancelling
+        {
+            self.state.cutter.phase = Phase::Cancel;
+        }
+        let moves = out.moves.len();
+        self.lathe_run(b, out, program)?;
+        if out.moves.len() > moves {
+            self.nose_after_cycle();
+        }
+        Ok(())
+    }
+
     /// The nose radius of the active T code's offset register (geometry +
     /// wear, mm; 0 with offset 00) and its tip direction (behaviour 18.1).
     #[inline(never)]
-    pub(super) fn nose_register(&self) -> (f64, u8) {
+    pub(in crate::machine) fn nose_register(&self) -> (f64, u8) {
         let n = self.state.lathe.offset;
         if n == 0 {
             return (0.0, 0);
@@ -65,7 +110,7 @@ impl Machine {
     /// Imaginary tool nose − nose centre in the plane (Z, X radius; mm)
     /// while the vector is on: the tip direction's vector times the nose
     /// radius (behaviour 18.2); zero on the mill and for tips 0 and 9.
-    pub(super) fn nose_tip(&self) -> P2 {
+    pub(in crate::machine) fn nose_tip(&self) -> P2 {
         let c = self.state.cutter;
         match c.tip {
             Some(t) => {
@@ -100,23 +145,26 @@ impl Machine {
             .any(|a| b.has(*a));
         if let Motion::LatheCycle(_) = codes.motion().unwrap_or(self.state.modal.motion)
             && axis
+            && codes.cutter().is_some()
         {
             let m = codes.motion().unwrap_or(self.state.modal.motion);
             return Err(self.error(
                 "nose-in-cycle",
                 b.code_span(Group::Motion),
                 format!(
-                    "{} with {name}: the single cycles with tool nose radius compensation are not modelled yet (cancel with G40 before the cycle)",
+                    "{} with {name} in one block: write G41/G42 in a block before the cycle (the cycle then compensates its legs, behaviour 18.15)",
                     Code::Motion(m).gcode(self.state.table())
                 ),
             ));
         }
-        if let Some(NonModal::Repetitive(r)) = codes.non_modal() {
+        if let Some(NonModal::Repetitive(r)) = codes.non_modal()
+            && (!handled(r) || codes.cutter().is_some())
+        {
             return Err(self.error(
                 "nose-in-cycle",
                 b.code_span(Group::NonModal),
                 format!(
-                    "{} with {name}: the multiple repetitive cycles with tool nose radius compensation are not modelled yet (cancel with G40 before the cycle)",
+                    "{} with {name}: G74–G76 with tool nose radius compensation are not modelled, nor G41/G42 in a cycle's own block (cancel with G40 before, or write G41/G42 in a block before G70–G73)",
                     Code::NonModal(NonModal::Repetitive(r)).gcode(self.state.table())
                 ),
             ));
@@ -174,5 +222,17 @@ impl Machine {
             crate::geometry::show_signed(t[0], u),
             crate::geometry::show_signed(2.0 * t[1], u)
         )
+    }
+}
+
+/// The multiple repetitive cycles that compensate their contour (behaviour
+/// 18.11): G70–G73; G74–G76 are refused in G41/G42.
+fn handled(r: Repetitive) -> bool {
+    match r {
+        Repetitive::Finishing
+        | Repetitive::TurningStock
+        | Repetitive::FacingStock
+        | Repetitive::PatternRepeat => true,
+        Repetitive::FacePeck | Repetitive::DiameterPeck | Repetitive::Threading => false,
     }
 }

@@ -27,6 +27,9 @@ pub(super) struct Seg {
     pub spindle: Option<f64>,
     /// A G04 block of the contour: its dwell (seconds), no motion.
     pub dwell: Option<f64>,
+    /// The group 07 code (G40, G41, G42) the block writes: tool nose
+    /// radius compensation in the cycle (behaviour 18.11).
+    pub nose: Option<CutterCompensation>,
 }
 
 /// A contour read from the program.
@@ -131,6 +134,7 @@ impl Machine {
         let mut at = start;
         let mut feed = self.state.feed;
         let mut spindle = self.state.spindle;
+        let mut nose = None;
         for (i, blk) in blocks.iter().enumerate() {
             let skipped = blk.skip && self.setup.settings.block_skip;
             if skipped && i != 0 {
@@ -180,6 +184,7 @@ impl Machine {
                     feed,
                     spindle,
                     dwell: Some(seconds),
+                    nose: codes.cutter(),
                 });
                 continue;
             }
@@ -220,6 +225,8 @@ impl Machine {
                 .iter()
                 .any(|a| blk.has(*a));
             if to == at && !arc_words {
+                // G40/G41/G42 alone act with the next move (behaviour 18.4).
+                nose = codes.cutter().or(nose);
                 continue;
             }
             let arc = match motion {
@@ -233,6 +240,7 @@ impl Machine {
                 feed,
                 spindle,
                 dwell: None,
+                nose: codes.cutter().or(nose.take()),
             });
             at = to;
         }
@@ -268,16 +276,17 @@ impl Machine {
         if let Some(u) = codes.units() {
             return Err(refuse(u.gcode().to_string()));
         }
-        // Fanuc's cycles rough and finish the compensated shape when the
-        // contour holds G41/G42 (0i-TF, "Tool nose radius compensation in
-        // canned cycles"); not modelled yet: refused, never drawn
-        // uncompensated (behaviour 18.8).
-        if let Some(c @ (CutterCompensation::Left | CutterCompensation::Right)) = codes.cutter() {
+        // Fanuc wants G40–G42 before the cycle, not in the shape program
+        // (PS0325); Haas starts and ends the compensation in the contour
+        // (behaviour 7.34, 18.11).
+        if let Some(c) = codes.cutter()
+            && self.setup.settings.nose_in_contour() == crate::setup::NoseInContour::BeforeCycle
+        {
             return Err(self.error(
                 "nose-in-cycle",
                 blk.code_span(crate::syntax::codes::Group::Cutter),
                 format!(
-                    "{}: the contour block at line {line} starts tool nose radius compensation, and a {} with compensation is not modelled yet (run the contour as plain blocks, or the cycle without G41/G42)",
+                    "{}: the contour block at line {line} of the {} writes tool nose radius compensation, which goes before the cycle on this control (Fanuc alarm PS0325; setting nose_in_contour)",
                     c.gcode(),
                     self.code_name(cycle)
                 ),

@@ -11,6 +11,7 @@
 //! and threading `thread.rs`.
 
 mod contour;
+mod nose;
 mod peck;
 mod rough;
 mod thread;

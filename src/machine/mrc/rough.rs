@@ -268,6 +268,7 @@ impl Machine {
         let type_two = if facing { c.p_x } else { c.p_z };
         let (depth_axis, cut_axis) = if facing { (1, 0) } else { (0, 1) };
         self.trailing_exit(b, cycle, &mut c, cut_axis, out);
+        let shape = self.nose_shape(b, cycle, &c, out)?;
         let a = c.start;
         let a1 = c.a_prime();
         let end = c.end();
@@ -297,11 +298,14 @@ impl Machine {
             sq: super::sign(end[cut_axis] - a[cut_axis]),
             sp: super::sign(a[depth_axis] - a1[depth_axis]),
         };
+        self.nose_side(b, cycle, shape.as_ref(), (frame.sq, frame.sp))?;
         // The checks look at the contour as programmed; the passes cut the
         // one shifted by the finishing allowance.
         let programmed = pieces(frame, a, &c.segs, [0.0, 0.0]);
         self.check_shape(b, cycle, &c, &programmed, type_two, (p, q))?;
-        let pieces = pieces(frame, a, &c.segs, [du, dw]);
+        // With compensation the passes cut the compensated shape (18.11).
+        let cut = shape.as_ref().map_or(&c.segs, |s| &s.segs);
+        let pieces = pieces(frame, a, cut, [du, dw]);
         let (q_a, p_a) = frame.to(a[0], a[1]);
         let p_min = pieces
             .iter()
@@ -339,6 +343,7 @@ impl Machine {
             Some(s) if s.rapid => MoveKind::Rapid,
             _ => MoveKind::Feed,
         };
+        self.nose_take_off(out);
         self.take_offset();
         let mut at = (q_a, p_a);
         let mut prev = p_a;
@@ -395,8 +400,8 @@ impl Machine {
             prev = level;
         }
         // The finishing-allowance contour, then back to A.
-        self.trace(b, out, &c.segs, [du, dw], false)?;
-        self.cycle_move(out, a[0], a[1], MoveKind::Rapid);
+        self.contour_pass(b, out, &c.segs, shape.as_ref(), [du, dw], false)?;
+        self.cycle_home(out, a);
         let units = self.units();
         out.notes.push(format!(
             "{} type {}: {} cut{} at {} levels Δd {} apart ({}) from {}{} toward {}{}, escape {} at 45° after each; then the contour N{p}–N{q} (lines {}–{}) shifted by the finishing allowance U{} W{}, and back to the start (behaviour 15.7)",
@@ -647,9 +652,11 @@ impl Machine {
         program: &mut dyn super::ProgramText,
     ) -> Result<(), Diagnostic> {
         let c = self.read_contour(b, Repetitive::Finishing, (p, q), program, out)?;
+        let shape = self.nose_shape(b, Repetitive::Finishing, &c, out)?;
+        self.nose_take_off(out);
         self.take_offset();
-        self.trace(b, out, &c.segs, [0.0; 2], true)?;
-        self.cycle_move(out, c.start[0], c.start[1], MoveKind::Rapid);
+        self.contour_pass(b, out, &c.segs, shape.as_ref(), [0.0; 2], true)?;
+        self.cycle_home(out, c.start);
         let units = self.units();
         out.notes.push(format!(
             "{}: the contour N{p}–N{q} (lines {}–{}) once as programmed, with its own F and S, then back to the start X{} Z{} at rapid; the run goes on after this block (behaviour 15.11)",
@@ -719,6 +726,8 @@ impl Machine {
         let du = self.length(b, Address::U).unwrap_or(0.0);
         let dw = self.length(b, Address::W).unwrap_or(0.0);
         let c = self.read_contour(b, cycle, (p, q), program, out)?;
+        let shape = self.nose_shape(b, cycle, &c, out)?;
+        self.nose_take_off(out);
         self.take_offset();
         for k in 1..=d {
             if self.out_of_moves() {
@@ -730,8 +739,8 @@ impl Machine {
                 f64::from(d - k) / f64::from(d - 1)
             };
             let shift = [du + 2.0 * di * f, dw + dk * f];
-            self.trace(b, out, &c.segs, shift, false)?;
-            self.cycle_move(out, c.start[0], c.start[1], MoveKind::Rapid);
+            self.contour_pass(b, out, &c.segs, shape.as_ref(), shift, false)?;
+            self.cycle_home(out, c.start);
         }
         let units = self.units();
         out.notes.push(format!(
