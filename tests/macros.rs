@@ -12,7 +12,7 @@ const FANUC: Options = Options {
     signed_angles: false,
     numeric_conditions: false,
 };
-const HAAS: Options = Options {
+const NAT1_NUMERIC: Options = Options {
     signed_angles: true,
     numeric_conditions: true,
 };
@@ -228,7 +228,7 @@ fn behaviour7_40_a_comparison_is_a_number_only_on_haas() {
     let mut s = Store::default();
     let out = exec(
         &mut s,
-        HAAS,
+        NAT1_NUMERIC,
         "#1 = [1 LT 2]\n#2 = [3 LT 2]\nIF [#1] THEN #3 = 7\nIF [#2] THEN #4 = 7",
     );
     assert_eq!(s.get(1), Some(Value::Number(1.0)));
@@ -259,11 +259,11 @@ fn behaviour7_39_atan_and_asin_ranges() {
     close(value("ATAN[1]/[1]"), 45.0);
     close(value("ATAN[1,1]"), 45.0);
     close(value("ATAN[-1]/[-1]"), 225.0);
-    let signed = value_with("ATAN[-1]/[-1]", &[], HAAS).unwrap();
+    let signed = value_with("ATAN[-1]/[-1]", &[], NAT1_NUMERIC).unwrap();
     assert!((signed.number() + 135.0).abs() < 1e-9);
     // ASIN[-0.5] = -30 is 330 in 270…90 (NAT = 0), -30 with NAT = 1.
     close(value("ASIN[-0.5]"), 330.0);
-    let signed = value_with("ASIN[-0.5]", &[], HAAS).unwrap();
+    let signed = value_with("ASIN[-0.5]", &[], NAT1_NUMERIC).unwrap();
     assert!((signed.number() + 30.0).abs() < 1e-9);
     // ATAN of one argument: ATAN[1] = 45; ATAN[-1] = 315 (NAT = 0).
     close(value("ATAN[1]"), 45.0);

@@ -30,7 +30,7 @@ mod transform;
 mod words;
 
 pub(crate) use arcs::ArcRequest;
-pub use state::{ArcInfo, BlockState, DataSet, EventKind, Move, MoveKind, PolarState};
+pub use state::{ArcInfo, BlockState, DataSet, EventKind, Move, MoveKind, PolarState, VariableSet};
 
 use crate::diag::{Diagnostic, Span};
 use crate::geometry::{Xyz, add, scale};
@@ -178,6 +178,9 @@ pub struct Machine {
     /// This machine is a copy running the next block to find its direction
     /// (behaviour 2.31): its own chamfers are not cut.
     reading_ahead: bool,
+    /// The program's macro variables (behaviour 20.1), kept with the
+    /// machine so that a checkpoint holds them.
+    pub(crate) variables: crate::macros::Store,
 }
 
 const AXES: [(Address, char); 3] = [(Address::X, 'X'), (Address::Y, 'Y'), (Address::Z, 'Z')];
@@ -244,6 +247,7 @@ impl Machine {
             corner: [0.0; 3],
             corner_end: None,
             reading_ahead: false,
+            variables: crate::macros::Store::default(),
         }
     }
 
