@@ -11,7 +11,7 @@ use offsetlab::machine::{EventKind, VariableSet};
 use offsetlab::run;
 use offsetlab::view::block_view;
 
-fn block_line<'a>(r: &'a offsetlab::Run, line: u32) -> &'a offsetlab::report::BlockReport {
+fn block_line(r: &offsetlab::Run, line: u32) -> &offsetlab::report::BlockReport {
     r.blocks
         .iter()
         .rev()
