@@ -185,3 +185,16 @@ fn behaviour20_8_programs_without_macros_read_as_before() {
         macro_.moves.last().unwrap().to
     );
 }
+
+#[test]
+fn behaviour7_40_the_haas_profile_reads_conditions_as_numbers() {
+    // Haas: [1 LT 2] is 1.0, so X[[1 LT 2] * 5] is X5.; Fanuc refuses it (PS0114).
+    let mut haas = mill(&[]);
+    haas.settings.control = offsetlab::setup::Control::Haas;
+    let r = ok("#1 = [1 LT 2] * 5\nX#1\n", &haas);
+    assert_eq!(r.moves.last().unwrap().to[0], 5.0);
+    assert_eq!(
+        errors("#1 = [1 LT 2] * 5\n", &mill(&[])),
+        vec!["macro-expression"]
+    );
+}
