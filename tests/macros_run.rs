@@ -198,3 +198,15 @@ fn behaviour7_40_the_haas_profile_reads_conditions_as_numbers() {
         vec!["macro-expression"]
     );
 }
+
+#[test]
+fn long_macro_lines_read_in_linear_time() {
+    // A block of 20,000 macro words (each a duplicate X past the first: one
+    // error), and 1,000,000 letters: each once, never a scan to the line's
+    // end per word (which took minutes).
+    let start = std::time::Instant::now();
+    let text = format!("#1 = 1\nG01 {}\n{}\n", "X#1 ".repeat(20_000), "A".repeat(1_000_000));
+    let r = run(&text, &mill(&[]));
+    assert!(r.has_errors());
+    assert!(start.elapsed().as_secs() < 20, "{:?}", start.elapsed());
+}

@@ -24,7 +24,13 @@ pub fn opens_statement(bytes: &[u8], i: usize) -> bool {
     match bytes.get(i) {
         Some(b'#') => true,
         Some(c) if c.is_ascii_alphabetic() => {
-            let n = letters(bytes, i);
+            // Six letters tell (WHILE has five): a long run of letters
+            // costs no more at each of them.
+            let n = bytes[i..]
+                .iter()
+                .take(6)
+                .take_while(|c| c.is_ascii_alphabetic())
+                .count();
             let word = &bytes[i..i + n];
             KEYWORDS
                 .iter()

@@ -81,9 +81,9 @@ fn block_end(bytes: &[u8], mut i: usize) -> usize {
 }
 
 impl Blocks<'_> {
-    fn macro_part<'b>(&self, block: &'b mut Block, start: usize) -> &'b mut MacroBlock {
-        let bytes = self.text.as_bytes();
-        let end = block_end(bytes, start);
+    /// The block's macro part, made at its first macro syntax.
+    fn macro_part<'b>(&mut self, block: &'b mut Block, start: usize) -> &'b mut MacroBlock {
+        let end = self.block_end(start);
         let (units, in_cycle) = self.before_block;
         block.macros.get_or_insert_with(|| {
             Box::new(MacroBlock {
@@ -95,6 +95,19 @@ impl Blocks<'_> {
                 in_cycle,
             })
         })
+    }
+
+    /// [`block_end`] of the block being read, found once per block: a line
+    /// of many macro words looks it up at each (linear, not quadratic).
+    fn block_end(&mut self, from: usize) -> usize {
+        match self.macro_end {
+            Some((start, end)) if start <= from && from <= end => end,
+            _ => {
+                let end = block_end(self.text.as_bytes(), from);
+                self.macro_end = Some((from, end));
+                end
+            }
+        }
     }
 
     /// Reads the statement at `i` (to the block's end) into the block;
@@ -127,7 +140,7 @@ impl Blocks<'_> {
         line: u32,
         block: &mut Block,
     ) -> usize {
-        let end = block_end(self.text.as_bytes(), value);
+        let end = self.block_end(value);
         let address =
             Address::from_letter(letter).filter(|a| !matches!(a, Address::O | Address::N));
         match macros::value(self.text, value, end, line) {
@@ -166,14 +179,9 @@ impl Blocks<'_> {
         let other = block
             .words
             .iter()
+            .find(|w| w.address != Address::N)
             .map(|w| w.span)
-            .chain(m.words.iter().map(|w| w.span))
-            .find(|span| {
-                block
-                    .words
-                    .iter()
-                    .all(|w| w.span != *span || w.address != Address::N)
-            });
+            .or_else(|| m.words.first().map(|w| w.span));
         if let Some(span) = other {
             let msg = format!(
                 "{}: an NC word and the macro statement `{}` share a block; write them in two blocks",
@@ -252,10 +260,12 @@ pub fn resolve(
         ranges.push((at, text.len(), *span, *is_macro));
         text.push(' ');
     }
+    // The ranges are in order: the word at a byte is found by halving.
     let original = |at: u32| {
+        let i = ranges.partition_point(|(_, e, ..)| *e < at as usize);
         ranges
-            .iter()
-            .find(|(s, e, ..)| (*s..=*e).contains(&(at as usize)))
+            .get(i)
+            .filter(|(s, e, ..)| (*s..=*e).contains(&(at as usize)))
             .map(|r| (r.2, r.3))
     };
     let at = Resume {

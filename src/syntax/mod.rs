@@ -322,6 +322,9 @@ pub struct Blocks<'a> {
     /// The G20/G21 and canned-cycle context the block being read in two
     /// passes started with (its macro words are typed in it, behaviour 20.8).
     before_block: (Units, bool),
+    /// The start and end of the block whose macro syntax is being read
+    /// (its end looked up once).
+    macro_end: Option<(usize, usize)>,
 }
 
 impl<'a> Blocks<'a> {
@@ -348,6 +351,7 @@ impl<'a> Blocks<'a> {
             raw: Vec::with_capacity(16),
             one_pass: true,
             before_block: (options.units, false),
+            macro_end: None,
         }
     }
 

@@ -121,6 +121,7 @@ impl Blocks<'_> {
         let n = bytes.len();
         let mark = self.mark();
         self.before_block = (self.units, self.in_cycle);
+        self.macro_end = None;
         self.header = None;
         self.raw.clear();
         self.whole_q = false;
