@@ -205,8 +205,70 @@ fn long_macro_lines_read_in_linear_time() {
     // error), and 1,000,000 letters: each once, never a scan to the line's
     // end per word (which took minutes).
     let start = std::time::Instant::now();
-    let text = format!("#1 = 1\nG01 {}\n{}\n", "X#1 ".repeat(20_000), "A".repeat(1_000_000));
+    let text = format!(
+        "#1 = 1\nG01 {}\n{}\n",
+        "X#1 ".repeat(20_000),
+        "A".repeat(1_000_000)
+    );
     let r = run(&text, &mill(&[]));
     assert!(r.has_errors());
     assert!(start.elapsed().as_secs() < 20, "{:?}", start.elapsed());
+}
+
+#[test]
+fn behaviour20_10_tool_offsets_read_and_written_through_system_variables() {
+    // Memory A (the seeds'): #2001 and #10001 are register 01's one value, 5.
+    // Writing #2001 = 12.5 sets it for the blocks after: G43 H01 Z0 then
+    // goes to Z 0 + 12.5 = 12.5 (actual).
+    let text = "#1 = #2001\n#2 = #10001\n#2001 = 12.5\nG43 H01 Z0\n";
+    let r = ok(text, &mill(&[(1, 5.0)]));
+    let set = r.set_by_program();
+    assert_eq!(
+        (set[0].set.table, set[0].set.value, set[0].set.was),
+        ("offsets", 12.5, 5.0)
+    );
+    assert!(
+        block_line(&r, 1)
+            .explanation()
+            .starts_with("#1 = 5.000 (#2001)")
+    );
+    assert!(
+        block_line(&r, 2)
+            .explanation()
+            .starts_with("#2 = 5.000 (#10001)")
+    );
+    assert!((r.blocks.last().unwrap().state.actual[2] - 12.5).abs() < 1e-9);
+    // Memory C: #2001 H wear, #2201 H geometry, #2401 D wear, #2601 D geometry.
+    let mut c = mill(&[]);
+    c.settings.offset_memory = Some(offsetlab::setup::OffsetMemory::C);
+    let r = ok("#2001 = 1.\n#2201 = 2.\n#2401 = 3.\n#2601 = 4.\n", &c);
+    let fields: Vec<_> = r.set_by_program().iter().map(|s| s.set.field).collect();
+    assert_eq!(fields, vec!["h_wear", "h_geometry", "d_wear", "d_geometry"]);
+    // Past the table (register 200 of a smaller table): PS0115.
+    let e = errors("#1 = #2200\n", &mill(&[]));
+    assert_eq!(e, vec!["macro-variable-number"]);
+}
+
+#[test]
+fn behaviour20_10_work_offsets_read_and_written_through_system_variables() {
+    // #5221 is G54's X. Set to 100 while G54 is in force: the zero moves and
+    // the tool stays, so at machine X 0 it reads X 0 - 100 = -100 in G54.
+    let text = "G90 G54\n#5221 = 100.\n#1 = #5221 + 10\nG00 X10.\n";
+    let r = ok(text, &mill(&[]));
+    assert_eq!(block_line(&r, 3).variables[0].value, Some(110.0));
+    assert!((block_line(&r, 2).state.programmed[0] + 100.0).abs() < 1e-9);
+    let set = r.set_by_program();
+    assert_eq!(
+        (set[0].set.table, set[0].set.key.as_str(), set[0].set.field),
+        ("work_offsets", "G54", "x")
+    );
+    // Other system variables are refused, never made up; the lathe's too.
+    assert_eq!(
+        errors("#1 = #5001\n", &mill(&[])),
+        vec!["macro-system-variable"]
+    );
+    assert_eq!(
+        errors("#1 = #2001\n", &lathe(&[])),
+        vec!["macro-system-variable"]
+    );
 }

@@ -26,6 +26,7 @@ mod polar;
 pub mod program;
 mod reference;
 pub mod state;
+mod sysvars;
 mod transform;
 mod words;
 

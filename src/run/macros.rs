@@ -5,8 +5,11 @@
 //! Only blocks the parser marked take this way: the others run as before.
 
 use crate::diag::Diagnostic;
+use crate::diag::Span;
 use crate::machine::{EventKind, Machine, Out, VariableSet};
-use crate::macros::{Evaluator, Options, Outcome, StatementKind, Value};
+use crate::macros::{
+    self, Evaluator, Kind, Options, Outcome, StatementKind, Value, Variables, system_variable,
+};
 use crate::setup::{MacroAngles, MacroConditions};
 use crate::syntax::{self, Block, MacroBlock, ParseOptions};
 
@@ -16,6 +19,35 @@ fn options(machine: &Machine) -> Options {
     Options {
         signed_angles: s.macro_angles() == MacroAngles::Signed,
         numeric_conditions: s.macro_conditions() == MacroConditions::Numeric,
+    }
+}
+
+/// The run's variables: the machine's store, and the system variables of
+/// the offsets, which read and write the machine's tables (behaviour 20.10).
+struct Vars<'a> {
+    machine: &'a mut Machine,
+    out: &'a mut Out,
+}
+
+impl Variables for Vars<'_> {
+    fn read(&mut self, n: u32, span: Span) -> Result<Value, Diagnostic> {
+        match macros::kind(n) {
+            Kind::System => match self.machine.read_system(n, span)? {
+                Some(v) => Ok(Value::Number(v)),
+                None => Err(system_variable(n, span)),
+            },
+            _ => self.machine.variables.read(n, span),
+        }
+    }
+
+    fn write(&mut self, n: u32, v: Value, span: Span) -> Result<(), Diagnostic> {
+        match macros::kind(n) {
+            Kind::System => match self.machine.write_system(n, v.number(), span, self.out)? {
+                true => Ok(()),
+                false => Err(system_variable(n, span)),
+            },
+            _ => self.machine.variables.write(n, v, span),
+        }
     }
 }
 
@@ -30,7 +62,7 @@ pub(super) fn resolve(
 ) -> Result<Block, Diagnostic> {
     let options = options(machine);
     if let Some(s) = &m.statement {
-        let outcome = Evaluator::new(&mut machine.variables, options).execute(s)?;
+        let outcome = Evaluator::new(&mut Vars { machine, out }, options).execute(s)?;
         match outcome {
             Outcome::Assigned { number, value, was } => {
                 let expr = match &s.kind {
@@ -73,7 +105,8 @@ pub(super) fn resolve(
     let mut values = Vec::with_capacity(m.words.len());
     let increment = m.increment();
     for w in &m.words {
-        let v = Evaluator::new(&mut machine.variables, options).word_value(&w.value, increment)?;
+        let v =
+            Evaluator::new(&mut Vars { machine, out }, options).word_value(&w.value, increment)?;
         if v.is_vacant() {
             // Fanuc: a vacant variable's address is left out (behaviour 20.4).
             out.notes.push(format!(
