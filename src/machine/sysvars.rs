@@ -38,7 +38,7 @@ impl Machine {
         // (range index 0–3, register number)
         let tool = match n {
             2001..=2800 => Some(((n - 2001) / 200, (n - 2001) % 200 + 1)),
-            10001..=13999 if n % 1000 != 0 => Some(((n - 10001) / 1000, n % 1000)),
+            10001..=13999 if !n.is_multiple_of(1000) => Some(((n - 10001) / 1000, n % 1000)),
             _ => None,
         };
         if let Some((range, number)) = tool {
