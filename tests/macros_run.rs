@@ -143,6 +143,11 @@ fn behaviour20_9_alarms_stop_the_run_at_their_line_and_column() {
             .iter()
             .any(|d| d.code == "macro-expression" && d.line == 2)
     );
+    // An expression in a word without brackets: PS0114 at the word.
+    let r = run("#1 = 4\nG00 X#1/2 Y1.\n", &mill(&[]));
+    let e = r.diagnostics.iter().find(|d| d.is_error()).unwrap();
+    assert_eq!((e.code, e.line, e.column), ("macro-expression", 2, 5));
+    assert!(e.message.contains("`X[#1/…]`"), "{}", e.message);
     // An NC word beside a statement: PS0127.
     assert!(errors("G01 #1 = 2\n", &mill(&[])).contains(&"macro-nc-statement"));
     // A macro word's value still meets the word's checks: H beyond the table.

@@ -144,6 +144,33 @@ impl Blocks<'_> {
         let address =
             Address::from_letter(letter).filter(|a| !matches!(a, Address::O | Address::N));
         match macros::value(self.text, value, end, line) {
+            Ok((_, after))
+                if matches!(
+                    self.text
+                        .as_bytes()
+                        .get(lexer::skip_blanks(self.text.as_bytes(), after)),
+                    Some(b'+' | b'-' | b'*' | b'/' | b'=')
+                ) =>
+            {
+                // `X#140/2`: Fanuc takes an expression in a word only in
+                // brackets (the `/` would otherwise read as a block skip).
+                let op = lexer::skip_blanks(self.text.as_bytes(), after);
+                let word = &self.text[i..after];
+                let msg = format!(
+                    "{}: an expression in a word is written in brackets: `{}[{}{o}…]`, not `{word}{o}…`",
+                    macros::alarm::FORMAT.alarm,
+                    &self.text[i..i + 1],
+                    &self.text[value..after],
+                    o = &self.text[op..op + 1]
+                );
+                self.error_span(
+                    block,
+                    macros::alarm::FORMAT.code,
+                    Span::new(i, op + 1, line),
+                    &msg,
+                );
+                end
+            }
             Ok((expr, after)) => {
                 let span = Span::new(i, after, line);
                 match address {
