@@ -291,6 +291,17 @@ impl Block {
         self.codes.clear();
         self.groups = [0; Group::COUNT];
         self.group_bits = 0;
+        // A test, and the drop out of line: nearly every block has no macro
+        // part, and an inline drop here cost every block (the `check`
+        // instruction count in docs/performance.md).
+        if self.macros.is_some() {
+            self.clear_macros();
+        }
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn clear_macros(&mut self) {
         self.macros = None;
     }
 
