@@ -25,6 +25,7 @@ pub mod document;
 pub mod export;
 pub mod geometry;
 pub mod machine;
+pub mod macros;
 pub mod offsets;
 pub mod render;
 pub mod report;

@@ -42,6 +42,8 @@ pub struct BlockReport {
     pub move_count: u32,
     /// What a G10 block set (behaviour 17.8); empty for every other block.
     pub data: Vec<DataSet>,
+    /// The variables a macro statement set (behaviour 20.8).
+    pub variables: Vec<crate::machine::VariableSet>,
 }
 
 impl BlockReport {

@@ -255,6 +255,10 @@ pub struct BlockView<'a> {
     /// (behaviour 17.8).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub data_set: Vec<DataSet>,
+    /// The variables a macro statement set, absent for every other block
+    /// (behaviour 20.8).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub variables_set: Vec<crate::machine::VariableSet>,
 }
 
 /// Builds the report of one block.
@@ -349,6 +353,7 @@ fn block_view_at<'a>(b: &BlockReport, text: &'a str, columns: (u32, u32)) -> Blo
         first_move: b.first_move,
         move_count: b.move_count,
         data_set: b.data.clone(),
+        variables_set: b.variables.clone(),
     }
 }
 

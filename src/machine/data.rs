@@ -39,7 +39,7 @@ const GEOMETRY_P: u32 = 10_000;
 
 /// Which value of a mill register a G10 L sets (behaviour 17.5).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum MillField {
+pub(super) enum MillField {
     /// Memory A: the number's one value.
     Value,
     /// Memory B: the number's geometry.
@@ -58,7 +58,7 @@ enum MillField {
 
 impl MillField {
     /// The field as the setup document and the report name it.
-    fn key(self) -> &'static str {
+    pub(super) fn key(self) -> &'static str {
         match self {
             MillField::Value => "value",
             MillField::Geometry => "geometry",
@@ -71,7 +71,7 @@ impl MillField {
     }
 
     /// "register 01", "register 01 wear", "D01 geometry".
-    fn label(self, n: u16) -> String {
+    pub(super) fn label(self, n: u16) -> String {
         match self {
             MillField::Value => format!("register {n:02}"),
             MillField::Geometry => format!("register {n:02} geometry"),
@@ -83,7 +83,7 @@ impl MillField {
         }
     }
 
-    fn get(self, r: &MillRegister) -> f64 {
+    pub(super) fn get(self, r: &MillRegister) -> f64 {
         match self {
             MillField::Value => r.value(),
             MillField::Geometry | MillField::HGeometry => r.geometry,
@@ -94,7 +94,7 @@ impl MillField {
     }
 
     /// Sets the value; returns the geometry + wear of the part it is in.
-    fn set(self, r: &mut MillRegister, v: f64) -> f64 {
+    pub(super) fn set(self, r: &mut MillRegister, v: f64) -> f64 {
         let (h, d) = (r.h_part(), r.d_part());
         match self {
             // Memory A keeps one value: a wear part of a document written
@@ -128,7 +128,7 @@ impl MillField {
 type WorkAxis = (Address, Option<Address>, usize, &'static str);
 
 /// A value of the program: never -0, which a report could show as such.
-fn clean(v: f64) -> f64 {
+pub(super) fn clean(v: f64) -> f64 {
     v + 0.0
 }
 

@@ -26,11 +26,12 @@ mod polar;
 pub mod program;
 mod reference;
 pub mod state;
+mod sysvars;
 mod transform;
 mod words;
 
 pub(crate) use arcs::ArcRequest;
-pub use state::{ArcInfo, BlockState, DataSet, EventKind, Move, MoveKind, PolarState};
+pub use state::{ArcInfo, BlockState, DataSet, EventKind, Move, MoveKind, PolarState, VariableSet};
 
 use crate::diag::{Diagnostic, Span};
 use crate::geometry::{Xyz, add, scale};
@@ -178,6 +179,9 @@ pub struct Machine {
     /// This machine is a copy running the next block to find its direction
     /// (behaviour 2.31): its own chamfers are not cut.
     reading_ahead: bool,
+    /// The program's macro variables (behaviour 20.1), kept with the
+    /// machine so that a checkpoint holds them.
+    pub(crate) variables: crate::macros::Store,
 }
 
 const AXES: [(Address, char); 3] = [(Address::X, 'X'), (Address::Y, 'Y'), (Address::Z, 'Z')];
@@ -245,6 +249,7 @@ impl Machine {
             corner: [0.0; 3],
             corner_end: None,
             reading_ahead: false,
+            variables: crate::macros::Store::default(),
         }
     }
 

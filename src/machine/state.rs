@@ -208,6 +208,19 @@ pub enum EventKind {
     /// G10: a value of the offset tables or the work offsets set by the
     /// program (behaviour 17.8).
     DataSet(DataSet),
+    /// A macro statement set a variable (behaviour 20.8).
+    VariableSet(VariableSet),
+}
+
+/// A variable a macro statement set (behaviour 20.8).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct VariableSet {
+    /// Its number (`101` for `#101`).
+    pub variable: u32,
+    /// Its new value (None: vacant).
+    pub value: Option<f64>,
+    /// Its value before the block (None: vacant).
+    pub was: Option<f64>,
 }
 
 /// One value a G10 block set (behaviour 17.8), named as the setup document

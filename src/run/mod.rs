@@ -15,6 +15,7 @@ use std::sync::Arc;
 pub(crate) mod again;
 mod ahead;
 mod checkpoint;
+mod macros;
 #[cfg(not(target_arch = "wasm32"))]
 pub(crate) mod pipeline;
 mod sequence;
@@ -274,6 +275,20 @@ fn execute(
             ),
         ))));
     }
+    let resolved;
+    let block = match &block.macros {
+        None => block,
+        Some(m) => match macros::resolve(block, m, machine, out) {
+            Ok(b) => {
+                resolved = b;
+                &resolved
+            }
+            Err(d) => {
+                *stopped = true;
+                return Some(Step::Stopped(Some(d)));
+            }
+        },
+    };
     machine.moves_left = options.max_moves.saturating_sub(*move_count);
     match machine.execute(block, *index, out, ahead, program) {
         Ok(flow) => {
@@ -571,6 +586,7 @@ fn account(
     // up the two drains (the `check` instruction count in
     // docs/performance.md guards it).
     let mut data = Vec::new();
+    let mut variables = Vec::new();
     if !out.events.is_empty() {
         // A G10's values: the registers it set are the run's too, and its
         // block's report carries them (behaviour 6.9, 17.8).
@@ -587,6 +603,11 @@ fn account(
                 if options.keep_blocks {
                     data.push(set.clone());
                 }
+            }
+            if let EventKind::VariableSet(set) = e
+                && options.keep_blocks
+            {
+                variables.push(*set);
             }
         }
         result.events.extend(out.events.drain(..).map(|kind| Event {
@@ -609,6 +630,7 @@ fn account(
             first_move: first_move as u32,
             move_count: out.moves.len() as u32,
             data,
+            variables,
         });
     }
     let offset_words = match kind {
@@ -672,6 +694,15 @@ pub fn report_at(
                         .iter()
                         .filter_map(|e| match e {
                             EventKind::DataSet(set) => Some(set.clone()),
+                            _ => None,
+                        })
+                        .collect(),
+                    variables: r
+                        .out
+                        .events
+                        .iter()
+                        .filter_map(|e| match e {
+                            EventKind::VariableSet(set) => Some(*set),
                             _ => None,
                         })
                         .collect(),

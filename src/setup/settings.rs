@@ -150,6 +150,27 @@ pub enum DwellPDecimalPoint {
     Seconds,
 }
 
+/// The range of the angles ATAN and ASIN give (behaviour 7.39, 20.6).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum MacroAngles {
+    /// ATAN 0 to 360, ASIN 270 to 90 (Fanuc parameter NAT, No. 6004#0, = 0).
+    Positive,
+    /// ATAN −180 to 180, ASIN −90 to 90 (NAT = 1).
+    Signed,
+}
+
+/// What a macro condition is (behaviour 7.40, 20.5).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum MacroConditions {
+    /// A comparison is true or false, never a number (Fanuc).
+    Boolean,
+    /// Every expression is a number: a comparison is 1.0 or 0.0 and a
+    /// condition holds when not 0 (Haas).
+    Numeric,
+}
+
 /// What G12/G13 mean on the mill (behaviour 7.20, 14.13).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -419,6 +440,14 @@ pub struct Settings {
     /// [`Settings::polar_interpolation`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub polar_interpolation: Option<PolarInterpolation>,
+    /// The range of ATAN and ASIN (behaviour 7.39); read it with
+    /// [`Settings::macro_angles`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub macro_angles: Option<MacroAngles>,
+    /// What a macro condition is (behaviour 7.40); read it with
+    /// [`Settings::macro_conditions`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub macro_conditions: Option<MacroConditions>,
 }
 
 impl Settings {
@@ -488,6 +517,28 @@ impl Settings {
         self.extended_work_offsets.unwrap_or(match self.control {
             Control::Haas => ExtendedWork::G154,
             Control::Yasnac | Control::Fanuc => ExtendedWork::G54_1,
+        })
+    }
+
+    /// The range of ATAN and ASIN: Fanuc's parameter NAT (No. 6004#0) is 0
+    /// as shipped, ATAN 0 to 360 and ASIN 270 to 90 (0i-MF/TF operator's
+    /// manuals, "Arithmetic and logic operation"); the YASNAC and Haas
+    /// manuals at hand do not say, and follow (our convention).
+    pub fn macro_angles(&self) -> MacroAngles {
+        self.macro_angles.unwrap_or(match self.control {
+            Control::Yasnac | Control::Fanuc | Control::Haas => MacroAngles::Positive,
+        })
+    }
+
+    /// What a macro condition is: Fanuc's comparisons are true or false and
+    /// cannot be stored (0i-MF/TF operator's manuals, "Arithmetic and logic
+    /// operation"; alarm PS0114); Haas: every expression is a number, a
+    /// condition 0.0 false and any other true (Haas mill operator's manual
+    /// 96-8000, "Macros", Conditional expressions). YASNAC follows Fanuc.
+    pub fn macro_conditions(&self) -> MacroConditions {
+        self.macro_conditions.unwrap_or(match self.control {
+            Control::Yasnac | Control::Fanuc => MacroConditions::Boolean,
+            Control::Haas => MacroConditions::Numeric,
         })
     }
 

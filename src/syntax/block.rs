@@ -276,6 +276,10 @@ pub struct Block {
     pub(super) table: CodeTable,
     /// The groups of the block's G codes, a bit each (by [`Group::index`]).
     group_bits: u32,
+    /// The block's Custom Macro B part (behaviour 20.8): a statement, and
+    /// the words whose value is a variable or an expression; None in a
+    /// block without macro syntax.
+    pub macros: Option<Box<super::macro_words::MacroBlock>>,
 }
 
 impl Block {
@@ -287,6 +291,18 @@ impl Block {
         self.codes.clear();
         self.groups = [0; Group::COUNT];
         self.group_bits = 0;
+        // A test, and the drop out of line: nearly every block has no macro
+        // part, and an inline drop here cost every block (the `check`
+        // instruction count in docs/performance.md).
+        if self.macros.is_some() {
+            self.clear_macros();
+        }
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn clear_macros(&mut self) {
+        self.macros = None;
     }
 
     /// Notes that the next word pushed is the block's G code `code`, of

@@ -195,7 +195,7 @@ pub(super) fn unexpected_message(ch: char) -> String {
     match ch {
         '#' | '[' | ']' | '=' => {
             format!(
-                "`{ch}` is not part of a word: macro variables and expressions are not supported"
+                "`{ch}` is not part of a word here: a macro statement opens its block (`#1 = ...`), and a word's macro value is `#n` or `[...]` (behaviour 20)"
             )
         }
         '/' => "`/` (optional block skip) must start the block".to_string(),

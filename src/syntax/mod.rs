@@ -13,6 +13,7 @@ mod block;
 pub mod codes;
 mod hint;
 mod lexer;
+mod macro_words;
 mod messages;
 mod program;
 mod read;
@@ -24,6 +25,7 @@ pub use resume::Resume;
 pub(crate) use resume::shift;
 
 pub use block::{Address, Block, Word, WordKind};
+pub use macro_words::{MacroBlock, MacroWord, resolve};
 
 use crate::diag::{Diagnostic, Span};
 use crate::setup::{
@@ -319,6 +321,12 @@ pub struct Blocks<'a> {
     /// Blocks are read in one pass where they can be (false in tests that
     /// compare it with the two-pass reading).
     one_pass: bool,
+    /// The G20/G21 and canned-cycle context the block being read in two
+    /// passes started with (its macro words are typed in it, behaviour 20.8).
+    before_block: (Units, bool),
+    /// The start and end of the block whose macro syntax is being read
+    /// (its end looked up once).
+    macro_end: Option<(usize, usize)>,
 }
 
 impl<'a> Blocks<'a> {
@@ -344,6 +352,8 @@ impl<'a> Blocks<'a> {
             dropped: 0,
             raw: Vec::with_capacity(16),
             one_pass: true,
+            before_block: (options.units, false),
+            macro_end: None,
         }
     }
 
@@ -574,7 +584,10 @@ impl<'a> Blocks<'a> {
         if self.tape < Tape::Reading {
             self.tape = Tape::Reading;
         }
-        (end, !block.words.is_empty() || block.error)
+        (
+            end,
+            !block.words.is_empty() || block.error || block.macros.is_some(),
+        )
     }
 }
 

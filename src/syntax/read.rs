@@ -120,6 +120,8 @@ impl Blocks<'_> {
         let bytes = self.text.as_bytes();
         let n = bytes.len();
         let mark = self.mark();
+        self.before_block = (self.units, self.in_cycle);
+        self.macro_end = None;
         self.header = None;
         self.raw.clear();
         self.whole_q = false;
@@ -146,7 +148,9 @@ impl Blocks<'_> {
                 break;
             }
             let c = bytes[i];
-            if c.is_ascii_alphabetic() || c == b':' {
+            if super::macro_words::opens(bytes, i) {
+                i = self.read_macro(start, i, line, block);
+            } else if c.is_ascii_alphabetic() || c == b':' {
                 let (word_end, _, number) = lexer::number(bytes, i + 1);
                 // `:` is the program number address in ISO code (behaviour 1.4).
                 let letter = match c {
@@ -239,6 +243,9 @@ impl Blocks<'_> {
             }
         }
         self.raw = raw;
+        if block.macros.is_some() {
+            self.check_statement_alone(block);
+        }
         // A program header (O, `:`, <NAME>, or a malformed number).
         let header = self
             .header

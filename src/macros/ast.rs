@@ -1,0 +1,218 @@
+//! The parsed form of macro expressions and statements (behaviour 20.2,
+//! 20.3): every node keeps its span, so an alarm points at its operand.
+
+use crate::diag::Span;
+
+/// An expression with its place in the text.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Expr {
+    /// What it is.
+    pub kind: ExprKind,
+    /// Where it is written.
+    pub span: Span,
+}
+
+/// The kinds of expression.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ExprKind {
+    /// A constant (`12`, `1.5`, `.5`).
+    Number(f64),
+    /// A variable: `#n` (the index a constant) or `#[expr]`.
+    Var(Box<Expr>),
+    /// `-e`.
+    Neg(Box<Expr>),
+    /// `a op b` of the arithmetic and logic operators.
+    Binary(BinOp, Box<Expr>, Box<Expr>),
+    /// `a EQ b` and the other comparisons.
+    Compare(CmpOp, Box<Expr>, Box<Expr>),
+    /// A function of one argument, `SIN[e]`.
+    Call(Func, Box<Expr>),
+    /// `ATAN[a]/[b]` or `ATAN[a,b]`: the angle of the point (b, a).
+    Atan2(Box<Expr>, Box<Expr>),
+    /// `POW[a,b]`.
+    Pow(Box<Expr>, Box<Expr>),
+    /// `[e]`: kept so that ROUND in a word's address can tell its own
+    /// bracket, and the report can write the expression as written.
+    Bracket(Box<Expr>),
+}
+
+/// Binary operators, in two precedence levels (behaviour 20.3): `* / AND
+/// MOD` bind tighter than `+ - OR XOR`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[allow(missing_docs)]
+pub enum BinOp {
+    Add,
+    Sub,
+    Or,
+    Xor,
+    Mul,
+    Div,
+    And,
+    Mod,
+}
+
+impl BinOp {
+    /// True for the multiplication level (`* / AND MOD`).
+    pub fn multiplicative(self) -> bool {
+        matches!(self, BinOp::Mul | BinOp::Div | BinOp::And | BinOp::Mod)
+    }
+
+    /// The operator as written.
+    pub fn text(self) -> &'static str {
+        match self {
+            BinOp::Add => "+",
+            BinOp::Sub => "-",
+            BinOp::Or => "OR",
+            BinOp::Xor => "XOR",
+            BinOp::Mul => "*",
+            BinOp::Div => "/",
+            BinOp::And => "AND",
+            BinOp::Mod => "MOD",
+        }
+    }
+}
+
+/// Comparison operators (behaviour 20.5).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[allow(missing_docs)]
+pub enum CmpOp {
+    Eq,
+    Ne,
+    Gt,
+    Lt,
+    Ge,
+    Le,
+}
+
+impl CmpOp {
+    /// The operator as written.
+    pub fn text(self) -> &'static str {
+        match self {
+            CmpOp::Eq => "EQ",
+            CmpOp::Ne => "NE",
+            CmpOp::Gt => "GT",
+            CmpOp::Lt => "LT",
+            CmpOp::Ge => "GE",
+            CmpOp::Le => "LE",
+        }
+    }
+}
+
+/// Functions of one argument (behaviour 20.6).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[allow(missing_docs)]
+pub enum Func {
+    Sin,
+    Cos,
+    Tan,
+    Asin,
+    Acos,
+    Atan,
+    Sqrt,
+    Abs,
+    Round,
+    Fix,
+    Fup,
+    Ln,
+    Exp,
+    Bin,
+    Bcd,
+    Adp,
+}
+
+impl Func {
+    /// The function of a name (upper case), without POW (two arguments).
+    pub fn of(name: &str) -> Option<Func> {
+        Some(match name {
+            "SIN" => Func::Sin,
+            "COS" => Func::Cos,
+            "TAN" => Func::Tan,
+            "ASIN" => Func::Asin,
+            "ACOS" => Func::Acos,
+            "ATAN" => Func::Atan,
+            "SQRT" => Func::Sqrt,
+            "ABS" => Func::Abs,
+            "ROUND" => Func::Round,
+            "FIX" => Func::Fix,
+            "FUP" => Func::Fup,
+            "LN" => Func::Ln,
+            "EXP" => Func::Exp,
+            "BIN" => Func::Bin,
+            "BCD" => Func::Bcd,
+            "ADP" => Func::Adp,
+            _ => return None,
+        })
+    }
+
+    /// The name as written.
+    pub fn name(self) -> &'static str {
+        match self {
+            Func::Sin => "SIN",
+            Func::Cos => "COS",
+            Func::Tan => "TAN",
+            Func::Asin => "ASIN",
+            Func::Acos => "ACOS",
+            Func::Atan => "ATAN",
+            Func::Sqrt => "SQRT",
+            Func::Abs => "ABS",
+            Func::Round => "ROUND",
+            Func::Fix => "FIX",
+            Func::Fup => "FUP",
+            Func::Ln => "LN",
+            Func::Exp => "EXP",
+            Func::Bin => "BIN",
+            Func::Bcd => "BCD",
+            Func::Adp => "ADP",
+        }
+    }
+}
+
+/// A macro statement (behaviour 20.7) with its span.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Statement {
+    /// What it is.
+    pub kind: StatementKind,
+    /// From its first to its last character.
+    pub span: Span,
+}
+
+/// The statements of Custom Macro B.
+#[derive(Clone, Debug, PartialEq)]
+pub enum StatementKind {
+    /// `#i = e` (`target` is the index expression of `#i`).
+    Assign {
+        /// The variable's number, as an expression.
+        target: Expr,
+        /// Where `#i` is written.
+        target_span: Span,
+        /// The value.
+        value: Expr,
+    },
+    /// `GOTO n`.
+    Goto(Expr),
+    /// `IF [c] GOTO n`.
+    IfGoto(Expr, Expr),
+    /// `IF [c] THEN #i = e`.
+    IfThen(Expr, Box<Statement>),
+    /// `WHILE [c] DO m` (m 1 to 3).
+    While(Expr, u8),
+    /// `DO m` without WHILE: a loop with no condition.
+    Do(u8),
+    /// `END m`.
+    End(u8),
+}
+
+impl StatementKind {
+    /// The statement's keyword (`#=` for an assignment), for messages.
+    pub fn keyword(&self) -> &'static str {
+        match self {
+            StatementKind::Assign { .. } => "#i = …",
+            StatementKind::Goto(_) => "GOTO",
+            StatementKind::IfGoto(..) => "IF … GOTO",
+            StatementKind::IfThen(..) => "IF … THEN",
+            StatementKind::While(..) => "WHILE … DO",
+            StatementKind::Do(_) => "DO",
+            StatementKind::End(_) => "END",
+        }
+    }
+}

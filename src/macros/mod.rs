@@ -1,0 +1,26 @@
+//! Fanuc Custom Macro B, the language (behaviour 20): variables and their
+//! values, expressions and statements parsed with their spans, and their
+//! evaluation over any [`Variables`]. Every error is a [`Diagnostic`] whose
+//! message opens with the control's alarm.
+//!
+//! **Architecture invariant:** imports only `crate::diag`; the machine, the
+//! parser of blocks and the run use this module, never the other way.
+
+pub mod alarm;
+mod ast;
+mod eval;
+mod parse;
+mod store;
+mod value;
+
+pub use ast::{BinOp, CmpOp, Expr, ExprKind, Func, Statement, StatementKind};
+pub use eval::{Evaluator, MAX_MAGNITUDE, Options, Outcome, Variables, compare};
+pub use parse::{MAX_NESTING, expression, opens_statement, opens_value, statement, value};
+pub use store::{Kind, Store, kind, no_variable, system_variable};
+pub use value::Value;
+
+/// The text of an expression as written (for the report's sentence).
+pub fn text_of<'t>(text: &'t str, e: &Expr) -> &'t str {
+    text.get(e.span.start as usize..e.span.end as usize)
+        .unwrap_or("")
+}

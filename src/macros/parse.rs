@@ -1,0 +1,568 @@
+//! Macro text to its parsed form (behaviour 20.2, 20.3, 20.7): a
+//! hand-written recursive descent over the block's bytes, with the bracket
+//! nesting bounded at five levels (PS0118), which also bounds the
+//! recursion; a run of signs is read in a loop, never recursively.
+
+use super::alarm::{self, Alarm};
+use super::ast::{BinOp, CmpOp, Expr, ExprKind, Func, Statement, StatementKind};
+use crate::diag::{Diagnostic, Span};
+
+/// Deepest bracket nesting, function brackets included (Fanuc: five
+/// levels, alarm PS0118 past them).
+pub const MAX_NESTING: u32 = 5;
+
+/// Longest constant read, in characters (a control reads a fixed number of
+/// digits; this only keeps a constant a number).
+const MAX_CONSTANT: usize = 40;
+
+/// The statement keywords, as a block may open with them.
+const KEYWORDS: [&str; 5] = ["IF", "WHILE", "GOTO", "END", "DO"];
+
+/// True if the text at `i` opens a macro statement: `#`, or one of the
+/// keywords IF, WHILE, GOTO, END, DO (either case) not followed by a letter.
+pub fn opens_statement(bytes: &[u8], i: usize) -> bool {
+    match bytes.get(i) {
+        Some(b'#') => true,
+        Some(c) if c.is_ascii_alphabetic() => {
+            // Six letters tell (WHILE has five): a long run of letters
+            // costs no more at each of them.
+            let n = bytes[i..]
+                .iter()
+                .take(6)
+                .take_while(|c| c.is_ascii_alphabetic())
+                .count();
+            let word = &bytes[i..i + n];
+            KEYWORDS
+                .iter()
+                .any(|k| word.eq_ignore_ascii_case(k.as_bytes()))
+        }
+        _ => false,
+    }
+}
+
+/// True if a word's value at `i` (after its letter and any blanks) is a
+/// macro value: `#…`, `[…]`, or a sign before either.
+pub fn opens_value(bytes: &[u8], i: usize) -> bool {
+    match bytes.get(i) {
+        Some(b'#' | b'[') => true,
+        Some(b'-' | b'+') => matches!(bytes.get(i + 1), Some(b'#' | b'[')),
+        _ => false,
+    }
+}
+
+fn letters(bytes: &[u8], i: usize) -> usize {
+    bytes[i..]
+        .iter()
+        .take_while(|c| c.is_ascii_alphabetic())
+        .count()
+}
+
+/// Parses the statement at `start` of `text`, up to `end` (the block's end).
+pub fn statement(text: &str, start: usize, end: usize, line: u32) -> Result<Statement, Diagnostic> {
+    let mut p = Parser::new(text, start, end, line);
+    let s = p.statement()?;
+    p.blanks();
+    if p.pos < p.end {
+        return Err(p.alarm_here(
+            alarm::FORMAT,
+            "is left over after the macro statement: a block holds one statement",
+        ));
+    }
+    Ok(s)
+}
+
+/// Parses a word's value at `start` (`#1`, `-#1`, `[#1+2]`, `-[…]`);
+/// returns the expression and the byte after it.
+pub fn value(text: &str, start: usize, end: usize, line: u32) -> Result<(Expr, usize), Diagnostic> {
+    let mut p = Parser::new(text, start, end, line);
+    let e = p.unary(true)?;
+    Ok((e, p.pos))
+}
+
+/// Parses an expression that fills `start..end` (tests and tools).
+pub fn expression(text: &str, line: u32) -> Result<Expr, Diagnostic> {
+    let mut p = Parser::new(text, 0, text.len(), line);
+    let e = p.expr()?;
+    p.blanks();
+    if p.pos < p.end {
+        return Err(p.alarm_here(alarm::FORMAT, "is left over after the expression"));
+    }
+    Ok(e)
+}
+
+struct Parser<'a> {
+    text: &'a str,
+    bytes: &'a [u8],
+    pos: usize,
+    end: usize,
+    line: u32,
+    depth: u32,
+}
+
+impl<'a> Parser<'a> {
+    fn new(text: &'a str, start: usize, end: usize, line: u32) -> Parser<'a> {
+        let end = end.min(text.len());
+        Parser {
+            text,
+            bytes: text.as_bytes(),
+            pos: start.min(end),
+            end,
+            line,
+            depth: 0,
+        }
+    }
+
+    fn span(&self, start: usize, end: usize) -> Span {
+        Span::new(start, end, self.line)
+    }
+
+    /// An alarm at the character at the parser's place (or the block's end).
+    fn alarm_here(&self, a: Alarm, what: &str) -> Diagnostic {
+        let end = self.next_char_end();
+        let shown = if self.pos < self.end {
+            format!("`{}` {what}", &self.text[self.pos..end])
+        } else {
+            format!("the block ends where {what}")
+        };
+        a.at(self.span(self.pos, end), shown)
+    }
+
+    fn next_char_end(&self) -> usize {
+        let mut e = (self.pos + 1).min(self.end);
+        while e < self.end && !self.text.is_char_boundary(e) {
+            e += 1;
+        }
+        e
+    }
+
+    /// Skips blanks and comments.
+    fn blanks(&mut self) {
+        while self.pos < self.end {
+            match self.bytes[self.pos] {
+                b' ' | b'\t' => self.pos += 1,
+                b'(' => {
+                    while self.pos < self.end && self.bytes[self.pos] != b')' {
+                        self.pos += 1;
+                    }
+                    self.pos = (self.pos + 1).min(self.end);
+                }
+                _ => break,
+            }
+        }
+    }
+
+    fn peek(&mut self) -> Option<u8> {
+        self.blanks();
+        (self.pos < self.end).then(|| self.bytes[self.pos])
+    }
+
+    fn eat(&mut self, c: u8) -> bool {
+        if self.peek() == Some(c) {
+            self.pos += 1;
+            true
+        } else {
+            false
+        }
+    }
+
+    /// The letters at the parser's place, upper case, without moving.
+    fn word(&mut self) -> String {
+        self.blanks();
+        let n = letters(&self.bytes[..self.end], self.pos);
+        self.text[self.pos..self.pos + n].to_ascii_uppercase()
+    }
+
+    fn expect(&mut self, c: u8, what: &str) -> Result<(), Diagnostic> {
+        if self.eat(c) {
+            Ok(())
+        } else {
+            Err(self.alarm_here(alarm::FORMAT, what))
+        }
+    }
+
+    fn open(&mut self) -> Result<usize, Diagnostic> {
+        self.blanks();
+        let at = self.pos;
+        self.expect(b'[', "is where `[` must open the expression")?;
+        self.depth += 1;
+        if self.depth > MAX_NESTING {
+            return Err(alarm::NESTING.at(
+                self.span(at, at + 1),
+                format!(
+                    "brackets nest more than {MAX_NESTING} levels deep here (function brackets count)"
+                ),
+            ));
+        }
+        Ok(at)
+    }
+
+    fn close(&mut self) -> Result<(), Diagnostic> {
+        self.expect(b']', "is where `]` must close the bracket")?;
+        self.depth -= 1;
+        Ok(())
+    }
+
+    fn statement(&mut self) -> Result<Statement, Diagnostic> {
+        self.blanks();
+        let start = self.pos;
+        if self.peek() == Some(b'#') {
+            return self.assignment();
+        }
+        let kw = self.word();
+        let kw_end = self.pos + kw.len();
+        self.pos = kw_end;
+        let kind = match kw.as_str() {
+            "GOTO" => StatementKind::Goto(self.expr()?),
+            "IF" => {
+                let cond = self.bracketed()?;
+                match self.word().as_str() {
+                    "GOTO" => {
+                        self.pos += 4;
+                        StatementKind::IfGoto(cond, self.expr()?)
+                    }
+                    "THEN" => {
+                        self.pos += 4;
+                        self.blanks();
+                        if self.peek() != Some(b'#') {
+                            return Err(self.alarm_here(
+                                alarm::STATEMENT,
+                                "follows THEN: offsetlab reads `IF [...] THEN #i = ...`",
+                            ));
+                        }
+                        let then = self.assignment()?;
+                        StatementKind::IfThen(cond, Box::new(then))
+                    }
+                    _ => {
+                        return Err(self.alarm_here(
+                            alarm::STATEMENT,
+                            "follows IF [...]: GOTO n or THEN #i = ... must",
+                        ));
+                    }
+                }
+            }
+            "WHILE" => {
+                let cond = self.bracketed()?;
+                if self.word() != "DO" {
+                    return Err(self.alarm_here(alarm::STATEMENT, "follows WHILE [...]: DO m must"));
+                }
+                self.pos += 2;
+                StatementKind::While(cond, self.loop_number()?)
+            }
+            "DO" => StatementKind::Do(self.loop_number()?),
+            "END" => StatementKind::End(self.loop_number()?),
+            _ => {
+                return Err(alarm::STATEMENT.at(
+                    self.span(start, kw_end.max(start + 1)),
+                    format!("`{kw}` is not a macro statement"),
+                ));
+            }
+        };
+        Ok(Statement {
+            kind,
+            span: self.span(start, self.pos),
+        })
+    }
+
+    /// `#i = e`.
+    fn assignment(&mut self) -> Result<Statement, Diagnostic> {
+        self.blanks();
+        let start = self.pos;
+        let target = self.variable()?;
+        let target_span = target.span;
+        let ExprKind::Var(index) = target.kind else {
+            return Err(alarm::FORMAT.at(target_span, "a variable must open the assignment"));
+        };
+        self.expect(b'=', "is where `=` must follow the variable")?;
+        let value = self.expr()?;
+        Ok(Statement {
+            span: self.span(start, self.pos),
+            kind: StatementKind::Assign {
+                target: *index,
+                target_span,
+                value,
+            },
+        })
+    }
+
+    /// `[e]` (the condition of IF and WHILE).
+    fn bracketed(&mut self) -> Result<Expr, Diagnostic> {
+        let at = self.open()?;
+        let e = self.expr()?;
+        self.close()?;
+        Ok(Expr {
+            span: self.span(at, self.pos),
+            kind: ExprKind::Bracket(Box::new(e)),
+        })
+    }
+
+    /// The m of DO m / END m: 1, 2 or 3 (PS0126).
+    fn loop_number(&mut self) -> Result<u8, Diagnostic> {
+        self.blanks();
+        let at = self.pos;
+        let n = self.constant()?;
+        match n {
+            Some(v) if v == 1.0 || v == 2.0 || v == 3.0 => Ok(v as u8),
+            _ => Err(alarm::LOOP_NUMBER.at(
+                self.span(at, self.pos.max(at + 1)),
+                "the loop number of DO and END is 1, 2 or 3",
+            )),
+        }
+    }
+
+    /// A constant at the parser's place, or None (nothing moved).
+    fn constant(&mut self) -> Result<Option<f64>, Diagnostic> {
+        self.blanks();
+        let start = self.pos;
+        let mut i = start;
+        let mut point = false;
+        while i < self.end && (self.bytes[i].is_ascii_digit() || (self.bytes[i] == b'.' && !point))
+        {
+            point |= self.bytes[i] == b'.';
+            i += 1;
+        }
+        let digits = &self.text[start..i];
+        if digits.is_empty() || digits == "." {
+            return Ok(None);
+        }
+        self.pos = i;
+        if digits.len() > MAX_CONSTANT {
+            return Err(alarm::FORMAT.at(
+                self.span(start, i),
+                format!("a constant of {} characters is too long", digits.len()),
+            ));
+        }
+        // Digits and one point: always a number (`5.` and `.5` too).
+        let v = digits.parse::<f64>().unwrap_or(0.0);
+        Ok(Some(v))
+    }
+
+    /// `#n` or `#[e]`.
+    fn variable(&mut self) -> Result<Expr, Diagnostic> {
+        self.blanks();
+        let start = self.pos;
+        self.expect(b'#', "is where `#` must open a variable")?;
+        let index = if self.bytes.get(self.pos) == Some(&b'[') {
+            self.bracketed()?
+        } else {
+            let at = self.pos;
+            let digits = self.bytes[at..self.end]
+                .iter()
+                .take_while(|c| c.is_ascii_digit())
+                .count();
+            if digits == 0 || self.bytes.get(at + digits) == Some(&b'.') {
+                return Err(alarm::FORMAT.at(
+                    self.span(start, (at + digits).max(at) + 1),
+                    "`#` takes a whole variable number (`#12`) or an expression in brackets (`#[#1+2]`)",
+                ));
+            }
+            self.pos = at + digits;
+            // Digits only: a number (a long run is out of range later).
+            let n = self.text[at..self.pos].parse::<f64>().unwrap_or(f64::MAX);
+            Expr {
+                kind: ExprKind::Number(n),
+                span: self.span(at, self.pos),
+            }
+        };
+        Ok(Expr {
+            span: self.span(start, self.pos),
+            kind: ExprKind::Var(Box::new(index)),
+        })
+    }
+
+    /// Comparison level (lowest).
+    fn expr(&mut self) -> Result<Expr, Diagnostic> {
+        let left = self.sum()?;
+        let save = self.pos;
+        let op = match self.word().as_str() {
+            "EQ" => CmpOp::Eq,
+            "NE" => CmpOp::Ne,
+            "GT" => CmpOp::Gt,
+            "LT" => CmpOp::Lt,
+            "GE" => CmpOp::Ge,
+            "LE" => CmpOp::Le,
+            _ => {
+                self.pos = save;
+                return Ok(left);
+            }
+        };
+        self.pos += 2;
+        let right = self.sum()?;
+        Ok(Expr {
+            span: self.span(left.span.start as usize, self.pos),
+            kind: ExprKind::Compare(op, Box::new(left), Box::new(right)),
+        })
+    }
+
+    /// `+ - OR XOR` level.
+    fn sum(&mut self) -> Result<Expr, Diagnostic> {
+        let mut left = self.product()?;
+        // Each pass reads an operand: bounded by the text.
+        loop {
+            let Some(op) = self.operator(false) else {
+                return Ok(left);
+            };
+            let right = self.product()?;
+            left = binary(op, left, right, self.line, self.pos);
+        }
+    }
+
+    /// `* / AND MOD` level.
+    fn product(&mut self) -> Result<Expr, Diagnostic> {
+        let mut left = self.unary(false)?;
+        loop {
+            let Some(op) = self.operator(true) else {
+                return Ok(left);
+            };
+            let right = self.unary(false)?;
+            left = binary(op, left, right, self.line, self.pos);
+        }
+    }
+
+    /// The operator of the level at the parser's place, consumed; None
+    /// (nothing moved) for any other.
+    fn operator(&mut self, multiplicative: bool) -> Option<BinOp> {
+        let save = self.pos;
+        let (op, len) = match self.peek()? {
+            b'+' => (BinOp::Add, 1),
+            b'-' => (BinOp::Sub, 1),
+            b'*' => (BinOp::Mul, 1),
+            b'/' => (BinOp::Div, 1),
+            c if c.is_ascii_alphabetic() => match self.word().as_str() {
+                "OR" => (BinOp::Or, 2),
+                "XOR" => (BinOp::Xor, 3),
+                "AND" => (BinOp::And, 3),
+                "MOD" => (BinOp::Mod, 3),
+                _ => {
+                    self.pos = save;
+                    return None;
+                }
+            },
+            _ => {
+                self.pos = save;
+                return None;
+            }
+        };
+        if op.multiplicative() != multiplicative {
+            self.pos = save;
+            return None;
+        }
+        self.pos += len;
+        Some(op)
+    }
+
+    /// Signs, then an operand. `word`: a word's value, where only `#…` and
+    /// `[…]` may follow the sign (Fanuc: `X-#1`, `Z-[#3+1.]`).
+    fn unary(&mut self, word: bool) -> Result<Expr, Diagnostic> {
+        self.blanks();
+        let start = self.pos;
+        let mut negative = false;
+        loop {
+            match self.peek() {
+                Some(b'-') => negative = !negative,
+                Some(b'+') => {}
+                _ => break,
+            }
+            self.pos += 1;
+        }
+        let operand = if word {
+            match self.peek() {
+                Some(b'#') => self.variable()?,
+                Some(b'[') => self.bracketed()?,
+                _ => {
+                    return Err(self.alarm_here(
+                        alarm::FORMAT,
+                        "cannot open a word's macro value: `#n`, `#[...]` or `[...]` must",
+                    ));
+                }
+            }
+        } else {
+            self.primary()?
+        };
+        if self.pos == start || !negative {
+            return Ok(operand);
+        }
+        Ok(Expr {
+            span: self.span(start, self.pos),
+            kind: ExprKind::Neg(Box::new(operand)),
+        })
+    }
+
+    fn primary(&mut self) -> Result<Expr, Diagnostic> {
+        let start = self.pos;
+        match self.peek() {
+            Some(b'#') => self.variable(),
+            Some(b'[') => self.bracketed(),
+            Some(c) if c.is_ascii_digit() || c == b'.' => match self.constant()? {
+                Some(v) => Ok(Expr {
+                    kind: ExprKind::Number(v),
+                    span: self.span(start, self.pos),
+                }),
+                None => Err(self.alarm_here(alarm::FORMAT, "is not a number")),
+            },
+            Some(c) if c.is_ascii_alphabetic() => self.function(),
+            _ => Err(self.alarm_here(
+                alarm::FORMAT,
+                "is where a value must be: a number, `#n`, `[...]` or a function",
+            )),
+        }
+    }
+
+    fn function(&mut self) -> Result<Expr, Diagnostic> {
+        let start = self.pos;
+        let name = self.word();
+        let name_end = start + name.len();
+        self.pos = name_end;
+        if name == "POW" {
+            self.open()?;
+            let a = self.expr()?;
+            self.expect(b',', "is where `,` must part POW's two arguments")?;
+            let b = self.expr()?;
+            self.close()?;
+            return Ok(Expr {
+                kind: ExprKind::Pow(Box::new(a), Box::new(b)),
+                span: self.span(start, self.pos),
+            });
+        }
+        let Some(func) = Func::of(&name) else {
+            return Err(alarm::FORMAT.at(
+                self.span(start, name_end),
+                format!("`{name}` is not a macro function or operator"),
+            ));
+        };
+        self.open()?;
+        let a = self.expr()?;
+        if func == Func::Atan && self.eat(b',') {
+            let b = self.expr()?;
+            self.close()?;
+            return Ok(atan2(a, b, self.span(start, self.pos)));
+        }
+        self.close()?;
+        if func == Func::Atan {
+            // ATAN[a]/[b]: the two-argument form, not a division.
+            let save = self.pos;
+            if self.eat(b'/') && self.peek() == Some(b'[') {
+                let b = self.bracketed()?;
+                return Ok(atan2(a, b, self.span(start, self.pos)));
+            }
+            self.pos = save;
+        }
+        Ok(Expr {
+            kind: ExprKind::Call(func, Box::new(a)),
+            span: self.span(start, self.pos),
+        })
+    }
+}
+
+fn atan2(a: Expr, b: Expr, span: Span) -> Expr {
+    Expr {
+        kind: ExprKind::Atan2(Box::new(a), Box::new(b)),
+        span,
+    }
+}
+
+fn binary(op: BinOp, left: Expr, right: Expr, line: u32, end: usize) -> Expr {
+    Expr {
+        span: Span::new(left.span.start as usize, end, line),
+        kind: ExprKind::Binary(op, Box::new(left), Box::new(right)),
+    }
+}

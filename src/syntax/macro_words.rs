@@ -1,0 +1,368 @@
+//! Macro statements and words whose value is a variable or an expression
+//! (behaviour 20.8). The parser reads them into the block's
+//! [`MacroBlock`] (only the two-pass reading meets them: `#` and `[` stop
+//! the one-pass reading, so a program without macros reads as before);
+//! once the run has evaluated the words, [`resolve`] types them as the
+//! parser types a word written with its number, by reading the block again
+//! with the values written in, and gives every word and diagnostic the
+//! span it has in the program.
+
+use super::*;
+use crate::macros::{self, Expr, Statement};
+
+/// What a block holds of Custom Macro B.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MacroBlock {
+    /// A statement (`#1 = …`, `IF …`, `WHILE …`, `GOTO …`, `END …`).
+    pub statement: Option<Statement>,
+    /// The words whose value is `#…` or `[…]`.
+    pub words: Vec<MacroWord>,
+    /// The block's text and where it starts, to read it again with the
+    /// values written in.
+    source: String,
+    start: usize,
+    /// The parser's G20/G21 and canned-cycle context before the block.
+    units: Units,
+    in_cycle: bool,
+}
+
+/// A word whose value is a variable or an expression (`X#1`, `Z-[#3+1.]`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct MacroWord {
+    /// The address.
+    pub address: Address,
+    /// The value as written.
+    pub value: Expr,
+    /// The word, letter through value.
+    pub span: Span,
+}
+
+impl MacroBlock {
+    /// The least input increment of the block's units: what a dimension
+    /// word's value is rounded to, and ROUND in a word rounds to
+    /// (behaviour 20.6).
+    pub fn increment(&self) -> f64 {
+        match self.units {
+            Units::Mm => 0.001,
+            Units::Inch => 0.0001,
+        }
+    }
+
+    /// The text of a statement of the block, as written.
+    pub fn text_of_statement(&self, st: &Statement) -> &str {
+        let s = (st.span.start as usize).saturating_sub(self.start);
+        let t = (st.span.end as usize).saturating_sub(self.start);
+        self.source.get(s..t).unwrap_or("")
+    }
+
+    /// The text of an expression of the block, as written.
+    pub fn text_of(&self, e: &Expr) -> &str {
+        let s = (e.span.start as usize).saturating_sub(self.start);
+        let t = (e.span.end as usize).saturating_sub(self.start);
+        self.source.get(s..t).unwrap_or("")
+    }
+}
+
+/// The end of the block that starts at `i`: its end-of-block character
+/// outside a comment, or the text's end.
+fn block_end(bytes: &[u8], mut i: usize) -> usize {
+    let mut comment = false;
+    while i < bytes.len() {
+        match bytes[i] {
+            b'\n' | b'\r' => break,
+            b';' if !comment => break,
+            b'(' => comment = true,
+            b')' => comment = false,
+            _ => {}
+        }
+        i += 1;
+    }
+    i
+}
+
+impl Blocks<'_> {
+    /// The block's macro part, made at its first macro syntax.
+    fn macro_part<'b>(&mut self, block: &'b mut Block, start: usize) -> &'b mut MacroBlock {
+        let end = self.block_end(start);
+        let (units, in_cycle) = self.before_block;
+        block.macros.get_or_insert_with(|| {
+            Box::new(MacroBlock {
+                statement: None,
+                words: Vec::new(),
+                source: self.text[start..end].to_string(),
+                start,
+                units,
+                in_cycle,
+            })
+        })
+    }
+
+    /// [`block_end`] of the block being read, found once per block: a line
+    /// of many macro words looks it up at each (linear, not quadratic).
+    fn block_end(&mut self, from: usize) -> usize {
+        match self.macro_end {
+            Some((start, end)) if start <= from && from <= end => end,
+            _ => {
+                let end = block_end(self.text.as_bytes(), from);
+                self.macro_end = Some((from, end));
+                end
+            }
+        }
+    }
+
+    /// Reads the statement at `i` (to the block's end) into the block;
+    /// returns where the reading goes on.
+    pub(super) fn read_statement(
+        &mut self,
+        block_start: usize,
+        i: usize,
+        line: u32,
+        block: &mut Block,
+    ) -> usize {
+        let end = block_end(self.text.as_bytes(), i);
+        match macros::statement(self.text, i, end, line) {
+            Ok(s) => self.macro_part(block, block_start).statement = Some(s),
+            Err(d) => {
+                block.error = true;
+                self.report(d);
+            }
+        }
+        end
+    }
+
+    /// Reads a word's macro value at `value` (after the letter at `i`);
+    /// returns where the reading goes on.
+    pub(super) fn read_macro_word(
+        &mut self,
+        block_start: usize,
+        (i, value): (usize, usize),
+        letter: u8,
+        line: u32,
+        block: &mut Block,
+    ) -> usize {
+        let end = self.block_end(value);
+        let address =
+            Address::from_letter(letter).filter(|a| !matches!(a, Address::O | Address::N));
+        match macros::value(self.text, value, end, line) {
+            Ok((_, after))
+                if matches!(
+                    self.text
+                        .as_bytes()
+                        .get(lexer::skip_blanks(self.text.as_bytes(), after)),
+                    Some(b'+' | b'-' | b'*' | b'/' | b'=')
+                ) =>
+            {
+                // `X#140/2`: Fanuc takes an expression in a word only in
+                // brackets (the `/` would otherwise read as a block skip).
+                let op = lexer::skip_blanks(self.text.as_bytes(), after);
+                let word = &self.text[i..after];
+                let msg = format!(
+                    "{}: an expression in a word is written in brackets: `{}[{}{o}…]`, not `{word}{o}…`",
+                    macros::alarm::FORMAT.alarm,
+                    &self.text[i..i + 1],
+                    &self.text[value..after],
+                    o = &self.text[op..op + 1]
+                );
+                self.error_span(
+                    block,
+                    macros::alarm::FORMAT.code,
+                    Span::new(i, op + 1, line),
+                    &msg,
+                );
+                end
+            }
+            Ok((expr, after)) => {
+                let span = Span::new(i, after, line);
+                match address {
+                    Some(address) => self.macro_part(block, block_start).words.push(MacroWord {
+                        address,
+                        value: expr,
+                        span,
+                    }),
+                    None => {
+                        let msg = format!(
+                            "{}: `{}` takes no variable or expression (O and N never do, and offsetlab reads no other such letter)",
+                            macros::alarm::FORMAT.alarm,
+                            letter as char
+                        );
+                        self.error_span(block, macros::alarm::FORMAT.code, span, &msg);
+                    }
+                }
+                after
+            }
+            Err(d) => {
+                block.error = true;
+                self.report(d);
+                end
+            }
+        }
+    }
+
+    /// A block with a statement holds no NC word but its sequence number
+    /// (PS0127).
+    pub(super) fn check_statement_alone(&mut self, block: &mut Block) {
+        let Some(m) = &block.macros else { return };
+        let Some(s) = &m.statement else { return };
+        let other = block
+            .words
+            .iter()
+            .find(|w| w.address != Address::N)
+            .map(|w| w.span)
+            .or_else(|| m.words.first().map(|w| w.span));
+        if let Some(span) = other {
+            let msg = format!(
+                "{}: an NC word and the macro statement `{}` share a block; write them in two blocks",
+                macros::alarm::NC_AND_MACRO.alarm,
+                s.kind.keyword()
+            );
+            self.error_span(block, macros::alarm::NC_AND_MACRO.code, span, &msg);
+        }
+    }
+}
+
+/// How a value is written for the parser to read it as the word's number:
+/// a dimension rounded to `increment` with its point, a feed with its
+/// point, a G code to one decimal, any other whole word rounded to a whole
+/// number (Fanuc rounds a variable's value to the address's digits).
+fn written(address: Address, v: f64, increment: f64, in_cycle: bool) -> String {
+    let kind = match address {
+        Address::K if in_cycle => WordKind::Integer,
+        a => a.kind(),
+    };
+    let letter = address.letter();
+    match kind {
+        WordKind::Dimension => {
+            let digits = if increment < 0.001 { 4 } else { 3 };
+            let v = (v / increment).round() * increment;
+            format!("{letter}{v:.digits$}")
+        }
+        WordKind::Feed => {
+            let s = format!("{v:.6}");
+            let s = s.trim_end_matches('0');
+            format!("{letter}{s}")
+        }
+        WordKind::Integer if address == Address::G => {
+            let v = (v * 10.0).round() / 10.0;
+            if v.fract() == 0.0 {
+                format!("G{v:.0}")
+            } else {
+                format!("G{v:.1}")
+            }
+        }
+        WordKind::Integer => format!("{letter}{:.0}", v.round()),
+    }
+}
+
+/// The block with its macro words typed: `values` holds each macro word's
+/// value (None: vacant, the word is left out, behaviour 20.4). The words
+/// are read again, with the values written in, by the parser in the
+/// context the block had; every word and diagnostic keeps the span it has
+/// in the program. Errors stop the block as a parse error would.
+pub fn resolve(
+    block: &Block,
+    m: &MacroBlock,
+    values: &[Option<f64>],
+    options: ParseOptions,
+) -> (Block, Vec<Diagnostic>) {
+    // Every word in text order: (its span, its text for the parser).
+    let mut items: Vec<(Span, String, bool)> =
+        Vec::with_capacity(block.words.len() + m.words.len());
+    for w in &block.words {
+        let s = (w.span.start as usize).saturating_sub(m.start);
+        let t = (w.span.end as usize).saturating_sub(m.start);
+        items.push((w.span, m.source.get(s..t).unwrap_or("").to_string(), false));
+    }
+    let increment = m.increment();
+    for (w, v) in m.words.iter().zip(values) {
+        if let Some(v) = v {
+            items.push((w.span, written(w.address, *v, increment, m.in_cycle), true));
+        }
+    }
+    items.sort_by_key(|(span, ..)| span.start);
+    let mut text = String::new();
+    let mut ranges = Vec::with_capacity(items.len());
+    for (span, t, is_macro) in &items {
+        let at = text.len();
+        text.push_str(t);
+        ranges.push((at, text.len(), *span, *is_macro));
+        text.push(' ');
+    }
+    // The ranges are in order: the word at a byte is found by halving.
+    let original = |at: u32| {
+        let i = ranges.partition_point(|(_, e, ..)| *e < at as usize);
+        ranges
+            .get(i)
+            .filter(|(s, e, ..)| (*s..=*e).contains(&(at as usize)))
+            .map(|r| (r.2, r.3))
+    };
+    let at = Resume {
+        pos: 0,
+        line: block.span.line,
+        units: m.units,
+        in_cycle: m.in_cycle,
+        tape: Tape::Reading,
+        // The block's own warnings were given when it was first read.
+        warned_integer: true,
+        programs: program::Programs::default(),
+    };
+    let mut parser = Blocks::resume(&text, options, at);
+    let mut out = Block::default();
+    if !parser.next_into(&mut out) {
+        out.clear();
+    }
+    for w in &mut out.words {
+        if let Some((span, _)) = original(w.span.start) {
+            w.span = span;
+        }
+    }
+    out.span = block.span;
+    out.skip = block.skip;
+    out.macros = None;
+    let diagnostics = parser
+        .into_diagnostics()
+        .into_iter()
+        .filter_map(|mut d| {
+            let (span, is_macro) = original(d.span.start)?;
+            // The literal words' diagnostics were reported when first read.
+            (is_macro || d.is_error()).then(|| {
+                d.span = span;
+                d.line = span.line;
+                d
+            })
+        })
+        .collect();
+    (out, diagnostics)
+}
+
+/// True if the text at `i` (a block's next thing) opens a macro statement
+/// or a word with a macro value.
+pub(super) fn opens(bytes: &[u8], i: usize) -> bool {
+    macros::opens_statement(bytes, i)
+        || (bytes[i].is_ascii_alphabetic()
+            && macros::opens_value(bytes, lexer::skip_blanks(bytes, i + 1)))
+}
+
+impl Blocks<'_> {
+    /// Reads the statement or the macro word at `i` ([`opens`] said which
+    /// may be there); returns where the reading goes on.
+    pub(super) fn read_macro(
+        &mut self,
+        start: usize,
+        i: usize,
+        line: u32,
+        block: &mut Block,
+    ) -> usize {
+        let bytes = self.text.as_bytes();
+        if macros::opens_statement(bytes, i) {
+            return self.read_statement(start, i, line, block);
+        }
+        let value = lexer::skip_blanks(bytes, i + 1);
+        self.read_macro_word(
+            start,
+            (i, value),
+            bytes[i].to_ascii_uppercase(),
+            line,
+            block,
+        )
+    }
+}
