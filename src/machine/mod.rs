@@ -10,6 +10,7 @@
 
 pub mod arc;
 mod arcs;
+pub(crate) mod calls;
 mod coords;
 mod corner;
 mod cutter;
@@ -70,6 +71,8 @@ pub(crate) enum Flow {
     Continue,
     /// M02/M30: the program ends.
     End,
+    /// M98, M97, M99: the run goes on elsewhere (behaviour 19).
+    Jump(calls::Jump),
 }
 
 /// What one block produced besides the state change.
@@ -309,6 +312,29 @@ impl Machine {
     /// sequence number when a block asks (behaviour 15.3). On error the block
     /// has no effect that matters: the run stops there (behaviour 2.1).
     pub(crate) fn execute(
+        &mut self,
+        block: &Block,
+        index: u32,
+        out: &mut Out,
+        ahead: &mut dyn Ahead,
+        program: &mut dyn program::ProgramText,
+    ) -> Result<Flow, Diagnostic> {
+        // A call or return: the block's other words first, then the jump
+        // (behaviour 19.3). One flag test for a block without M.
+        if block.holds(Address::M)
+            && let Some((jump, rest)) = self.subprogram_jump(block, program)?
+        {
+            return match self.execute_block(&rest, index, out, ahead, program)? {
+                Flow::End => Ok(Flow::End),
+                _ => Ok(Flow::Jump(jump)),
+            };
+        }
+        self.execute_block(block, index, out, ahead, program)
+    }
+
+    /// [`Machine::execute`] for a block that is no call.
+    #[inline(always)]
+    fn execute_block(
         &mut self,
         block: &Block,
         index: u32,

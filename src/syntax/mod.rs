@@ -11,6 +11,7 @@
 
 mod block;
 pub mod codes;
+mod headers;
 mod lexer;
 mod messages;
 mod program;
@@ -18,6 +19,7 @@ mod read;
 mod resume;
 mod words;
 
+pub use headers::{Header, program_headers};
 pub use resume::Resume;
 pub(crate) use resume::shift;
 
@@ -317,6 +319,9 @@ pub struct Blocks<'a> {
     /// Blocks are read in one pass where they can be (false in tests that
     /// compare it with the two-pass reading).
     one_pass: bool,
+    /// The reading ends with the program it started in (a subprogram read
+    /// for a call, behaviour 19.1): what follows its end is not read.
+    one_program: bool,
 }
 
 impl<'a> Blocks<'a> {
@@ -342,6 +347,19 @@ impl<'a> Blocks<'a> {
             dropped: 0,
             raw: Vec::with_capacity(16),
             one_pass: true,
+            one_program: false,
+        }
+    }
+
+    /// This parser, reading only the program it stands in: it ends at
+    /// that program's end (its `%`, or the next program's header), where
+    /// the parser of a whole text goes on to read the other programs for
+    /// their diagnostics (a subprogram's blocks, read for a call: behaviour
+    /// 19.1).
+    pub fn one_program(self) -> Blocks<'a> {
+        Blocks {
+            one_program: true,
+            ..self
         }
     }
 
@@ -378,7 +396,10 @@ impl<'a> Blocks<'a> {
     /// (look-ahead reads the blocks after the running one with it; the run's
     /// parser reads and reports them when they run).
     pub fn fork(&self) -> Blocks<'a> {
-        Blocks::resume(self.text, self.options, self.resume_point())
+        Blocks {
+            one_program: self.one_program,
+            ..Blocks::resume(self.text, self.options, self.resume_point())
+        }
     }
 
     /// [`Blocks::resume`] with the diagnostics reported before `at` (they
