@@ -709,8 +709,8 @@ impl Machine {
                 }
                 MCode::CoolantMist | MCode::CoolantFlood => EventKind::CoolantOn { m: m.number() },
                 MCode::CoolantOff => EventKind::CoolantOff,
-                // The calls never get here: `refuse_calls` stops their block
-                // first (behaviour 2.18).
+                // The calls never get here: M98/M97/M99 are taken out of
+                // their block (behaviour 19.3), M198 is refused (2.18).
                 MCode::LocalSubprogramCall
                 | MCode::SubprogramCall
                 | MCode::SubprogramReturn
