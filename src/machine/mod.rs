@@ -71,8 +71,10 @@ pub(crate) enum Flow {
     Continue,
     /// M02/M30: the program ends.
     End,
-    /// M98, M97, M99: the run goes on elsewhere (behaviour 19).
-    Jump(calls::Jump),
+    /// M98, M97, M99: the run goes on elsewhere, where the machine's
+    /// `jump` says (behaviour 19; kept out of the flow, which every block
+    /// returns: the `check` instruction count in docs/performance.md).
+    Jump,
 }
 
 /// What one block produced besides the state change.
@@ -181,6 +183,9 @@ pub struct Machine {
     /// This machine is a copy running the next block to find its direction
     /// (behaviour 2.31): its own chamfers are not cut.
     reading_ahead: bool,
+    /// The call or return the last block asked for (with [`Flow::Jump`]);
+    /// the run takes it.
+    pub(crate) jump: Option<calls::Jump>,
 }
 
 const AXES: [(Address, char); 3] = [(Address::X, 'X'), (Address::Y, 'Y'), (Address::Z, 'Z')];
@@ -243,6 +248,7 @@ impl Machine {
             span: Span::default(),
             moves_left: usize::MAX,
             overflow: false,
+            jump: None,
             corner_cut: false,
             corner: [0.0; 3],
             corner_end: None,
@@ -319,17 +325,40 @@ impl Machine {
         ahead: &mut dyn Ahead,
         program: &mut dyn program::ProgramText,
     ) -> Result<Flow, Diagnostic> {
-        // A call or return: the block's other words first, then the jump
-        // (behaviour 19.3). One flag test for a block without M.
+        // A block with M may call or return (behaviour 19.3): out of line,
+        // one flag test for a block without M (and one place that runs a
+        // block, so that the mill's block stays inlined here: the `check`
+        // instruction count in docs/performance.md).
         if block.holds(Address::M)
-            && let Some((jump, rest)) = self.subprogram_jump(block, program)?
+            && let Some(flow) = self.execute_call(block, index, out, ahead, program)?
         {
-            return match self.execute_block(&rest, index, out, ahead, program)? {
-                Flow::End => Ok(Flow::End),
-                _ => Ok(Flow::Jump(jump)),
-            };
+            return Ok(flow);
         }
         self.execute_block(block, index, out, ahead, program)
+    }
+
+    /// [`Machine::execute`] for a block with M codes that calls or
+    /// returns: the block's other words first, then the jump; None for a
+    /// block with no call.
+    #[inline(never)]
+    fn execute_call(
+        &mut self,
+        block: &Block,
+        index: u32,
+        out: &mut Out,
+        ahead: &mut dyn Ahead,
+        program: &mut dyn program::ProgramText,
+    ) -> Result<Option<Flow>, Diagnostic> {
+        let Some((jump, rest)) = self.subprogram_jump(block, program)? else {
+            return Ok(None);
+        };
+        // `rest` has no call left: this runs it as any block.
+        let flow = self.execute(&rest, index, out, ahead, program)?;
+        if flow == Flow::End {
+            return Ok(Some(Flow::End));
+        }
+        self.jump = Some(jump);
+        Ok(Some(Flow::Jump))
     }
 
     /// [`Machine::execute`] for a block that is no call.

@@ -150,11 +150,29 @@ fn thousands(n: u64) -> String {
 }
 
 impl<'t> Runner<'t> {
-    /// The block just run asked for `jump` (checked by the machine): the
-    /// run reads on where it leads, and the block's report says where.
+    /// The block just run stopped the run, or asked for a jump (the
+    /// machine's `jump`, checked): the run reads on where it leads.
     #[cold]
     #[inline(never)]
-    pub(super) fn jump(&mut self, jump: Jump) -> Step {
+    pub(super) fn jump_or_stop(&mut self, step: Step) -> Step {
+        match step {
+            Step::Stopped(Some(mut d)) => {
+                if d.code == "too-many-blocks" {
+                    self.explain_limit(&mut d);
+                }
+                Step::Stopped(Some(d))
+            }
+            Step::Ran(Flow::Jump) => match self.machine.jump.take() {
+                Some(jump) => self.jump(jump),
+                None => Step::Ran(Flow::Continue),
+            },
+            step => step,
+        }
+    }
+
+    /// The block just run asked for `jump` (checked by the machine): the
+    /// run reads on where it leads, and the block's report says where.
+    fn jump(&mut self, jump: Jump) -> Step {
         if self.calls.is_none() {
             let label = match self.sequences.main_header(self.block.span.start as usize) {
                 Some(h) => format!("O{:04}", h.number),
@@ -169,7 +187,7 @@ impl<'t> Runner<'t> {
             }));
         }
         let Some(calls) = self.calls.as_deref_mut() else {
-            return Step::Ran(Flow::Jump(jump));
+            return Step::Ran(Flow::Jump);
         };
         self.block_place = if self.options.keep_blocks {
             calls.place()
@@ -197,7 +215,7 @@ impl<'t> Runner<'t> {
                 };
                 // The machine found it a moment ago.
                 let Some((entry, label)) = found else {
-                    return Step::Ran(Flow::Jump(jump));
+                    return Step::Ran(Flow::Jump);
                 };
                 let site = site(&calls.current.label, &self.block);
                 let callee = Program {
@@ -242,14 +260,14 @@ impl<'t> Runner<'t> {
                 }
                 Some(_) => {
                     let Some(frame) = calls.stack.pop() else {
-                        return Step::Ran(Flow::Jump(jump));
+                        return Step::Ran(Flow::Jump);
                     };
                     let target = match to {
                         Some(n) => self.sequences.find_in(frame.caller.start, n),
                         None => Some(frame.back),
                     };
                     let Some(target) = target else {
-                        return Step::Ran(Flow::Jump(jump));
+                        return Step::Ran(Flow::Jump);
                     };
                     let note = match to {
                         Some(n) => format!(
@@ -277,7 +295,7 @@ impl<'t> Runner<'t> {
                         None => Some(self.sequences.main_start()),
                     };
                     let Some(target) = target else {
-                        return Step::Ran(Flow::Jump(jump));
+                        return Step::Ran(Flow::Jump);
                     };
                     let note = match to {
                         Some(n) => format!(
@@ -312,7 +330,7 @@ impl<'t> Runner<'t> {
         if home && let Some(main) = calls.main.take() {
             self.parser = main;
         }
-        Step::Ran(Flow::Jump(jump))
+        Step::Ran(Flow::Jump)
     }
 
     /// The parser has read its last block: a subprogram's reading ended
@@ -347,16 +365,14 @@ impl<'t> Runner<'t> {
     /// place before its jump for a call or return.
     pub(super) fn place_of(&mut self, flow: Flow) -> Option<Box<Place>> {
         match flow {
-            Flow::Jump(_) => self.block_place.take(),
+            Flow::Jump => self.block_place.take(),
             _ => self.calls.as_ref().and_then(|c| c.place()),
         }
     }
 
     /// The block limit reached in a program that loops: the error at the
     /// M99 that made the loop, saying how often (behaviour 19.8).
-    #[cold]
-    #[inline(never)]
-    pub(super) fn explain_limit(&self, d: &mut Diagnostic) {
+    fn explain_limit(&self, d: &mut Diagnostic) {
         let Some(calls) = self.calls.as_deref() else {
             return;
         };

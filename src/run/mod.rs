@@ -209,10 +209,9 @@ impl<'t> Runner<'t> {
         (index, first_move, flow): (u32, usize, Flow),
         mut report: impl FnMut(&mut Blocks<'t>, Diagnostic),
     ) {
-        let place = match self.calls.is_some() && self.options.keep_blocks {
-            true => self.place_of(flow),
-            false => None,
-        };
+        if self.calls.is_some() && self.options.keep_blocks {
+            self.block_place = self.place_of(flow);
+        }
         let Runner {
             block,
             out,
@@ -220,14 +219,9 @@ impl<'t> Runner<'t> {
             parser,
             options,
             calls,
+            block_place,
             ..
         } = self;
-        // The machine's warnings go with the first parser's diagnostics,
-        // wherever the blocks are read (behaviour 19).
-        let parser = match calls.as_deref_mut().and_then(|c| c.main_parser()) {
-            Some(main) => main,
-            None => parser,
-        };
         let ran = (index, first_move, flow);
         account(
             result,
@@ -235,9 +229,14 @@ impl<'t> Runner<'t> {
             observer,
             options,
             kind,
-            (block, out, machine, place),
+            (block, out, machine, block_place),
             ran,
-            |w| report(parser, w),
+            // The machine's warnings go with the first parser's
+            // diagnostics, wherever the blocks are read (behaviour 19).
+            |w| match calls.as_deref_mut().and_then(|c| c.main_parser()) {
+                Some(main) => report(main, w),
+                None => report(parser, w),
+            },
         );
     }
 
@@ -260,7 +259,7 @@ impl<'t> Runner<'t> {
             return self.program_ends();
         }
         let mut ahead = self.ahead.at(self.index, ahead::From::Parser(&self.parser));
-        let mut step = execute(
+        let step = execute(
             &self.block,
             &mut self.machine,
             &mut self.out,
@@ -269,10 +268,11 @@ impl<'t> Runner<'t> {
             self.block_skip,
             (&mut ahead, &mut self.sequences),
         );
-        match &mut step {
-            Some(Step::Ran(Flow::Jump(jump))) => return Some(self.jump(*jump)),
-            Some(Step::Stopped(Some(d))) if d.code == "too-many-blocks" => self.explain_limit(d),
-            _ => {}
+        // A call or return, or the block limit (its message names a loop):
+        // asked of the machine and the count, not of the step (which is
+        // made in place, as `execute` says).
+        if self.machine.jump.is_some() || self.index as usize >= self.options.max_blocks {
+            return step.map(|s| self.jump_or_stop(s));
         }
         step
     }
@@ -492,7 +492,7 @@ impl Making {
                 |parser, w| parser.report(w),
             );
             if every > 0 {
-                self.checkpoints.calls |= matches!(flow, Flow::Jump(_));
+                self.checkpoints.calls |= flow == Flow::Jump;
                 self.checkpoints.lines.push(r.block.span.line);
                 if let Some(upto) = r.out.reads {
                     self.checkpoints.reads.push(Read {
@@ -587,7 +587,7 @@ fn account(
     observer: &mut impl Observer,
     options: &RunOptions,
     kind: MachineKind,
-    (block, out, machine, place): (&Block, &mut Out, &Machine, Option<Box<Place>>),
+    (block, out, machine, place): (&Block, &mut Out, &Machine, &mut Option<Box<Place>>),
     (index, first_move, flow): (u32, usize, Flow),
     mut report: impl FnMut(Diagnostic),
 ) {
@@ -641,7 +641,7 @@ fn account(
             first_move: first_move as u32,
             move_count: out.moves.len() as u32,
             data,
-            place,
+            place: place.take(),
         });
     }
     let offset_words = match kind {

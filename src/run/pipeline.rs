@@ -161,7 +161,7 @@ fn on_two_threads(text: &str, setup: &Setup, options: RunOptions) -> Option<Run>
                     // A subprogram call or return: the blocks read ahead
                     // are not the ones that run next; one thread runs it
                     // (behaviour 19).
-                    Some(Step::Ran(Flow::Jump(_))) => return None,
+                    Some(Step::Ran(Flow::Jump)) => return None,
                     Some(Step::Ran(flow)) => {
                         let ran = (index, first_move, flow);
                         super::account(
@@ -170,7 +170,7 @@ fn on_two_threads(text: &str, setup: &Setup, options: RunOptions) -> Option<Run>
                             &mut (),
                             &r.options,
                             setup.machine,
-                            (block, &mut r.out, &r.machine, None),
+                            (block, &mut r.out, &r.machine, &mut None),
                             ran,
                             |w| warnings.push((reported, w)),
                         );
