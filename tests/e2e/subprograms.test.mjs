@@ -43,9 +43,10 @@ describe('subprograms', () => {
       assert.equal(await page.locator('#state-panel .explanation').textContent(),
         'M98: calls O2000, 4 times; it returns to line 5.');
       assert.equal(await page.locator('#state-panel dd[data-key="program"]').count(), 0);
-      // Block 11: N1 of the second pass (blocks 4–10 are the first), Z-2.
-      for (let i = 0; i < 8; i += 1) await page.locator('#step-next').click();
-      await waitForView(page, (v, a) => v.step === a, 11);
+      // Block 12: N1 of the second pass (blocks 4–10 are the first, 11 its
+      // O2000 header), at Z-2.
+      for (let i = 0; i < 9; i += 1) await page.locator('#step-next').click();
+      await waitForView(page, (v, a) => v.step === a, 12);
       assert.equal(await stateText(page, 'block'), 'line 9: N1 G91 G01 Z-1.');
       assert.equal(await stateText(page, 'program'), 'O2000 · O1000 N30 → O2000');
       assert.equal(await stateText(page, 'programmed'), 'X0.000 Y0.000 Z-2.000 mm');
