@@ -29,7 +29,7 @@ setup:
 # take about a quarter less time (docs/performance.md).
 wasm: setup
 	@$(TIMED) wasm-build wasm-pack build --target web --out-dir www/pkg
-	@$(TIMED) wasm-opt node node_modules/binaryen/bin/wasm-opt -O3 www/pkg/offsetlab_bg.wasm -o www/pkg/offsetlab_bg.wasm
+	@$(TIMED) wasm-opt bash scripts/wasm-opt.sh
 
 # The page's CodeMirror bundle (www/dist, generated, not committed).
 page: setup

@@ -47,6 +47,34 @@ fn behaviour3_1_g49_and_h00_cancel() {
 }
 
 #[test]
+fn behaviour3_1_a_register_holding_zero_is_a_new_h_not_h00_and_is_warned_about() {
+    // Issue 23's defect: with G43 H01 = 6 on, `G43 Z50. H02` with H02 = 0
+    // was explained as "H00 cancels". It is a change of H (6 → 0): Z50.
+    // lands at 50 + 0 = 50, and the empty register is warned about.
+    let s = mill(&[(1, 6.0)]);
+    let r = ok("G90 G00 G43 Z50. H01\nG43 Z50. H02", &s);
+    same(actual(&r, 0), [0.0, 0.0, 56.0]);
+    same(actual(&r, 1), [0.0, 0.0, 50.0]);
+    let e = explain(&r, 1);
+    assert!(
+        e.starts_with("H01 → H02 while G43 is active (6.000 → 0.000)"),
+        "{e}"
+    );
+    assert!(!e.contains("H00"), "{e}");
+    let w: Vec<_> = r
+        .diagnostics
+        .iter()
+        .filter(|d| d.code == "length-offset-zero")
+        .collect();
+    assert_eq!(w.len(), 1, "{:?}", r.diagnostics);
+    assert_eq!((w[0].line, w[0].column), (2, 10), "at the H word");
+    // H00 keeps its own warning and sentence.
+    let r = ok("G90 G00 G43 Z50. H01\nG43 Z50. H00", &s);
+    assert!(explain(&r, 1).contains("H00 cancels"), "{}", explain(&r, 1));
+    assert!(r.diagnostics.iter().any(|d| d.code == "length-offset-h00"));
+}
+
+#[test]
 fn behaviour3_2_worked_example() {
     // `G90 G00 G43 Z50. H02` with register 02 = 15. → Z65.
     let text = "G90 G00 G43 Z50. H02";

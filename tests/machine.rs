@@ -370,6 +370,22 @@ fn behaviour2_18_m_codes_are_events_and_m30_ends_the_program() {
 }
 
 #[test]
+fn behaviour2_18_t_in_the_m06_block_is_the_tool_put_in_the_spindle() {
+    // Issue 23's defect: `T1 M06` showed tool 0, and `T2 M06` tool 1.
+    let r = ok("T1 M06\nG00 X1.\nT2 M06\nG00 X2.", &mill(&[]));
+    let tools: Vec<u32> = r.blocks.iter().map(|b| b.state.tool).collect();
+    assert_eq!(tools, vec![1, 1, 2, 2]);
+    let changes: Vec<&EventKind> = r.events.iter().map(|e| &e.kind).collect();
+    assert_eq!(
+        changes,
+        vec![
+            &EventKind::ToolChange { tool: 1 },
+            &EventKind::ToolChange { tool: 2 }
+        ]
+    );
+}
+
+#[test]
 fn behaviour2_18_m06_changes_to_the_selected_tool() {
     let r = ok("T5\nM06", &mill(&[]));
     assert_eq!(r.blocks[1].state.tool, 5);
@@ -531,14 +547,14 @@ fn behaviour2_18_m19_m07_and_a_t_word_in_the_m06_block() {
         vec![
             EventKind::SpindleOrient,
             EventKind::CoolantOn { m: 7 },
-            EventKind::ToolChange { tool: 5 },
+            EventKind::ToolChange { tool: 2 },
             EventKind::ToolChange { tool: 2 },
         ]
     );
-    // M06 changes to the tool selected before its block; the block's own T
-    // selects the next one.
-    assert_eq!(r.blocks[3].state.tool, 5);
-    assert_eq!(r.blocks[3].state.next_tool, 2);
+    // A T in the M06 block is the tool M06 changes to (Haas `T1 M06`); a
+    // later M06 without T changes to the same tool again.
+    assert_eq!(r.blocks[3].state.tool, 2);
+    assert_eq!(r.blocks[4].state.tool, 2);
     // M00 is reported, and the run goes on.
     let r = ok("M00\nG00 X1.", &mill(&[]));
     assert_eq!(r.events[0].kind, EventKind::ProgramStop);

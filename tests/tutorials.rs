@@ -70,6 +70,9 @@ fn the_tutorial_examples_say_what_their_text_says() {
     assert_eq!(plain.setup.mill_value(1), 6.0);
     assert_eq!(compact.setup.mill_value(1), 6.0);
     assert_eq!((plain.step, compact.step), (Some(2), Some(2)));
+    // "The same frame": the same program too (issue 23 found the compact
+    // one carrying another text of the square).
+    assert_eq!(plain.program, compact.program);
     // Wear: D02 reads 4.9.
     assert!((doc("offset=02:5,W-0.1").setup.mill_value(2) - 4.9).abs() < 1e-9);
     // Blocks ended by `;`: seven blocks.

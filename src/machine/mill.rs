@@ -68,14 +68,17 @@ impl Machine {
         }
         self.refuse_unused(b, self.mill_path(b))?;
         let before = self.state.modal;
+        // A T in the M06 block names the tool that M06 puts in the spindle
+        // (Haas "T1 M06", RS274/NGC M6), so it is read before the M codes
+        // (behaviour 2.18).
+        if let Some(t) = b.get(Address::T) {
+            self.state.next_tool = t.int();
+        }
         self.common_words(b, out)?;
         self.mode_codes(b, out, before)?;
         let c = b.codes();
         if self.state.modal.feed_mode == FeedMode::InverseTime {
             self.check_inverse_time(b)?;
-        }
-        if let Some(t) = b.get(Address::T) {
-            self.state.next_tool = t.int();
         }
         if let Some(d) = b.get(Address::D) {
             let n = d.int() as u16;

@@ -103,6 +103,28 @@ impl LengthState {
                     cd.gcode()
                 ),
             ));
+        } else if self.sign != 0
+            && self.h != 0
+            && self.value == 0.0
+            && (words.code.is_some() || words.h.is_some())
+        {
+            // An empty register is as likely a forgotten measurement as a
+            // choice: said, as H00 is (behaviour 3.1).
+            let span = words
+                .h
+                .map(|(_, span, _)| span)
+                .or(words.code.map(|(_, span)| span))
+                .unwrap_or_default();
+            warnings.push(Diagnostic::warning(
+                "length-offset-zero",
+                span,
+                format!(
+                    "{} H{:02}: register {:02} holds 0, so no length offset applies (is the tool's length measured?)",
+                    self.mode().gcode(),
+                    self.h,
+                    self.h
+                ),
+            ));
         }
         Ok(())
     }
@@ -189,7 +211,7 @@ impl LengthState {
         let fmt_signed = |mm: f64| show_signed(mm, z.units);
         let vector_change = new.vector - old.vector;
         let label = if new.changed_since(old) {
-            if new.target == 0.0 && old.target != 0.0 {
+            if new.target == 0.0 && old.target != 0.0 && (new.sign == 0 || new.h == 0) {
                 if new.sign == 0 {
                     "G49 cancels the tool length offset".to_string()
                 } else {
