@@ -363,7 +363,12 @@ fn behaviour19_9_typing_a_program_with_subprogram_calls_runs_as_whole_runs() {
     let mut earlier: Option<(String, PageRun)> = None;
     for end in (1..=text.len()).step_by(3).chain([text.len()]) {
         let typed = &text[..end];
-        let (got, _, _) = page_run(typed, &setup, 2, earlier.as_ref().map(|(t, e)| (t.as_str(), e)));
+        let (got, _, _) = page_run(
+            typed,
+            &setup,
+            2,
+            earlier.as_ref().map(|(t, e)| (t.as_str(), e)),
+        );
         assert_same_as_whole(typed, &setup, 2, &got);
         earlier = Some((typed.to_string(), got));
     }
