@@ -43,7 +43,7 @@ pub mod wasm;
 pub use diag::{Diagnostic, Severity, Span};
 pub use document::Document;
 pub use machine::{Move, MoveKind};
-pub use report::{BlockReport, End, Event, Run};
+pub use report::{BlockReport, End, Event, Place, Run};
 pub use run::again::{Earlier, Reuse, Tail, rerun_observed};
 #[cfg(not(target_arch = "wasm32"))]
 pub use run::pipeline::{PIPELINE_FROM_BYTES, run_on_two_threads, run_pipelined};

@@ -44,6 +44,21 @@ pub struct BlockReport {
     pub data: Vec<DataSet>,
     /// The variables a macro statement set (behaviour 20.8).
     pub variables: Vec<crate::machine::VariableSet>,
+    /// Where the block ran among subprogram calls (behaviour 19.7): None
+    /// in the main program outside any call.
+    pub place: Option<Box<Place>>,
+}
+
+/// Where a block ran among the subprogram calls (behaviour 19.7).
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct Place {
+    /// The program the block is in: `O2000`, or for Haas's M97 the
+    /// program and the sequence number called (`O1000 N1000`).
+    pub program: String,
+    /// The calls open, outermost first: each call's program and its
+    /// sequence number (or line), then the program being read
+    /// (`["O1000 N40", "O2000"]`).
+    pub stack: Vec<String>,
 }
 
 impl BlockReport {

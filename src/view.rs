@@ -259,6 +259,14 @@ pub struct BlockView<'a> {
     /// (behaviour 20.8).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub variables_set: Vec<crate::machine::VariableSet>,
+    /// The program the block ran in, inside a subprogram call (behaviour
+    /// 19.7); absent in the main program outside calls.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub program: Option<String>,
+    /// The calls open (outermost first) and the program being read; empty
+    /// outside calls.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub stack: Vec<String>,
 }
 
 /// Builds the report of one block.
@@ -354,6 +362,12 @@ fn block_view_at<'a>(b: &BlockReport, text: &'a str, columns: (u32, u32)) -> Blo
         move_count: b.move_count,
         data_set: b.data.clone(),
         variables_set: b.variables.clone(),
+        program: b.place.as_ref().map(|p| p.program.clone()),
+        stack: b
+            .place
+            .as_ref()
+            .map(|p| p.stack.clone())
+            .unwrap_or_default(),
     }
 }
 

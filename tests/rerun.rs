@@ -353,3 +353,23 @@ fn a_digit_typed_at_the_end_of_a_cycles_q_block_runs_the_cycle_again() {
         );
     }
 }
+
+#[test]
+fn behaviour19_9_typing_a_program_with_subprogram_calls_runs_as_whole_runs() {
+    // The page's runs while a program of a call and its subprogram is
+    // typed: each made again from the one before equals the whole run.
+    let text = "O1000\nN10 G90 G00 X0 Y0 Z5.\nN30 M98 P2000 L2\nN50 M30\n%\nO2000\nN1 G91 G01 Z-1. F100\nN2 X10.\nN6 M99\n%\n";
+    let setup = Setup::default();
+    let mut earlier: Option<(String, PageRun)> = None;
+    for end in (1..=text.len()).step_by(3).chain([text.len()]) {
+        let typed = &text[..end];
+        let (got, _, _) = page_run(
+            typed,
+            &setup,
+            2,
+            earlier.as_ref().map(|(t, e)| (t.as_str(), e)),
+        );
+        assert_same_as_whole(typed, &setup, 2, &got);
+        earlier = Some((typed.to_string(), got));
+    }
+}

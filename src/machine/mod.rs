@@ -10,6 +10,7 @@
 
 pub mod arc;
 mod arcs;
+pub(crate) mod calls;
 mod coords;
 mod corner;
 mod cutter;
@@ -71,6 +72,10 @@ pub(crate) enum Flow {
     Continue,
     /// M02/M30: the program ends.
     End,
+    /// M98, M97, M99: the run goes on elsewhere, where the machine's
+    /// `jump` says (behaviour 19; kept out of the flow, which every block
+    /// returns: the `check` instruction count in docs/performance.md).
+    Jump,
 }
 
 /// What one block produced besides the state change.
@@ -182,6 +187,9 @@ pub struct Machine {
     /// The program's macro variables (behaviour 20.1), kept with the
     /// machine so that a checkpoint holds them.
     pub(crate) variables: crate::macros::Store,
+    /// The call or return the last block asked for (with [`Flow::Jump`]);
+    /// the run takes it.
+    pub(crate) jump: Option<calls::Jump>,
 }
 
 const AXES: [(Address, char); 3] = [(Address::X, 'X'), (Address::Y, 'Y'), (Address::Z, 'Z')];
@@ -245,6 +253,7 @@ impl Machine {
             span: Span::default(),
             moves_left: usize::MAX,
             overflow: false,
+            jump: None,
             corner_cut: false,
             corner: [0.0; 3],
             corner_end: None,
@@ -315,6 +324,52 @@ impl Machine {
     /// sequence number when a block asks (behaviour 15.3). On error the block
     /// has no effect that matters: the run stops there (behaviour 2.1).
     pub(crate) fn execute(
+        &mut self,
+        block: &Block,
+        index: u32,
+        out: &mut Out,
+        ahead: &mut dyn Ahead,
+        program: &mut dyn program::ProgramText,
+    ) -> Result<Flow, Diagnostic> {
+        // A block with M may call or return (behaviour 19.3): out of line,
+        // one flag test for a block without M (and one place that runs a
+        // block, so that the mill's block stays inlined here: the `check`
+        // instruction count in docs/performance.md).
+        if block.holds(Address::M)
+            && let Some(flow) = self.execute_call(block, index, out, ahead, program)?
+        {
+            return Ok(flow);
+        }
+        self.execute_block(block, index, out, ahead, program)
+    }
+
+    /// [`Machine::execute`] for a block with M codes that calls or
+    /// returns: the block's other words first, then the jump; None for a
+    /// block with no call.
+    #[inline(never)]
+    fn execute_call(
+        &mut self,
+        block: &Block,
+        index: u32,
+        out: &mut Out,
+        ahead: &mut dyn Ahead,
+        program: &mut dyn program::ProgramText,
+    ) -> Result<Option<Flow>, Diagnostic> {
+        let Some((jump, rest)) = self.subprogram_jump(block, program)? else {
+            return Ok(None);
+        };
+        // `rest` has no call left: this runs it as any block.
+        let flow = self.execute(&rest, index, out, ahead, program)?;
+        if flow == Flow::End {
+            return Ok(Some(Flow::End));
+        }
+        self.jump = Some(jump);
+        Ok(Some(Flow::Jump))
+    }
+
+    /// [`Machine::execute`] for a block that is no call.
+    #[inline(always)]
+    fn execute_block(
         &mut self,
         block: &Block,
         index: u32,
@@ -690,8 +745,8 @@ impl Machine {
                 }
                 MCode::CoolantMist | MCode::CoolantFlood => EventKind::CoolantOn { m: m.number() },
                 MCode::CoolantOff => EventKind::CoolantOff,
-                // The calls never get here: `refuse_calls` stops their block
-                // first (behaviour 2.18).
+                // The calls never get here: M98/M97/M99 are taken out of
+                // their block (behaviour 19.3), M198 is refused (2.18).
                 MCode::LocalSubprogramCall
                 | MCode::SubprogramCall
                 | MCode::SubprogramReturn

@@ -3,8 +3,8 @@
 //! blocks one at a time and never holds the program as a tree, so a cycle
 //! that reads a contour by sequence number (G70–G73: P and Q) asks the run
 //! through [`ProgramText`]; the run answers by reading the text again
-//! (`run/sequence.rs`). Subprogram calls by sequence number (M97, GOTO)
-//! will ask the same way.
+//! (`run/sequence.rs`). Subprogram calls and returns (M98, M97, M99 P:
+//! behaviour 19) ask it whether their target exists before the run jumps.
 
 use crate::syntax::Block;
 
@@ -16,6 +16,30 @@ pub trait ProgramText {
     /// starts, or None when no block has sequence number `n` (then `each`
     /// is not called).
     fn read_from(&mut self, n: u32, each: &mut dyn FnMut(&Block) -> bool) -> Option<u32>;
+
+    /// True when program O`n` is in the program memory: the text's
+    /// programs and the setup's (behaviour 19.1).
+    fn has_program(&mut self, _n: u32) -> bool {
+        false
+    }
+
+    /// True when the program being read has a block with sequence number
+    /// `n` (M97's target, behaviour 19.5).
+    fn has_local(&mut self, _n: u32) -> bool {
+        false
+    }
+
+    /// True when the program M99 returns to (the caller, or the main
+    /// program itself) has a block with sequence number `n` (behaviour
+    /// 19.4).
+    fn has_return(&mut self, _n: u32) -> bool {
+        false
+    }
+
+    /// How many subprogram calls are open (0 in the main program).
+    fn depth(&self) -> usize {
+        0
+    }
 }
 
 /// A program whose text cannot be read again: no sequence number is found

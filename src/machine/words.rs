@@ -1,7 +1,7 @@
 //! Never a silent skip (behaviour 2.22): which words each kind of block
 //! acts on, and the error at every other word; and the subprogram and
 //! macro calls offsetlab does not run yet (behaviour 2.18), refused rather
-//! than passed over.
+//! than passed over (M198, G65).
 //!
 //! Each block path of the mill and the lathe has its list of addresses
 //! below. A word outside its block's list stops the run at the word
@@ -321,52 +321,30 @@ impl Machine {
         self.refuse_unused(b, self.mill_path(b))
     }
 
-    /// M98, M99, M97, M198: subprograms are not run yet (behaviour 2.18) —
-    /// the run stops at the call rather than go on without the
-    /// subprogram's moves.
+    /// M198: a subprogram kept outside the program memory (a memory card,
+    /// a data server) is not in the text (behaviour 2.18); the run stops
+    /// at the call rather than go on without its moves. M98, M97 and M99
+    /// run (behaviour 19: `calls.rs`).
     pub(super) fn refuse_calls(&self, b: &Block) -> Result<(), Diagnostic> {
         if !b.holds(M) {
             return Ok(());
         }
         let machine = self.setup.machine;
-        let call = b.words.iter().filter(|w| w.address == M).find(|w| {
-            matches!(
-                MCode::of(machine, w.int()),
-                MCode::SubprogramCall
-                    | MCode::SubprogramReturn
-                    | MCode::LocalSubprogramCall
-                    | MCode::ExternalSubprogramCall
-            )
-        });
-        let Some(w) = call else { return Ok(()) };
-        // The words of the call as written (P is a program number, or on
-        // Fanuc the repeat count and the number together; L the repeats).
-        let words: Vec<String> = [P, L]
+        let call = b
+            .words
             .iter()
-            .filter(|a| b.has(**a))
-            .map(|a| self.word_text(b, *a))
-            .collect();
-        let with = match words.is_empty() {
-            true => String::new(),
-            false => format!(" ({})", words.join(" ")),
-        };
-        let what = match MCode::of(machine, w.int()) {
-            MCode::SubprogramReturn => {
-                "ends a subprogram (in a main program, it starts the program again)".to_string()
-            }
-            MCode::LocalSubprogramCall => {
-                format!("calls blocks of this program as a subprogram{with}")
-            }
-            MCode::ExternalSubprogramCall => {
-                format!("calls a subprogram kept outside the program memory{with}")
-            }
-            _ => format!("calls a subprogram{with}"),
+            .filter(|w| w.address == M)
+            .find(|w| MCode::of(machine, w.int()) == MCode::ExternalSubprogramCall);
+        let Some(w) = call else { return Ok(()) };
+        let with = match b.get(P) {
+            Some(_) => format!(" ({})", self.word_text(b, P)),
+            None => String::new(),
         };
         Err(self.error(
             "unsupported-m-code",
             w.span,
             format!(
-                "M{:02} {what}: subprograms are not run yet, so the run stops here rather than go on without the subprogram's moves",
+                "M{:02} calls a subprogram kept outside the program memory{with}: that program is not in this file, so the run stops here rather than go on without its moves; put it in the file (or the setup's programs) and call it with M98",
                 w.int()
             ),
         ))

@@ -151,6 +151,11 @@ impl<'a> Plan<'a> {
         if options.keep_blocks || options.keep_moves || options.checkpoint_every == 0 {
             return None;
         }
+        // A run that called subprograms reads the text in another order
+        // than it stands (behaviour 19.9): it is made whole.
+        if earlier.checkpoints.calls {
+            return None;
+        }
         if checkpoints.first()?.machine.setup() != setup {
             return None;
         }
@@ -242,7 +247,12 @@ impl<'a> Plan<'a> {
     /// state, room under the limits and the cap for the earlier run's end.
     fn caught_up(&self, r: &Runner<'_>) -> Option<(usize, Shift)> {
         let pos = r.parser.offset();
-        if !self.tail_ok || r.stopped || pos < self.same_from || r.parser.dropped() > 0 {
+        if !self.tail_ok
+            || r.stopped
+            || r.calls.is_some()
+            || pos < self.same_from
+            || r.parser.dropped() > 0
+        {
             return None;
         }
         let old = self.earlier.run;
@@ -423,6 +433,7 @@ impl Checkpoint {
             // The machine's own note of its place is set by the next block.
             machine: self.machine.clone(),
             segment: self.segment.clone(),
+            calls: self.calls.clone(),
         }
     }
 }

@@ -25,6 +25,10 @@ pub struct Checkpoints {
     /// block order: a run made again after an edit of that text runs them
     /// again (`again.rs`).
     pub reads: Vec<Read>,
+    /// The run called a subprogram or returned with M99 (behaviour 19):
+    /// its checkpoints stand in several programs, so a run made again
+    /// after an edit runs whole (`again.rs`).
+    pub calls: bool,
 }
 
 /// A block that read the program's text up to a place (behaviour 15.3).
@@ -76,6 +80,10 @@ pub struct Checkpoint {
     /// ([`crate::rerun_observed`]) can take the totals of the parts before
     /// and after the edit.
     pub(super) segment: Segment,
+    /// The open subprogram calls here (behaviour 19.9): a report made
+    /// again inside a subprogram reads on where the run read, and returns
+    /// where it returned. None before the run's first call.
+    pub(super) calls: Option<Box<super::calls::Saved>>,
 }
 
 /// Checkpoints of the same program are equal when they stand at the same

@@ -14,6 +14,7 @@ use std::sync::Arc;
 
 pub(crate) mod again;
 mod ahead;
+mod calls;
 mod checkpoint;
 mod macros;
 #[cfg(not(target_arch = "wasm32"))]
@@ -26,7 +27,7 @@ pub use checkpoint::{Checkpoint, Checkpoints, Read};
 use crate::diag::{self, Diagnostic};
 use crate::machine::program::ProgramText;
 use crate::machine::{Ahead, EventKind, Flow, Machine, Out};
-use crate::report::{BlockReport, End, Event, Run, include_move};
+use crate::report::{BlockReport, End, Event, Place, Run, include_move};
 use crate::setup::{MachineKind, Setup};
 use crate::syntax::{Address, Block, Blocks, ParseOptions};
 
@@ -109,6 +110,11 @@ struct Runner<'t> {
     /// The run has stopped (an error, a limit, M02/M30): the rest is only
     /// parsed, for its diagnostics.
     stopped: bool,
+    /// The subprogram calls, once the run has made one (behaviour 19).
+    calls: Option<Box<calls::Calls<'t>>>,
+    /// The place of the block just run when it jumped (its report's:
+    /// where it was before the jump).
+    block_place: Option<Box<Place>>,
 }
 
 impl<'t> Runner<'t> {
@@ -138,6 +144,7 @@ impl<'t> Runner<'t> {
             ..Runner::at(text, parser, at.machine.clone(), setup, options)
         };
         r.ahead.horizon = at.horizon;
+        r.restore_calls(at);
         r
     }
 
@@ -151,6 +158,7 @@ impl<'t> Runner<'t> {
             ..Runner::at(text, parser, at.machine.clone(), setup, options)
         };
         r.ahead.horizon = at.horizon;
+        r.restore_calls(at);
         r
     }
 
@@ -173,7 +181,21 @@ impl<'t> Runner<'t> {
             index: 0,
             move_count: 0,
             stopped: false,
+            calls: None,
+            block_place: None,
         }
+    }
+
+    /// The calls open at checkpoint `at`, taken up (behaviour 19.9).
+    fn restore_calls(&mut self, at: &Checkpoint) {
+        let Some(saved) = at.calls.as_deref() else {
+            return;
+        };
+        let parser = std::mem::replace(&mut self.parser, Blocks::new("", ParseOptions::default()));
+        let (calls, parser) = saved.restore(&self.sequences, parser);
+        self.parser = parser;
+        self.calls = Some(calls);
+        saved.aim(&mut self.sequences);
     }
 
     /// [`account`]s for the block just run (`index`, its first move and
@@ -188,12 +210,17 @@ impl<'t> Runner<'t> {
         (index, first_move, flow): (u32, usize, Flow),
         mut report: impl FnMut(&mut Blocks<'t>, Diagnostic),
     ) {
+        if self.calls.is_some() && self.options.keep_blocks {
+            self.block_place = self.place_of(flow);
+        }
         let Runner {
             block,
             out,
             machine,
             parser,
             options,
+            calls,
+            block_place,
             ..
         } = self;
         let ran = (index, first_move, flow);
@@ -203,9 +230,14 @@ impl<'t> Runner<'t> {
             observer,
             options,
             kind,
-            (block, out, machine),
+            (block, out, machine, block_place),
             ran,
-            |w| report(parser, w),
+            // The machine's warnings go with the first parser's
+            // diagnostics, wherever the blocks are read (behaviour 19).
+            |w| match calls.as_deref_mut().and_then(|c| c.main_parser()) {
+                Some(main) => report(main, w),
+                None => report(parser, w),
+            },
         );
     }
 
@@ -217,16 +249,18 @@ impl<'t> Runner<'t> {
             horizon: self.ahead.horizon.max(self.parser.offset()),
             machine: self.machine.clone(),
             segment: Default::default(),
+            calls: self.calls.as_ref().map(|c| Box::new(c.save())),
         }
     }
 
     /// Reads and runs the next block; None at the end of the program.
     fn step(&mut self) -> Option<Step> {
         if !self.parser.next_into(&mut self.block) {
-            return None;
+            // The text's end, or a subprogram's (behaviour 19).
+            return self.program_ends();
         }
         let mut ahead = self.ahead.at(self.index, ahead::From::Parser(&self.parser));
-        execute(
+        let step = execute(
             &self.block,
             &mut self.machine,
             &mut self.out,
@@ -234,7 +268,14 @@ impl<'t> Runner<'t> {
             (&mut self.index, &mut self.move_count, &mut self.stopped),
             self.block_skip,
             (&mut ahead, &mut self.sequences),
-        )
+        );
+        // A call or return, or the block limit (its message names a loop):
+        // asked of the machine and the count, not of the step (which is
+        // made in place, as `execute` says).
+        if self.machine.jump.is_some() || self.index as usize >= self.options.max_blocks {
+            return step.map(|s| self.jump_or_stop(s));
+        }
+        step
     }
 }
 
@@ -466,6 +507,7 @@ impl Making {
                 |parser, w| parser.report(w),
             );
             if every > 0 {
+                self.checkpoints.calls |= flow == Flow::Jump;
                 self.checkpoints.lines.push(r.block.span.line);
                 if let Some(upto) = r.out.reads {
                     self.checkpoints.reads.push(Read {
@@ -562,7 +604,7 @@ fn account(
     observer: &mut impl Observer,
     options: &RunOptions,
     kind: MachineKind,
-    (block, out, machine): (&Block, &mut Out, &Machine),
+    (block, out, machine, place): (&Block, &mut Out, &Machine, &mut Option<Box<Place>>),
     (index, first_move, flow): (u32, usize, Flow),
     mut report: impl FnMut(Diagnostic),
 ) {
@@ -631,6 +673,7 @@ fn account(
             move_count: out.moves.len() as u32,
             data,
             variables,
+            place: place.take(),
         });
     }
     let offset_words = match kind {
@@ -680,7 +723,11 @@ pub fn report_at(
         let this = r.index;
         let first_move = r.move_count;
         match r.step()? {
-            Step::Ran(_) if this == index => {
+            Step::Ran(flow) if this == index => {
+                let place = match r.calls.is_some() {
+                    true => r.place_of(flow),
+                    false => None,
+                };
                 return Some(BlockReport {
                     index,
                     span: r.block.span,
@@ -706,6 +753,7 @@ pub fn report_at(
                             _ => None,
                         })
                         .collect(),
+                    place,
                 });
             }
             Step::Ran(_) | Step::Passed => {}

@@ -14,7 +14,7 @@ use super::ahead::From;
 use super::checkpoint::Totals;
 use super::{RunOptions, Runner, Step, close, counts, fresh, stop};
 use crate::diag::Diagnostic;
-use crate::machine::Machine;
+use crate::machine::{Flow, Machine};
 use crate::report::Run;
 use crate::setup::Setup;
 use crate::syntax::{Block, Blocks, MAX_DIAGNOSTICS, ParseOptions, Resume, check_size};
@@ -189,6 +189,10 @@ fn on_two_threads(text: &str, setup: &Setup, options: RunOptions) -> Option<Run>
                     (&mut ahead, &mut r.sequences),
                 );
                 match step {
+                    // A subprogram call or return: the blocks read ahead
+                    // are not the ones that run next; one thread runs it
+                    // (behaviour 19).
+                    Some(Step::Ran(Flow::Jump)) => return None,
                     Some(Step::Ran(flow)) => {
                         let ran = (index, first_move, flow);
                         super::account(
@@ -197,7 +201,7 @@ fn on_two_threads(text: &str, setup: &Setup, options: RunOptions) -> Option<Run>
                             &mut (),
                             &r.options,
                             setup.machine,
-                            (block, &mut r.out, &r.machine),
+                            (block, &mut r.out, &r.machine, &mut None),
                             ran,
                             |w| warnings.push((reported, w)),
                         );

@@ -13,13 +13,28 @@
 use std::collections::HashMap;
 
 use crate::machine::program::ProgramText;
-use crate::syntax::{Address, Block, Blocks, ParseOptions, Resume};
+use crate::syntax::{Address, Block, Blocks, Header, ParseOptions, Resume, program_headers};
 
-/// The program's text, searchable by sequence number.
+/// Most sequence numbers looked up by program kept (a program that jumps
+/// to ever other numbers is read again rather than fill memory).
+const MAX_LOCAL: usize = 4096;
+
+/// The program's text, searchable by sequence number, and by program
+/// number for the subprogram calls (behaviour 19).
 pub(crate) struct Sequences<'t> {
     text: &'t str,
     options: ParseOptions,
     index: Option<Index<'t>>,
+    /// The text's program headers, found at the first call.
+    headers: Option<Vec<Header>>,
+    /// Per program start and sequence number, where the block is.
+    local: HashMap<(usize, u32), Option<Resume>>,
+    /// Where the program being read starts (None: the main program).
+    pub(super) current: Option<Resume>,
+    /// Where the program M99 returns to starts (None: the main program).
+    pub(super) caller: Option<Resume>,
+    /// Subprogram calls open.
+    pub(super) depth: usize,
 }
 
 /// Where each sequence number first appears, as far as the text has been
@@ -38,7 +53,77 @@ impl<'t> Sequences<'t> {
             text,
             options,
             index: None,
+            headers: None,
+            local: HashMap::new(),
+            current: None,
+            caller: None,
+            depth: 0,
         }
+    }
+
+    /// The header of program O`n` (the first, when two share a number).
+    pub(crate) fn program(&mut self, n: u32) -> Option<Header> {
+        let text = self.text;
+        let headers = self.headers.get_or_insert_with(|| program_headers(text));
+        headers.iter().find(|h| h.number == n).copied()
+    }
+
+    /// The first header of the text, the main program's when it comes
+    /// before `pos` (a call in the main program is past its header).
+    pub(crate) fn main_header(&mut self, pos: usize) -> Option<Header> {
+        let text = self.text;
+        let headers = self.headers.get_or_insert_with(|| program_headers(text));
+        headers.first().filter(|h| h.pos <= pos).copied()
+    }
+
+    /// Where the main program starts: the text's start.
+    pub(crate) fn main_start(&self) -> Resume {
+        Blocks::new(self.text, self.options).resume_point()
+    }
+
+    /// A parser reading one program of the text from `at`.
+    pub(crate) fn parser_at(&self, at: Resume) -> Blocks<'t> {
+        Blocks::resume(self.text, self.options, at).one_program()
+    }
+
+    /// A parser reading the whole text from `at`, with the diagnostics
+    /// reported before it (the run's first parser, at a checkpoint).
+    pub(crate) fn whole_parser_at(
+        &self,
+        at: Resume,
+        diagnostics: Vec<crate::diag::Diagnostic>,
+    ) -> Blocks<'t> {
+        Blocks::resume_after(self.text, self.options, at, diagnostics)
+    }
+
+    /// Where the block with sequence number `n` of the program that starts
+    /// at `start` (None: the main program) stands: the first such block of
+    /// that program, or None (behaviour 19.4, 19.5). The reusable jump
+    /// target of a GOTO as of an M99 P.
+    pub(crate) fn find_in(&mut self, start: Option<Resume>, n: u32) -> Option<Resume> {
+        let start = start.unwrap_or_else(|| self.main_start());
+        let key = (start.offset(), n);
+        if let Some(found) = self.local.get(&key) {
+            return *found;
+        }
+        let mut blocks = self.parser_at(start);
+        let mut block = Block::default();
+        let mut found = None;
+        loop {
+            let before = blocks.resume_point();
+            if !blocks.next_into(&mut block) {
+                break;
+            }
+            if block.get(Address::N).is_some_and(|w| w.int() == n) {
+                found = Some(before);
+                break;
+            }
+        }
+        if self.local.len() >= MAX_LOCAL {
+            self.local.clear();
+        }
+        self.local.insert(key, found);
+        found
     }
 
     /// Where the parser stands before the first block whose sequence
@@ -84,6 +169,26 @@ impl ProgramText for Sequences<'_> {
             }
         }
         start
+    }
+
+    fn has_program(&mut self, n: u32) -> bool {
+        self.program(n).is_some()
+    }
+
+    fn has_local(&mut self, n: u32) -> bool {
+        self.find_in(self.current, n).is_some()
+    }
+
+    fn has_return(&mut self, n: u32) -> bool {
+        let to = match self.depth {
+            0 => self.current,
+            _ => self.caller,
+        };
+        self.find_in(to, n).is_some()
+    }
+
+    fn depth(&self) -> usize {
+        self.depth
     }
 }
 

@@ -448,6 +448,14 @@ pub struct Settings {
     /// [`Settings::macro_conditions`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub macro_conditions: Option<MacroConditions>,
+    /// How M98's P reads (behaviour 7.36, 19.3); read it with
+    /// [`Settings::subprogram_p`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub subprogram_p: Option<SubprogramP>,
+    /// How many subprogram calls may be open at once (behaviour 7.37,
+    /// 19.6); read it with [`Settings::subprogram_nesting`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub subprogram_nesting: Option<u8>,
 }
 
 impl Settings {
@@ -540,6 +548,33 @@ impl Settings {
             Control::Yasnac | Control::Fanuc => MacroConditions::Boolean,
             Control::Haas => MacroConditions::Numeric,
         })
+    }
+
+    /// How M98's P reads (behaviour 7.36): Fanuc and YASNAC write the
+    /// repeat count before a four-digit program number in one P
+    /// (`M98 P50010`: O0010 five times; Fanuc 0i-MF/TF operator's manuals,
+    /// "Subprogram call"); Haas numbers programs with five digits and
+    /// repeats only with L (Haas mill operator's manual, M98).
+    pub fn subprogram_p(&self) -> SubprogramP {
+        self.subprogram_p.unwrap_or(match self.control {
+            Control::Haas => SubprogramP::Number,
+            Control::Yasnac | Control::Fanuc => SubprogramP::RepeatAndNumber,
+        })
+    }
+
+    /// How many subprogram calls may be open at once (behaviour 7.37):
+    /// Fanuc 0i-F and 30i nest subprogram calls 10 deep (the operator's
+    /// manuals, "Subprogram call"; earlier Fanuc controls 4), past which
+    /// alarm PS0077 stops the program; YASNAC 4 and Haas 4 (our convention:
+    /// the manuals at hand give no figure), at least 1.
+    pub fn subprogram_nesting(&self) -> u32 {
+        match self.subprogram_nesting {
+            Some(n) => u32::from(n.max(1)),
+            None => match self.control {
+                Control::Fanuc => 10,
+                Control::Yasnac | Control::Haas => 4,
+            },
+        }
     }
 
     /// How the D word of the one-block G71/G72 (depth of cut), G74/G75
@@ -731,4 +766,17 @@ pub enum PolarInterpolation {
     /// X a radius, Y the hypothetical axis, G00 allowed (Haas G112, "XY to
     /// XC").
     Haas,
+}
+
+/// How M98's P reads (behaviour 7.36).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SubprogramP {
+    /// Up to four digits the program number; more, the digits before the
+    /// last four the repeat count (`P50010`: O0010 five times), as Fanuc
+    /// and YASNAC read it.
+    RepeatAndNumber,
+    /// The program number, whatever its digits (Haas: O00000–O99999);
+    /// repeats with L only.
+    Number,
 }

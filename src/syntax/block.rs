@@ -344,6 +344,30 @@ impl Block {
         }
     }
 
+    /// The block without the words `drop` picks, its G codes as they
+    /// were (a subprogram call's block runs its other words without the
+    /// call's M, P and L: behaviour 19.3).
+    pub fn without(&self, drop: impl Fn(&Word) -> bool) -> Block {
+        let mut b = Block {
+            words: Vec::with_capacity(self.words.len()),
+            slots: [0; Address::COUNT],
+            addresses: 0,
+            groups: [0; Group::COUNT],
+            ..self.clone()
+        };
+        for w in self.words.iter().filter(|w| !drop(w)) {
+            let group = (w.address == Address::G)
+                .then(|| Code::of(self.table, w.gcode()))
+                .flatten()
+                .map(|c| c.group());
+            if let Some(group) = group {
+                b.groups[group.index()] = u16::try_from(b.words.len() + 1).unwrap_or(0);
+            }
+            b.push(*w);
+        }
+        b
+    }
+
     /// Appends a word.
     #[inline(always)]
     pub fn push(&mut self, word: Word) {

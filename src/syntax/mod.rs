@@ -11,6 +11,7 @@
 
 mod block;
 pub mod codes;
+mod headers;
 mod hint;
 mod lexer;
 mod macro_words;
@@ -20,6 +21,7 @@ mod read;
 mod resume;
 mod words;
 
+pub use headers::{Header, program_headers};
 pub use hint::{MachineHint, machine_hint};
 pub use resume::Resume;
 pub(crate) use resume::shift;
@@ -327,6 +329,9 @@ pub struct Blocks<'a> {
     /// The start and end of the block whose macro syntax is being read
     /// (its end looked up once).
     macro_end: Option<(usize, usize)>,
+    /// The reading ends with the program it started in (a subprogram read
+    /// for a call, behaviour 19.1): what follows its end is not read.
+    one_program: bool,
 }
 
 impl<'a> Blocks<'a> {
@@ -354,6 +359,19 @@ impl<'a> Blocks<'a> {
             one_pass: true,
             before_block: (options.units, false),
             macro_end: None,
+            one_program: false,
+        }
+    }
+
+    /// This parser, reading only the program it stands in: it ends at
+    /// that program's end (its `%`, or the next program's header), where
+    /// the parser of a whole text goes on to read the other programs for
+    /// their diagnostics (a subprogram's blocks, read for a call: behaviour
+    /// 19.1).
+    pub fn one_program(self) -> Blocks<'a> {
+        Blocks {
+            one_program: true,
+            ..self
         }
     }
 
@@ -390,7 +408,10 @@ impl<'a> Blocks<'a> {
     /// (look-ahead reads the blocks after the running one with it; the run's
     /// parser reads and reports them when they run).
     pub fn fork(&self) -> Blocks<'a> {
-        Blocks::resume(self.text, self.options, self.resume_point())
+        Blocks {
+            one_program: self.one_program,
+            ..Blocks::resume(self.text, self.options, self.resume_point())
+        }
     }
 
     /// [`Blocks::resume`] with the diagnostics reported before `at` (they

@@ -213,7 +213,7 @@ impl Blocks<'_> {
             "program-not-run",
             span,
             format!(
-                "`{name}` starts {ordinal} program in this file, which is not run: a file's first program runs, and the others are the subprograms it calls (M98), which offsetlab does not run yet"
+                "`{name}` starts {ordinal} program in this file: a file's first program runs, and the others run when a program calls them (M98 P…)"
             ),
         ));
     }
@@ -225,6 +225,10 @@ impl Blocks<'_> {
     /// follow after all (a first program after the tape marks).
     #[inline(never)]
     pub(super) fn go_on_after_end(&mut self, block: &mut Block) -> bool {
+        if self.one_program {
+            // A subprogram read for a call ends with its program.
+            return false;
+        }
         let bytes = self.text.as_bytes();
         loop {
             if self.programs.stop {

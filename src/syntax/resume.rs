@@ -63,3 +63,37 @@ impl Resume {
 pub(crate) fn shift(at: i64, by: i64) -> i64 {
     (at + by).max(0)
 }
+
+impl Resume {
+    /// The start of the program whose header is at byte `pos` on `line`
+    /// (a subprogram called by number, behaviour 19.1), read in the G20/G21
+    /// and canned-cycle context of `context`, the caller's place: the
+    /// modal state goes on into the subprogram.
+    pub fn program_start(pos: usize, line: u32, context: &Resume) -> Resume {
+        Resume {
+            pos,
+            line,
+            units: context.units,
+            in_cycle: context.in_cycle,
+            tape: Tape::Before,
+            warned_integer: context.warned_integer,
+            programs: Programs::default(),
+        }
+    }
+
+    /// This place, read in the G20/G21 and canned-cycle context of
+    /// `context` (a jump or a return goes on with the modal state the run
+    /// has, not the one the text had there: behaviour 19.2).
+    pub fn in_context(self, context: &Resume) -> Resume {
+        Resume {
+            units: context.units,
+            in_cycle: context.in_cycle,
+            ..self
+        }
+    }
+
+    /// The G20/G21 the parser reads numbers in here.
+    pub fn units(&self) -> Units {
+        self.units
+    }
+}

@@ -73,6 +73,9 @@ export function stateRows(b) {
   const unit = u === 'inch' ? 'in' : 'mm';
   const rows = [
     ['Block', `line ${b.line}: ${b.text}`, 'block'],
+    // Inside a subprogram call (behaviour 19.7): the program and the calls
+    // open, outermost first.
+    ...(b.program ? [['Program · calls', `${b.program} · ${(b.stack ?? []).join(' → ')}`, 'program']] : []),
     // Every modal group the core reports, in its order (src/machine/modal.rs).
     ['Modal', Object.values(b.modal ?? {}).filter(Boolean).join(' '), 'modal'],
     ['Programmed', `${position(b.programmed, u)} ${unit}`, 'programmed'],
