@@ -81,7 +81,7 @@ function extentsText({ bounds, units }) {
   if (!bounds) return [];
   const d = units === 'inch' ? 3 : 2;
   const n = (v) => String(Number(v.toFixed(d)));
-  const axes = ['x', 'y', 'z'].filter((a) => bounds.min[a] !== null && bounds.min[a] !== undefined);
+  const axes = ['x', 'y', 'z'].filter((a) => typeof bounds.min?.[a] === 'number' && typeof bounds.max?.[a] === 'number');
   return [axes.map((a) => `${a.toUpperCase()}${n(bounds.min[a])}…${n(bounds.max[a])}`).join(' ')];
 }
 
