@@ -72,7 +72,7 @@ impl Travel {
         if block_feed == 0.0 {
             return;
         }
-        let minutes = match feed_minutes(moves, state) {
+        let minutes = match feed_minutes(moves, block_feed, state) {
             Some(t) => t,
             None => {
                 self.untimed += moves.iter().filter(|m| cutting(m)).count() as u32;
@@ -126,21 +126,17 @@ fn rapid_minutes(m: &Move, machine: MachineKind, rate: f64) -> f64 {
     if rate > 0.0 { longest / rate } else { 0.0 }
 }
 
-/// Minutes the feed moves of a block take, or None when nothing gives a
-/// rate.
-fn feed_minutes(moves: &[Move], state: &BlockState) -> Option<f64> {
+/// Minutes the feed moves of a block take (`total` mm long), or None when
+/// nothing gives a rate.
+fn feed_minutes(moves: &[Move], total: f64, state: &BlockState) -> Option<f64> {
     let machine = state.machine;
     let f = state.feed.filter(|f| *f > 0.0)?;
     let unit = match state.modal.units {
         Units::Mm => 1.0,
         Units::Inch => 25.4,
     };
-    let cutting = || moves.iter().filter(|m| cutting(m));
     match state.modal.feed_mode {
-        FeedMode::PerMinute => {
-            let total: f64 = cutting().map(|m| length(m, machine)).sum();
-            Some(total / (f * unit))
-        }
+        FeedMode::PerMinute => Some(total / (f * unit)),
         // G93: F is 1 / the minutes the block's move takes (behaviour 14.8).
         FeedMode::InverseTime => Some(1.0 / f),
         FeedMode::PerRevolution => {
@@ -149,17 +145,14 @@ fn feed_minutes(moves: &[Move], state: &BlockState) -> Option<f64> {
             match (machine, state.modal.surface_speed) {
                 (MachineKind::Lathe, SurfaceSpeed::Constant) => {
                     let mut minutes = 0.0;
-                    for m in cutting() {
+                    for m in moves.iter().filter(|m| cutting(m)) {
                         minutes +=
                             css_minutes(m, s, state.spindle_limit, per_rev, state.modal.units);
                     }
                     Some(minutes)
                 }
                 (_, SurfaceSpeed::Constant) => None,
-                _ => {
-                    let total: f64 = cutting().map(|m| length(m, machine)).sum();
-                    Some(total / (per_rev * s))
-                }
+                _ => Some(total / (per_rev * s)),
             }
         }
     }
