@@ -355,4 +355,22 @@ impl Machine {
     fn out_of_moves(&self) -> bool {
         self.overflow
     }
+
+    /// What every pass over the contour does at a segment before its move
+    /// (plain and compensated alike): the finishing pass takes the
+    /// segment's F and S, and a dwell is reported there. True when the
+    /// segment has a move to make.
+    fn contour_segment(&mut self, out: &mut Out, s: &contour::Seg, finishing: bool) -> bool {
+        if finishing {
+            self.state.feed = s.feed;
+            self.state.spindle = s.spindle;
+        }
+        if let Some(seconds) = s.dwell {
+            if finishing {
+                self.event(out, super::EventKind::Dwell { seconds });
+            }
+            return false;
+        }
+        true
+    }
 }

@@ -10,7 +10,7 @@
 //! G70–G73: every cycle begins and ends at A as programmed).
 
 use super::super::arc::{self, P2};
-use super::super::{ArcInfo, EventKind, Machine, MoveKind, Out};
+use super::super::{ArcInfo, Machine, MoveKind, Out};
 use super::contour::{Contour, Seg};
 use crate::diag::Diagnostic;
 use crate::geometry::show;
@@ -271,14 +271,7 @@ impl Machine {
             if self.out_of_moves() {
                 break;
             }
-            if finishing {
-                self.state.feed = s.feed;
-                self.state.spindle = s.spindle;
-            }
-            if let Some(seconds) = s.dwell {
-                if finishing {
-                    self.event(out, EventKind::Dwell { seconds });
-                }
+            if !self.contour_segment(out, s, finishing) {
                 continue;
             }
             let prog = [s.to[0] + shift[0], s.to[1] + shift[1]];

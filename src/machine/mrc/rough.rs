@@ -10,7 +10,7 @@
 //! shifted by the finishing allowance — lies below the level.
 
 use super::super::arc::Circle;
-use super::super::{ArcRequest, EventKind, Machine, MoveKind, Out};
+use super::super::{ArcRequest, Machine, MoveKind, Out};
 use super::contour::{Contour, Seg};
 use super::{MAX_PASSES, Skip};
 use crate::diag::Diagnostic;
@@ -594,14 +594,7 @@ impl Machine {
             if self.out_of_moves() {
                 break;
             }
-            if finishing {
-                self.state.feed = s.feed;
-                self.state.spindle = s.spindle;
-            }
-            if let Some(seconds) = s.dwell {
-                if finishing {
-                    self.event(out, EventKind::Dwell { seconds });
-                }
+            if !self.contour_segment(out, s, finishing) {
                 continue;
             }
             let to = [s.to[0] + shift[0], s.to[1] + shift[1]];
