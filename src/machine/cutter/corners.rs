@@ -312,9 +312,8 @@ impl Machine {
                     ),
                 ));
             }
-            let circle = arc::from_center(a0, a1, c, ccw, tol).map_err(|_| {
-                self.error("cutter-arc-radius", b.span, "the offset arc cannot be made")
-            })?;
+            // Both radii measured and checked above.
+            let circle = arc::from_center_measured(a0, a1, c, r0, ccw);
             let path = Path::Arc {
                 from: p(m.programmed_from),
                 to: p(m.programmed_to),
