@@ -58,7 +58,7 @@ impl Machine {
             CutterStartUp::B => Type::B,
         };
         let o = words.offset;
-        let next = self.cutter_next(ahead, out);
+        let next = self.cutter_next_with(ahead, out, o);
         let (rule, next_path) = match next {
             Next::Move { path: n, .. } => (Rule::StartUp(t), Some(n)),
             Next::Unknown(why) => {
@@ -95,7 +95,7 @@ impl Machine {
             CutterOutsideCorner::Vectors => Outside::Vectors,
             CutterOutsideCorner::Arc => Outside::Arc,
         };
-        let next = self.cutter_next(ahead, out);
+        let next = self.cutter_next_with(ahead, out, o);
         // The rule first, the corner once: a corner is a few hundred bytes,
         // made at every block in offset mode.
         let (rule, next_path, o2, cancels) = match next {
