@@ -113,15 +113,19 @@ impl Machine {
                 (Rule::Perpendicular, path, o, false)
             }
         };
-        let corner = match geo::corner(&path, &next_path, o, o2, rule) {
+        // Borrowed where it was made, not moved out of the result (a copy
+        // of the whole corner at every block: the `check` instruction count
+        // with G41, docs/performance.md).
+        let made = geo::corner(&path, &next_path, o, o2, rule);
+        let corner = match &made {
             Ok(c) => c,
             Err(NoIntersection) => return Err(self.no_intersection(b, o)),
         };
         out.note(|| {
             if cancels {
-                crc::before_cancel_note(&words, t, &corner, &path, &next_path)
+                crc::before_cancel_note(&words, t, corner, &path, &next_path)
             } else {
-                crc::corner_note(&words, &corner, &path, &next_path, o2)
+                crc::corner_note(&words, corner, &path, &next_path, o2)
             }
         });
         if before.radius != self.state.cutter.radius {
@@ -131,7 +135,7 @@ impl Machine {
                 show(self.state.cutter.radius.abs(), self.units())
             ));
         }
-        self.apply_corner(b, out, i, &corner, true)
+        self.apply_corner(b, out, i, corner, true)
     }
 
     /// The corner by `rule`, or the alarm when an intersection it needs

@@ -431,6 +431,7 @@ pub struct NoIntersection;
 /// The corner between `prev` and `next` (`next` starting where `prev`
 /// ends), `o1` the offset of `prev` and `o2` the offset `next` asks for
 /// (different signs: a change of side), by `rule` (behaviour 16.4–16.11).
+#[inline]
 pub fn corner(
     prev: &Path,
     next: &Path,
