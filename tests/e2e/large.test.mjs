@@ -103,7 +103,7 @@ describe('large programs', () => {
       // not that the browser's storage is full (issue 23).
       const banner = page.locator('#storage-banner');
       await banner.waitFor({ state: 'visible', timeout: 20_000 });
-      const said = await banner.textContent();
+      const said = await banner.locator('.text').textContent();
       assert.match(said, /^This program \(\d+\.\d million characters\) is larger than the page saves in the browser \(5\.0 million\): it stays open until you close the page/);
       assert.doesNotMatch(said, /storage is full/);
     }, { init: 'window.offsetlabTest = { progressAfterMs: 0 };' });
