@@ -2,11 +2,12 @@
 // CSS pixels (the common phone widths) nothing is wider than the screen —
 // the top bar's Load button, the example list, the settings' choices, the
 // panels — and the drawing comes right after the top bar, drawn, with the
-// step buttons under it; the lathe's panels fit as well.
+// step buttons under it; the lathe's panels fit as well; and the legend
+// folds away, giving the path the whole drawing (behaviour 10.7).
 
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
-import { shoot, shootCanvas, useBrowser, waitForRun } from './harness.mjs';
+import { shoot, shootCanvas, useBrowser, waitForRun, waitForView } from './harness.mjs';
 
 const { withPage } = useBrowser();
 
@@ -50,6 +51,26 @@ describe('the page on a phone', () => {
       }, { width, height: 844, scale: 1 });
     });
   }
+
+  test('at 390 px the legend folds away and the path is drawn larger, and stays folded after a reload', async () => {
+    await withPage(async (page) => {
+      const legend = page.locator('#legend');
+      assert.equal(await legend.isChecked(), true, 'shown by default');
+      const shown = await shootCanvas(page, 'phone-legend-shown', (c) => c.actualFeed > 200);
+      await legend.uncheck();
+      await waitForView(page, (v) => v.legend === false);
+      const folded = await shootCanvas(page, 'phone-legend-folded',
+        (c) => c.actualFeed > 1.15 * shown.counts.actualFeed, 10_000);
+      // The seed square (116 × 82 mm with its approach) is fitted beside the
+      // compact legend, then to the whole drawing: its lines are longer.
+      assert.ok(folded.counts.actualFeed > 1.15 * shown.counts.actualFeed,
+        `larger without the legend (${shown.counts.actualFeed} → ${folded.counts.actualFeed} pixels)`);
+      await page.reload();
+      await waitForRun(page);
+      await waitForView(page, (v) => v.legend === false);
+      assert.equal(await legend.isChecked(), false, 'still folded after a reload');
+    }, { width: 390, height: 844, scale: 1 });
+  });
 
   test('the lathe at 390 px fits too, its four-column offset table within the screen', async () => {
     await withPage(async (page) => {
