@@ -238,7 +238,7 @@ pub(super) fn legend_row_count(
 
 /// What a legend row shows beside its label.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) enum Key {
+enum Key {
     Line(Stroke),
     Arrow(Stroke),
     Tool,
@@ -274,7 +274,16 @@ fn legend_rows(
             if compact { "centre" } else { "centre line" },
         ));
     }
-    rows.extend(super::holes::legend_row(holes, compact));
+    if holes {
+        rows.push((
+            Key::Hole,
+            if compact {
+                "hole"
+            } else {
+                "hole (canned cycle)"
+            },
+        ));
+    }
     if tool_row {
         rows.push((
             Key::Tool,

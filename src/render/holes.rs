@@ -11,7 +11,6 @@
 //! its own after a G00 block, and is not a hole. The pecks of one hole are
 //! one hole.
 
-use super::annotate::Key;
 use super::{Frame, Plane, Surface};
 use crate::render::style::Stroke;
 use crate::toolpath::Toolpath;
@@ -126,16 +125,4 @@ pub(super) fn draw_holes(s: &mut impl Surface, f: &Frame, tp: &Toolpath, drawn: 
         count < MAX_RINGS
     });
     s.end_group();
-}
-
-/// The legend row of the holes, when the view has any.
-pub(super) fn legend_row(holes: bool, compact: bool) -> Option<(Key, &'static str)> {
-    holes.then_some((
-        Key::Hole,
-        if compact {
-            "hole"
-        } else {
-            "hole (canned cycle)"
-        },
-    ))
 }
