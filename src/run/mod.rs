@@ -16,6 +16,7 @@ pub(crate) mod again;
 mod ahead;
 mod calls;
 mod checkpoint;
+mod macrocall;
 mod macros;
 #[cfg(not(target_arch = "wasm32"))]
 pub(crate) mod pipeline;
@@ -319,6 +320,11 @@ fn execute(
     let resolved;
     let block = match &block.macros {
         None => block,
+        Some(m) if let Some(call) = &m.call => {
+            // G65, G66, G67 (behaviour 21): no block for the machine.
+            let result = macrocall::call(block, m, call, machine, out, program);
+            return Some(ran(result, index, stopped));
+        }
         Some(m) => match macros::resolve(block, m, machine, out) {
             Ok(b) => {
                 resolved = b;
@@ -332,6 +338,12 @@ fn execute(
     };
     machine.moves_left = options.max_moves.saturating_sub(*move_count);
     match machine.execute(block, *index, out, ahead, program) {
+        // G66 in force: the block may call its macro (behaviour 21.5).
+        Ok(Flow::Continue) if machine.macro_calls.is_some() => {
+            *move_count += out.moves.len();
+            let result = macrocall::after_move(block, machine, out);
+            Some(ran(result, index, stopped))
+        }
         Ok(flow) => {
             *index += 1;
             *move_count += out.moves.len();
@@ -341,6 +353,24 @@ fn execute(
         Err(d) => {
             *stopped = true;
             Some(Step::Stopped(Some(d)))
+        }
+    }
+}
+
+/// The step of a block that ran (or stopped) outside the machine's own
+/// run: a macro call's (behaviour 21).
+#[cold]
+#[inline(never)]
+fn ran(result: Result<Flow, Diagnostic>, index: &mut u32, stopped: &mut bool) -> Step {
+    match result {
+        Ok(flow) => {
+            *index += 1;
+            *stopped = flow == Flow::End;
+            Step::Ran(flow)
+        }
+        Err(d) => {
+            *stopped = true;
+            Step::Stopped(Some(d))
         }
     }
 }
