@@ -93,7 +93,10 @@ fn behaviour21_1_a_bolt_circle_by_g65() {
         "{}",
         v.explanation
     );
-    assert!(v.explanation.contains("local variable level 1; it returns to line 5"));
+    assert!(
+        v.explanation
+            .contains("local variable level 1; it returns to line 5")
+    );
     // Inside the macro the stack shows the call and its level.
     let inside = r
         .blocks
@@ -294,12 +297,15 @@ M99
         same(*g, w);
     }
     let v = at_line(&r, text, 3);
-    assert!(v.explanation.contains(
-        "G66 (line 2): after this move, calls O9020 with Z=#26=-5.000, R=#18=2.000"
-    ));
-    assert!(at_line(&r, text, 6)
-        .explanation
-        .contains("G67: the modal call of O9020 (G66 at line 2) ends"));
+    assert!(
+        v.explanation
+            .contains("G66 (line 2): after this move, calls O9020 with Z=#26=-5.000, R=#18=2.000")
+    );
+    assert!(
+        at_line(&r, text, 6)
+            .explanation
+            .contains("G67: the modal call of O9020 (G66 at line 2) ends")
+    );
 }
 
 #[test]

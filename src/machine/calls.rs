@@ -141,7 +141,9 @@ impl Machine {
         };
         let depth = self.setup.settings.subprogram_nesting();
         // Macro calls have their own count (behaviour 21.4).
-        let open = program.depth().saturating_sub(usize::from(self.macro_level()));
+        let open = program
+            .depth()
+            .saturating_sub(usize::from(self.macro_level()));
         if !matches!(jump, Jump::Return { .. }) && open >= depth as usize {
             return Err(self.error(
                 "nesting-too-deep",

@@ -239,7 +239,9 @@ impl Machine {
         if read_only(n) && self.read_state(n, span)?.is_some() {
             return Err(alarm::WRITE_PROTECTED.at(
                 span,
-                format!("#{n} is the control's modal information or position: it is read, never set"),
+                format!(
+                    "#{n} is the control's modal information or position: it is read, never set"
+                ),
             ));
         }
         if let 3001 | 3002 = n {
@@ -307,7 +309,8 @@ impl Machine {
             was: clean(was),
         }));
         let work = self.state.modal.work;
-        let in_force = matches!(work, crate::syntax::codes::WorkSystem::Additional(q) if u16::from(q) == p);
+        let in_force =
+            matches!(work, crate::syntax::codes::WorkSystem::Additional(q) if u16::from(q) == p);
         out.notes.push(format!(
             "#{n} is the G54.1 P{p} zero's {}: set as G10 L20 sets it{}",
             ["X", "Y", "Z"][axis],
@@ -340,7 +343,9 @@ impl Machine {
                     return Err(Diagnostic::error(
                         "g10-value",
                         span,
-                        format!("#{n} = {v}: the imaginary tool tip direction is a whole number 0 to 9"),
+                        format!(
+                            "#{n} = {v}: the imaginary tool tip direction is a whole number 0 to 9"
+                        ),
                     ));
                 }
                 let was = f64::from(reg.t);
@@ -380,8 +385,9 @@ impl Machine {
             value: clean(v),
             was: clean(was),
         }));
-        let mut note =
-            format!("#{n} is offset {number:02} {name}: set as G10 sets it, read by the blocks after this one");
+        let mut note = format!(
+            "#{n} is offset {number:02} {name}: set as G10 sets it, read by the blocks after this one"
+        );
         if self.state.lathe.offset == number {
             note.push_str(&format!(
                 "; offset {number:02} is in force with its old values until a T code names it again"

@@ -74,7 +74,10 @@ pub(super) fn enter(machine: &mut Machine, jump: Jump) -> Option<Box<Level>> {
     };
     let saved = Box::new(machine.locals());
     let m = machine.macro_calls_mut();
-    let args = m.pending.take().unwrap_or_else(|| Box::new([Value::Vacant; 33]));
+    let args = m
+        .pending
+        .take()
+        .unwrap_or_else(|| Box::new([Value::Vacant; 33]));
     m.level = m.level.saturating_add(1);
     if modal {
         m.in_modal = m.in_modal.saturating_add(1);
@@ -192,7 +195,8 @@ pub(super) fn call(
             m.words
                 .iter()
                 .find(|w| {
-                    !own(w.address) && (w.span.start < call.span.start || call.code == CallCode::Cancel)
+                    !own(w.address)
+                        && (w.span.start < call.span.start || call.code == CallCode::Cancel)
                 })
                 .map(|w| (w.span, w.address.letter()))
         });
@@ -201,8 +205,12 @@ pub(super) fn call(
             "call-words",
             span,
             match call.code {
-                CallCode::Cancel => format!("{letter} in a G67 block: G67 ends the modal call and takes no other word; write it in a block of its own"),
-                _ => format!("{letter} in a {code} block: the words after {code} are the macro's arguments, and {code} is written before them (a code to run goes in a block of its own)"),
+                CallCode::Cancel => format!(
+                    "{letter} in a G67 block: G67 ends the modal call and takes no other word; write it in a block of its own"
+                ),
+                _ => format!(
+                    "{letter} in a {code} block: the words after {code} are the macro's arguments, and {code} is written before them (a code to run goes in a block of its own)"
+                ),
             },
         ));
     }
@@ -273,7 +281,11 @@ pub(super) fn call(
             span: a.span,
         })
         .collect();
-    for w in m.words.iter().filter(|w| is_argument(w.address.letter().as_bytes()[0])) {
+    for w in m
+        .words
+        .iter()
+        .filter(|w| is_argument(w.address.letter().as_bytes()[0]))
+    {
         let mut vars = super::macros::Vars { machine, out };
         let value = Evaluator::new(&mut vars, options).value(&w.value)?;
         args.push(Arg {

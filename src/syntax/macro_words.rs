@@ -84,7 +84,11 @@ fn block_end(bytes: &[u8], mut i: usize) -> usize {
 
 impl Blocks<'_> {
     /// The block's macro part, made at its first macro syntax.
-    pub(super) fn macro_part<'b>(&mut self, block: &'b mut Block, start: usize) -> &'b mut MacroBlock {
+    pub(super) fn macro_part<'b>(
+        &mut self,
+        block: &'b mut Block,
+        start: usize,
+    ) -> &'b mut MacroBlock {
         let end = self.block_end(start);
         let (units, in_cycle) = self.before_block;
         block.macros.get_or_insert_with(|| {
