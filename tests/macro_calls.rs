@@ -433,20 +433,47 @@ fn checkpointed(text: &str, setup: &Setup, every: u32) -> (Run, Checkpoints) {
     run_observed(text, setup, options, &mut ())
 }
 
+/// Drilling by G66 at three places (the macro drills to Z−5, back to Z2).
+const MODAL_DRILL: &str = "G90 G00 X0 Y0 Z10.
+G66 P9020 Z-5. R2.
+X10.
+X20.
+Y10.
+G67
+X0 Y0
+M30
+O9020
+G01 Z#26 F100.
+G00 Z#18
+M99
+";
+
 #[test]
 fn behaviour21_12_a_checkpoint_inside_a_macro_gives_the_same_report() {
     let setup = mill(&[]);
-    let full = run(BOLT_CIRCLE, &setup);
-    for every in [1, 2, 3, 7] {
-        let (light, checkpoints) = checkpointed(BOLT_CIRCLE, &setup, every);
-        assert_eq!(light.moves, full.moves);
-        for (i, kept) in full.blocks.iter().enumerate() {
-            let again = report_at(BOLT_CIRCLE, &setup, &checkpoints, i as u32);
-            assert_eq!(again.as_ref(), Some(kept), "block {i}, every {every}");
+    for text in [BOLT_CIRCLE, MODAL_DRILL] {
+        let full = run(text, &setup);
+        assert!(!full.has_errors());
+        for every in [1, 2, 3, 7] {
+            let (light, checkpoints) = checkpointed(text, &setup, every);
+            assert_eq!(light.moves, full.moves);
+            for (i, kept) in full.blocks.iter().enumerate() {
+                let again = report_at(text, &setup, &checkpoints, i as u32);
+                assert_eq!(again.as_ref(), Some(kept), "block {i}, every {every}");
+            }
+        }
+        // The run on two threads hands a program with macro calls to one
+        // thread: the same run (G66's calls included).
+        let one = run_with(text, &setup, RunOptions::default());
+        match offsetlab::run_on_two_threads(text, &setup, RunOptions::default()) {
+            Some(two) => assert_eq!(two, one),
+            None => assert_eq!(
+                offsetlab::run_pipelined(text, &setup, RunOptions::default()),
+                one
+            ),
         }
     }
-    let one = run_with(BOLT_CIRCLE, &setup, RunOptions::default());
-    if let Some(two) = offsetlab::run_on_two_threads(BOLT_CIRCLE, &setup, RunOptions::default()) {
-        assert_eq!(two, one);
-    }
+    // Three holes: each drills to Z−5 (9 moves with the three positions),
+    // plus the first rapid to Z10 and the last to (0, 0).
+    assert_eq!(run(MODAL_DRILL, &setup).moves.len(), 11);
 }

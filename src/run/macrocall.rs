@@ -18,6 +18,7 @@ use crate::machine::macro_state::{Locals, ModalCall};
 use crate::machine::program::ProgramText;
 use crate::machine::{Flow, Machine, Out};
 use crate::macros::{Evaluator, Value};
+use super::{Runner, Step};
 use crate::syntax::{Address, Block, CallCode, MacroBlock, MacroCall, is_argument};
 
 /// A macro call's level, kept on its frame of the call stack.
@@ -229,7 +230,9 @@ pub(super) fn call(
             ),
             None => "G67: no modal call was in force".to_string(),
         });
-        return Ok(Flow::Continue);
+        // A jump without a target: the run on two threads hands the
+        // program to one, whose runner watches the modal call.
+        return Ok(Flow::Jump);
     }
     let options = super::macros::options(machine);
     let mut number = |a: Address| -> Result<Option<(f64, Span)>, Diagnostic> {
@@ -311,7 +314,7 @@ pub(super) fn call(
         out.notes.push(format!(
             "G66 P{p}: O{p:04} is called after each block that moves, {with}, until G67"
         ));
-        return Ok(Flow::Continue);
+        return Ok(Flow::Jump);
     }
     check_nesting(machine, call.span, code)?;
     out.notes.push(format!("G65 P{p}: calls O{p:04} {with}"));
@@ -340,12 +343,53 @@ fn check_nesting(machine: &Machine, span: Span, code: &str) -> Result<(), Diagno
     Ok(())
 }
 
+impl Runner<'_> {
+    /// The block just run asked for a jump, reached the block limit, or
+    /// ran in a program that made a macro call: a G66 in force calls its
+    /// macro after a move (behaviour 21.5), then the jump is made. A macro
+    /// call's block that made no jump (G66, G67) reads on.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn after_block(&mut self, step: Step) -> Step {
+        let step = match step {
+            Step::Ran(Flow::Continue) if self.machine.jump.is_none() => {
+                match after_move(&self.block, &mut self.machine, &mut self.out) {
+                    Ok(flow) => Step::Ran(flow),
+                    Err(d) => {
+                        self.stopped = true;
+                        Step::Stopped(Some(d))
+                    }
+                }
+            }
+            step => step,
+        };
+        self.jump_or_stop(step)
+    }
+}
+
+/// True for a block with an axis word, as written or from a variable.
+fn moves(block: &Block) -> bool {
+    const AXES: [Address; 8] = [
+        Address::X,
+        Address::Y,
+        Address::Z,
+        Address::U,
+        Address::W,
+        Address::A,
+        Address::B,
+        Address::C,
+    ];
+    AXES.iter().any(|a| block.has(*a))
+        || block
+            .macros
+            .as_ref()
+            .is_some_and(|m| m.words.iter().any(|w| AXES.contains(&w.address)))
+}
+
 /// The block just run in G66's mode (behaviour 21.5): a block with an axis
 /// word calls the macro after its move; a block inside a macro the modal
 /// call made does not.
-#[cold]
-#[inline(never)]
-pub(super) fn after_move(
+fn after_move(
     block: &Block,
     machine: &mut Machine,
     out: &mut Out,
@@ -356,17 +400,7 @@ pub(super) fn after_move(
     let Some(modal) = state.modal.as_deref() else {
         return Ok(Flow::Continue);
     };
-    let axes = [
-        Address::X,
-        Address::Y,
-        Address::Z,
-        Address::U,
-        Address::W,
-        Address::A,
-        Address::B,
-        Address::C,
-    ];
-    if state.in_modal > 0 || !axes.iter().any(|a| block.has(*a)) {
+    if state.in_modal > 0 || !moves(block) {
         return Ok(Flow::Continue);
     }
     let (program, times, locals) = (modal.program, modal.times, modal.locals);

@@ -273,8 +273,13 @@ impl<'t> Runner<'t> {
         // A call or return, or the block limit (its message names a loop):
         // asked of the machine and the count, not of the step (which is
         // made in place, as `execute` says).
-        if self.machine.jump.is_some() || self.index as usize >= self.options.max_blocks {
-            return step.map(|s| self.jump_or_stop(s));
+        // A program that made a macro call (behaviour 21) takes the same
+        // way out: a G66 in force may call after the block's move.
+        if self.machine.jump.is_some()
+            || self.machine.macro_calls.is_some()
+            || self.index as usize >= self.options.max_blocks
+        {
+            return step.map(|s| self.after_block(s));
         }
         step
     }
@@ -338,12 +343,6 @@ fn execute(
     };
     machine.moves_left = options.max_moves.saturating_sub(*move_count);
     match machine.execute(block, *index, out, ahead, program) {
-        // G66 in force: the block may call its macro (behaviour 21.5).
-        Ok(Flow::Continue) if machine.macro_calls.is_some() => {
-            *move_count += out.moves.len();
-            let result = macrocall::after_move(block, machine, out);
-            Some(ran(result, index, stopped))
-        }
         Ok(flow) => {
             *index += 1;
             *move_count += out.moves.len();
