@@ -12,13 +12,13 @@
 //! operator's manuals, the same chapter; the Fanuc alarm list (PS0076,
 //! PS0077).
 
+use super::{Runner, Step};
 use crate::diag::{Diagnostic, Span};
 use crate::machine::calls::Jump;
 use crate::machine::macro_state::{Locals, ModalCall};
 use crate::machine::program::ProgramText;
 use crate::machine::{Flow, Machine, Out};
 use crate::macros::{Evaluator, Value};
-use super::{Runner, Step};
 use crate::syntax::{Address, Block, CallCode, MacroBlock, MacroCall, is_argument};
 
 /// A macro call's level, kept on its frame of the call stack.
@@ -389,11 +389,7 @@ fn moves(block: &Block) -> bool {
 /// The block just run in G66's mode (behaviour 21.5): a block with an axis
 /// word calls the macro after its move; a block inside a macro the modal
 /// call made does not.
-fn after_move(
-    block: &Block,
-    machine: &mut Machine,
-    out: &mut Out,
-) -> Result<Flow, Diagnostic> {
+fn after_move(block: &Block, machine: &mut Machine, out: &mut Out) -> Result<Flow, Diagnostic> {
     let Some(state) = machine.macro_calls.as_deref() else {
         return Ok(Flow::Continue);
     };
