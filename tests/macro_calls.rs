@@ -269,6 +269,7 @@ G66 P9020 Z-5. R2.
 G00 X10.
 X20.
 M05
+G04 X1.
 G67
 X30.
 M30
@@ -280,7 +281,8 @@ M99
     let r = ok(text, &mill(&[]));
     // The G66 block does not move or call; X10. and X20. move, then the
     // macro drills (Z−5, back to Z2) — its own moves call nothing; M05
-    // (no axis) calls nothing; after G67 X30. moves only.
+    // (no axis) and G04 X1. (X a time) call nothing; after G67 X30. moves
+    // only.
     let z: Vec<[f64; 3]> = r.moves.iter().map(|m| m.to).collect();
     let want = [
         [0.0, 0.0, 10.0],
@@ -302,7 +304,7 @@ M99
             .contains("G66 (line 2): after this move, calls O9020 with Z=#26=-5.000, R=#18=2.000")
     );
     assert!(
-        at_line(&r, text, 6)
+        at_line(&r, text, 7)
             .explanation
             .contains("G67: the modal call of O9020 (G66 at line 2) ends")
     );

@@ -367,8 +367,21 @@ impl Runner<'_> {
     }
 }
 
-/// True for a block with an axis word, as written or from a variable.
+/// True for a block with a move command: an axis word, as written or from
+/// a variable, in a block whose axis words are a position (not a dwell's
+/// time, a G10's value or a coordinate system's setting).
 fn moves(block: &Block) -> bool {
+    use crate::syntax::codes::NonModal;
+    if let Some(
+        NonModal::Dwell
+        | NonModal::DataSetting
+        | NonModal::SetCoordinates
+        | NonModal::LocalCoordinates
+        | NonModal::PresetCoordinates,
+    ) = block.codes().non_modal()
+    {
+        return false;
+    }
     const AXES: [Address; 8] = [
         Address::X,
         Address::Y,
