@@ -93,6 +93,24 @@ pub(super) fn enter(machine: &mut Machine, jump: Jump) -> Option<Box<Level>> {
     }))
 }
 
+/// The step of a macro call's block, which ran (or stopped) outside the
+/// machine's own run.
+#[cold]
+#[inline(never)]
+pub(super) fn ran(result: Result<Flow, Diagnostic>, index: &mut u32, stopped: &mut bool) -> Step {
+    match result {
+        Ok(flow) => {
+            *index += 1;
+            *stopped = flow == Flow::End;
+            Step::Ran(flow)
+        }
+        Err(d) => {
+            *stopped = true;
+            Step::Stopped(Some(d))
+        }
+    }
+}
+
 /// The local variable of an argument letter in specification I (Fanuc:
 /// A #1, B #2, C #3, I #4, J #5, K #6, D #7, E #8, F #9, H #11, M #13,
 /// Q #17, R #18, S #19, T #20, U #21, V #22, W #23, X #24, Y #25, Z #26).

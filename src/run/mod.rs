@@ -328,7 +328,7 @@ fn execute(
         Some(m) if let Some(call) = &m.call => {
             // G65, G66, G67 (behaviour 21): no block for the machine.
             let result = macrocall::call(block, m, call, machine, out, program);
-            return Some(ran(result, index, stopped));
+            return Some(macrocall::ran(result, index, stopped));
         }
         Some(m) => match macros::resolve(block, m, machine, out) {
             Ok(b) => {
@@ -352,24 +352,6 @@ fn execute(
         Err(d) => {
             *stopped = true;
             Some(Step::Stopped(Some(d)))
-        }
-    }
-}
-
-/// The step of a block that ran (or stopped) outside the machine's own
-/// run: a macro call's (behaviour 21).
-#[cold]
-#[inline(never)]
-fn ran(result: Result<Flow, Diagnostic>, index: &mut u32, stopped: &mut bool) -> Step {
-    match result {
-        Ok(flow) => {
-            *index += 1;
-            *stopped = flow == Flow::End;
-            Step::Ran(flow)
-        }
-        Err(d) => {
-            *stopped = true;
-            Step::Stopped(Some(d))
         }
     }
 }
