@@ -10,7 +10,7 @@ import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { describe, test } from 'node:test';
-import { COLORS, MARKS, cli, countColor, countColors, decode, loadExample, useBrowser, waitForView } from './harness.mjs';
+import { COLORS, MARKS, cli, countColor, countColors, decode, loadExample, shoot, useBrowser, waitForView } from './harness.mjs';
 
 const { withPage } = useBrowser();
 const tmp = mkdtempSync(join(tmpdir(), 'offsetlab-export-'));
@@ -146,6 +146,19 @@ describe('export', () => {
       assert.equal(rows.length, run.moves.length);
       const svg = readFileSync((await exportAs(page, 'svg')).path, 'utf8');
       assert.ok(svg.includes('centre line') && svg.includes('lathe · ZX · mm'));
+    });
+  });
+
+  test('the CAM example’s G83 holes are rings in the top view and its SVG (behaviour 6.11)', async () => {
+    await withPage(async (page) => {
+      await loadExample(page, 'cam');
+      // N155–N170: G83 at X5 Y5, X35 Y5, X35 Y25, X5 Y25, after H02's
+      // length offset (Z only): four rings, at those X Y.
+      const svg = readFileSync((await exportAs(page, 'svg')).path, 'utf8');
+      const group = svg.split('<g class="holes">')[1]?.split('</g>')[0] ?? '';
+      assert.equal((group.match(/<circle /g) ?? []).length, 4, group);
+      assert.ok(svg.includes('>hole (canned cycle)<') || svg.includes('>hole<'), 'the legend names them');
+      await shoot(page, 'holes-cam');
     });
   });
 });
