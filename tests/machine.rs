@@ -432,7 +432,7 @@ fn behaviour2_1_run_time_error_stops_too() {
 
 #[test]
 fn behaviour2_21_unsupported_g_codes_are_errors_not_skips() {
-    for code in ["G22 X10. Y10.", "G11", "G65 P9000"] {
+    for code in ["G22 X10. Y10.", "G11", "G66.1 P9000"] {
         assert_eq!(
             errors(code, &mill(&[])),
             vec!["unsupported-g-code"],

@@ -269,11 +269,11 @@ fn behaviour20_10_work_offsets_read_and_written_through_system_variables() {
     );
     // Other system variables are refused, never made up; the lathe's too.
     assert_eq!(
-        errors("#1 = #5001\n", &mill(&[])),
+        errors("#1 = #5004\n", &mill(&[])),
         vec!["macro-system-variable"]
     );
     assert_eq!(
-        errors("#1 = #2001\n", &lathe(&[])),
+        errors("#1 = #2401\n", &lathe(&[])),
         vec!["macro-system-variable"]
     );
 }

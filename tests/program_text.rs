@@ -160,12 +160,13 @@ fn behaviour2_18_subprogram_and_macro_calls_are_errors_not_auxiliary_events() {
     // On the lathe too.
     let lathe = lathe(&[]);
     assert_eq!(errors("M198 P10", &lathe), vec!["unsupported-m-code"]);
-    let r = run("G65 P9001 A1.", &Setup::default());
+    // G65–G67 are run (section 21); Fanuc's G66.1 is refused with why.
+    let r = run("G66.1 P9001 A1.", &Setup::default());
     assert_eq!(r.diagnostics[0].code, "unsupported-g-code");
     assert!(
         r.diagnostics[0]
             .message
-            .contains("macro calls are not run yet")
+            .contains("G66.1 (a call at every block) is not modelled")
     );
 }
 

@@ -26,6 +26,13 @@ pub(crate) enum Jump {
     /// block with that sequence number; in the main program, to its start
     /// (or that sequence number).
     Return { to: Option<u32> },
+    /// G65 (or a G66 modal call, `modal`): program O`program`, `times`
+    /// times over, with a new level of local variables (behaviour 21).
+    Macro {
+        program: u32,
+        times: u32,
+        modal: bool,
+    },
 }
 
 /// The biggest program number the repeat-and-number form of P writes in
@@ -133,7 +140,11 @@ impl Machine {
             }
         };
         let depth = self.setup.settings.subprogram_nesting();
-        if !matches!(jump, Jump::Return { .. }) && program.depth() >= depth as usize {
+        // Macro calls have their own count (behaviour 21.4).
+        let open = program
+            .depth()
+            .saturating_sub(usize::from(self.macro_level()));
+        if !matches!(jump, Jump::Return { .. }) && open >= depth as usize {
             return Err(self.error(
                 "nesting-too-deep",
                 m.span,

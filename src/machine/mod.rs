@@ -18,6 +18,7 @@ mod cycles;
 mod data;
 pub mod frame;
 mod lathe;
+pub(crate) mod macro_state;
 mod mill;
 pub mod modal;
 mod modes;
@@ -28,6 +29,7 @@ pub mod program;
 mod reference;
 pub mod state;
 mod sysvars;
+mod sysvars_state;
 mod transform;
 mod words;
 
@@ -191,6 +193,8 @@ pub struct Machine {
     /// The call or return the last block asked for (with [`Flow::Jump`]);
     /// the run takes it.
     pub(crate) jump: Option<calls::Jump>,
+    /// Macro calls' state (behaviour 21), once a program makes one.
+    pub(crate) macro_calls: Option<Box<macro_state::MacroCalls>>,
 }
 
 const AXES: [(Address, char); 3] = [(Address::X, 'X'), (Address::Y, 'Y'), (Address::Z, 'Z')];
@@ -255,6 +259,7 @@ impl Machine {
             moves_left: usize::MAX,
             overflow: false,
             jump: None,
+            macro_calls: None,
             corner_cut: false,
             corner: [0.0; 3],
             corner_end: None,

@@ -66,7 +66,7 @@ impl Machine {
     /// model it.
     pub(crate) fn read_system(&self, n: u32, span: Span) -> Result<Option<f64>, Diagnostic> {
         Ok(match self.system_target(n) {
-            None => None,
+            None => self.read_state(n, span)?,
             Some(Target::Tool(field, number)) => {
                 self.check_register(n, number, span)?;
                 let r = self.setup.offsets.get(&number).copied().unwrap_or_default();
@@ -103,7 +103,7 @@ impl Machine {
         out: &mut Out,
     ) -> Result<bool, Diagnostic> {
         match self.system_target(n) {
-            None => Ok(false),
+            None => self.write_state(n, v, span, out),
             Some(Target::Tool(field, number)) => {
                 self.check_register(n, number, span)?;
                 if v.abs() > MAX_OFFSET_VALUE + 1e-9 {

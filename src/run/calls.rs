@@ -45,6 +45,8 @@ pub(crate) struct Frame {
     left: u32,
     /// Repeats in all.
     times: u32,
+    /// A macro call's level of local variables (behaviour 21).
+    level: Option<Box<super::macrocall::Level>>,
 }
 
 /// The calls of a run once it has made one.
@@ -198,6 +200,7 @@ impl<'t> Runner<'t> {
         let back = context;
         let (target, note) = match jump {
             Jump::Call { program, times }
+            | Jump::Macro { program, times, .. }
             | Jump::Local {
                 sequence: program,
                 times,
@@ -217,7 +220,11 @@ impl<'t> Runner<'t> {
                 let Some((entry, label)) = found else {
                     return Step::Ran(Flow::Jump);
                 };
-                let site = site(&calls.current.label, &self.block);
+                let level = super::macrocall::enter(&mut self.machine, jump);
+                let mut site = site(&calls.current.label, &self.block);
+                if let Some(l) = &level {
+                    site.push_str(&l.site());
+                }
                 let callee = Program {
                     start: if local {
                         calls.current.start
@@ -226,10 +233,17 @@ impl<'t> Runner<'t> {
                     },
                     label,
                 };
-                let code = if local { "M97" } else { "M98" };
+                let code = match (&level, local) {
+                    (Some(l), _) => l.code(),
+                    (None, true) => "M97",
+                    (None, false) => "M98",
+                };
+                let what = match &level {
+                    Some(l) => l.said(),
+                    None => format!("calls {}", callee.label),
+                };
                 let note = format!(
-                    "{code}: calls {}{}; it returns to line {}",
-                    callee.label,
+                    "{code}: {what}{}; it returns to line {}",
                     match times {
                         1 => String::new(),
                         n => format!(", {n} times"),
@@ -245,12 +259,16 @@ impl<'t> Runner<'t> {
                     callee,
                     left: times - 1,
                     times,
+                    level,
                 });
                 (entry, note)
             }
             Jump::Return { to } => match calls.stack.last_mut() {
                 Some(frame) if frame.left > 0 && to.is_none() => {
                     frame.left -= 1;
+                    if let Some(l) = &frame.level {
+                        l.again(&mut self.machine);
+                    }
                     let time = frame.times - frame.left;
                     let note = format!(
                         "M99: {} again, time {time} of {}",
@@ -262,6 +280,9 @@ impl<'t> Runner<'t> {
                     let Some(frame) = calls.stack.pop() else {
                         return Step::Ran(Flow::Jump);
                     };
+                    if let Some(l) = &frame.level {
+                        l.leave(&mut self.machine);
+                    }
                     let target = match to {
                         Some(n) => self.sequences.find_in(frame.caller.start, n),
                         None => Some(frame.back),

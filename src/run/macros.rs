@@ -14,7 +14,7 @@ use crate::setup::{MacroAngles, MacroConditions};
 use crate::syntax::{self, Block, MacroBlock, ParseOptions};
 
 /// The evaluation options of the machine's setup (settings 7.39, 7.40).
-fn options(machine: &Machine) -> Options {
+pub(super) fn options(machine: &Machine) -> Options {
     let s = &machine.setup().settings;
     Options {
         signed_angles: s.macro_angles() == MacroAngles::Signed,
@@ -24,9 +24,9 @@ fn options(machine: &Machine) -> Options {
 
 /// The run's variables: the machine's store, and the system variables of
 /// the offsets, which read and write the machine's tables (behaviour 20.10).
-struct Vars<'a> {
-    machine: &'a mut Machine,
-    out: &'a mut Out,
+pub(super) struct Vars<'a> {
+    pub(super) machine: &'a mut Machine,
+    pub(super) out: &'a mut Out,
 }
 
 impl Variables for Vars<'_> {

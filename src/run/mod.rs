@@ -16,6 +16,7 @@ pub(crate) mod again;
 mod ahead;
 mod calls;
 mod checkpoint;
+mod macrocall;
 mod macros;
 #[cfg(not(target_arch = "wasm32"))]
 pub(crate) mod pipeline;
@@ -272,8 +273,13 @@ impl<'t> Runner<'t> {
         // A call or return, or the block limit (its message names a loop):
         // asked of the machine and the count, not of the step (which is
         // made in place, as `execute` says).
-        if self.machine.jump.is_some() || self.index as usize >= self.options.max_blocks {
-            return step.map(|s| self.jump_or_stop(s));
+        // A program that made a macro call (behaviour 21) takes the same
+        // way out: a G66 in force may call after the block's move.
+        if self.machine.jump.is_some()
+            || self.machine.macro_calls.is_some()
+            || self.index as usize >= self.options.max_blocks
+        {
+            return step.map(|s| self.after_block(s));
         }
         step
     }
@@ -319,6 +325,11 @@ fn execute(
     let resolved;
     let block = match &block.macros {
         None => block,
+        Some(m) if let Some(call) = &m.call => {
+            // G65, G66, G67 (behaviour 21): no block for the machine.
+            let result = macrocall::call(block, m, call, machine, out, program);
+            return Some(macrocall::ran(result, index, stopped));
+        }
         Some(m) => match macros::resolve(block, m, machine, out) {
             Ok(b) => {
                 resolved = b;

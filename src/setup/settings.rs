@@ -460,6 +460,10 @@ pub struct Settings {
     /// with [`Settings::main_m99`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub main_m99: Option<MainM99>,
+    /// How many macro calls (G65, G66) may be open at once (behaviour
+    /// 7.45, 21.4); read it with [`Settings::macro_nesting`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub macro_nesting: Option<u8>,
 }
 
 impl Settings {
@@ -588,6 +592,14 @@ impl Settings {
                 Control::Yasnac | Control::Haas => 4,
             },
         }
+    }
+
+    /// How many macro calls may be open at once (behaviour 7.45): Fanuc 4
+    /// (16i/18i operator's manual, 16 "Custom macro", "Call nesting": four
+    /// levels of G65 and G66 calls, subprogram calls not counted), and so
+    /// the YASNAC and Haas profiles (our convention), at least 1.
+    pub fn macro_nesting(&self) -> u32 {
+        self.macro_nesting.map_or(4, |n| u32::from(n.max(1)))
     }
 
     /// How the D word of the one-block G71/G72 (depth of cut), G74/G75

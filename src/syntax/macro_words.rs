@@ -17,6 +17,8 @@ pub struct MacroBlock {
     pub statement: Option<Statement>,
     /// The words whose value is `#…` or `[…]`.
     pub words: Vec<MacroWord>,
+    /// A macro call's code and arguments (G65, G66, G67: behaviour 21).
+    pub call: Option<Box<super::macro_call::MacroCall>>,
     /// The block's text and where it starts, to read it again with the
     /// values written in.
     source: String,
@@ -82,13 +84,18 @@ fn block_end(bytes: &[u8], mut i: usize) -> usize {
 
 impl Blocks<'_> {
     /// The block's macro part, made at its first macro syntax.
-    fn macro_part<'b>(&mut self, block: &'b mut Block, start: usize) -> &'b mut MacroBlock {
+    pub(super) fn macro_part<'b>(
+        &mut self,
+        block: &'b mut Block,
+        start: usize,
+    ) -> &'b mut MacroBlock {
         let end = self.block_end(start);
         let (units, in_cycle) = self.before_block;
         block.macros.get_or_insert_with(|| {
             Box::new(MacroBlock {
                 statement: None,
                 words: Vec::new(),
+                call: None,
                 source: self.text[start..end].to_string(),
                 start,
                 units,

@@ -14,6 +14,7 @@ pub mod codes;
 mod headers;
 mod hint;
 mod lexer;
+mod macro_call;
 mod macro_words;
 mod messages;
 mod program;
@@ -27,6 +28,7 @@ pub use resume::Resume;
 pub(crate) use resume::shift;
 
 pub use block::{Address, Block, Word, WordKind};
+pub use macro_call::{Argument, CallCode, MacroCall, is_argument};
 pub use macro_words::{MacroBlock, MacroWord, resolve};
 
 use crate::diag::{Diagnostic, Span};

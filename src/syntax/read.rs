@@ -218,9 +218,16 @@ impl Blocks<'_> {
         let end = i;
 
         let raw = std::mem::take(&mut self.raw);
+        // A macro call's G65/G66/G67 and its arguments (behaviour 21.1).
+        let call = self.macro_call_code(&raw);
         // Type every word.
         let mut checks = Checks::default();
-        for w in &raw {
+        for (k, w) in raw.iter().enumerate() {
+            if let Some(c) = call
+                && self.take_argument(c, k, w, start, line, block)
+            {
+                continue;
+            }
             let Some(word) = self.type_word(w, line, block) else {
                 continue;
             };

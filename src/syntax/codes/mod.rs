@@ -694,6 +694,9 @@ fn unsupported_reason(table: CodeTable, g: GCode) -> String {
                 "polar coordinate interpolation is modelled on the lathe only (with X and C)"
             }
             (5, 1) => "AI contour control is a mill code (G05.1 Q1/Q0)",
+            (66, 1) => {
+                "the modal macro call G66.1 (a call at every block) is not modelled; G66 calls after each move (behaviour 21.5)"
+            }
             (61, 1) => {
                 "no Fanuc, Haas or YASNAC control has G61.1 (it is Mitsubishi's high-accuracy control and LinuxCNC's exact path); use G61 for exact stop mode"
             }
@@ -717,7 +720,6 @@ fn unsupported_reason(table: CodeTable, g: GCode) -> String {
             "in G-code system B and C the coordinate system is set with G92 (setting gcode_system)"
         }
         51 if lathe => "scaling is the mill's (the lathe's G50 sets the coordinate system)",
-        65..=67 => "macro calls are not run yet",
         68 | 69 if lathe => "coordinate rotation is the mill's in offsetlab",
         15 | 16 if lathe => "polar coordinates are the mill's in offsetlab",
         19 if lathe => {
