@@ -434,6 +434,7 @@ impl Checkpoint {
             machine: self.machine.clone(),
             segment: self.segment.clone(),
             calls: self.calls.clone(),
+            loops: self.loops.clone(),
         }
     }
 }

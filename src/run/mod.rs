@@ -16,6 +16,7 @@ pub(crate) mod again;
 mod ahead;
 mod calls;
 mod checkpoint;
+mod flow;
 mod macros;
 #[cfg(not(target_arch = "wasm32"))]
 pub(crate) mod pipeline;
@@ -115,6 +116,9 @@ struct Runner<'t> {
     /// The place of the block just run when it jumped (its report's:
     /// where it was before the jump).
     block_place: Option<Box<Place>>,
+    /// The macro loops running, once the run has met a jump or a loop
+    /// (behaviour 20.11–20.15).
+    loops: Option<Box<flow::Loops>>,
 }
 
 impl<'t> Runner<'t> {
@@ -183,11 +187,13 @@ impl<'t> Runner<'t> {
             stopped: false,
             calls: None,
             block_place: None,
+            loops: None,
         }
     }
 
     /// The calls open at checkpoint `at`, taken up (behaviour 19.9).
     fn restore_calls(&mut self, at: &Checkpoint) {
+        self.loops = at.loops.as_deref().map(flow::Saved::restore);
         let Some(saved) = at.calls.as_deref() else {
             return;
         };
@@ -250,6 +256,7 @@ impl<'t> Runner<'t> {
             machine: self.machine.clone(),
             segment: Default::default(),
             calls: self.calls.as_ref().map(|c| Box::new(c.save())),
+            loops: self.loops.as_ref().map(|l| Box::new(l.save())),
         }
     }
 
@@ -316,20 +323,69 @@ fn execute(
             ),
         ))));
     }
-    let resolved;
-    let block = match &block.macros {
-        None => block,
-        Some(m) => match macros::resolve(block, m, machine, out) {
-            Ok(b) => {
-                resolved = b;
-                &resolved
-            }
-            Err(d) => {
-                *stopped = true;
-                return Some(Step::Stopped(Some(d)));
-            }
-        },
+    if let Some(m) = &block.macros {
+        return execute_macro(
+            block,
+            m,
+            machine,
+            out,
+            options,
+            (index, move_count, stopped),
+            (ahead, program),
+        );
+    }
+    run_block(
+        block,
+        machine,
+        out,
+        options,
+        (index, move_count, stopped),
+        (ahead, program),
+    )
+}
+
+/// [`execute`] for a block with macro statements or words (behaviour
+/// 20.8): they run first, then the block with their values; a jump or a
+/// loop's statement leaves its step for the run ([`Flow::Jump`]).
+#[inline(never)]
+fn execute_macro(
+    block: &Block,
+    m: &crate::syntax::MacroBlock,
+    machine: &mut Machine,
+    out: &mut Out,
+    options: &RunOptions,
+    counts: (&mut u32, &mut usize, &mut bool),
+    text: (&mut dyn Ahead, &mut dyn ProgramText),
+) -> Option<Step> {
+    let resolved = match macros::resolve(block, m, machine, out) {
+        Ok(b) => b,
+        Err(d) => {
+            machine.jump = None;
+            *counts.2 = true;
+            return Some(Step::Stopped(Some(d)));
+        }
     };
+    match run_block(&resolved, machine, out, options, counts, text) {
+        Some(Step::Ran(Flow::Continue)) if machine.jump.is_some() => Some(Step::Ran(Flow::Jump)),
+        Some(Step::Ran(flow)) => Some(Step::Ran(flow)),
+        step => {
+            machine.jump = None;
+            step
+        }
+    }
+}
+
+/// Runs a block whose words are all values (the second half of
+/// [`execute`]).
+#[inline(always)]
+fn run_block(
+    block: &Block,
+    machine: &mut Machine,
+    out: &mut Out,
+    options: &RunOptions,
+    (index, move_count, stopped): (&mut u32, &mut usize, &mut bool),
+    (ahead, program): (&mut dyn Ahead, &mut dyn ProgramText),
+) -> Option<Step> {
     machine.moves_left = options.max_moves.saturating_sub(*move_count);
     match machine.execute(block, *index, out, ahead, program) {
         Ok(flow) => {
