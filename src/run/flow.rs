@@ -486,11 +486,16 @@ pub(super) fn message(
     out: &mut Out,
 ) -> Result<(), Diagnostic> {
     let text = m.comment().unwrap_or("");
+    // The assignment's own place, after THEN when there is one.
+    let span = match &s.kind {
+        StatementKind::IfThen(_, then) => then.span,
+        _ => s.span,
+    };
     if n == ALARM {
         let number = v.number().round();
         if !(0.0..=f64::from(u32::MAX - ALARM)).contains(&number) {
             return Err(alarm::ARGUMENT.at(
-                s.span,
+                span,
                 format!("#3000 = {number}: the alarm number is 0 or more"),
             ));
         }
@@ -500,7 +505,7 @@ pub(super) fn message(
         };
         return Err(Diagnostic::error(
             "macro-alarm",
-            s.span,
+            span,
             format!("alarm {}: {shown}", ALARM + number as u32),
         ));
     }
