@@ -162,7 +162,8 @@ impl<'t> Runner<'t> {
                 }
                 Step::Stopped(Some(d))
             }
-            Step::Ran(Flow::Jump) => match self.machine.jump.take() {
+            // A macro statement's jump leaves the block's flow as it was.
+            Step::Ran(Flow::Jump | Flow::Continue) => match self.machine.jump.take() {
                 Some(jump) => self.jump(jump),
                 None => Step::Ran(Flow::Continue),
             },

@@ -323,69 +323,22 @@ fn execute(
             ),
         ))));
     }
-    if let Some(m) = &block.macros {
-        return execute_macro(
-            block,
-            m,
-            machine,
-            out,
-            options,
-            (index, move_count, stopped),
-            (ahead, program),
-        );
-    }
-    run_block(
-        block,
-        machine,
-        out,
-        options,
-        (index, move_count, stopped),
-        (ahead, program),
-    )
-}
-
-/// [`execute`] for a block with macro statements or words (behaviour
-/// 20.8): they run first, then the block with their values; a jump or a
-/// loop's statement leaves its step for the run ([`Flow::Jump`]).
-#[inline(never)]
-fn execute_macro(
-    block: &Block,
-    m: &crate::syntax::MacroBlock,
-    machine: &mut Machine,
-    out: &mut Out,
-    options: &RunOptions,
-    counts: (&mut u32, &mut usize, &mut bool),
-    text: (&mut dyn Ahead, &mut dyn ProgramText),
-) -> Option<Step> {
-    let resolved = match macros::resolve(block, m, machine, out) {
-        Ok(b) => b,
-        Err(d) => {
-            machine.jump = None;
-            *counts.2 = true;
-            return Some(Step::Stopped(Some(d)));
-        }
+    let resolved;
+    let block = match &block.macros {
+        None => block,
+        // A jump or a loop's statement leaves its step in the machine's
+        // `jump` (behaviour 20.11–20.14), which the runner takes.
+        Some(m) => match macros::resolve(block, m, machine, out) {
+            Ok(b) => {
+                resolved = b;
+                &resolved
+            }
+            Err(d) => {
+                *stopped = true;
+                return Some(Step::Stopped(Some(d)));
+            }
+        },
     };
-    match run_block(&resolved, machine, out, options, counts, text) {
-        Some(Step::Ran(Flow::Continue)) if machine.jump.is_some() => Some(Step::Ran(Flow::Jump)),
-        Some(Step::Ran(flow)) => Some(Step::Ran(flow)),
-        step => {
-            machine.jump = None;
-            step
-        }
-    }
-}
-
-/// Runs a block whose words are all values (the second half of
-/// [`execute`]).
-#[inline(always)]
-fn run_block(
-    block: &Block,
-    machine: &mut Machine,
-    out: &mut Out,
-    options: &RunOptions,
-    (index, move_count, stopped): (&mut u32, &mut usize, &mut bool),
-    (ahead, program): (&mut dyn Ahead, &mut dyn ProgramText),
-) -> Option<Step> {
     machine.moves_left = options.max_moves.saturating_sub(*move_count);
     match machine.execute(block, *index, out, ahead, program) {
         Ok(flow) => {

@@ -17,6 +17,10 @@ const KINDS = {
   feed: 'tok-feed', // F and S
   param: 'tok-param', // P Q L A B C E…
   comment: 'tok-comment',
+  macro: 'tok-macro', // IF WHILE GOTO DO END THEN, comparisons, functions
+  variable: 'tok-variable', // #1, #[…]
+  bracket: 'tok-bracket', // [ ] of a macro expression
+  operator: 'tok-operator', // = + - * of a macro expression
   skip: 'tok-skip', // the / of an optional block skip
   end: 'tok-end', // ; end of block
   invalid: 'tok-invalid',
@@ -31,6 +35,11 @@ const BY_LETTER = {
 };
 
 const WORD = /^[A-Za-z][ \t]*[+-]?[ \t]*[0-9.]*/;
+
+// Custom Macro B's keywords, operators and functions (behaviour 20): two
+// letters or more, never followed by a letter (G-code words are one letter
+// and a number, so none of these is one).
+const KEYWORD = /^(WHILE|GOTO|THEN|END|DO|IF|EQ|NE|GT|LT|GE|LE|AND|OR|XOR|MOD|SIN|COS|TAN|ASIN|ACOS|ATAN|SQRT|ABS|ROUND|FIX|FUP|LN|EXP|POW|BIN|BCD|ADP)(?![A-Za-z])/i;
 
 export const gcodeLanguage = StreamLanguage.define({
   name: 'gcode',
@@ -55,6 +64,16 @@ export const gcodeLanguage = StreamLanguage.define({
       stream.next();
       stream.match(/^[0-9]/);
       return 'skip';
+    }
+    if (stream.match(KEYWORD)) return 'macro';
+    if (stream.match(/^#[0-9]*/)) return 'variable';
+    if (ch === '[' || ch === ']') {
+      stream.next();
+      return 'bracket';
+    }
+    if (ch === '=' || ch === '*' || ch === '+' || ch === '-' || ch === ',') {
+      stream.next();
+      return 'operator';
     }
     const word = stream.match(WORD);
     if (word) return BY_LETTER[word[0][0].toUpperCase()] ?? 'param';
