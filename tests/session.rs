@@ -724,3 +724,46 @@ fn behaviour18_2_the_nose_circle_is_drawn_about_the_nose_centre() {
     s.set_step(9);
     assert_eq!(s.scene().cutter, None);
 }
+
+#[test]
+fn behaviour10_7_the_legend_folds_away_and_the_path_gets_the_whole_view() {
+    // A 170 × 100 rectangle, about the shape of a 470 × 280 view (the
+    // drawing of a 720 × 420 lesson frame): fitted to the whole view it
+    // would run under the legend in the top right corner, so with the
+    // legend it is fitted beside it or below it, both much smaller; folded
+    // away, the whole view less the margins is the plot, and it is drawn
+    // larger.
+    let mut s = Session::new();
+    run(&mut s, "G01 X170. F100.\nY100.\nX0\nY0\nM30\n", None);
+    let draw = |s: &Session| {
+        let mut svg = SvgSurface::new();
+        let frame = render::draw_scene(&mut svg, s.toolpath(), s.scene(), 470.0, 280.0);
+        (frame, svg.finish(470.0, 280.0))
+    };
+    let (shown, with) = draw(&s);
+    assert!(with.contains("<g class=\"legend\">"));
+    assert!(!s.document().to_json().contains("legend"));
+    let v = s.set_view(&view_change(r#"{"legend":false}"#));
+    assert_eq!(v.legend, Some(false));
+    let (folded, without) = draw(&s);
+    assert!(
+        !without.contains("class=\"legend\""),
+        "a legend while folded"
+    );
+    // The plot is the whole view less the margins: it holds the legend's
+    // corner, which the plot beside or below it does not.
+    assert!(folded.plot.x + folded.plot.w > shown.legend.x);
+    assert!(folded.plot.y < shown.legend.y + shown.legend.h);
+    assert!(
+        folded.transform.scale > 1.2 * shown.transform.scale,
+        "{} vs {}",
+        folded.transform.scale,
+        shown.transform.scale
+    );
+    // Kept in the document (written only when folded) and back on request.
+    assert!(s.document().to_json().contains("\"legend\":false"));
+    s.set_view(&view_change(r#"{"legend":true}"#));
+    let (again, _) = draw(&s);
+    assert_eq!(again.transform.scale, shown.transform.scale);
+    assert!(!s.document().to_json().contains("legend"));
+}

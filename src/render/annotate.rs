@@ -275,6 +275,9 @@ fn legend_rows(plane: Plane, t: &Theme, tool_row: bool, compact: bool) -> Vec<(K
 }
 
 pub(super) fn draw_legend(s: &mut impl Surface, f: &Frame, tp: &Toolpath) {
+    if !f.legend_shown {
+        return;
+    }
     let r = f.legend;
     let t = f.theme;
     s.begin_group("legend");

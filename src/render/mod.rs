@@ -196,6 +196,8 @@ pub struct Frame {
     pub tool_row: bool,
     /// The short legend of small views (embedded lessons, phones).
     pub compact: bool,
+    /// The legend is drawn (not folded away, behaviour 10.7).
+    pub legend_shown: bool,
 }
 
 impl Frame {
@@ -205,11 +207,12 @@ impl Frame {
     /// of the area beside the legend and the area below it, so the legend
     /// never covers the path.
     pub fn fit(toolpath: &Toolpath, plane: Plane, width: f64, height: f64) -> Frame {
-        Frame::fit_with(toolpath, plane, width, height, &style::LIGHT, false)
+        Frame::fit_with(toolpath, plane, width, height, &style::LIGHT, false, true)
     }
 
     /// [`Frame::fit`] with a colour scheme and, when `tool_row`, room in
-    /// the legend for the tool marker.
+    /// the legend for the tool marker; without `legend` (folded away) the
+    /// path gets the whole surface less the margins.
     pub fn fit_with(
         toolpath: &Toolpath,
         plane: Plane,
@@ -217,6 +220,7 @@ impl Frame {
         height: f64,
         theme: &'static Theme,
         tool_row: bool,
+        legend_shown: bool,
     ) -> Frame {
         let width = if width.is_finite() {
             width.max(1.0)
@@ -238,7 +242,11 @@ impl Frame {
         } else {
             LEGEND_WIDTH
         };
-        let legend = Rect::new(width - legend_w - 10.0, 10.0, legend_w, legend_h);
+        let legend = if legend_shown {
+            Rect::new(width - legend_w - 10.0, 10.0, legend_w, legend_h)
+        } else {
+            Rect::new(width - 10.0, 10.0, 0.0, 0.0)
+        };
         let (l, r, t, b) = MARGIN;
         let full = Rect::new(l, t, (width - l - r).max(1.0), (height - t - b).max(1.0));
         let beside = Rect::new(l, t, legend.x - 12.0 - l, full.h);
@@ -255,7 +263,7 @@ impl Frame {
             let (plot, t) = fit(full);
             let drawn = t.screen_rect(&extent);
             let inflated = Rect::new(drawn.x - 4.0, drawn.y - 4.0, drawn.w + 8.0, drawn.h + 8.0);
-            if !inflated.intersects(&legend) {
+            if !legend_shown || !inflated.intersects(&legend) {
                 (plot, t)
             } else {
                 [beside, below]
@@ -276,6 +284,7 @@ impl Frame {
             theme,
             tool_row,
             compact,
+            legend_shown,
         }
     }
 

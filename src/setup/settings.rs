@@ -456,6 +456,10 @@ pub struct Settings {
     /// 19.6); read it with [`Settings::subprogram_nesting`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub subprogram_nesting: Option<u8>,
+    /// What M99 in the main program does (behaviour 7.42, 19.4); read it
+    /// with [`Settings::main_m99`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub main_m99: Option<MainM99>,
 }
 
 impl Settings {
@@ -560,6 +564,15 @@ impl Settings {
             Control::Haas => SubprogramP::Number,
             Control::Yasnac | Control::Fanuc => SubprogramP::RepeatAndNumber,
         })
+    }
+
+    /// What M99 in the main program does (behaviour 7.42): every control
+    /// goes back to the program's start and runs it again until the
+    /// operator stops it (Fanuc 0i-MF/TF, "Subprogram call": M99 in a main
+    /// program; Haas mill operator's manual, M99 "loop"); a viewer draws
+    /// one pass unless asked for the loop, the same on every profile.
+    pub fn main_m99(&self) -> MainM99 {
+        self.main_m99.unwrap_or(MainM99::Once)
     }
 
     /// How many subprogram calls may be open at once (behaviour 7.37):
@@ -766,6 +779,18 @@ pub enum PolarInterpolation {
     /// X a radius, Y the hypothetical axis, G00 allowed (Haas G112, "XY to
     /// XC").
     Haas,
+}
+
+/// What M99 in the main program does (behaviour 7.42).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum MainM99 {
+    /// The run ends at the M99, after one pass, with a note that the
+    /// control would repeat the program.
+    Once,
+    /// Back to the start (or to N of its P) as the control goes, until the
+    /// run's block limit.
+    Loop,
 }
 
 /// How M98's P reads (behaviour 7.36).
