@@ -1,6 +1,7 @@
 // Browser end-to-end test of stepping through a WHILE loop (issue 22 part 1,
 // behaviour 20.13): each pass of the loop is a step of its own, and the
-// state panel's sentence says what the WHILE and the END did. Screenshot:
+// state panel's sentence says what the WHILE and the END did; the editor
+// marks the macro keywords, variables and brackets. Screenshot:
 // macroflow.png.
 
 import assert from 'node:assert/strict';
@@ -54,6 +55,14 @@ describe('macro loops', () => {
       await next(page, 8);
       assert.equal(await stateText(page, 'block'), 'line 5: G01 X[#1*10] F100');
       assert.equal(await stateText(page, 'programmed'), 'X10.000 Y0.000 Z5.000 mm');
+      // The editor marks the macro keywords, variables and brackets, and
+      // no number of an expression as invalid.
+      const tokens = (cls) => page.locator(`.cm-content .${cls}`).allTextContents();
+      const macro = await tokens('tok-macro');
+      for (const k of ['WHILE', 'LT', 'DO', 'END']) assert.ok(macro.includes(k), k);
+      assert.ok((await tokens('tok-variable')).includes('#1'));
+      assert.ok((await tokens('tok-bracket')).includes('['));
+      assert.deepEqual(await tokens('tok-invalid'), []);
       await shoot(page, 'macroflow');
     });
   });

@@ -21,6 +21,7 @@ const KINDS = {
   variable: 'tok-variable', // #1, #[…]
   bracket: 'tok-bracket', // [ ] of a macro expression
   operator: 'tok-operator', // = + - * of a macro expression
+  number: 'tok-number', // a constant of a macro expression (`3` in `[#1 LT 3]`, DO`1`)
   skip: 'tok-skip', // the / of an optional block skip
   end: 'tok-end', // ; end of block
   invalid: 'tok-invalid',
@@ -75,6 +76,7 @@ export const gcodeLanguage = StreamLanguage.define({
       stream.next();
       return 'operator';
     }
+    if (stream.match(/^[0-9.]+/)) return 'number';
     const word = stream.match(WORD);
     if (word) return BY_LETTER[word[0][0].toUpperCase()] ?? 'param';
     stream.next();
