@@ -18,10 +18,10 @@ const KINDS = {
   param: 'tok-param', // P Q L A B C E…
   comment: 'tok-comment',
   macro: 'tok-macro', // IF WHILE GOTO DO END THEN, comparisons, functions
-  variable: 'tok-variable', // #1, #[…]
-  bracket: 'tok-bracket', // [ ] of a macro expression
-  operator: 'tok-operator', // = + - * of a macro expression
-  number: 'tok-number', // a constant of a macro expression (`3` in `[#1 LT 3]`, DO`1`)
+  macroVariable: 'tok-variable', // #1, #[…]
+  macroBracket: 'tok-bracket', // [ ] of a macro expression
+  macroOperator: 'tok-operator', // = + - * of a macro expression
+  macroNumber: 'tok-number', // a constant of a macro expression (`3` in `[#1 LT 3]`, DO`1`)
   skip: 'tok-skip', // the / of an optional block skip
   end: 'tok-end', // ; end of block
   invalid: 'tok-invalid',
@@ -35,6 +35,8 @@ const BY_LETTER = {
   D: 'offset', H: 'offset', T: 'tool', F: 'feed', S: 'feed',
 };
 
+// (The token names are not CodeMirror's legacy ones, `variable`, `number`,
+// `bracket`, `operator`, which it would map to its own tags.)
 const WORD = /^[A-Za-z][ \t]*[+-]?[ \t]*[0-9.]*/;
 
 // Custom Macro B's keywords, operators and functions (behaviour 20): two
@@ -67,16 +69,16 @@ export const gcodeLanguage = StreamLanguage.define({
       return 'skip';
     }
     if (stream.match(KEYWORD)) return 'macro';
-    if (stream.match(/^#[0-9]*/)) return 'variable';
+    if (stream.match(/^#[0-9]*/)) return 'macroVariable';
     if (ch === '[' || ch === ']') {
       stream.next();
-      return 'bracket';
+      return 'macroBracket';
     }
     if (ch === '=' || ch === '*' || ch === '+' || ch === '-' || ch === ',') {
       stream.next();
-      return 'operator';
+      return 'macroOperator';
     }
-    if (stream.match(/^[0-9.]+/)) return 'number';
+    if (stream.match(/^[0-9.]+/)) return 'macroNumber';
     const word = stream.match(WORD);
     if (word) return BY_LETTER[word[0][0].toUpperCase()] ?? 'param';
     stream.next();
