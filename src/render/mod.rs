@@ -17,6 +17,7 @@ mod annotate;
 #[cfg(target_arch = "wasm32")]
 pub mod canvas;
 pub mod display;
+mod holes;
 mod kept;
 mod paths;
 pub mod raster;
@@ -198,6 +199,9 @@ pub struct Frame {
     pub compact: bool,
     /// The legend is drawn (not folded away, behaviour 10.7).
     pub legend_shown: bool,
+    /// The path has holes seen as points in this plane (behaviour 6.11):
+    /// their rings are drawn, and the legend has their row.
+    pub holes: bool,
 }
 
 impl Frame {
@@ -235,7 +239,8 @@ impl Frame {
         // A full legend would take a third of a small view and squeeze the
         // path beside it; small views get the short one.
         let compact = width < COMPACT_BELOW.0 || height < COMPACT_BELOW.1;
-        let rows = legend_row_count(plane, theme, tool_row, compact) as f64 + 1.0;
+        let holes = holes::has_holes(toolpath, plane);
+        let rows = legend_row_count(plane, theme, tool_row, compact, holes) as f64 + 1.0;
         let legend_h = rows * LEGEND_ROW + 2.0 * LEGEND_PAD;
         let legend_w = if compact {
             LEGEND_WIDTH_COMPACT
@@ -285,6 +290,7 @@ impl Frame {
             tool_row,
             compact,
             legend_shown,
+            holes,
         }
     }
 
@@ -413,6 +419,7 @@ fn draw_scene_as(
         draw_paths(surface, &frame, toolpath, scene, split);
     }
     if !moved {
+        holes::draw_holes(surface, &frame, toolpath, split);
         scene::draw_arrows(surface, &frame, toolpath, split);
     }
     if let Some(marker) = scene.marker {
