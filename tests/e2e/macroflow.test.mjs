@@ -37,6 +37,8 @@ describe('macro loops', () => {
       await typeProgram(page, PROGRAM);
       // O1000, G90, #1 = 0 (3); WHILE, G01, #1, END three times (12); the
       // WHILE that finds [3 LT 3] false and M30 (2): 17 blocks.
+      // (The run of the typed text may still be on its way: waited for.)
+      await page.locator('#step-position', { hasText: /all 17 blocks/ }).waitFor({ timeout: 10_000 });
       assert.match(await page.locator('#step-position').textContent(), /all 17 blocks/);
       await stepTo(page, 3);
       assert.equal(await stateText(page, 'block'), 'line 4: WHILE [#1 LT 3] DO1');
