@@ -43,6 +43,17 @@ fn options() -> [RunOptions; 4] {
     ]
 }
 
+/// True when the run jumps (its checkpoints say so).
+fn jumps(text: &str, setup: &Setup, options: RunOptions) -> bool {
+    let options = RunOptions {
+        checkpoint_every: 1_000_000,
+        ..options
+    };
+    offsetlab::run_observed(text, setup, options, &mut ())
+        .1
+        .calls
+}
+
 /// The two-thread run equals the one-thread run, or is refused only where
 /// the diagnostics reach their cap.
 fn assert_same(text: &str, setup: &Setup, what: &str) {
@@ -50,10 +61,13 @@ fn assert_same(text: &str, setup: &Setup, what: &str) {
         let one = run_with(text, setup, options);
         match run_on_two_threads(text, setup, options) {
             Some(two) => assert_runs_equal(&two, &one, what),
+            // A program that jumps (a call, a macro GOTO or loop) runs on
+            // one thread (behaviour 19.9, 20.15).
             None => assert!(
                 one.diagnostics.len() >= MAX_DIAGNOSTICS
                     || !setup.validate().is_empty()
-                    || offsetlab::syntax::check_size(text).is_some(),
+                    || offsetlab::syntax::check_size(text).is_some()
+                    || jumps(text, setup, options),
                 "{what}: refused with {} diagnostics",
                 one.diagnostics.len()
             ),

@@ -338,9 +338,12 @@ pub fn check_run_with(setup: &Setup, program: &str, max_moves: usize) {
         if let Some(two) = offsetlab::run_on_two_threads(program, setup, options) {
             assert_eq!(&two, one, "the run on two threads");
         } else {
+            // A program that jumps (a subprogram call, a macro GOTO or
+            // loop) runs on one thread (behaviour 19.9, 20.15).
             assert!(
                 one.diagnostics.len() >= offsetlab::syntax::MAX_DIAGNOSTICS
                     || one.end == offsetlab::End::Error { line: 0 }
+                    || jumps(program, setup, max_moves)
             );
         }
     }
@@ -521,4 +524,19 @@ fn check_runs_made_again(setup: &Setup, program: &str, max_moves: usize) {
         assert_eq!(got.bounds, want.bounds, "bounds run again");
         assert_eq!(got_path, want_path, "toolpath run again");
     }
+}
+
+/// True when the run of `program` jumps: it calls a subprogram or makes a
+/// macro statement's jump or loop (its checkpoints say so).
+fn jumps(program: &str, setup: &Setup, max_moves: usize) -> bool {
+    let options = RunOptions {
+        keep_blocks: false,
+        keep_moves: false,
+        max_moves,
+        checkpoint_every: 1_000_000,
+        ..RunOptions::default()
+    };
+    offsetlab::run_observed(program, setup, options, &mut ())
+        .1
+        .calls
 }

@@ -33,6 +33,22 @@ pub(crate) enum Jump {
         times: u32,
         modal: bool,
     },
+    /// A macro statement's jump or loop (behaviour 20.11–20.14): the run
+    /// finds where it leads.
+    Flow(MacroJump),
+}
+
+/// What a macro statement asks of the run's reading (behaviour 20.11–20.14).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum MacroJump {
+    /// GOTO n, or IF [..] GOTO n whose condition holds.
+    Goto(u32),
+    /// WHILE [..] DO m: whether the condition holds.
+    While { holds: bool, label: u8 },
+    /// DO m without WHILE.
+    Do(u8),
+    /// END m.
+    End(u8),
 }
 
 /// The biggest program number the repeat-and-number form of P writes in

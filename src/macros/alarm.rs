@@ -59,6 +59,11 @@ pub const ARGUMENT: Alarm = Alarm {
     code: "macro-argument-range",
     alarm: "PS0119 ARGUMENT VALUE OUT OF RANGE",
 };
+/// A DO without its END (behaviour 20.13).
+pub const MISSING_END: Alarm = Alarm {
+    code: "macro-missing-end",
+    alarm: "PS0124 MISSING END STATEMENT",
+};
 /// A statement written wrong.
 pub const STATEMENT: Alarm = Alarm {
     code: "macro-statement",

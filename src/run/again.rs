@@ -250,6 +250,7 @@ impl<'a> Plan<'a> {
         if !self.tail_ok
             || r.stopped
             || r.calls.is_some()
+            || r.loops.is_some()
             || pos < self.same_from
             || r.parser.dropped() > 0
         {
@@ -434,6 +435,7 @@ impl Checkpoint {
             machine: self.machine.clone(),
             segment: self.segment.clone(),
             calls: self.calls.clone(),
+            loops: self.loops.clone(),
         }
     }
 }

@@ -139,7 +139,7 @@ impl Saved {
 }
 
 /// `n` with thousands separated (`1,000,000`), as a message writes it.
-fn thousands(n: u64) -> String {
+pub(super) fn thousands(n: u64) -> String {
     let digits = n.to_string();
     let mut out = String::new();
     for (i, c) in digits.chars().enumerate() {
@@ -159,12 +159,13 @@ impl<'t> Runner<'t> {
     pub(super) fn jump_or_stop(&mut self, step: Step) -> Step {
         match step {
             Step::Stopped(Some(mut d)) => {
-                if d.code == "too-many-blocks" {
+                if d.code == "too-many-blocks" && !self.explain_loop_limit(&mut d) {
                     self.explain_limit(&mut d);
                 }
                 Step::Stopped(Some(d))
             }
-            Step::Ran(Flow::Jump) => match self.machine.jump.take() {
+            // A macro statement's jump leaves the block's flow as it was.
+            Step::Ran(Flow::Jump | Flow::Continue) => match self.machine.jump.take() {
                 Some(jump) => self.jump(jump),
                 None => Step::Ran(Flow::Continue),
             },
@@ -175,19 +176,12 @@ impl<'t> Runner<'t> {
     /// The block just run asked for `jump` (checked by the machine): the
     /// run reads on where it leads, and the block's report says where.
     fn jump(&mut self, jump: Jump) -> Step {
-        if self.calls.is_none() {
-            let label = match self.sequences.main_header(self.block.span.start as usize) {
-                Some(h) => format!("O{:04}", h.number),
-                None => "the main program".to_string(),
-            };
-            self.calls = Some(Box::new(Calls {
-                main: None,
-                current: Program { start: None, label },
-                stack: Vec::new(),
-                loops: 0,
-                loop_span: None,
-            }));
-        }
+        let jump = match jump {
+            Jump::Flow(step) => return self.macro_flow(step),
+            jump => jump,
+        };
+        let from_depth = self.sequences.depth;
+        self.open_calls();
         let Some(calls) = self.calls.as_deref_mut() else {
             return Step::Ran(Flow::Jump);
         };
@@ -263,6 +257,8 @@ impl<'t> Runner<'t> {
                 });
                 (entry, note)
             }
+            // Taken at the top.
+            Jump::Flow(_) => return Step::Ran(Flow::Jump),
             Jump::Return { to } => match calls.stack.last_mut() {
                 Some(frame) if frame.left > 0 && to.is_none() => {
                     frame.left -= 1;
@@ -337,6 +333,41 @@ impl<'t> Runner<'t> {
         self.sequences.current = calls.current.start;
         self.sequences.caller = calls.stack.last().and_then(|f| f.caller.start);
         self.out.notes.push(note);
+        if matches!(jump, Jump::Return { .. }) {
+            // The loops of the program left are over (behaviour 20.15).
+            self.leave_loops(from_depth);
+        }
+        self.read_at(target);
+        Step::Ran(Flow::Jump)
+    }
+
+    /// The calls' record, made at the run's first jump (a call, a return
+    /// or a macro statement's jump: behaviour 19, 20.11).
+    pub(super) fn open_calls(&mut self) {
+        if self.calls.is_none() {
+            let label = match self.sequences.main_header(self.block.span.start as usize) {
+                Some(h) => format!("O{:04}", h.number),
+                None => "the main program".to_string(),
+            };
+            self.calls = Some(Box::new(Calls {
+                main: None,
+                current: Program { start: None, label },
+                stack: Vec::new(),
+                loops: 0,
+                loop_span: None,
+            }));
+        }
+    }
+
+    /// The run reads on at `target` in the program being read, in the
+    /// context (units, canned cycle) the parser has now; once back where
+    /// the first parser was set aside in the main program, that parser
+    /// reads on. Needs [`Runner::open_calls`] first.
+    pub(super) fn read_at(&mut self, target: Resume) {
+        let Some(calls) = self.calls.as_deref_mut() else {
+            return;
+        };
+        let context = self.parser.resume_point();
         let parser = self.sequences.parser_at(target.in_context(&context));
         let set_aside = std::mem::replace(&mut self.parser, parser);
         if calls.main.is_none() {
@@ -351,7 +382,15 @@ impl<'t> Runner<'t> {
         if home && let Some(main) = calls.main.take() {
             self.parser = main;
         }
-        Step::Ran(Flow::Jump)
+    }
+
+    /// The place of the block about to jump, for its report (kept only
+    /// when the run keeps reports).
+    pub(super) fn note_place(&mut self) {
+        self.block_place = match (&self.calls, self.options.keep_blocks) {
+            (Some(calls), true) => calls.place(),
+            _ => None,
+        };
     }
 
     /// The parser has read its last block: a subprogram's reading ended
@@ -389,6 +428,11 @@ impl<'t> Runner<'t> {
             Flow::Jump => self.block_place.take(),
             _ => self.calls.as_ref().and_then(|c| c.place()),
         }
+    }
+
+    /// M99s in the main program so far (behaviour 19.8).
+    pub(super) fn main_loops(&self) -> u32 {
+        self.calls.as_deref().map_or(0, |c| c.loops)
     }
 
     /// The block limit reached in a program that loops: the error at the

@@ -84,6 +84,8 @@ pub struct Checkpoint {
     /// again inside a subprogram reads on where the run read, and returns
     /// where it returned. None before the run's first call.
     pub(super) calls: Option<Box<super::calls::Saved>>,
+    /// The macro loops running here (behaviour 20.15).
+    pub(super) loops: Option<Box<super::flow::Saved>>,
 }
 
 /// Checkpoints of the same program are equal when they stand at the same

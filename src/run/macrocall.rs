@@ -260,7 +260,11 @@ pub(super) fn call(
         let Some(w) = m.words.iter().find(|w| w.address == a) else {
             return Ok(None);
         };
-        let mut vars = super::macros::Vars { machine, out };
+        let mut vars = super::macros::Vars {
+            machine,
+            out,
+            message: None,
+        };
         let v = Evaluator::new(&mut vars, options).value(&w.value)?;
         Ok(v.get().map(|v| (v.round(), w.span)))
     };
@@ -307,7 +311,11 @@ pub(super) fn call(
         .iter()
         .filter(|w| is_argument(w.address.letter().as_bytes()[0]))
     {
-        let mut vars = super::macros::Vars { machine, out };
+        let mut vars = super::macros::Vars {
+            machine,
+            out,
+            message: None,
+        };
         let value = Evaluator::new(&mut vars, options).value(&w.value)?;
         args.push(Arg {
             letter: w.address.letter().as_bytes()[0],

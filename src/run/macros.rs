@@ -4,8 +4,10 @@
 //! a word, and the block the machine runs is the one with their values.
 //! Only blocks the parser marked take this way: the others run as before.
 
+use super::flow::{self, ALARM, MESSAGE_STOP};
 use crate::diag::Diagnostic;
 use crate::diag::Span;
+use crate::machine::calls::{Jump, MacroJump};
 use crate::machine::{EventKind, Machine, Out, VariableSet};
 use crate::macros::{
     self, Evaluator, Kind, Options, Outcome, StatementKind, Value, Variables, system_variable,
@@ -27,10 +29,15 @@ pub(super) fn options(machine: &Machine) -> Options {
 pub(super) struct Vars<'a> {
     pub(super) machine: &'a mut Machine,
     pub(super) out: &'a mut Out,
+    /// `#3000` or `#3006` written, with its value (behaviour 20.16).
+    pub(super) message: Option<(u32, Value)>,
 }
 
 impl Variables for Vars<'_> {
     fn read(&mut self, n: u32, span: Span) -> Result<Value, Diagnostic> {
+        if let ALARM | MESSAGE_STOP = n {
+            return Err(flow::write_only(n, span));
+        }
         match macros::kind(n) {
             Kind::System => match self.machine.read_system(n, span)? {
                 Some(v) => Ok(Value::Number(v)),
@@ -41,6 +48,10 @@ impl Variables for Vars<'_> {
     }
 
     fn write(&mut self, n: u32, v: Value, span: Span) -> Result<(), Diagnostic> {
+        if let ALARM | MESSAGE_STOP = n {
+            self.message = Some((n, v));
+            return Ok(());
+        }
         match macros::kind(n) {
             Kind::System => match self.machine.write_system(n, v.number(), span, self.out)? {
                 true => Ok(()),
@@ -62,25 +73,35 @@ pub(super) fn resolve(
 ) -> Result<Block, Diagnostic> {
     let options = options(machine);
     if let Some(s) = &m.statement {
-        let outcome = Evaluator::new(&mut Vars { machine, out }, options).execute(s)?;
+        let mut vars = Vars {
+            machine,
+            out,
+            message: None,
+        };
+        let outcome = Evaluator::new(&mut vars, options).execute(s)?;
+        if let Some((n, v)) = vars.message {
+            // #3000 stops the run with the program's alarm; #3006 stops
+            // with a message and the run goes on (behaviour 20.16).
+            flow::message(n, v, s, m, out)?;
+            return Ok(empty(block));
+        }
         match outcome {
             Outcome::Assigned { number, value, was } => {
-                let expr = match &s.kind {
-                    StatementKind::Assign { value, .. } => value,
+                // Only an assignment, alone or after THEN, assigns.
+                let written = match &s.kind {
+                    StatementKind::Assign { value, .. } => m.text_of(value),
                     StatementKind::IfThen(_, then) => match &then.kind {
-                        StatementKind::Assign { value, .. } => value,
-                        _ => return Err(not_modelled(s.span, &s.kind)),
+                        StatementKind::Assign { value, .. } => m.text_of(value),
+                        _ => m.text_of_statement(then),
                     },
-                    _ => return Err(not_modelled(s.span, &s.kind)),
+                    _ => m.text_of_statement(s),
                 };
                 let before = match was {
                     Value::Vacant => "was vacant".to_string(),
                     v => format!("was {v}"),
                 };
-                out.notes.push(format!(
-                    "#{number} = {value} ({}), {before}",
-                    m.text_of(expr)
-                ));
+                out.notes
+                    .push(format!("#{number} = {value} ({written}), {before}"));
                 out.events.push(EventKind::VariableSet(VariableSet {
                     variable: number,
                     value: value.get(),
@@ -97,16 +118,24 @@ pub(super) fn resolve(
                     m.text_of_statement(s)
                 ));
             }
-            Outcome::Goto(_) | Outcome::While { .. } | Outcome::Do(_) | Outcome::End(_) => {
-                return Err(not_modelled(s.span, &s.kind));
+            // The run finds where these lead (behaviour 20.11–20.14).
+            Outcome::Goto(n) => machine.jump = Some(Jump::Flow(MacroJump::Goto(n))),
+            Outcome::While { holds, label } => {
+                machine.jump = Some(Jump::Flow(MacroJump::While { holds, label }));
             }
+            Outcome::Do(label) => machine.jump = Some(Jump::Flow(MacroJump::Do(label))),
+            Outcome::End(label) => machine.jump = Some(Jump::Flow(MacroJump::End(label))),
         }
     }
     let mut values = Vec::with_capacity(m.words.len());
     let increment = m.increment();
     for w in &m.words {
-        let v =
-            Evaluator::new(&mut Vars { machine, out }, options).word_value(&w.value, increment)?;
+        let mut vars = Vars {
+            machine: &mut *machine,
+            out: &mut *out,
+            message: None,
+        };
+        let v = Evaluator::new(&mut vars, options).word_value(&w.value, increment)?;
         if v.is_vacant() {
             // Fanuc: a vacant variable's address is left out (behaviour 20.4).
             out.notes.push(format!(
@@ -119,9 +148,7 @@ pub(super) fn resolve(
         values.push(v.get());
     }
     if m.words.is_empty() && block.words.is_empty() {
-        let mut empty = Block::default();
-        empty.span = block.span;
-        return Ok(empty);
+        return Ok(empty(block));
     }
     let (resolved, diagnostics) =
         syntax::resolve(block, m, &values, ParseOptions::from(machine.setup()));
@@ -134,15 +161,9 @@ pub(super) fn resolve(
     Ok(resolved)
 }
 
-/// The stop at a jump or a loop until the executor of issue 22 part 1
-/// lands: never run wrongly or passed over (behaviour 20.8).
-fn not_modelled(span: crate::diag::Span, kind: &StatementKind) -> Diagnostic {
-    Diagnostic::error(
-        "macro-not-modelled",
-        span,
-        format!(
-            "{} needs the executor of issue 22 part 1 (jumps and loops): not modelled yet; the run stops here",
-            kind.keyword()
-        ),
-    )
+/// A block of nothing in `block`'s place.
+fn empty(block: &Block) -> Block {
+    let mut empty = Block::default();
+    empty.span = block.span;
+    empty
 }

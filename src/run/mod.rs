@@ -16,6 +16,7 @@ pub(crate) mod again;
 mod ahead;
 mod calls;
 mod checkpoint;
+mod flow;
 mod macrocall;
 mod macros;
 #[cfg(not(target_arch = "wasm32"))]
@@ -116,6 +117,9 @@ struct Runner<'t> {
     /// The place of the block just run when it jumped (its report's:
     /// where it was before the jump).
     block_place: Option<Box<Place>>,
+    /// The macro loops running, once the run has met a jump or a loop
+    /// (behaviour 20.11–20.15).
+    loops: Option<Box<flow::Loops>>,
 }
 
 impl<'t> Runner<'t> {
@@ -184,11 +188,13 @@ impl<'t> Runner<'t> {
             stopped: false,
             calls: None,
             block_place: None,
+            loops: None,
         }
     }
 
     /// The calls open at checkpoint `at`, taken up (behaviour 19.9).
     fn restore_calls(&mut self, at: &Checkpoint) {
+        self.loops = at.loops.as_deref().map(flow::Saved::restore);
         let Some(saved) = at.calls.as_deref() else {
             return;
         };
@@ -251,6 +257,7 @@ impl<'t> Runner<'t> {
             machine: self.machine.clone(),
             segment: Default::default(),
             calls: self.calls.as_ref().map(|c| Box::new(c.save())),
+            loops: self.loops.as_ref().map(|l| Box::new(l.save())),
         }
     }
 
@@ -330,6 +337,8 @@ fn execute(
             let result = macrocall::call(block, m, call, machine, out, program);
             return Some(macrocall::ran(result, index, stopped));
         }
+        // A jump or a loop's statement leaves its step in the machine's
+        // `jump` (behaviour 20.11–20.14), which the runner takes.
         Some(m) => match macros::resolve(block, m, machine, out) {
             Ok(b) => {
                 resolved = b;

@@ -193,6 +193,8 @@ fn on_two_threads(text: &str, setup: &Setup, options: RunOptions) -> Option<Run>
                     // are not the ones that run next; one thread runs it
                     // (behaviour 19).
                     Some(Step::Ran(Flow::Jump)) => return None,
+                    // A macro statement's jump or loop (behaviour 20.11).
+                    Some(Step::Ran(_)) if r.machine.jump.is_some() => return None,
                     Some(Step::Ran(flow)) => {
                         let ran = (index, first_move, flow);
                         super::account(

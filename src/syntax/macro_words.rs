@@ -57,6 +57,14 @@ impl MacroBlock {
         self.source.get(s..t).unwrap_or("")
     }
 
+    /// The block's first comment, without its parentheses (the message of
+    /// `#3000 = 1 (TOOL NOT FOUND)`, behaviour 20.16).
+    pub fn comment(&self) -> Option<&str> {
+        let open = self.source.find('(')?;
+        let rest = &self.source[open + 1..];
+        Some(rest[..rest.find(')').unwrap_or(rest.len())].trim())
+    }
+
     /// The text of an expression of the block, as written.
     pub fn text_of(&self, e: &Expr) -> &str {
         let s = (e.span.start as usize).saturating_sub(self.start);

@@ -17,6 +17,11 @@ const KINDS = {
   feed: 'tok-feed', // F and S
   param: 'tok-param', // P Q L A B C E…
   comment: 'tok-comment',
+  macro: 'tok-macro', // IF WHILE GOTO DO END THEN, comparisons, functions
+  macroVariable: 'tok-variable', // #1, #[…]
+  macroBracket: 'tok-bracket', // [ ] of a macro expression
+  macroOperator: 'tok-operator', // = + - * of a macro expression
+  macroNumber: 'tok-number', // a constant of a macro expression (`3` in `[#1 LT 3]`, DO`1`)
   skip: 'tok-skip', // the / of an optional block skip
   end: 'tok-end', // ; end of block
   invalid: 'tok-invalid',
@@ -30,7 +35,14 @@ const BY_LETTER = {
   D: 'offset', H: 'offset', T: 'tool', F: 'feed', S: 'feed',
 };
 
+// (The token names are not CodeMirror's legacy ones, `variable`, `number`,
+// `bracket`, `operator`, which it would map to its own tags.)
 const WORD = /^[A-Za-z][ \t]*[+-]?[ \t]*[0-9.]*/;
+
+// Custom Macro B's keywords, operators and functions (behaviour 20): two
+// letters or more, never followed by a letter (G-code words are one letter
+// and a number, so none of these is one).
+const KEYWORD = /^(WHILE|GOTO|THEN|END|DO|IF|EQ|NE|GT|LT|GE|LE|AND|OR|XOR|MOD|SIN|COS|TAN|ASIN|ACOS|ATAN|SQRT|ABS|ROUND|FIX|FUP|LN|EXP|POW|BIN|BCD|ADP)(?![A-Za-z])/i;
 
 export const gcodeLanguage = StreamLanguage.define({
   name: 'gcode',
@@ -56,6 +68,17 @@ export const gcodeLanguage = StreamLanguage.define({
       stream.match(/^[0-9]/);
       return 'skip';
     }
+    if (stream.match(KEYWORD)) return 'macro';
+    if (stream.match(/^#[0-9]*/)) return 'macroVariable';
+    if (ch === '[' || ch === ']') {
+      stream.next();
+      return 'macroBracket';
+    }
+    if (ch === '=' || ch === '*' || ch === '+' || ch === '-' || ch === ',') {
+      stream.next();
+      return 'macroOperator';
+    }
+    if (stream.match(/^[0-9.]+/)) return 'macroNumber';
     const word = stream.match(WORD);
     if (word) return BY_LETTER[word[0][0].toUpperCase()] ?? 'param';
     stream.next();
