@@ -56,6 +56,21 @@ fn behaviour1_21_the_first_program_runs_and_the_others_are_named_and_not_run() {
 }
 
 #[test]
+fn behaviour1_21_a_program_the_run_calls_has_no_not_run_warning() {
+    // O2 is called (M98) and runs: its warning is withdrawn; O3 is not
+    // called and keeps it, at its header (line 7).
+    let text = "O1\nM98 P2\nM30\nO2\nG00 X1.\nM99\nO3\nG00 X2.\nM99\n";
+    let r = run(text, &Setup::default());
+    let warned: Vec<_> = r.diagnostics.iter().map(|d| (d.code, d.line)).collect();
+    assert_eq!(warned, vec![("program-not-run", 7)]);
+    assert!(r.diagnostics[0].message.contains("this one is not called"));
+    // A G65 call counts as well.
+    let r = run("O1\nG65 P2 A1.\nM30\nO2\nG00 X#1\nM99\n", &Setup::default());
+    assert!(r.diagnostics.is_empty(), "{:?}", r.diagnostics);
+    assert_eq!(r.moves.len(), 1);
+}
+
+#[test]
 fn behaviour1_21_every_header_form_starts_a_program() {
     for header in [":2000", "<SUB_2>", "O2000 (SUB)"] {
         let text = format!("O1000\nG00 X10.\n{header}\nG00 X50.\n");

@@ -61,6 +61,9 @@ pub(crate) struct Calls<'t> {
     /// M99s in the main program so far, and the last one's block.
     loops: u32,
     loop_span: Option<Span>,
+    /// The header lines of the programs called so far (their
+    /// `program-not-run` warning is withdrawn, behaviour 1.21).
+    called: Vec<u32>,
 }
 
 /// What a checkpoint keeps of the calls (the parsers aside).
@@ -72,6 +75,9 @@ pub(crate) struct Saved {
     stack: Vec<Frame>,
     loops: u32,
     loop_span: Option<Span>,
+    /// The header lines of the programs called so far (their
+    /// `program-not-run` warning is withdrawn, behaviour 1.21).
+    called: Vec<u32>,
 }
 
 impl<'t> Calls<'t> {
@@ -87,6 +93,7 @@ impl<'t> Calls<'t> {
             stack: self.stack.clone(),
             loops: self.loops,
             loop_span: self.loop_span,
+            called: self.called.clone(),
         }
     }
 
@@ -126,6 +133,7 @@ impl Saved {
             stack: self.stack.clone(),
             loops: self.loops,
             loop_span: self.loop_span,
+            called: self.called.clone(),
         };
         (Box::new(calls), parser)
     }
@@ -214,6 +222,9 @@ impl<'t> Runner<'t> {
                 let Some((entry, label)) = found else {
                     return Step::Ran(Flow::Jump);
                 };
+                if !local && !calls.called.contains(&entry.line()) {
+                    calls.called.push(entry.line());
+                }
                 let level = super::macrocall::enter(&mut self.machine, jump);
                 let mut site = site(&calls.current.label, &self.block);
                 if let Some(l) = &level {
@@ -355,6 +366,7 @@ impl<'t> Runner<'t> {
                 stack: Vec::new(),
                 loops: 0,
                 loop_span: None,
+                called: Vec::new(),
             }));
         }
     }
@@ -466,5 +478,16 @@ fn site(program: &str, block: &Block) -> String {
     match block.get(Address::N) {
         Some(n) => format!("{program} N{}", n.int()),
         None => format!("{program} line {}", block.span.line),
+    }
+}
+
+impl Calls<'_> {
+    /// Withdraws the `program-not-run` warning of each program the run
+    /// called: it ran (behaviour 1.21).
+    pub(super) fn withdraw_not_run(&self, diagnostics: &mut Vec<Diagnostic>) {
+        if self.called.is_empty() {
+            return;
+        }
+        diagnostics.retain(|d| !(d.code == "program-not-run" && self.called.contains(&d.line)));
     }
 }

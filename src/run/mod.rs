@@ -547,8 +547,12 @@ impl Making {
         if counted {
             counts(&mut self.run, &r);
         }
+        let calls = r.calls;
         let mut diagnostics = r.parser.into_diagnostics();
         diagnostics.append(&mut self.run_diagnostics);
+        if let Some(calls) = &calls {
+            calls.withdraw_not_run(&mut diagnostics);
+        }
         close(
             &mut self.run,
             &mut self.checkpoints.points,

@@ -213,7 +213,7 @@ impl Blocks<'_> {
             "program-not-run",
             span,
             format!(
-                "`{name}` starts {ordinal} program in this file: a file's first program runs, and the others run when a program calls them (M98 P…)"
+                "`{name}` starts {ordinal} program in this file: a file's first program runs, and the others run when a program calls them (M98 P…, G65 P…); this one is not called"
             ),
         ));
     }
