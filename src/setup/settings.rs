@@ -349,6 +349,12 @@ pub struct Settings {
     /// Optional block skip switch: when on, blocks starting with `/` are skipped.
     #[serde(skip_serializing_if = "is_default")]
     pub block_skip: bool,
+    /// Continue past errors (behaviour 2.24, 7.48): a block the run cannot
+    /// run is reported and skipped, and the run goes on; off, the run stops
+    /// at the first error as a control does (2.1). A viewer's choice, the
+    /// same on every profile.
+    #[serde(skip_serializing_if = "is_default")]
+    pub continue_past_errors: bool,
     /// `G43 H…` with no Z word (behaviour 3.3).
     #[serde(skip_serializing_if = "is_default")]
     pub length_offset_without_z: LengthOffsetWithoutZ,
