@@ -139,6 +139,7 @@ const SWITCHES = [
   { id: 'mirror_x', axis: 'x', label: 'Mirror X', machine: 'mill', help: 'Moves along X are reversed about the start point; G02/G03 turn the other way and G45–G48 follow (seed 003).' },
   { id: 'mirror_y', axis: 'y', label: 'Mirror Y', machine: 'mill', help: 'The same along Y.' },
   { id: 'block_skip', label: 'Block skip', help: 'The optional block skip switch: when on, blocks starting with / are not run.' },
+  { id: 'continue_past_errors', label: 'Continue past errors', help: 'Off, the run stops at the first error, as a control does. On, a block that cannot run is listed and skipped, the state before it kept, and the rest drawn.' },
 ];
 
 const POINTS = [
