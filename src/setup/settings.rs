@@ -355,6 +355,10 @@ pub struct Settings {
     /// same on every profile.
     #[serde(skip_serializing_if = "is_default")]
     pub continue_past_errors: bool,
+    /// `start` and `reference` left out (behaviour 7.49, 13.15); read it
+    /// with [`Settings::machine_positions`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub machine_positions: Option<super::MachinePositions>,
     /// `G43 H…` with no Z word (behaviour 3.3).
     #[serde(skip_serializing_if = "is_default")]
     pub length_offset_without_z: LengthOffsetWithoutZ,
