@@ -151,7 +151,8 @@ fn checkpointed(text: &str, setup: &Setup, every: u32) -> (Run, Checkpoints) {
 /// the whole run, the skipped count included (behaviour 10.1, 10.2).
 #[test]
 fn behaviour2_24_checkpoints_and_runs_made_again_see_the_same_skips() {
-    let text = "G90 G01 X0 Y0 F100.\nG41 D01 X5.\nY5.\nG99.9 X7.\nX10.\nX12. $$\nY10.\nG40 X0 Y0\nM30\n";
+    let text =
+        "G90 G01 X0 Y0 F100.\nG41 D01 X5.\nY5.\nG99.9 X7.\nX10.\nX12. $$\nY10.\nG40 X0 Y0\nM30\n";
     let mut setup = keep_going();
     setup.set_register("01=2.0").unwrap();
     let full = run(text, &setup);
@@ -208,13 +209,22 @@ fn behaviour2_24_check_continue_says_how_many_blocks_were_skipped() {
         .unwrap();
     let stdout = String::from_utf8(out.stdout).unwrap();
     assert_eq!(out.status.code(), Some(1), "{stdout}");
-    assert!(stdout.contains(":4:1: error[unsupported-g-code]"), "{stdout}");
+    assert!(
+        stdout.contains(":4:1: error[unsupported-g-code]"),
+        "{stdout}"
+    );
     assert!(stdout.contains(":4:1: warning[block-skipped]"), "{stdout}");
     // 7 blocks, 5 moves, path 50 mm (10 rapid + 40 feed, worked above).
     let last = stdout.lines().last().unwrap();
     assert!(last.contains(": 7 blocks, 5 moves,"), "{last}");
-    assert!(last.contains("path 50.000 mm (rapid 10.000, feed 40.000)"), "{last}");
-    assert!(last.ends_with("1 errors, 1 warnings, 1 block skipped"), "{last}");
+    assert!(
+        last.contains("path 50.000 mm (rapid 10.000, feed 40.000)"),
+        "{last}"
+    );
+    assert!(
+        last.ends_with("1 errors, 1 warnings, 1 block skipped"),
+        "{last}"
+    );
     // Without the flag the run stops at line 4 and no count is shown.
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_offsetlab"))
         .arg("check")
@@ -222,7 +232,10 @@ fn behaviour2_24_check_continue_says_how_many_blocks_were_skipped() {
         .output()
         .unwrap();
     let stdout = String::from_utf8(out.stdout).unwrap();
-    assert!(stdout.lines().last().unwrap().contains(": 3 blocks,"), "{stdout}");
+    assert!(
+        stdout.lines().last().unwrap().contains(": 3 blocks,"),
+        "{stdout}"
+    );
     assert!(!stdout.contains("skipped"), "{stdout}");
     std::fs::remove_dir_all(&dir).ok();
 }

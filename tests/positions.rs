@@ -32,7 +32,10 @@ fn behaviour13_15_g91_g28_z0_rises_to_the_top_of_the_travel() {
     // X and Y did not move: only Z returned.
     same(programmed(&r, 1), [10.0, 20.0, 508.0]);
     // Fanuc is the same machine.
-    let r = ok("G90 G00 X10. Y20. Z5.\nG91 G28 Z0.\n", &with(mill(&[]), Control::Fanuc));
+    let r = ok(
+        "G90 G00 X10. Y20. Z5.\nG91 G28 Z0.\n",
+        &with(mill(&[]), Control::Fanuc),
+    );
     same(programmed(&r, 1), [10.0, 20.0, 508.0]);
 }
 
@@ -125,7 +128,10 @@ fn behaviour13_15_set_positions_win_and_g54_moves_the_start() {
 #[test]
 fn behaviour13_15_the_document_carries_the_setting() {
     let s = Setup::from_json(r#"{"settings":{"machine_positions":"typical"}}"#).unwrap();
-    assert_eq!(s.settings.machine_positions, Some(MachinePositions::Typical));
+    assert_eq!(
+        s.settings.machine_positions,
+        Some(MachinePositions::Typical)
+    );
     assert!(s.to_json().contains("\"machine_positions\": \"typical\""));
     assert!(!Setup::default().to_json().contains("machine_positions"));
     assert!(Setup::from_json(r#"{"settings":{"machine_positions":"home"}}"#).is_err());

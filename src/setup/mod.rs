@@ -16,8 +16,8 @@ mod registers;
 mod settings;
 mod specs;
 
-use registers::register_map;
 pub use positions::MachinePositions;
+use registers::register_map;
 pub use registers::{LatheRegister, MAX_TIP, MillPart, MillRegister};
 pub use settings::*;
 
