@@ -1,7 +1,7 @@
 // Browser end-to-end test of issue 23's "a machine that starts where
 // machines start" (behaviour 13.15, setting 7.49): on the Haas profile the
 // mill starts homed at Z508 and `G91 G28 Z0.` rises there; the Settings
-// panel's Reference position moves it, Machine positions puts it back at
+// panel's Reference position moves it, Start and reference puts it back at
 // the work zero, and the share link carries what was set.
 
 import assert from 'node:assert/strict';
@@ -38,9 +38,9 @@ describe('a machine that starts where machines start', () => {
       assert.match(await page.locator('#summary').textContent(), / · X0…10 Y0…20 Z5…300$/);
       await page.locator('#settings-form [data-setting="reference"]').scrollIntoViewIfNeeded();
       await shoot(page, 'positions-panel');
-      // Machine positions: the work zero — the start stays 0 0 0 (left out)
+      // Start and reference: the work zero — the start stays 0 0 0 (left out)
       // but the reference the panel set (Z300) stays.
-      await page.getByLabel('Machine positions').selectOption('work_zero');
+      await page.getByLabel('Start and reference').selectOption('work_zero');
       await waitForRun(page);
       assert.match(await page.locator('#summary').textContent(), / · X0…10 Y0…20 Z0…300$/);
       await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(page.url()).origin });

@@ -85,7 +85,7 @@ const CHOICES = [
     help: 'G04 P3. (and a canned cycle’s dwell P): YASNAC and Fanuc take P in milliseconds without a point and refuse P3.; Haas reads P3. as 3 seconds and P3 as 3 milliseconds.',
   },
   {
-    id: 'machine_positions', label: 'Machine positions', controlDefault: true,
+    id: 'machine_positions', label: 'Start and reference', controlDefault: true,
     options: [['work_zero', 'the work zero'], ['typical', 'a typical machine']],
     help: 'Start and reference left at 0 0 0: the tool starts at the work zero and G28 returns there (YASNAC, the seeds), or as on a typical machine, homed at the top of the travel: mill X0 Y0 Z508 mm (Haas VF-2), lathe turret home X406.4 Z355.6 mm (Haas ST-10) (Fanuc, Haas).',
   },
@@ -149,8 +149,8 @@ const SWITCHES = [
 
 // Behaviour 13.15: start and reference at 0 0 0 are left out of the document, and setting machine_positions gives them.
 const POINTS = [
-  { id: 'start', label: 'Start position', help: 'Where the tool is when the program starts, in G54 coordinates (the lathe’s X is a diameter). 0 0 0: as Machine positions says.' },
-  { id: 'reference', label: 'Reference position', help: 'Where G28 (and G30 unless the document sets the others) returns to, in machine coordinates. 0 0 0: as Machine positions says.' },
+  { id: 'start', label: 'Start position', help: 'Where the tool is when the program starts, in G54 coordinates (the lathe’s X is a diameter). 0 0 0: as “Start and reference” says.' },
+  { id: 'reference', label: 'Reference position', help: 'Where G28 (and G30 unless the document sets the others) returns to, in machine coordinates. 0 0 0: as “Start and reference” says.' },
   ...WORK_SYSTEMS.map((name) => ({ id: name, label: `Work offset ${name}`, help: '', describedBy: 'works-help' })),
 ];
 
