@@ -267,9 +267,17 @@ impl<'t> Runner<'t> {
             // The text's end, or a subprogram's (behaviour 19).
             return self.program_ends();
         }
-        // The machine before the block, to go on from if it cannot run
-        // (behaviour 2.24); off, one test per block.
-        let before = self.keep_going.then(|| self.machine.clone());
+        if self.keep_going {
+            // Out of line (behaviour 2.24): off, one test per block (the
+            // `check` instruction count in docs/performance.md).
+            return self.step_keeping_going();
+        }
+        self.run_block()
+    }
+
+    /// Runs the block just read ([`Runner::step`]).
+    #[inline(always)]
+    fn run_block(&mut self) -> Option<Step> {
         let mut ahead = self.ahead.at(self.index, ahead::From::Parser(&self.parser));
         let step = execute(
             &self.block,
@@ -280,10 +288,6 @@ impl<'t> Runner<'t> {
             self.block_skip,
             (&mut ahead, &mut self.sequences),
         );
-        let step = match before {
-            None => step,
-            Some(before) => self.skip_or_stop(step, before),
-        };
         // A call or return, or the block limit (its message names a loop):
         // asked of the machine and the count, not of the step (which is
         // made in place, as `execute` says).

@@ -17,10 +17,19 @@ fn can_skip(d: Option<&Diagnostic>) -> bool {
 }
 
 impl Runner<'_> {
+    /// [`Runner::step`] with the setting on: the block runs on the machine
+    /// kept from before it, which is put back if the block cannot run.
+    #[inline(never)]
+    pub(super) fn step_keeping_going(&mut self) -> Option<Step> {
+        let before = self.machine.clone();
+        let step = self.run_block();
+        self.skip_or_stop(step, before)
+    }
+
     /// The step of a block run with the setting on: a stop at an error the
     /// run may go on past becomes a skip, with `before`, the machine as it
     /// stood before the block, put back.
-    pub(super) fn skip_or_stop(&mut self, step: Option<Step>, before: Machine) -> Option<Step> {
+    fn skip_or_stop(&mut self, step: Option<Step>, before: Machine) -> Option<Step> {
         let Some(Step::Stopped(d)) = step else {
             return step;
         };
