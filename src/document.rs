@@ -91,10 +91,22 @@ pub struct ViewState {
     /// The band the cutter sweeps is drawn (behaviour 16.20); absent: no.
     #[serde(default, skip_serializing_if = "is_false")]
     pub swept: bool,
+    /// The legend is drawn (behaviour 10.7); written only when folded
+    /// away (`false`).
+    #[serde(default = "yes", skip_serializing_if = "is_true")]
+    pub legend: bool,
 }
 
 fn is_false(b: &bool) -> bool {
     !*b
+}
+
+fn is_true(b: &bool) -> bool {
+    *b
+}
+
+fn yes() -> bool {
+    true
 }
 
 impl Default for ViewState {
@@ -104,6 +116,7 @@ impl Default for ViewState {
             zoom: 1.0,
             pan: [0.0, 0.0],
             swept: false,
+            legend: true,
         }
     }
 }
@@ -281,6 +294,7 @@ mod tests {
                 zoom: 2.5,
                 pan: [1.0, -2.0],
                 swept: true,
+                legend: false,
             }),
             step: Some(1),
         };
@@ -293,6 +307,12 @@ mod tests {
             ..ViewState::default()
         };
         assert!(!serde_json::to_string(&off).unwrap().contains("swept"));
+        // The legend is written only when folded away (behaviour 10.7), and
+        // a view without it has it.
+        assert!(d.to_json().contains("\"legend\":false"));
+        assert!(!serde_json::to_string(&off).unwrap().contains("legend"));
+        let read: ViewState = serde_json::from_str("{\"plane\":\"XY\"}").unwrap();
+        assert!(read.legend);
     }
 
     #[test]

@@ -53,6 +53,7 @@ pub const PLAIN_KEYS: &[&str] = &[
     "zoom",
     "pan",
     "swept",
+    "legend",
     "step",
     "embed",
 ];
@@ -246,6 +247,9 @@ pub fn encode_plain(doc: &Document, embed: bool) -> String {
         }
         if v.swept {
             parts.push("swept=1".to_owned());
+        }
+        if !v.legend {
+            parts.push("legend=0".to_owned());
         }
     }
     if let Some(step) = doc.step {
@@ -522,6 +526,13 @@ fn decode_plain(fragment: &str) -> Result<Link, LinkError> {
                     _ => return Err(bad(key, v, "1 or 0")),
                 }
             }
+            "legend" => {
+                view.get_or_insert_with(ViewState::default).legend = match v.trim() {
+                    "1" | "true" | "on" => true,
+                    "0" | "false" | "off" => false,
+                    _ => return Err(bad(key, v, "1 or 0")),
+                }
+            }
             "step" => {
                 doc.step = Some(
                     v.trim()
@@ -613,6 +624,7 @@ mod tests {
                 zoom: 2.0,
                 pan: [5.0, -5.0],
                 swept: true,
+                legend: false,
             }),
             step: Some(1),
         }

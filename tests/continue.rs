@@ -122,9 +122,12 @@ fn behaviour2_24_limits_and_a_missing_m99_still_stop() {
         max_blocks: 50,
         ..RunOptions::default()
     };
-    // M99 in the main program loops for ever (19.4); the bad block in the
-    // loop is skipped each time round and the limit ends it.
-    let r = run_with("G91 G01 X1. F100.\nG99.9\nM99\n", &keep_going(), options);
+    // M99 in the main program loops for ever as the control does (19.4,
+    // setting 7.42 `loop`); the bad block in the loop is skipped each time
+    // round and the limit ends it.
+    let mut looping = keep_going();
+    looping.settings.main_m99 = Some(offsetlab::setup::MainM99::Loop);
+    let r = run_with("G91 G01 X1. F100.\nG99.9\nM99\n", &looping, options);
     assert!(codes(&r).contains(&"too-many-blocks"), "{:?}", codes(&r));
     assert!(matches!(r.end, End::Error { .. }));
     // Two blocks run per time round (lines 1 and 3) and one is skipped:

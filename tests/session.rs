@@ -724,3 +724,129 @@ fn behaviour18_2_the_nose_circle_is_drawn_about_the_nose_centre() {
     s.set_step(9);
     assert_eq!(s.scene().cutter, None);
 }
+
+#[test]
+fn behaviour10_7_the_legend_folds_away_and_the_path_gets_the_whole_view() {
+    // A 170 × 100 rectangle, about the shape of a 470 × 280 view (the
+    // drawing of a 720 × 420 lesson frame): fitted to the whole view it
+    // would run under the legend in the top right corner, so with the
+    // legend it is fitted beside it or below it, both much smaller; folded
+    // away, the whole view less the margins is the plot, and it is drawn
+    // larger.
+    let mut s = Session::new();
+    run(&mut s, "G01 X170. F100.\nY100.\nX0\nY0\nM30\n", None);
+    let draw = |s: &Session| {
+        let mut svg = SvgSurface::new();
+        let frame = render::draw_scene(&mut svg, s.toolpath(), s.scene(), 470.0, 280.0);
+        (frame, svg.finish(470.0, 280.0))
+    };
+    let (shown, with) = draw(&s);
+    assert!(with.contains("<g class=\"legend\">"));
+    assert!(!s.document().to_json().contains("legend"));
+    let v = s.set_view(&view_change(r#"{"legend":false}"#));
+    assert_eq!(v.legend, Some(false));
+    let (folded, without) = draw(&s);
+    assert!(
+        !without.contains("class=\"legend\""),
+        "a legend while folded"
+    );
+    // The plot is the whole view less the margins: it holds the legend's
+    // corner, which the plot beside or below it does not.
+    assert!(folded.plot.x + folded.plot.w > shown.legend.x);
+    assert!(folded.plot.y < shown.legend.y + shown.legend.h);
+    assert!(
+        folded.transform.scale > 1.2 * shown.transform.scale,
+        "{} vs {}",
+        folded.transform.scale,
+        shown.transform.scale
+    );
+    // Kept in the document (written only when folded) and back on request.
+    assert!(s.document().to_json().contains("\"legend\":false"));
+    s.set_view(&view_change(r#"{"legend":true}"#));
+    let (again, _) = draw(&s);
+    assert_eq!(again.transform.scale, shown.transform.scale);
+    assert!(!s.document().to_json().contains("legend"));
+}
+
+/// The centres of the rings in the drawing's `holes` group.
+fn rings(svg: &str) -> Vec<(f64, f64)> {
+    let Some(group) = svg
+        .split("<g class=\"holes\">")
+        .nth(1)
+        .and_then(|rest| rest.split("</g>").next())
+    else {
+        return Vec::new();
+    };
+    group
+        .split("<circle ")
+        .skip(1)
+        .map(|c| {
+            let attr = |name: &str| -> f64 {
+                let start = c.find(&format!("{name}=\"")).unwrap() + name.len() + 2;
+                c[start..].split('"').next().unwrap().parse().unwrap()
+            };
+            (attr("cx"), attr("cy"))
+        })
+        .collect()
+}
+
+#[test]
+fn behaviour6_11_each_canned_cycle_hole_is_a_ring_in_the_top_view() {
+    // G81 at X10 Y10 and X30 Y10 (G99: back to R2 between them), a G83
+    // peck hole at X50 Y20 (Q2 to Z-6: three pecks, one hole), then a
+    // plunge written by hand at X80 Y80 (G00, then G01 Z-5 in a block of
+    // its own), which is not a hole. Three rings, at the holes' X Y.
+    let mut s = Session::new();
+    let text = "G90 G00 X0 Y0 Z10.\nG99 G81 X10. Y10. Z-5. R2. F100.\nX30.\nG83 X50. Y20. Z-6. R2. Q2.\nG80\nG00 X80. Y80.\nG01 Z-5. F100.\nX90.\nG00 Z10.\nM30\n";
+    let answer = run(&mut s, text, None);
+    assert_eq!(answer["summary"]["errors"], json!(0), "{answer}");
+    let draw = |s: &Session| {
+        let mut svg = SvgSurface::new();
+        let frame = render::draw_scene(&mut svg, s.toolpath(), s.scene(), 800.0, 600.0);
+        (frame, svg.finish(800.0, 600.0))
+    };
+    let (frame, svg) = draw(&s);
+    assert!(frame.holes);
+    let found = rings(&svg);
+    let expected: Vec<(f64, f64)> = [(10.0, 10.0), (30.0, 10.0), (50.0, 20.0)]
+        .iter()
+        .map(|&(x, y)| frame.transform.to_screen(x, y))
+        .collect();
+    assert_eq!(found.len(), 3, "{found:?}");
+    for ((fx, fy), (ex, ey)) in found.iter().zip(&expected) {
+        // The SVG writes two decimals.
+        assert!(
+            (fx - ex).abs() < 0.01 && (fy - ey).abs() < 0.01,
+            "{found:?} vs {expected:?}"
+        );
+    }
+    assert!(
+        svg.contains("hole (canned cycle)"),
+        "the legend names them: {}",
+        svg.split("<g class=\"legend\">").nth(1).unwrap_or("")
+    );
+    // Seen from the front (XZ) the holes are lines, not points: no rings.
+    s.set_view(&view_change(r#"{"plane":"XZ"}"#));
+    let (frame, svg) = draw(&s);
+    assert!(!frame.holes);
+    assert!(rings(&svg).is_empty());
+    assert!(!svg.contains("hole (canned cycle)"));
+    // Stepped to the first hole's block, the later rings are drawn in the
+    // colour of moves not run yet.
+    s.set_view(&view_change(r#"{"plane":"XY","step":1}"#));
+    let (_, svg) = draw(&s);
+    let group = svg.split("<g class=\"holes\">").nth(1).unwrap();
+    let group = group.split("</g>").next().unwrap();
+    let drilled = render::style::LIGHT.actual_feed;
+    let ahead = render::style::LIGHT.ghost;
+    assert_eq!(
+        group.matches(&format!("stroke=\"{drilled}\"")).count(),
+        1,
+        "{group}"
+    );
+    assert_eq!(
+        group.matches(&format!("stroke=\"{ahead}\"")).count(),
+        2,
+        "{group}"
+    );
+}

@@ -79,6 +79,8 @@ fn document() -> impl Strategy<Value = Document> {
                         pan: [a as f64 / 4.0, b as f64 / 4.0],
                         // The swept width (behaviour 16.20), on for half the pans.
                         swept: a % 2 == 0,
+                        // The legend folded away (behaviour 10.9) for some.
+                        legend: b % 3 != 0,
                     }),
                     step,
                 }

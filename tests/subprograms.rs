@@ -10,7 +10,7 @@
 mod common;
 use common::*;
 use offsetlab::report::Run;
-use offsetlab::setup::{Control, SubprogramP};
+use offsetlab::setup::{Control, MainM99, SubprogramP};
 use offsetlab::view::block_view;
 use offsetlab::{Checkpoints, End, RunOptions, Setup, report_at, run, run_observed, run_with};
 
@@ -312,7 +312,9 @@ fn behaviour19_8_a_runaway_m99_loop_stops_at_the_block_limit_at_its_line() {
         max_blocks: 1000,
         ..RunOptions::default()
     };
-    let r = run_with(text, &Setup::default(), options);
+    let mut looping = Setup::default();
+    looping.settings.main_m99 = Some(MainM99::Loop);
+    let r = run_with(text, &looping, options);
     assert_eq!(r.block_count, 1000);
     // X+1 per pass: blocks 1, 4, …, 997 moved, (997 - 1) / 3 + 1 = 333.
     assert_eq!(r.moves.len(), 333);
@@ -334,6 +336,42 @@ fn behaviour19_8_a_runaway_m99_loop_stops_at_the_block_limit_at_its_line() {
         r.blocks[998].explanation(),
         "M99 in the main program: back to its start (333 times)."
     );
+}
+
+#[test]
+fn behaviour7_42_m99_in_the_main_program_ends_the_run_after_one_pass() {
+    // Left out, main_m99 is `once` on every profile: the pass is drawn
+    // (X+1 from X0: one move to X1) and the run ends at the M99's line,
+    // which says what the control would do.
+    let text = "O1\nG91 G01 X1. F100\nM99\n";
+    for control in [Control::Yasnac, Control::Fanuc, Control::Haas] {
+        let r = ok(text, &with_control(control));
+        assert_eq!(r.block_count, 3);
+        assert_eq!(r.moves.len(), 1);
+        assert_eq!(r.end, End::ProgramEnd { line: 3 });
+        assert!(
+            r.blocks[2]
+                .explanation()
+                .starts_with("M99 in the main program: a control goes back to its start and runs the program again until it is stopped"),
+            "{}",
+            r.blocks[2].explanation()
+        );
+    }
+    // M99 P20 in the main program: the note names the block it would go
+    // on at; the blocks after the M99 never run.
+    let r = ok(
+        "O1\nN20 G91 G01 X1. F100\nM99 P20\nX5.\n",
+        &Setup::default(),
+    );
+    assert_eq!(r.moves.len(), 1);
+    assert!(r.blocks[2].explanation().contains("goes on at N20"));
+    // In a subprogram M99 returns as before, whatever the setting.
+    let r = ok(
+        "O1\nM98 P2\nG00 X0\nM30\nO2\nG00 X7.\nM99\n",
+        &Setup::default(),
+    );
+    assert_eq!(r.moves.len(), 2);
+    assert_eq!(r.end, End::ProgramEnd { line: 4 });
 }
 
 #[test]

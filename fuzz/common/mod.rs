@@ -443,6 +443,7 @@ pub fn round_trip(data: &[u8]) {
                 f64::from(i16_at(data, 6)) / 8.0,
             ],
             swept: flags & 32 != 0,
+            legend: flags & 64 == 0,
         });
     }
     if flags & 8 != 0 {

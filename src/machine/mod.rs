@@ -40,9 +40,10 @@ use crate::offsets::cutter::CutterState;
 use crate::offsets::lathe::LatheState;
 use crate::offsets::length::LengthState;
 use crate::offsets::position::PositionState;
-use crate::setup::{MachineKind, Setup, Units};
+use crate::setup::{MachineKind, MainM99, Setup, Units};
 use crate::syntax::codes::{MCode, NonModal};
 use crate::syntax::{Address, Block};
+use calls::Jump;
 use modal::Modal;
 use std::sync::Arc;
 
@@ -361,6 +362,21 @@ impl Machine {
         // `rest` has no call left: this runs it as any block.
         let flow = self.execute(&rest, index, out, ahead, program)?;
         if flow == Flow::End {
+            return Ok(Some(Flow::End));
+        }
+        if let Jump::Return { to } = jump
+            && program.depth() == 0
+            && self.setup.settings.main_m99() == MainM99::Once
+        {
+            // Behaviour 19.4, setting 7.42: the control would go round
+            // again until stopped; one pass is the drawing.
+            let whither = match to {
+                Some(n) => format!("on at N{n}"),
+                None => "back to its start".to_string(),
+            };
+            out.notes.push(format!(
+                "M99 in the main program: a control goes {whither} and runs the program again until it is stopped; offsetlab ends the run after this pass (setting main_m99 = loop repeats it)"
+            ));
             return Ok(Some(Flow::End));
         }
         self.jump = Some(jump);

@@ -226,19 +226,32 @@ pub(super) fn draw_scale_bar(s: &mut impl Surface, f: &Frame, tp: &Toolpath) {
 }
 
 /// How many rows the legend has (the frame leaves room for them).
-pub(super) fn legend_row_count(plane: Plane, t: &Theme, tool_row: bool, compact: bool) -> usize {
-    legend_rows(plane, t, tool_row, compact).len()
+pub(super) fn legend_row_count(
+    plane: Plane,
+    t: &Theme,
+    tool_row: bool,
+    compact: bool,
+    holes: bool,
+) -> usize {
+    legend_rows(plane, t, tool_row, compact, holes).len()
 }
 
 /// What a legend row shows beside its label.
 #[derive(Clone, Copy, Debug, PartialEq)]
-enum Key {
+pub(super) enum Key {
     Line(Stroke),
     Arrow(Stroke),
     Tool,
+    Hole,
 }
 
-fn legend_rows(plane: Plane, t: &Theme, tool_row: bool, compact: bool) -> Vec<(Key, &'static str)> {
+fn legend_rows(
+    plane: Plane,
+    t: &Theme,
+    tool_row: bool,
+    compact: bool,
+    holes: bool,
+) -> Vec<(Key, &'static str)> {
     let mut rows = if compact {
         vec![
             (Key::Line(t.actual_feed()), "actual"),
@@ -261,6 +274,7 @@ fn legend_rows(plane: Plane, t: &Theme, tool_row: bool, compact: bool) -> Vec<(K
             if compact { "centre" } else { "centre line" },
         ));
     }
+    rows.extend(super::holes::legend_row(holes, compact));
     if tool_row {
         rows.push((
             Key::Tool,
@@ -275,6 +289,9 @@ fn legend_rows(plane: Plane, t: &Theme, tool_row: bool, compact: bool) -> Vec<(K
 }
 
 pub(super) fn draw_legend(s: &mut impl Surface, f: &Frame, tp: &Toolpath) {
+    if !f.legend_shown {
+        return;
+    }
     let r = f.legend;
     let t = f.theme;
     s.begin_group("legend");
@@ -293,7 +310,7 @@ pub(super) fn draw_legend(s: &mut impl Surface, f: &Frame, tp: &Toolpath) {
     };
     let mut y = r.y + LEGEND_PAD + LEGEND_ROW - 4.0;
     s.fill_text(&title, r.x + LEGEND_PAD, y, &bold);
-    for (key, text) in legend_rows(f.plane, t, f.tool_row, f.compact) {
+    for (key, text) in legend_rows(f.plane, t, f.tool_row, f.compact, f.holes) {
         y += LEGEND_ROW;
         let mid = y - 4.0;
         let (x0, x1) = (r.x + LEGEND_PAD, r.x + LEGEND_PAD + 30.0);
@@ -306,6 +323,7 @@ pub(super) fn draw_legend(s: &mut impl Surface, f: &Frame, tp: &Toolpath) {
             }
             Key::Arrow(stroke) => scene::arrow(s, &stroke, (x0 + 4.0, mid), (x1, mid)),
             Key::Tool => scene::tool_symbol(s, t, (x0 + 15.0, mid)),
+            Key::Hole => super::holes::hole_symbol(s, f, (x0 + 15.0, mid)),
         }
         s.fill_text(text, r.x + LEGEND_PAD + 38.0, y, &label);
     }

@@ -17,6 +17,7 @@ mod annotate;
 #[cfg(target_arch = "wasm32")]
 pub mod canvas;
 pub mod display;
+mod holes;
 mod kept;
 mod paths;
 pub mod raster;
@@ -196,6 +197,11 @@ pub struct Frame {
     pub tool_row: bool,
     /// The short legend of small views (embedded lessons, phones).
     pub compact: bool,
+    /// The legend is drawn (not folded away, behaviour 10.7).
+    pub legend_shown: bool,
+    /// The path has holes seen as points in this plane (behaviour 6.11):
+    /// their rings are drawn, and the legend has their row.
+    pub holes: bool,
 }
 
 impl Frame {
@@ -205,11 +211,12 @@ impl Frame {
     /// of the area beside the legend and the area below it, so the legend
     /// never covers the path.
     pub fn fit(toolpath: &Toolpath, plane: Plane, width: f64, height: f64) -> Frame {
-        Frame::fit_with(toolpath, plane, width, height, &style::LIGHT, false)
+        Frame::fit_with(toolpath, plane, width, height, &style::LIGHT, false, true)
     }
 
     /// [`Frame::fit`] with a colour scheme and, when `tool_row`, room in
-    /// the legend for the tool marker.
+    /// the legend for the tool marker; without `legend` (folded away) the
+    /// path gets the whole surface less the margins.
     pub fn fit_with(
         toolpath: &Toolpath,
         plane: Plane,
@@ -217,6 +224,7 @@ impl Frame {
         height: f64,
         theme: &'static Theme,
         tool_row: bool,
+        legend_shown: bool,
     ) -> Frame {
         let width = if width.is_finite() {
             width.max(1.0)
@@ -231,14 +239,19 @@ impl Frame {
         // A full legend would take a third of a small view and squeeze the
         // path beside it; small views get the short one.
         let compact = width < COMPACT_BELOW.0 || height < COMPACT_BELOW.1;
-        let rows = legend_row_count(plane, theme, tool_row, compact) as f64 + 1.0;
+        let holes = holes::has_holes(toolpath, plane);
+        let rows = legend_row_count(plane, theme, tool_row, compact, holes) as f64 + 1.0;
         let legend_h = rows * LEGEND_ROW + 2.0 * LEGEND_PAD;
         let legend_w = if compact {
             LEGEND_WIDTH_COMPACT
         } else {
             LEGEND_WIDTH
         };
-        let legend = Rect::new(width - legend_w - 10.0, 10.0, legend_w, legend_h);
+        let legend = if legend_shown {
+            Rect::new(width - legend_w - 10.0, 10.0, legend_w, legend_h)
+        } else {
+            Rect::new(width - 10.0, 10.0, 0.0, 0.0)
+        };
         let (l, r, t, b) = MARGIN;
         let full = Rect::new(l, t, (width - l - r).max(1.0), (height - t - b).max(1.0));
         let beside = Rect::new(l, t, legend.x - 12.0 - l, full.h);
@@ -255,7 +268,7 @@ impl Frame {
             let (plot, t) = fit(full);
             let drawn = t.screen_rect(&extent);
             let inflated = Rect::new(drawn.x - 4.0, drawn.y - 4.0, drawn.w + 8.0, drawn.h + 8.0);
-            if !inflated.intersects(&legend) {
+            if !legend_shown || !inflated.intersects(&legend) {
                 (plot, t)
             } else {
                 [beside, below]
@@ -276,6 +289,8 @@ impl Frame {
             theme,
             tool_row,
             compact,
+            legend_shown,
+            holes,
         }
     }
 
@@ -404,6 +419,7 @@ fn draw_scene_as(
         draw_paths(surface, &frame, toolpath, scene, split);
     }
     if !moved {
+        holes::draw_holes(surface, &frame, toolpath, split);
         scene::draw_arrows(surface, &frame, toolpath, split);
     }
     if let Some(marker) = scene.marker {

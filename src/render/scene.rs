@@ -60,6 +60,9 @@ pub struct Scene {
     /// Draw the band the cutter sweeps along the current block (behaviour
     /// 16.20): off unless asked for.
     pub swept: bool,
+    /// The legend is folded away (behaviour 10.7): the path gets the
+    /// whole surface, and nothing covers it.
+    pub legend_folded: bool,
     /// Colours.
     pub theme: &'static Theme,
 }
@@ -74,6 +77,7 @@ impl Default for Scene {
             marker: None,
             cutter: None,
             swept: false,
+            legend_folded: false,
             theme: &LIGHT,
         }
     }
@@ -101,7 +105,15 @@ impl Scene {
     /// always has the tool marker's row, so the drawing does not jump when
     /// stepping starts.
     pub fn fitted(&self, tp: &Toolpath, width: f64, height: f64) -> Frame {
-        Frame::fit_with(tp, self.plane, width, height, self.theme, true)
+        Frame::fit_with(
+            tp,
+            self.plane,
+            width,
+            height,
+            self.theme,
+            true,
+            !self.legend_folded,
+        )
     }
 
     /// The layout with this scene's zoom and pan.

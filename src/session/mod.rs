@@ -388,14 +388,15 @@ impl Session {
             if r == 0.0 { 0.0 } else { r }
         });
         let swept = scene.swept;
-        let view = (plane != default_plane || zoom != 1.0 || pan != [0.0, 0.0] || swept).then_some(
-            ViewState {
+        let legend = !scene.legend_folded;
+        let view = (plane != default_plane || zoom != 1.0 || pan != [0.0, 0.0] || swept || !legend)
+            .then_some(ViewState {
                 plane,
                 zoom,
                 pan,
                 swept,
-            },
-        );
+                legend,
+            });
         Document {
             setup: self.last.setup.clone(),
             program: self.last.text.clone(),

@@ -34,6 +34,9 @@ pub struct ViewChange {
     /// G41/G42 is on (behaviour 16.20).
     #[serde(default)]
     pub swept: Option<bool>,
+    /// The legend is drawn (true) or folded away (false), behaviour 10.7.
+    #[serde(default)]
+    pub legend: Option<bool>,
 }
 
 /// A frame asked for, its sizes clamped to what a canvas can be.
@@ -233,6 +236,7 @@ impl View {
             pan: Some(self.scene.pan),
             step: self.scene.step.map(i64::from),
             swept: Some(self.scene.swept),
+            legend: Some(!self.scene.legend_folded),
         }
     }
 
@@ -250,6 +254,9 @@ impl View {
         }
         if let Some(swept) = change.swept {
             self.scene.swept = swept;
+        }
+        if let Some(legend) = change.legend {
+            self.scene.legend_folded = !legend;
         }
         if let Some(step) = change.step {
             self.set_step(run, i32::try_from(step).unwrap_or(i32::MAX));

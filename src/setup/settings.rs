@@ -349,14 +349,10 @@ pub struct Settings {
     /// Optional block skip switch: when on, blocks starting with `/` are skipped.
     #[serde(skip_serializing_if = "is_default")]
     pub block_skip: bool,
-    /// Continue past errors (behaviour 2.24, 7.48): a block the run cannot
-    /// run is reported and skipped, and the run goes on; off, the run stops
-    /// at the first error as a control does (2.1). A viewer's choice, the
-    /// same on every profile.
+    /// Skip a block that cannot run and go on (behaviour 2.24, 7.48).
     #[serde(skip_serializing_if = "is_default")]
     pub continue_past_errors: bool,
-    /// `start` and `reference` left out (behaviour 7.49, 13.15); read it
-    /// with [`Settings::machine_positions`].
+    /// `start`, `reference` left out (7.49, 13.15): `machine_positions()`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub machine_positions: Option<super::MachinePositions>,
     /// `G43 H…` with no Z word (behaviour 3.3).
@@ -466,6 +462,10 @@ pub struct Settings {
     /// 19.6); read it with [`Settings::subprogram_nesting`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub subprogram_nesting: Option<u8>,
+    /// What M99 in the main program does (behaviour 7.42, 19.4); read it
+    /// with [`Settings::main_m99`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub main_m99: Option<MainM99>,
 }
 
 impl Settings {
@@ -570,6 +570,15 @@ impl Settings {
             Control::Haas => SubprogramP::Number,
             Control::Yasnac | Control::Fanuc => SubprogramP::RepeatAndNumber,
         })
+    }
+
+    /// What M99 in the main program does (behaviour 7.42): every control
+    /// goes back to the program's start and runs it again until the
+    /// operator stops it (Fanuc 0i-MF/TF, "Subprogram call": M99 in a main
+    /// program; Haas mill operator's manual, M99 "loop"); a viewer draws
+    /// one pass unless asked for the loop, the same on every profile.
+    pub fn main_m99(&self) -> MainM99 {
+        self.main_m99.unwrap_or(MainM99::Once)
     }
 
     /// How many subprogram calls may be open at once (behaviour 7.37):
@@ -776,6 +785,18 @@ pub enum PolarInterpolation {
     /// X a radius, Y the hypothetical axis, G00 allowed (Haas G112, "XY to
     /// XC").
     Haas,
+}
+
+/// What M99 in the main program does (behaviour 7.42).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum MainM99 {
+    /// The run ends at the M99, after one pass, with a note that the
+    /// control would repeat the program.
+    Once,
+    /// Back to the start (or to N of its P) as the control goes, until the
+    /// run's block limit.
+    Loop,
 }
 
 /// How M98's P reads (behaviour 7.36).

@@ -64,13 +64,27 @@ describe('embed mode', () => {
       assert.equal(await frame.evaluate(() => window.offsetlab.setup().offsets['01']), 6);
       await frame.waitForFunction(() => JSON.parse(document.body.dataset.view ?? '{}').step === 2);
       assert.equal(await frame.locator('#step-position').textContent(), 'block 3 of 8 · line 3');
-      // Only the drawing, the step controls and the editor are shown.
-      for (const hidden of ['#examples', '#share-open', '#open-file-button', '#help-toggle', '.panels', '#export', '#undo', '#summary', '#example-note']) {
+      // The drawing, the step controls, the editor and the current block's
+      // state with its sentence (the lesson's teaching content, issue 23);
+      // not the playground's tools, offsets, settings or diagnostics.
+      for (const hidden of ['#examples', '#share-open', '#open-file-button', '#help-toggle', '#offsets-panel', '#settings-panel', '#diagnostics', '#export', '#undo', '#summary', '#example-note']) {
         assert.equal(await frame.locator(hidden).isVisible(), false, `${hidden} hidden`);
       }
-      for (const shown of ['#view', '#step-next', '#step-slider', '#plane', '.cm-content', '#open-playground']) {
+      for (const shown of ['#view', '#step-next', '#step-slider', '#plane', '.cm-content', '#open-playground', '#state-panel .explanation']) {
         assert.equal(await frame.locator(shown).isVisible(), true, `${shown} shown`);
       }
+      // Block 3, G01 G47 X80. with D01 = 6: G47 extends the move twice the
+      // offset, so the sentence names G47 and the state panel the register.
+      const why = await frame.locator('#state-panel .explanation').textContent();
+      assert.match(why, /G47/, why);
+      // It is inside the frame, under the program (the left column).
+      const placed = await frame.evaluate(() => {
+        const b = document.querySelector('#state-panel .explanation').getBoundingClientRect();
+        const e = document.getElementById('editor').getBoundingClientRect();
+        return { top: b.top, bottom: b.bottom, left: b.left, editorBottom: e.bottom, innerWidth, innerHeight };
+      });
+      assert.ok(placed.top >= placed.editorBottom && placed.bottom <= placed.innerHeight
+        && placed.left < placed.innerWidth / 2, JSON.stringify(placed));
       // Sized to its frame: nothing scrolls, the drawing takes most of it.
       const fit = await frame.evaluate(() => ({
         width: document.documentElement.scrollWidth, height: document.documentElement.scrollHeight,

@@ -99,6 +99,13 @@ describe('large programs', () => {
       await page.locator('#step-previous').click();
       await waitForView(page, (v) => v.step === 599_998);
       assert.match(await stateText(page, 'block'), /^line 599999: G0[12] X/);
+      // 9 MB is more than the page saves: the storage banner says so, and
+      // not that the browser's storage is full (issue 23).
+      const banner = page.locator('#storage-banner');
+      await banner.waitFor({ state: 'visible', timeout: 20_000 });
+      const said = await banner.locator('.text').textContent();
+      assert.match(said, /^This program \(\d+\.\d million characters\) is larger than the page saves in the browser \(5\.0 million\): it stays open until you close the page/);
+      assert.doesNotMatch(said, /storage is full/);
     }, { init: 'window.offsetlabTest = { progressAfterMs: 0 };' });
   });
 

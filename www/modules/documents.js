@@ -30,6 +30,10 @@ export function viewOf(w) {
     zoom: v.zoom ?? 1,
     pan: v.pan ?? [0, 0],
     step: v.step ?? -1,
+    // The view's options, each as the document has it (absent: off, and
+    // the legend shown), so a document opened does not keep the last one's.
+    swept: Boolean(v.swept),
+    legend: v.legend !== false,
   };
 }
 

@@ -134,6 +134,11 @@ const CHOICES = [
     help: 'A block whose offset path runs backwards (a groove or an inside arc smaller than the tool) stops the program, as Fanuc parameter CNC = 0 does; off draws the overcut with a warning.',
   },
   {
+    id: 'main_m99', label: 'M99 in the main program',
+    options: [['once', 'one pass, then end'], ['loop', 'loop (the control)']],
+    help: 'Every control goes back to the start and runs the program again until stopped. One pass draws it once and ends there; loop repeats it until the run’s block limit.',
+  },
+  {
     id: 'lathe_x_offset', label: 'Lathe X offsets', machine: 'lathe',
     options: [['diameter', 'diameter values'], ['radius', 'radius values']],
     help: 'X values of the lathe offset table are diameters, or radii that are doubled on the diameter axis.',

@@ -138,7 +138,13 @@ function flush() {
   // again each time (bench-browser target 3). The message stays up.
   if (tooLarge !== null && work.program === tooLarge) return;
   if (work.program.length > MAX_SAVED_CHARS) {
-    refused({ name: 'QuotaExceededError' }, work.program);
+    // Not a full storage: no browser keeps a program this large for a
+    // page, so say what is true — it is open, and not kept.
+    failing = true;
+    tooLarge = work.program;
+    document.body.dataset.saveFailed = 'true';
+    const mb = (n) => (n / (1024 * 1024)).toFixed(1);
+    onProblem(`This program (${mb(work.program.length)} million characters) is larger than the page saves in the browser (${mb(MAX_SAVED_CHARS)} million): it stays open until you close the page, and is not restored on your next visit. Open it again from its file then.`);
     return;
   }
   try {

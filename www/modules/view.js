@@ -15,7 +15,8 @@ let state = { plane: 'XY', zoom: 1, pan: [0, 0], step: null };
 const listeners = new Set();
 
 /** The view state last drawn: { plane, zoom, pan: [u, v], step }, and
- * `swept: true` while the cutter's swept width is drawn (behaviour 16.20). */
+ * `swept: true` while the cutter's swept width is drawn (behaviour 16.20),
+ * `legend: false` while the legend is folded away (behaviour 10.7). */
 export function viewState() {
   return { ...state, pan: [...state.pan] };
 }
@@ -31,10 +32,13 @@ export function viewReported(view) {
   state = { plane: view.plane, zoom: view.zoom, pan: view.pan, step: view.step };
   // Only when on, so the documents and links of views without it stay as they were.
   if (view.swept) state.swept = true;
+  if (view.legend === false) state.legend = false;
   const select = document.getElementById('plane');
   if (select && select.value !== state.plane) select.value = state.plane;
   const swept = document.getElementById('swept');
   if (swept) swept.checked = Boolean(view.swept);
+  const legend = document.getElementById('legend');
+  if (legend) legend.checked = view.legend !== false;
   document.body.dataset.view = JSON.stringify(state);
   for (const f of listeners) f(viewState());
 }
@@ -73,6 +77,9 @@ export function initView(canvas, postMessage) {
   });
   document.getElementById('swept').addEventListener('change', (event) => {
     send('set', { view: { swept: event.target.checked } });
+  });
+  document.getElementById('legend').addEventListener('change', (event) => {
+    send('set', { view: { legend: event.target.checked } });
   });
 }
 
