@@ -115,6 +115,28 @@ pub fn from_center(
     })
 }
 
+/// [`from_center`] where the caller has measured and checked the radii:
+/// `r0` the start's distance from the centre (over [`SAME_POINT`]), the
+/// end's within the tolerance of it. The angles alone are worked out
+/// (cutter compensation ends an arc at its corner at every arc block in
+/// offset mode: the `check` instruction count with G41, docs/performance.md).
+pub fn from_center_measured(start: P2, end: P2, center: P2, r0: f64, ccw: bool) -> Circle {
+    let (dx, dy) = (start[0] - end[0], start[1] - end[1]);
+    let full = (dx * dx + dy * dy).sqrt() < SAME_POINT;
+    let a0 = angle(center, start);
+    let sweep = if full {
+        sweep_between(a0, a0, ccw, true)
+    } else {
+        sweep_between(a0, angle(center, end), ccw, false)
+    };
+    Circle {
+        center,
+        radius: r0,
+        start_angle: a0,
+        sweep,
+    }
+}
+
 /// The centre of the R arc from `start` to `end` (`d` apart, more than 0;
 /// |R| at least `d` / 2), and its distance from the chord.
 #[inline]

@@ -17,12 +17,23 @@ impl Machine {
     /// will run them, until one moves in the plane, past at most
     /// `cutter_blocks_without_motion` blocks that do not.
     pub(super) fn cutter_next(&self, ahead: &mut dyn Ahead, out: &mut Out) -> Next {
+        let offset = self.cutter_offset(self.state.cutter.mode, self.state.cutter.radius);
+        self.cutter_next_with(ahead, out, offset)
+    }
+
+    /// [`Machine::cutter_next`] where the block has worked out its offset
+    /// (`offset`, from the mode and register it read).
+    pub(super) fn cutter_next_with(
+        &self,
+        ahead: &mut dyn Ahead,
+        out: &mut Out,
+        offset: f64,
+    ) -> Next {
         // A plain move next (most blocks) needs no copy and no scratch.
         if let Some(next) = ahead.peek(0)
             && let Some(path) = self.plain_next_path(next, self.state.modal.motion)
         {
             // A plain move reads the register this block read.
-            let offset = self.cutter_offset(self.state.cutter.mode, self.state.cutter.radius);
             return Next::Move { path, offset };
         }
         if let Some(next) = self.plain_past_still(ahead) {

@@ -58,7 +58,7 @@ impl Machine {
             CutterStartUp::B => Type::B,
         };
         let o = words.offset;
-        let next = self.cutter_next(ahead, out);
+        let next = self.cutter_next_with(ahead, out, o);
         let (rule, next_path) = match next {
             Next::Move { path: n, .. } => (Rule::StartUp(t), Some(n)),
             Next::Unknown(why) => {
@@ -95,7 +95,7 @@ impl Machine {
             CutterOutsideCorner::Vectors => Outside::Vectors,
             CutterOutsideCorner::Arc => Outside::Arc,
         };
-        let next = self.cutter_next(ahead, out);
+        let next = self.cutter_next_with(ahead, out, o);
         // The rule first, the corner once: a corner is a few hundred bytes,
         // made at every block in offset mode.
         let (rule, next_path, o2, cancels) = match next {
@@ -113,15 +113,19 @@ impl Machine {
                 (Rule::Perpendicular, path, o, false)
             }
         };
-        let corner = match geo::corner(&path, &next_path, o, o2, rule) {
+        // Borrowed where it was made, not moved out of the result (a copy
+        // of the whole corner at every block: the `check` instruction count
+        // with G41, docs/performance.md).
+        let made = geo::corner(&path, &next_path, o, o2, rule);
+        let corner = match &made {
             Ok(c) => c,
             Err(NoIntersection) => return Err(self.no_intersection(b, o)),
         };
         out.note(|| {
             if cancels {
-                crc::before_cancel_note(&words, t, &corner, &path, &next_path)
+                crc::before_cancel_note(&words, t, corner, &path, &next_path)
             } else {
-                crc::corner_note(&words, &corner, &path, &next_path, o2)
+                crc::corner_note(&words, corner, &path, &next_path, o2)
             }
         });
         if before.radius != self.state.cutter.radius {
@@ -131,7 +135,7 @@ impl Machine {
                 show(self.state.cutter.radius.abs(), self.units())
             ));
         }
-        self.apply_corner(b, out, i, &corner, true)
+        self.apply_corner(b, out, i, corner, true)
     }
 
     /// The corner by `rule`, or the alarm when an intersection it needs
@@ -312,9 +316,8 @@ impl Machine {
                     ),
                 ));
             }
-            let circle = arc::from_center(a0, a1, c, ccw, tol).map_err(|_| {
-                self.error("cutter-arc-radius", b.span, "the offset arc cannot be made")
-            })?;
+            // Both radii measured and checked above.
+            let circle = arc::from_center_measured(a0, a1, c, r0, ccw);
             let path = Path::Arc {
                 from: p(m.programmed_from),
                 to: p(m.programmed_to),

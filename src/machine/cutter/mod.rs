@@ -219,13 +219,16 @@ impl Machine {
         ahead: &mut dyn Ahead,
     ) -> Result<(), Diagnostic> {
         let lathe = self.nose_lathe();
+        // A block of motion words alone has nothing the checks refuse (no
+        // plane, G45–G48, G39, group 07 or cycle code, no ,C/,R).
+        let plain = b.holds_only(&MOTION_WORDS, &[Group::Motion]);
+        if plain && !lathe && self.in_plain_offset_mode() {
+            return self.offset_plain(b, out, ahead);
+        }
         if lathe {
             // Before the plain case: a G90 cycle goes on with X and Z alone.
             self.nose_checks(b)?;
         }
-        // A block of motion words alone has nothing the checks refuse (no
-        // plane, G45–G48, G39, group 07 or cycle code, no ,C/,R).
-        let plain = b.holds_only(&MOTION_WORDS, &[Group::Motion]);
         if !plain {
             self.cutter_checks(b)?;
         }
@@ -388,6 +391,77 @@ impl Machine {
             });
         }
         Ok(())
+    }
+}
+
+impl Machine {
+    /// True in offset mode on the mill where a block of motion words alone
+    /// runs as [`Machine::offset_plain`] says: G41/G42 with a radius read
+    /// from the D the block keeps, no canned cycle, no inverse time feed,
+    /// not a copy reading ahead.
+    #[inline(always)]
+    fn in_plain_offset_mode(&self) -> bool {
+        let s = &self.state;
+        s.cutter.phase == Phase::Offset
+            && s.cutter.mode != CutterCompensation::Cancel
+            && s.cutter.radius != 0.0
+            && s.cutter.d == s.position.d
+            && s.modal.feed_mode != FeedMode::InverseTime
+            && s.modal.cycle.is_none()
+            && !self.reading_ahead
+    }
+
+    /// A block of motion words alone in offset mode on the mill (nearly
+    /// every block of a compensated contour): what [`Machine::compensate`]
+    /// does with it, without the steps that cannot apply — no check can
+    /// refuse it, its radius is the one the block before read (no D, no
+    /// group 07 or units code), it neither starts up nor cancels (the
+    /// `check` instruction count with G41, docs/performance.md;
+    /// `tests/cutter_props.rs` holds the two ways equal).
+    fn offset_plain(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+        ahead: &mut dyn Ahead,
+    ) -> Result<(), Diagnostic> {
+        let before = self.state.cutter;
+        let moves_before = out.moves.len();
+        // As in `compensate`: the block runs with the vector off, its moves
+        // are carried by the vector as it stood.
+        let saved = before.vector;
+        self.state.cutter.vector = [0.0; 3];
+        let ran = self.motion_block(b, out);
+        self.state.cutter.vector = saved;
+        for m in &mut out.moves[moves_before..] {
+            m.from = add3(m.from, saved);
+            m.to = add3(m.to, saved);
+            if let Some(a) = &mut m.arc {
+                a.center = add3(a.center, saved);
+            }
+        }
+        ran?;
+        self.state.cutter.tip = None;
+        let mode = self.state.cutter.mode;
+        let o = self.cutter_offset(mode, self.state.cutter.radius);
+        let mut own = None;
+        for i in moves_before..out.moves.len() {
+            if let Some(p) = self.move_path(&out.moves[i], [0.0; 3]) {
+                own = Some((i, p));
+                break;
+            }
+        }
+        // No move in the plane: the vector stands (the next move ends on it).
+        let Some(own) = own else {
+            return Ok(());
+        };
+        let words = Words {
+            mode,
+            d: self.state.cutter.d,
+            offset: o,
+            units: self.units(),
+            tip: None,
+        };
+        self.offset_move(b, out, ahead, own, before, words)
     }
 }
 

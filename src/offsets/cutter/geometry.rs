@@ -431,7 +431,77 @@ pub struct NoIntersection;
 /// The corner between `prev` and `next` (`next` starting where `prev`
 /// ends), `o1` the offset of `prev` and `o2` the offset `next` asks for
 /// (different signs: a change of side), by `rule` (behaviour 16.4–16.11).
+#[inline]
 pub fn corner(
+    prev: &Path,
+    next: &Path,
+    o1: f64,
+    o2: f64,
+    rule: Rule,
+) -> Result<Corner, NoIntersection> {
+    // Two straight moves on the same side in offset mode (most corners of
+    // a contour): the same arithmetic as the general rule below, written
+    // for lines alone (the `check` instruction count with G41,
+    // docs/performance.md; `tests/cutter_props.rs` holds the two equal).
+    if let (
+        Path::Line { from, to },
+        Path::Line { from: q, to: end },
+        Rule::Offset(Outside::Vectors),
+    ) = (*prev, *next, rule)
+        && o1 * o2 > 0.0
+    {
+        return lines_corner(from, to, q, end, o1);
+    }
+    general_corner(prev, next, o1, o2, rule)
+}
+
+/// [`corner`] between two lines in offset mode on the same side, `o` the
+/// offset: the first line from `f1` to `p`, the second from `q` to `e2`.
+/// Bit for bit what [`general_corner`] gives them.
+#[inline(always)]
+fn lines_corner(f1: P2, p: P2, q: P2, e2: P2, o: f64) -> Result<Corner, NoIntersection> {
+    let t1 = unit(sub(p, f1));
+    let t2 = unit(sub(e2, q));
+    let n1 = left(t1);
+    let n2 = left(t2);
+    let (sin, cos) = (cross(t1, t2), dot(t1, t2));
+    let inside = o * sin > 0.0;
+    let alpha = (sin, cos, inside);
+    let end1 = add(p, mul(n1, o));
+    if cos > 0.0 && sin.abs() < TANGENT {
+        return Ok(Corner::points(Kind::Tangent, alpha, &[end1]));
+    }
+    let near_tangent = cos > 0.0 && sin.abs() < NEAR_TANGENT;
+    // The crossing of the two offset lines, each through its start point
+    // moved by the offset.
+    let meet = || {
+        if sin.abs() < 1e-12 {
+            return near_tangent.then_some(end1);
+        }
+        let a = add(f1, mul(n1, o));
+        let b = add(q, mul(n2, o));
+        let s = cross(sub(b, a), t2) / sin;
+        Some(add(a, mul(t1, s)))
+    };
+    if inside {
+        let x = meet().ok_or(NoIntersection)?;
+        return Ok(Corner::points(Kind::Inside, alpha, &[x]));
+    }
+    if cos >= 0.0
+        && let Some(x) = meet()
+    {
+        return Ok(Corner::points(Kind::Obtuse, alpha, &[x]));
+    }
+    let start2 = add(q, mul(n2, o));
+    let r = o.abs();
+    let v2 = add(end1, mul(t1, r));
+    let v3 = add(start2, mul(t2, -r));
+    Ok(Corner::points(Kind::Acute, alpha, &[v2, v3]))
+}
+
+/// [`corner`] by the general rule, for any two paths.
+#[doc(hidden)]
+pub fn general_corner(
     prev: &Path,
     next: &Path,
     o1: f64,
@@ -563,187 +633,5 @@ pub fn arc_interferes(programmed_sweep: f64, offset_sweep: f64, offset_radius: f
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn close(a: P2, b: P2) -> bool {
-        dist(a, b) < 1e-9
-    }
-
-    #[track_caller]
-    fn points(c: &Corner, want: &[P2]) {
-        let got: Vec<P2> = c.steps().iter().map(Step::end).collect();
-        assert_eq!(got.len(), want.len(), "{c:?}");
-        for (g, w) in got.iter().zip(want) {
-            assert!(close(*g, *w), "got {got:?}, want {want:?}");
-        }
-    }
-
-    const X: Path = Path::Line {
-        from: [0.0, 0.0],
-        to: [50.0, 0.0],
-    };
-
-    #[test]
-    fn behaviour16_5_inside_corner_is_the_intersection_of_the_offset_lines() {
-        // +X to (50,0) then +Y, G41 r 5: left of +X is +Y, left of +Y is
-        // -X; the offset lines y = 5 and x = 45 meet at (45, 5).
-        let up = Path::Line {
-            from: [50.0, 0.0],
-            to: [50.0, 30.0],
-        };
-        let c = corner(&X, &up, 5.0, 5.0, Rule::Offset(Outside::Vectors)).unwrap();
-        assert_eq!(c.kind, Kind::Inside);
-        assert!((c.alpha() - 270.0).abs() < 1e-9);
-        points(&c, &[[45.0, 5.0]]);
-    }
-
-    #[test]
-    fn behaviour16_6_outside_obtuse_corner_is_the_intersection() {
-        // +X then a turn of 45° to the right, G41 r 5: the offset lines
-        // y = 5 and the line through (50,0) + 5·(√½, √½) along (√½, -√½)
-        // meet at x = 50 + 5·tan(22.5°) = 52.0711, y = 5 (α = 135°).
-        let s = std::f64::consts::FRAC_1_SQRT_2;
-        let down = Path::Line {
-            from: [50.0, 0.0],
-            to: [50.0 + 10.0 * s, -10.0 * s],
-        };
-        let c = corner(&X, &down, 5.0, 5.0, Rule::Offset(Outside::Vectors)).unwrap();
-        assert_eq!(c.kind, Kind::Obtuse);
-        assert!((c.alpha() - 135.0).abs() < 1e-9);
-        let t = (std::f64::consts::PI / 8.0).tan();
-        points(&c, &[[50.0 + 5.0 * t, 5.0]]);
-    }
-
-    #[test]
-    fn behaviour16_7_outside_acute_corner_takes_the_extra_vectors() {
-        // +X then back at 135° to the right (α = 45°), G41 r 5: the first
-        // vector (0,5) stretched by 5 along +X ends at (55, 5); the second,
-        // left of (-√½,-√½) = (√½,-√½)·5, pulled back by 5 along
-        // (-√½,-√½): (50 + 5√½ + 5√½, -5√½ + 5√½) = (57.071, 0).
-        let s = std::f64::consts::FRAC_1_SQRT_2;
-        let back = Path::Line {
-            from: [50.0, 0.0],
-            to: [50.0 - 10.0 * s, -10.0 * s],
-        };
-        let c = corner(&X, &back, 5.0, 5.0, Rule::Offset(Outside::Vectors)).unwrap();
-        assert_eq!(c.kind, Kind::Acute);
-        assert!((c.alpha() - 45.0).abs() < 1e-9);
-        points(&c, &[[55.0, 5.0], [50.0 + 10.0 * s, 0.0]]);
-    }
-
-    #[test]
-    fn behaviour16_3_start_up_type_a_is_perpendicular_to_the_next_block() {
-        let up = Path::Line {
-            from: [50.0, 0.0],
-            to: [50.0, 30.0],
-        };
-        let c = corner(&X, &up, 5.0, 5.0, Rule::StartUp(Type::A)).unwrap();
-        points(&c, &[[45.0, 0.0]]);
-        // Type B at the same inside corner: the intersection (45, 5).
-        let c = corner(&X, &up, 5.0, 5.0, Rule::StartUp(Type::B)).unwrap();
-        points(&c, &[[45.0, 5.0]]);
-    }
-
-    #[test]
-    fn behaviour16_8_change_of_side_meets_at_the_intersection_or_apart() {
-        // G41 along +X, then G42 along +Y: y = 5 and x = 55 meet at (55, 5).
-        let up = Path::Line {
-            from: [50.0, 0.0],
-            to: [50.0, 30.0],
-        };
-        let c = corner(&X, &up, 5.0, -5.0, Rule::Offset(Outside::Vectors)).unwrap();
-        assert_eq!(c.kind, Kind::SideChange);
-        points(&c, &[[55.0, 5.0]]);
-        // Straight on: y = 5 and y = -5 never meet: (50, 5) then (50, -5).
-        let on = Path::Line {
-            from: [50.0, 0.0],
-            to: [80.0, 0.0],
-        };
-        let c = corner(&X, &on, 5.0, -5.0, Rule::Offset(Outside::Vectors)).unwrap();
-        assert_eq!(c.kind, Kind::SideChangeApart);
-        points(&c, &[[50.0, 5.0], [50.0, -5.0]]);
-    }
-
-    #[test]
-    fn line_then_tangent_arc_meets_at_the_common_offset_point() {
-        // +X to (50,0), then G03 about (50,20): tangent; G41 r 5 puts the
-        // tool inside the arc (radius 15) at (50, 5).
-        let arc = Path::Arc {
-            from: [50.0, 0.0],
-            to: [70.0, 20.0],
-            center: [50.0, 20.0],
-            ccw: true,
-        };
-        let c = corner(&X, &arc, 5.0, 5.0, Rule::Offset(Outside::Vectors)).unwrap();
-        assert_eq!(c.kind, Kind::Tangent);
-        points(&c, &[[50.0, 5.0]]);
-        assert_eq!(arc.offset_radius(5.0), Some(15.0));
-        assert_eq!(arc.offset_radius(-5.0), Some(25.0));
-    }
-
-    #[test]
-    fn behaviour16_12_inside_corner_without_intersection_is_an_error() {
-        // +X to (50,0), then a G03 of radius 2 about (48,0) turning left
-        // (up at its start): G41 r 5 is inside both. The offset line is
-        // y = 5, the offset circle has radius |2 - 5| = 3 about (48, 0):
-        // 5 from the centre, 3 of radius, no intersection (PS0033).
-        let arc = Path::Arc {
-            from: [50.0, 0.0],
-            to: [46.0, 0.0],
-            center: [48.0, 0.0],
-            ccw: true,
-        };
-        assert_eq!(
-            corner(&X, &arc, 5.0, 5.0, Rule::Offset(Outside::Vectors)),
-            Err(NoIntersection)
-        );
-        // With r 1 the circle (radius 1) and y = 1 touch at (48, 1).
-        let c = corner(&X, &arc, 1.0, 1.0, Rule::Offset(Outside::Vectors)).unwrap();
-        assert_eq!(c.kind, Kind::Inside);
-        points(&c, &[[48.0, 1.0]]);
-    }
-
-    #[test]
-    fn behaviour16_5_an_s_curve_that_nearly_meets_takes_the_common_offset_point() {
-        // A G03 of radius 10 about (0, 0) whose end the words put 0.0004
-        // off its circle, at (10.0004, 0), then a G02 of radius 10 about
-        // (20.0004, 0.001): the two turn the other ways, their tangents
-        // agree within 10⁻⁴ rad. G41 r 1: the offset circles (radius 9
-        // from the first arc's start, 11) miss by 0.0004; the tool ends 1
-        // left of the common point, (9.0004, 0), instead of an alarm.
-        let first = Path::Arc {
-            from: [0.0, -10.0],
-            to: [10.0004, 0.0],
-            center: [0.0, 0.0],
-            ccw: true,
-        };
-        let second = Path::Arc {
-            from: [10.0004, 0.0],
-            to: [20.0004, -9.999],
-            center: [20.0004, 0.001],
-            ccw: false,
-        };
-        let c = corner(&first, &second, 1.0, 1.0, Rule::Offset(Outside::Vectors)).unwrap();
-        points(&c, &[[9.0004, 0.0]]);
-    }
-
-    #[test]
-    fn interference_criteria() {
-        assert!(line_reverses(
-            ([0.0, 0.0], [10.0, 0.0]),
-            ([12.0, 5.0], [8.0, 5.0])
-        ));
-        assert!(!line_reverses(
-            ([0.0, 0.0], [10.0, 0.0]),
-            ([2.0, 5.0], [8.0, 5.0])
-        ));
-        assert!(arc_interferes(1.0, 1.0, -0.5));
-        assert!(arc_interferes(0.5, 6.0, 3.0));
-        assert!(!arc_interferes(1.0, 1.2, 3.0));
-        let s = sweep([1.0, 0.0], [0.0, 1.0], [0.0, 0.0], true);
-        assert!((s - std::f64::consts::FRAC_PI_2).abs() < 1e-12);
-        let s = sweep([1.0, 0.0], [0.0, 1.0], [0.0, 0.0], false);
-        assert!((s + 1.5 * std::f64::consts::PI).abs() < 1e-12);
-    }
-}
+#[path = "geometry_tests.rs"]
+mod tests;
