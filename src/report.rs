@@ -191,6 +191,9 @@ pub struct Run {
     pub bounds: Option<Bounds>,
     /// Path length and estimated time (behaviour 6.10).
     pub travel: crate::travel::Travel,
+    /// Blocks the run could not run and passed over, with the setting
+    /// `continue_past_errors` on (behaviour 2.24); each has its diagnostics.
+    pub skipped: u32,
 }
 
 /// A value the program set, as it stands at the run's end: the last G10

@@ -510,6 +510,9 @@ pub struct Summary {
     pub set_by_program: Vec<SetByProgram>,
     /// Path length (in `units`) and the time estimate (behaviour 6.10).
     pub travel: TravelView,
+    /// Blocks passed over with setting `continue_past_errors` on (behaviour
+    /// 2.24); each has a `block-skipped` warning beside its error.
+    pub skipped: u32,
     /// The other machine, when the program's words belong to it and none to
     /// this one (behaviour 1.24); set by those who hold the text
     /// ([`Summary::with_hint`]).
@@ -579,6 +582,7 @@ pub fn summary(run: &Run) -> Summary {
             dwell: (run.travel.dwell * 1000.0).round() / 1000.0,
             untimed: run.travel.untimed,
         },
+        skipped: run.skipped,
         machine_hint: None,
     }
 }

@@ -55,9 +55,12 @@ fn behaviour1_11_two_codes_of_a_group_are_an_error_on_yasnac() {
 #[test]
 fn behaviour1_11_the_last_code_of_a_group_wins_on_fanuc_and_haas_with_a_warning() {
     // Fanuc: "G91 G28 X0 Y0 Z100. G90" is G28 in G90: the intermediate point
-    // is X0 Y0 Z100. in work coordinates, then the reference (machine zero,
-    // here the work zero): from X10 Y20 Z30, moves to (0, 0, 100) then
-    // (0, 0, 0); the block leaves G90 in effect.
+    // is X0 Y0 Z100. in work coordinates, then the reference — on the Fanuc
+    // and Haas profiles a typical machine's (setting 7.49, behaviour 13.15):
+    // X0 Y0 over the work zero and Z at the top of a VF-2's travel, 508 mm
+    // (G54 at machine zero, so machine and work coordinates agree): from
+    // X10 Y20 Z30, moves to (0, 0, 100) then (0, 0, 508); the block leaves
+    // G90 in effect, so X5. goes to (5, 0, 508).
     for control in [Control::Fanuc, Control::Haas] {
         let s = with_control(Setup::default(), control);
         let text = "G00 X10. Y20. Z30.\nG91 G28 X0 Y0 Z100. G90\nX5.";
@@ -72,9 +75,9 @@ fn behaviour1_11_the_last_code_of_a_group_wins_on_fanuc_and_haas_with_a_warning(
         assert_eq!((d.span.line, d.span.start), (2, 19 + 20));
         let g28: Vec<_> = r.moves.iter().filter(|m| m.line == 2).collect();
         same(g28[0].to, [0.0, 0.0, 100.0]);
-        same(g28[1].to, [0.0, 0.0, 0.0]);
+        same(g28[1].to, [0.0, 0.0, 508.0]);
         // G90 stays: X5. is absolute.
-        same(actual(&r, 2), [5.0, 0.0, 0.0]);
+        same(actual(&r, 2), [5.0, 0.0, 508.0]);
     }
     // A setting set in the setup wins over the profile.
     let mut s = with_control(Setup::default(), Control::Fanuc);
@@ -84,7 +87,10 @@ fn behaviour1_11_the_last_code_of_a_group_wins_on_fanuc_and_haas_with_a_warning(
 
 #[test]
 fn behaviour1_11_last_wins_in_every_group_and_the_block_reads_the_last() {
-    let s = with_control(Setup::default(), Control::Fanuc);
+    let mut s = with_control(Setup::default(), Control::Fanuc);
+    // The tool starts at the work zero (setting 7.49): the positions are
+    // not the point here.
+    s.settings.machine_positions = Some(offsetlab::setup::MachinePositions::WorkZero);
     // G00 then G01: the move is a feed; G20 then G21: metric.
     let r = ok("G00 G01 X10. F100.\nG20 G21 X12.", &s);
     assert_eq!(r.moves[0].kind, MoveKind::Feed);

@@ -298,9 +298,11 @@ fn behaviour13_4_g92_1_undoes_the_g92_shift_of_the_named_axes() {
 #[test]
 fn behaviour13_5_g28_without_axes_as_each_control_does_it() {
     let text = "G00 X10. Y20. Z30.\nG28";
-    // Haas: every axis returns, straight from where it is.
+    // Haas: every axis returns, straight from where it is, to the Haas
+    // profile's reference (setting 7.49, behaviour 13.15): X0 Y0 and the
+    // top of the VF-2's Z travel, 508 mm above the work zero.
     let r = ok(text, &with_control(mill(&[]), Control::Haas));
-    same(programmed(&r, 1), [0.0, 0.0, 0.0]);
+    same(programmed(&r, 1), [0.0, 0.0, 508.0]);
     assert_eq!(r.blocks[1].move_count, 1);
     // Fanuc returns the axes named: none; a warning says so.
     for control in [Control::Fanuc, Control::Yasnac] {
@@ -312,7 +314,7 @@ fn behaviour13_5_g28_without_axes_as_each_control_does_it() {
     // The setting wins over the profile.
     let mut s = with_control(mill(&[]), Control::Fanuc);
     s.settings.reference_return_without_axes = Some(ReturnWithoutAxes::AllAxes);
-    same(programmed(&ok(text, &s), 1), [0.0, 0.0, 0.0]);
+    same(programmed(&ok(text, &s), 1), [0.0, 0.0, 508.0]);
     // The Haas lathe returns X and Z.
     let mut l = lathe(&[]);
     l.settings.control = Control::Haas;

@@ -472,8 +472,11 @@ fn behaviour16_11_g40_alone_takes_the_vector_off_in_its_block_on_fanuc() {
     // X100. sees the G40 without a move next: it ends perpendicular,
     // (100, 5); G40 moves the tool back to (100, 0) as offset motion.
     let text = "G01 G41 D01 X50. F100.\nX100.\nG40\nX150.";
+    // The positions are not the point: the tool starts at the work zero
+    // (setting 7.49), not at the Fanuc profile's typical home.
     let s = setup(&[(1, 5.0)], |s| {
-        s.control = offsetlab::setup::Control::Fanuc
+        s.control = offsetlab::setup::Control::Fanuc;
+        s.machine_positions = Some(offsetlab::setup::MachinePositions::WorkZero);
     });
     let r = ok(text, &s);
     same(end(&r, 2), [100.0, 5.0, 0.0]);
@@ -491,7 +494,11 @@ fn behaviour16_11_g40_alone_waits_for_the_next_move_on_haas() {
     // perpendicular before it (type A), G40 leaves the tool at (100, 5),
     // X150. goes from there to (150, 0).
     let text = "G01 G41 D01 X50. F100.\nX100.\nG40\nX150.";
-    let s = setup(&[(1, 5.0)], |s| s.control = offsetlab::setup::Control::Haas);
+    // The tool starts at the work zero (setting 7.49), as on Fanuc above.
+    let s = setup(&[(1, 5.0)], |s| {
+        s.control = offsetlab::setup::Control::Haas;
+        s.machine_positions = Some(offsetlab::setup::MachinePositions::WorkZero);
+    });
     assert_eq!(
         s.settings.cutter_cancel_without_motion(),
         CutterCancelWithoutMotion::NextMove

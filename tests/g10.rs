@@ -333,6 +333,9 @@ fn behaviour17_11_g10_then_use_draws_the_path_of_the_same_table() {
     );
     let mut plain = Setup::default();
     plain.settings.control = Control::Fanuc;
+    // Machine zero at the start, not the Fanuc profile's typical home
+    // (setting 7.49): the table's run gives its start explicitly.
+    plain.settings.machine_positions = Some(offsetlab::setup::MachinePositions::WorkZero);
     let with_g10 = ok(&program, &plain);
     let table = Setup::from_json(
         r#"{"settings":{"control":"fanuc"},"start":{"x":200,"y":100,"z":300},"offsets":{"01":{"h":100,"h_wear":-0.25,"d":6,"d_wear":-0.1}},"work_offsets":{"G54":{"x":-200,"y":-100,"z":-300}},"extended_work_offsets":{"01":{"x":-50,"y":-60,"z":-300}}}"#,

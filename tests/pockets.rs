@@ -9,10 +9,13 @@ use offsetlab::setup::{CirclePocket, Control, Mirror};
 use offsetlab::{Move, MoveKind, run};
 use std::f64::consts::PI;
 
-/// A Haas mill with registers `(number, value)`.
+/// A Haas mill with registers `(number, value)`, the tool starting at the
+/// work zero (setting 7.49: the pockets are worked from there, not from the
+/// profile's typical home).
 fn haas(registers: &[(u16, f64)]) -> offsetlab::Setup {
     let mut s = mill(registers);
     s.settings.control = Control::Haas;
+    s.settings.machine_positions = Some(offsetlab::setup::MachinePositions::WorkZero);
     s
 }
 

@@ -79,6 +79,11 @@ struct Common {
     /// (overrides the setup file's; settings the setup sets stay).
     #[arg(long, value_enum)]
     control: Option<ControlArg>,
+    /// Continue past errors: a block that cannot run is reported and
+    /// skipped, and the rest runs (setting continue_past_errors; the
+    /// default stops at the first error, as a control does).
+    #[arg(long = "continue")]
+    keep_going: bool,
     /// One offset register: mill NN=VALUE (01=5.0), lathe NN=X<v>,Z<v>
     /// (08=X0.4,Z-0.2). Repeatable; applied after --setup.
     #[arg(long = "offset", value_name = "SPEC")]
@@ -292,6 +297,9 @@ fn load_setup(common: &Common) -> Result<(String, Document), Fatal> {
             ControlArg::Haas => Control::Haas,
         };
     }
+    if common.keep_going {
+        doc.setup.settings.continue_past_errors = true;
+    }
     for spec in &common.offsets {
         doc.setup.set_register(spec).map_err(Fatal)?;
     }
@@ -460,9 +468,16 @@ fn check(out: &mut impl Write, name: &str, run: &offsetlab::Run, text: &str) -> 
         None => "no motion".to_string(),
     };
     let travel = travel_text(&s.travel, run.units);
+    // Behaviour 2.24: how many blocks a run that continued past its errors
+    // passed over (each listed above with its error).
+    let skipped = match s.skipped {
+        0 => String::new(),
+        1 => ", 1 block skipped".to_string(),
+        n => format!(", {n} blocks skipped"),
+    };
     writeln!(
         out,
-        "{name}: {} blocks, {} moves, {bounds}; {travel}; {} errors, {} warnings",
+        "{name}: {} blocks, {} moves, {bounds}; {travel}; {} errors, {} warnings{skipped}",
         s.blocks, s.moves, s.errors, s.warnings
     )
 }

@@ -207,7 +207,7 @@ impl Machine {
         // (behaviour 17.9).
         let w = &setup.work_offsets;
         let origin = scale(add(w.get(0).to_array(), w.ext.to_array()), unit);
-        let start = scale(setup.start.to_array(), unit);
+        let start = scale(setup.start_position().to_array(), unit);
         let start = match setup.machine {
             MachineKind::Mill => start,
             MachineKind::Lathe => [start[0], 0.0, start[2]],

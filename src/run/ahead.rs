@@ -64,6 +64,15 @@ impl<'t> Reader<'t> {
         }
     }
 
+    /// Forgets everything read ahead: the block it was read for did not
+    /// run (behaviour 2.24), and the next one takes its index.
+    pub(super) fn forget(&mut self) {
+        self.for_index = None;
+        self.blocks.clear();
+        self.side = None;
+        self.done = false;
+    }
+
     /// Forgets what was read ahead for another block than `index`, but
     /// for the block right after the one it was read for, reading the run's
     /// own text: that block is the first read, and the others follow it.

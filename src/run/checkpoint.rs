@@ -117,6 +117,8 @@ pub(super) struct Segment {
     pub(super) first_units: Option<Units>,
     /// Their path length and time.
     pub(super) travel: crate::travel::Travel,
+    /// The blocks among them skipped past their errors (behaviour 2.24).
+    pub(super) skipped: u32,
 }
 
 impl Segment {
@@ -129,6 +131,7 @@ impl Segment {
         self.registers.dedup();
         self.first_units = self.first_units.or(other.first_units);
         self.travel.add(&other.travel);
+        self.skipped = self.skipped.saturating_add(other.skipped);
     }
 }
 

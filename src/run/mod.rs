@@ -22,6 +22,7 @@ mod macros;
 #[cfg(not(target_arch = "wasm32"))]
 pub(crate) mod pipeline;
 mod sequence;
+mod skip;
 
 use checkpoint::Totals;
 pub use checkpoint::{Checkpoint, Checkpoints, Read};
@@ -89,6 +90,10 @@ enum Step {
     Passed,
     /// The run stops here: a parse error, a run error or a limit.
     Stopped(Option<Diagnostic>),
+    /// The block could not run and is passed over, the machine as it was
+    /// before it (setting `continue_past_errors`, behaviour 2.24): the
+    /// run's error, or None for the parser's.
+    Skipped(Option<Diagnostic>),
 }
 
 /// The block loop shared by a whole run and a run resumed from a
@@ -105,6 +110,8 @@ struct Runner<'t> {
     out: Out,
     options: RunOptions,
     block_skip: bool,
+    /// Continue past errors (behaviour 2.24).
+    keep_going: bool,
     /// Blocks executed so far.
     index: u32,
     /// Moves made so far.
@@ -183,6 +190,7 @@ impl<'t> Runner<'t> {
             out: Out::for_reports(options.keep_blocks),
             options,
             block_skip: setup.settings.block_skip,
+            keep_going: setup.settings.continue_past_errors,
             index: 0,
             move_count: 0,
             stopped: false,
@@ -267,6 +275,17 @@ impl<'t> Runner<'t> {
             // The text's end, or a subprogram's (behaviour 19).
             return self.program_ends();
         }
+        if self.keep_going {
+            // Out of line (behaviour 2.24): off, one test per block (the
+            // `check` instruction count in docs/performance.md).
+            return self.step_keeping_going();
+        }
+        self.run_block()
+    }
+
+    /// Runs the block just read ([`Runner::step`]).
+    #[inline(always)]
+    fn run_block(&mut self) -> Option<Step> {
         let mut ahead = self.ahead.at(self.index, ahead::From::Parser(&self.parser));
         let step = execute(
             &self.block,
@@ -504,6 +523,11 @@ impl Making {
             let Some(step) = r.step() else { break };
             let flow = match step {
                 Step::Passed => continue,
+                Step::Skipped(d) => {
+                    self.totals.segment.skipped += 1;
+                    r.report_skipped(d);
+                    continue;
+                }
                 Step::Stopped(d) => {
                     stop(
                         &mut self.run,
@@ -581,6 +605,7 @@ fn fresh(setup: &Setup) -> Run {
         bounds: None,
         travel: Default::default(),
         end: End::Completed,
+        skipped: 0,
     }
 }
 
@@ -603,6 +628,7 @@ fn close(
     let all = totals.before;
     result.bounds = all.bounds;
     result.travel = all.travel;
+    result.skipped = all.skipped;
     result.registers = all.registers;
     result.units = all.first_units.unwrap_or(result.end_units);
     diag::finish(&mut diagnostics, text);
@@ -780,7 +806,7 @@ pub fn report_at(
                     place,
                 });
             }
-            Step::Ran(_) | Step::Passed => {}
+            Step::Ran(_) | Step::Passed | Step::Skipped(_) => {}
             Step::Stopped(_) => return None,
         }
     }

@@ -101,7 +101,13 @@ pub fn run_on_two_threads(text: &str, setup: &Setup, options: RunOptions) -> Opt
 /// to it too, and a run keeping checkpoints: the parser's place at each is
 /// on the other thread).
 fn on_two_threads(text: &str, setup: &Setup, options: RunOptions) -> Option<Run> {
-    if options.checkpoint_every != 0 || !setup.validate().is_empty() || check_size(text).is_some() {
+    // A run that continues past errors (behaviour 2.24) puts the machine
+    // back before a block that failed: one thread does.
+    if options.checkpoint_every != 0
+        || setup.settings.continue_past_errors
+        || !setup.validate().is_empty()
+        || check_size(text).is_some()
+    {
         return None;
     }
     std::thread::scope(|scope| {
@@ -211,7 +217,8 @@ fn on_two_threads(text: &str, setup: &Setup, options: RunOptions) -> Option<Run>
                     Some(Step::Stopped(d)) => {
                         stop(&mut result, &mut run_diagnostics, block.span.line, d);
                     }
-                    Some(Step::Passed) | None => {}
+                    // No skips here: such a run is made on one thread.
+                    Some(Step::Passed | Step::Skipped(_)) | None => {}
                 }
             }
             // Gone only once the parser is done.

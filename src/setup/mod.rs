@@ -11,10 +11,12 @@ use serde::{Deserialize, Serialize};
 
 use crate::diag::{Diagnostic, Span};
 
+mod positions;
 mod registers;
 mod settings;
 mod specs;
 
+pub use positions::MachinePositions;
 use registers::register_map;
 pub use registers::{LatheRegister, MAX_TIP, MillPart, MillRegister};
 pub use settings::*;
@@ -243,10 +245,12 @@ pub struct Setup {
     /// Number of offset registers (01 to this).
     #[serde(skip_serializing_if = "is_default_table")]
     pub table_size: u16,
-    /// Where the tool starts, in the G54 system.
+    /// Where the tool starts, in the G54 system; left out (all zero), the
+    /// positions of setting `machine_positions` (behaviour 13.15).
     #[serde(skip_serializing_if = "is_default")]
     pub start: Position,
-    /// The reference position G28 returns to, in machine coordinates.
+    /// The reference position G28 returns to, in machine coordinates; left
+    /// out (all zero), that of setting `machine_positions` (13.15).
     #[serde(skip_serializing_if = "is_default")]
     pub reference: Position,
     /// The second reference position (G30, G30 P2), in machine coordinates;
@@ -530,7 +534,7 @@ impl Setup {
             4 => self.fourth_reference,
             _ => None,
         }
-        .unwrap_or(self.reference)
+        .unwrap_or_else(|| self.first_reference())
     }
 
     /// The value a D code reads from register `n` (00 and unset read 0):

@@ -349,6 +349,12 @@ pub struct Settings {
     /// Optional block skip switch: when on, blocks starting with `/` are skipped.
     #[serde(skip_serializing_if = "is_default")]
     pub block_skip: bool,
+    /// Skip a block that cannot run and go on (behaviour 2.24, 7.48).
+    #[serde(skip_serializing_if = "is_default")]
+    pub continue_past_errors: bool,
+    /// `start`, `reference` left out (7.49, 13.15): `machine_positions()`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub machine_positions: Option<super::MachinePositions>,
     /// `G43 H…` with no Z word (behaviour 3.3).
     #[serde(skip_serializing_if = "is_default")]
     pub length_offset_without_z: LengthOffsetWithoutZ,

@@ -90,7 +90,9 @@ export function showResult({ summary, diagnostics }) {
   setupFailed = diagnostics.some((d) => d.line === 0 && d.code.startsWith('setup-'));
   summaryLine.textContent = [
     plural(summary.blocks, 'block'), plural(summary.moves, 'move'), plural(summary.errors, 'error'),
-    plural(summary.warnings, 'warning'), `${summary.machine}, ${summary.units}`, endText(summary.end),
+    plural(summary.warnings, 'warning'),
+    // Behaviour 2.24: the blocks a run that continued past errors passed over.
+    ...(summary.skipped > 0 ? [`${plural(summary.skipped, 'block')} skipped`] : []), `${summary.machine}, ${summary.units}`, endText(summary.end),
     ...travelText(summary), ...extentsText(summary),
   ].join(' · ');
   summaryLine.classList.toggle('has-errors', summary.errors > 0);

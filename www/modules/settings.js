@@ -4,7 +4,7 @@
 // with the form both ways.
 
 import {
-  MAX_POSITION, WORK_SYSTEMS, checkNumber, decimalsFor, machineOf, pointOf, setSetting, setStart,
+  MAX_POSITION, WORK_SYSTEMS, checkNumber, decimalsFor, machineOf, pointOf, setPoint, setSetting,
   setWorkOffset, settingOf, setupText, unitName, unitsOf, workOffset,
 } from './setup.js';
 
@@ -85,6 +85,11 @@ const CHOICES = [
     help: 'G04 P3. (and a canned cycle’s dwell P): YASNAC and Fanuc take P in milliseconds without a point and refuse P3.; Haas reads P3. as 3 seconds and P3 as 3 milliseconds.',
   },
   {
+    id: 'machine_positions', label: 'Start and reference', controlDefault: true,
+    options: [['work_zero', 'the work zero'], ['typical', 'a typical machine']],
+    help: 'Start and reference left at 0 0 0: the tool starts at the work zero and G28 returns there (YASNAC, the seeds), or as on a typical machine, homed at the top of the travel: mill X0 Y0 Z508 mm (Haas VF-2), lathe turret home X406.4 Z355.6 mm (Haas ST-10) (Fanuc, Haas).',
+  },
+  {
     id: 'decimal_input', label: 'Decimal input', options: [['increment', 'increment'], ['calculator', 'calculator']],
     help: 'A dimension without a point: X12345 is 12.345 mm (increment, Fanuc/YASNAC) or 12345 mm (calculator).',
   },
@@ -144,10 +149,13 @@ const SWITCHES = [
   { id: 'mirror_x', axis: 'x', label: 'Mirror X', machine: 'mill', help: 'Moves along X are reversed about the start point; G02/G03 turn the other way and G45–G48 follow (seed 003).' },
   { id: 'mirror_y', axis: 'y', label: 'Mirror Y', machine: 'mill', help: 'The same along Y.' },
   { id: 'block_skip', label: 'Block skip', help: 'The optional block skip switch: when on, blocks starting with / are not run.' },
+  { id: 'continue_past_errors', label: 'Continue past errors', help: 'Off, the run stops at the first error, as a control does. On, a block that cannot run is listed and skipped, the state before it kept, and the rest drawn.' },
 ];
 
+// Behaviour 13.15: start and reference at 0 0 0 are left out of the document, and setting machine_positions gives them.
 const POINTS = [
-  { id: 'start', label: 'Start position', help: 'Where the tool is when the program starts, in G54 coordinates (the lathe’s X is a diameter).' },
+  { id: 'start', label: 'Start position', help: 'Where the tool is when the program starts, in G54 coordinates (the lathe’s X is a diameter). 0 0 0: as “Start and reference” says.' },
+  { id: 'reference', label: 'Reference position', help: 'Where G28 (and G30 unless the document sets the others) returns to, in machine coordinates. 0 0 0: as “Start and reference” says.' },
   ...WORK_SYSTEMS.map((name) => ({ id: name, label: `Work offset ${name}`, help: '', describedBy: 'works-help' })),
 ];
 
@@ -216,10 +224,11 @@ function pointInput(def, input) {
     return;
   }
   input.removeAttribute('aria-invalid');
+  const own = def.id === 'start' || def.id === 'reference';
   ctx.change((s) => {
-    const p = def.id === 'start' ? pointOf(s.start) : workOffset(s, def.id);
+    const p = own ? pointOf(s[def.id]) : workOffset(s, def.id);
     p[input.dataset.axis] = checked.value;
-    if (def.id === 'start') setStart(s, p);
+    if (own) setPoint(s, def.id, p);
     else setWorkOffset(s, def.id, p);
   }, 'settings');
 }
@@ -264,14 +273,14 @@ export function initSettings({ getSetup, change, replace }) {
     wrap.classList.add('switch');
     parts.push(wrap);
   }
-  parts.push(pointField(POINTS[0]));
+  parts.push(pointField(POINTS[0]), pointField(POINTS[1]));
   // Work offsets: six small forms, folded away until wanted.
   const works = document.createElement('details');
   works.className = 'works';
   const summary = document.createElement('summary');
   summary.textContent = 'Work offsets G54–G59';
   works.append(summary, line('Zero point of each work coordinate system as a machine position; G54 is active at start. The additional systems (extended_work_offsets) and the second to fourth reference positions are set in the document below.', 'works'));
-  for (const def of POINTS.slice(1)) works.append(pointField(def));
+  for (const def of POINTS.slice(2)) works.append(pointField(def));
   parts.push(works);
   ctx.form.replaceChildren(...parts);
   ctx.form.addEventListener('submit', (e) => e.preventDefault());
@@ -308,7 +317,7 @@ export function renderSettings({ json = true } = {}) {
   for (const input of ctx.form.querySelectorAll('input[data-point]')) {
     if (input === document.activeElement) continue;
     const id = input.dataset.point;
-    const p = id === 'start' ? pointOf(setup.start) : workOffset(setup, id);
+    const p = id === 'start' || id === 'reference' ? pointOf(setup[id]) : workOffset(setup, id);
     input.value = String(p[input.dataset.axis]);
     input.removeAttribute('aria-invalid');
   }

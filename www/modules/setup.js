@@ -179,10 +179,12 @@ export function setWorkOffset(setup, name, point) {
   else setup.work_offsets = all;
 }
 
-export function setStart(setup, point) {
-  if (point.x === 0 && point.y === 0 && point.z === 0) delete setup.start;
-  else setup.start = point;
+/** Sets `start` or `reference` (`name`); 0 0 0 is left out: setting machine_positions gives it (behaviour 13.15). */
+export function setPoint(setup, name, point) {
+  if (point.x === 0 && point.y === 0 && point.z === 0) delete setup[name];
+  else setup[name] = point;
 }
+
 
 /** The document's JSON as people read it (two-space indent). */
 export function setupText(setup) {

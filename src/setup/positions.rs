@@ -1,0 +1,90 @@
+//! Where the machine starts and where its reference position is when the
+//! setup leaves them out (behaviour 13.15, setting 7.49): at the work zero,
+//! the seeds' drawings' convention, or where a typical machine of each kind
+//! has them, so that `G91 G28 Z0.` rises to the top of the travel and a
+//! lathe starts at the turret's home rather than on the centre line.
+
+use serde::{Deserialize, Serialize};
+
+use super::{MachineKind, Position, Settings, Setup};
+use crate::setup::Control;
+
+/// What `start` and `reference` left out (all zero) are (behaviour 7.49).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum MachinePositions {
+    /// The tool starts at the G54 zero and the reference position is machine
+    /// zero, which the default work offsets put at the work zero.
+    WorkZero,
+    /// A typical machine's: the reference position at the positive end of
+    /// the travel (where machine zero is on a Haas or Fanuc machine) and the
+    /// tool starting there, homed.
+    Typical,
+}
+
+/// A typical vertical machining centre's reference position above the work
+/// zero, in inches: the Haas VF-2's Z travel, 20 in (508 mm), the work zero
+/// taken at the bottom of the travel and X, Y over it (behaviour 13.15).
+const MILL_HOME_INCH: [f64; 3] = [0.0, 0.0, 20.0];
+
+/// A typical small lathe's turret home from the work zero (the centre line
+/// at the part's face), in inches: the Haas ST-10's travels, X 8 in (a
+/// diameter of 16 in) and Z 14 in, the work zero at their near ends.
+const LATHE_HOME_INCH: [f64; 3] = [16.0, 0.0, 14.0];
+
+impl Settings {
+    /// `start` and `reference` left out: at the work zero on YASNAC (the
+    /// seeds' drawings start there), a typical machine's on Fanuc and Haas.
+    pub fn machine_positions(&self) -> MachinePositions {
+        self.machine_positions.unwrap_or(match self.control {
+            Control::Yasnac => MachinePositions::WorkZero,
+            Control::Fanuc | Control::Haas => MachinePositions::Typical,
+        })
+    }
+}
+
+impl Setup {
+    /// The typical machine's home in setup units, or the origin.
+    fn home(&self) -> Position {
+        if self.settings.machine_positions() == MachinePositions::WorkZero {
+            return Position::default();
+        }
+        let inch = match self.machine {
+            MachineKind::Mill => MILL_HOME_INCH,
+            MachineKind::Lathe => LATHE_HOME_INCH,
+        };
+        let k = 25.4 / self.units.mm();
+        Position {
+            x: inch[0] * k,
+            y: inch[1] * k,
+            z: inch[2] * k,
+        }
+    }
+
+    /// Where the tool starts, in G54 coordinates and setup units: `start`,
+    /// or when it is left out (all zero) the home of setting 7.49 — a
+    /// typical machine starts homed, at its reference position, which is
+    /// in machine coordinates: less G54's zero and the external offset.
+    pub fn start_position(&self) -> Position {
+        if self.start != Position::default()
+            || self.settings.machine_positions() == MachinePositions::WorkZero
+        {
+            return self.start;
+        }
+        let (home, w) = (self.first_reference(), &self.work_offsets);
+        Position {
+            x: home.x - w.g54.x - w.ext.x,
+            y: home.y - w.g54.y - w.ext.y,
+            z: home.z - w.g54.z - w.ext.z,
+        }
+    }
+
+    /// The first reference position in machine coordinates and setup units:
+    /// `reference`, or when it is left out the home of setting 7.49.
+    pub fn first_reference(&self) -> Position {
+        if self.reference != Position::default() {
+            return self.reference;
+        }
+        self.home()
+    }
+}
