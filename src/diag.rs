@@ -200,6 +200,19 @@ pub fn finish(diagnostics: &mut [Diagnostic], text: &str) {
     }
 }
 
+/// `n` with thousands separated (`1,000,000`), as a message writes it.
+pub(crate) fn thousands(n: u64) -> String {
+    let digits = n.to_string();
+    let mut out = String::new();
+    for (i, c) in digits.chars().enumerate() {
+        if i > 0 && (digits.len() - i).is_multiple_of(3) {
+            out.push(',');
+        }
+        out.push(c);
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -14,7 +14,7 @@
 
 use super::sequence::Sequences;
 use super::{Runner, Step};
-use crate::diag::{Diagnostic, Span};
+use crate::diag::{Diagnostic, Span, thousands};
 use crate::machine::Flow;
 use crate::machine::calls::Jump;
 use crate::report::Place;
@@ -144,19 +144,6 @@ impl Saved {
         sequences.current = self.current.start;
         sequences.caller = self.stack.last().and_then(|f| f.caller.start);
     }
-}
-
-/// `n` with thousands separated (`1,000,000`), as a message writes it.
-pub(super) fn thousands(n: u64) -> String {
-    let digits = n.to_string();
-    let mut out = String::new();
-    for (i, c) in digits.chars().enumerate() {
-        if i > 0 && (digits.len() - i).is_multiple_of(3) {
-            out.push(',');
-        }
-        out.push(c);
-    }
-    out
 }
 
 impl<'t> Runner<'t> {

@@ -7,8 +7,11 @@
 //! Also the totals the run keeps per stretch between two checkpoints, so
 //! that a run made again can add those before and after the edit.
 
-use crate::machine::Machine;
+use super::{RunOptions, Runner, Step};
+use crate::machine::{EventKind, Machine};
+use crate::report::BlockReport;
 use crate::report::Bounds;
+use crate::setup::Setup;
 use crate::setup::Units;
 use crate::syntax::Resume;
 
@@ -172,6 +175,71 @@ impl Totals {
         self.before.add(&segment);
         if let Some(last) = checkpoints.last_mut() {
             last.segment = segment;
+        }
+    }
+}
+
+/// The report of block `index` of a run of `text` and `setup` that kept
+/// `checkpoints`, made again from the checkpoint before it; None when the
+/// run has no such block or kept no checkpoints. It equals the report a run
+/// keeping every block would have kept.
+pub fn report_at(
+    text: &str,
+    setup: &Setup,
+    checkpoints: &Checkpoints,
+    index: u32,
+) -> Option<BlockReport> {
+    if index as usize >= checkpoints.block_count() {
+        return None;
+    }
+    let at = checkpoints.points.iter().rev().find(|c| c.index <= index)?;
+    let options = RunOptions {
+        keep_blocks: true,
+        keep_moves: false,
+        max_moves: usize::MAX,
+        max_blocks: usize::MAX,
+        checkpoint_every: 0,
+    };
+    let mut r = Runner::resume(text, setup, options, at);
+    loop {
+        let this = r.index;
+        let first_move = r.move_count;
+        match r.step()? {
+            Step::Ran(flow) if this == index => {
+                let place = match r.calls.is_some() {
+                    true => r.place_of(flow),
+                    false => None,
+                };
+                return Some(BlockReport {
+                    index,
+                    span: r.block.span,
+                    state: *r.machine.state(),
+                    notes: std::mem::take(&mut r.out.notes),
+                    first_move: first_move as u32,
+                    move_count: r.out.moves.len() as u32,
+                    data: r
+                        .out
+                        .events
+                        .iter()
+                        .filter_map(|e| match e {
+                            EventKind::DataSet(set) => Some(set.clone()),
+                            _ => None,
+                        })
+                        .collect(),
+                    variables: r
+                        .out
+                        .events
+                        .iter()
+                        .filter_map(|e| match e {
+                            EventKind::VariableSet(set) => Some(*set),
+                            _ => None,
+                        })
+                        .collect(),
+                    place,
+                });
+            }
+            Step::Ran(_) | Step::Passed | Step::Skipped(_) => {}
+            Step::Stopped(_) => return None,
         }
     }
 }

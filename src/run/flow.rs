@@ -16,9 +16,8 @@
 
 use std::collections::HashMap;
 
-use super::calls::thousands;
 use super::{Runner, Step};
-use crate::diag::{Diagnostic, Span};
+use crate::diag::{Diagnostic, Span, thousands};
 use crate::machine::calls::MacroJump;
 use crate::machine::{EventKind, Flow, Out};
 use crate::macros::{Statement, StatementKind, Value, alarm};

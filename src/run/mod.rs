@@ -25,7 +25,7 @@ mod sequence;
 mod skip;
 
 use checkpoint::Totals;
-pub use checkpoint::{Checkpoint, Checkpoints, Read};
+pub use checkpoint::{Checkpoint, Checkpoints, Read, report_at};
 
 use crate::diag::{self, Diagnostic};
 use crate::machine::program::ProgramText;
@@ -744,70 +744,5 @@ fn account(
         result.end = End::ProgramEnd {
             line: block.span.line,
         };
-    }
-}
-
-/// The report of block `index` of a run of `text` and `setup` that kept
-/// `checkpoints`, made again from the checkpoint before it; None when the
-/// run has no such block or kept no checkpoints. It equals the report a run
-/// keeping every block would have kept.
-pub fn report_at(
-    text: &str,
-    setup: &Setup,
-    checkpoints: &Checkpoints,
-    index: u32,
-) -> Option<BlockReport> {
-    if index as usize >= checkpoints.block_count() {
-        return None;
-    }
-    let at = checkpoints.points.iter().rev().find(|c| c.index <= index)?;
-    let options = RunOptions {
-        keep_blocks: true,
-        keep_moves: false,
-        max_moves: usize::MAX,
-        max_blocks: usize::MAX,
-        checkpoint_every: 0,
-    };
-    let mut r = Runner::resume(text, setup, options, at);
-    loop {
-        let this = r.index;
-        let first_move = r.move_count;
-        match r.step()? {
-            Step::Ran(flow) if this == index => {
-                let place = match r.calls.is_some() {
-                    true => r.place_of(flow),
-                    false => None,
-                };
-                return Some(BlockReport {
-                    index,
-                    span: r.block.span,
-                    state: *r.machine.state(),
-                    notes: std::mem::take(&mut r.out.notes),
-                    first_move: first_move as u32,
-                    move_count: r.out.moves.len() as u32,
-                    data: r
-                        .out
-                        .events
-                        .iter()
-                        .filter_map(|e| match e {
-                            EventKind::DataSet(set) => Some(set.clone()),
-                            _ => None,
-                        })
-                        .collect(),
-                    variables: r
-                        .out
-                        .events
-                        .iter()
-                        .filter_map(|e| match e {
-                            EventKind::VariableSet(set) => Some(*set),
-                            _ => None,
-                        })
-                        .collect(),
-                    place,
-                });
-            }
-            Step::Ran(_) | Step::Passed | Step::Skipped(_) => {}
-            Step::Stopped(_) => return None,
-        }
     }
 }

@@ -11,11 +11,13 @@ use serde::{Deserialize, Serialize};
 
 use crate::diag::{Diagnostic, Span};
 
+mod choices;
 mod positions;
 mod registers;
 mod settings;
 mod specs;
 
+pub use choices::*;
 pub use positions::MachinePositions;
 use registers::register_map;
 pub use registers::{LatheRegister, MAX_TIP, MillPart, MillRegister};
