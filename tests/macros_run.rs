@@ -40,6 +40,57 @@ fn behaviour20_8_words_take_their_values_in_program_order() {
 }
 
 #[test]
+fn behaviour20_8_a_comma_word_takes_a_macro_value() {
+    // ,R#144 with #144 = 2: the corner at X10 Y0 is rounded with R2 — the
+    // line stops 2 before the corner (X8), the arc ends 2 past it (X10
+    // Y2), then Y10. As ,R2. written out.
+    let r = ok(
+        "G90 G00 X0 Y0\n#144 = 2.\nG01 X10. ,R#144 F100.\nY10.\n",
+        &mill(&[]),
+    );
+    let feeds: Vec<_> = r.moves.iter().map(|m| m.to).collect();
+    assert_eq!(feeds.len(), 3);
+    same(feeds[0], [8.0, 0.0, 0.0]);
+    same(feeds[1], [10.0, 2.0, 0.0]);
+    same(feeds[2], [10.0, 10.0, 0.0]);
+    // ,C[#1+1.] with #1 = 2: a chamfer of 3 — the line stops at X7, the
+    // chamfer runs to X10 Y3.
+    let r = ok(
+        "G90 G00 X0 Y0\n#1 = 2.\nG01 X10. ,C[#1+1.] F100.\nY10.\n",
+        &mill(&[]),
+    );
+    same(r.moves[0].to, [7.0, 0.0, 0.0]);
+    same(r.moves[1].to, [10.0, 3.0, 0.0]);
+    // The next block written with a macro value: the corner's look-ahead
+    // does not evaluate it, and says so at the ,R rather than guess.
+    let r = offsetlab::run(
+        "G90 G00 X0 Y0\n#141 = 10.\nG01 X10. ,R2. F100.\nY#141\n",
+        &mill(&[]),
+    );
+    let d = r.diagnostics.iter().find(|d| d.is_error()).unwrap();
+    assert_eq!((d.code, d.line, d.column), ("corner-not-modelled", 3, 10));
+}
+
+#[test]
+fn behaviour20_8_cutter_compensation_warns_before_a_block_with_macro_values() {
+    // G41 D01 = 5 to X0 Y0, then Y#1 (#1 = 40): the look-ahead does not
+    // evaluate Y#1, so the start-up ends perpendicular to its own move
+    // (from X-10 Y-10 to X0 Y0, direction (1, 1)/√2, left normal
+    // (-1, 1)/√2 × 5 = (-3.536, 3.536)) and says so at line 3, instead of
+    // taking the X40 after it for the next move.
+    let text = "G90 G00 X-10. Y-10.\n#1 = 40.\nG01 G41 D01 X0 Y0 F100.\nY#1\nX40.\nM30\n";
+    let r = ok(text, &mill(&[(1, 5.0)]));
+    let w = r
+        .diagnostics
+        .iter()
+        .find(|d| d.code == "cutter-look-ahead-macro")
+        .expect("the warning");
+    assert_eq!(w.line, 3);
+    let h = 5.0 / 2f64.sqrt();
+    same(r.moves[1].to, [-h, h, 0.0]);
+}
+
+#[test]
 fn behaviour20_8_a_g_code_from_a_variable() {
     // #10 = 1: G#10 is G01, a feed move (F100).
     let text = "#10 = 1\nG#10 X5. F100\n";

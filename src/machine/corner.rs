@@ -353,6 +353,17 @@ impl Machine {
             return Ok(None);
         }
         let line = next.span.line;
+        if next.macros.is_some() {
+            // Its values exist only once the blocks before it have run
+            // (behaviour 20.8): the look-ahead cannot know its move.
+            return Err(self.error(
+                "corner-not-modelled",
+                span,
+                format!(
+                    "{letter}: the next block (line {line}) is a macro statement or has words with macro values, which the look-ahead of a chamfer or corner rounding does not evaluate yet (not modelled); the run stops here rather than guess its move"
+                ),
+            ));
+        }
         let mut probe = self.clone();
         probe.reading_ahead = true;
         probe.corner_cut = false;

@@ -151,13 +151,17 @@ impl Blocks<'_> {
         &mut self,
         block_start: usize,
         (i, value): (usize, usize),
-        letter: u8,
+        (letter, comma): (u8, bool),
         line: u32,
         block: &mut Block,
     ) -> usize {
         let end = self.block_end(value);
-        let address =
-            Address::from_letter(letter).filter(|a| !matches!(a, Address::O | Address::N));
+        // `,C` and `,R` take a value as any dimension does (behaviour 1.7).
+        let address = match comma {
+            true => Address::comma(letter),
+            false => Address::from_letter(letter).filter(|a| !matches!(a, Address::O | Address::N)),
+        };
+        let written_as = &self.text[i..i + 1 + usize::from(comma)];
         match macros::value(self.text, value, end, line) {
             Ok((_, after))
                 if matches!(
@@ -174,7 +178,7 @@ impl Blocks<'_> {
                 let msg = format!(
                     "{}: an expression in a word is written in brackets: `{}[{}{o}…]`, not `{word}{o}…`",
                     macros::alarm::FORMAT.alarm,
-                    &self.text[i..i + 1],
+                    written_as,
                     &self.text[value..after],
                     o = &self.text[op..op + 1]
                 );
@@ -350,11 +354,21 @@ pub fn resolve(
 }
 
 /// True if the text at `i` (a block's next thing) opens a macro statement
-/// or a word with a macro value.
+/// or a word with a macro value (a comma word's too: `,R#144`).
 pub(super) fn opens(bytes: &[u8], i: usize) -> bool {
     macros::opens_statement(bytes, i)
         || (bytes[i].is_ascii_alphabetic()
             && macros::opens_value(bytes, lexer::skip_blanks(bytes, i + 1)))
+        || comma_value(bytes, i)
+}
+
+/// A comma word (`,C`, `,R`) with a macro value at `i`.
+fn comma_value(bytes: &[u8], i: usize) -> bool {
+    bytes[i] == b','
+        && bytes
+            .get(i + 1)
+            .is_some_and(|&l| Address::comma(l).is_some())
+        && macros::opens_value(bytes, lexer::skip_blanks(bytes, i + 2))
 }
 
 impl Blocks<'_> {
@@ -371,11 +385,13 @@ impl Blocks<'_> {
         if macros::opens_statement(bytes, i) {
             return self.read_statement(start, i, line, block);
         }
-        let value = lexer::skip_blanks(bytes, i + 1);
+        let comma = comma_value(bytes, i);
+        let letter_at = i + usize::from(comma);
+        let value = lexer::skip_blanks(bytes, letter_at + 1);
         self.read_macro_word(
             start,
             (i, value),
-            bytes[i].to_ascii_uppercase(),
+            (bytes[letter_at].to_ascii_uppercase(), comma),
             line,
             block,
         )

@@ -31,6 +31,7 @@ impl Machine {
     ) -> Next {
         // A plain move next (most blocks) needs no copy and no scratch.
         if let Some(next) = ahead.peek(0)
+            && next.macros.is_none()
             && let Some(path) = self.plain_next_path(next, self.state.modal.motion)
         {
             // A plain move reads the register this block read.
@@ -65,6 +66,9 @@ impl Machine {
             };
             if next.error {
                 return Next::Unknown(Why::Error);
+            }
+            if next.macros.is_some() {
+                return Next::Unknown(Why::Macro(next.span.line));
             }
             let codes = next.codes();
             match codes.non_modal() {
@@ -241,6 +245,9 @@ impl Machine {
         let mut motion = self.state.modal.motion;
         for k in 0..=limit {
             let b = ahead.peek(k)?;
+            if b.macros.is_some() {
+                return None;
+            }
             if let Some(m) = self.plain_still(b, motion, small) {
                 motion = m;
                 continue;

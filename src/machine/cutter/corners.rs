@@ -179,6 +179,17 @@ impl Machine {
             }
             Why::CornerArc => "G39 follows: its arc turns the corner".to_string(),
             Why::CancelHere => "the next block cancels without a move".to_string(),
+            Why::Macro(line) => {
+                let msg = format!(
+                    "the next block (line {line}) is a macro statement or has words with macro values, which offsetlab's look-ahead does not evaluate yet (not modelled): the tool ends perpendicular to this block, and the corner drawn is not the control's"
+                );
+                out.warnings.push(Diagnostic::warning(
+                    "cutter-look-ahead-macro",
+                    b.span,
+                    msg.clone(),
+                ));
+                msg
+            }
             Why::TooFar(n) => {
                 let msg = format!(
                     "no move in the plane within the next {} blocks: the control cannot see the corner, so the tool ends perpendicular to this block and the next move starts from there (overcut or undercut at the corner; setting cutter_blocks_without_motion = {n})",

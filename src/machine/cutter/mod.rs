@@ -93,6 +93,9 @@ enum Why {
     CancelHere,
     /// More blocks without a move in the plane than the control reads.
     TooFar(usize),
+    /// A block with macro syntax (on this line) follows, which the
+    /// look-ahead does not evaluate (behaviour 20.8).
+    Macro(u32),
 }
 
 impl Machine {
