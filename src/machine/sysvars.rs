@@ -17,7 +17,7 @@ use std::sync::Arc;
 use super::data::{MillField, clean};
 use super::{EventKind, Machine, Out, state::DataSet};
 use crate::diag::{Diagnostic, Span};
-use crate::setup::{MAX_OFFSET_VALUE, MachineKind, OffsetMemory, WorkOffsets};
+use crate::setup::{MAX_OFFSET_VALUE, MachineKind, OffsetMemory, Position, WorkOffsets};
 
 /// What a system variable names.
 #[derive(Clone, Copy, Debug)]
@@ -133,48 +133,84 @@ impl Machine {
                 Ok(true)
             }
             Some(Target::Work(p, axis)) => {
-                let unit = self.setup.units;
-                let v = v * self.units().mm() / unit.mm();
-                if v.abs() > unit.max_dimension() {
-                    return Err(Diagnostic::error(
-                        "g10-value",
-                        span,
-                        format!("#{n} = {v}: beyond the work offsets' range"),
-                    ));
-                }
+                let v = self.work_value(n, v, span)?;
                 let mut zero = self.setup.work_offsets.by_p(p);
-                let slot = match axis {
-                    0 => &mut zero.x,
-                    1 => &mut zero.y,
-                    _ => &mut zero.z,
-                };
-                let was = *slot;
-                *slot = v;
+                let was = set_axis(&mut zero, axis, v);
                 *Arc::make_mut(&mut self.setup).work_offsets.by_p_mut(p) = zero;
-                let name = WorkOffsets::name_of_p(p);
-                out.events.push(EventKind::DataSet(DataSet {
-                    table: "work_offsets",
-                    key: name.to_string(),
-                    field: ["x", "y", "z"][axis],
-                    value: clean(v),
-                    was: clean(was),
-                }));
                 let work = self.state.modal.work;
                 let in_force = p == 0 || work.index() == Some(p - 1);
-                out.notes.push(format!(
-                    "#{n} is the {name} zero's {}: set as G10 L2 sets it{}",
-                    ["X", "Y", "Z"][axis],
-                    if in_force {
-                        "; the system is in force: its zero moves now"
-                    } else {
-                        ""
-                    }
-                ));
-                if in_force {
-                    self.select_work(work);
-                }
+                let name = WorkOffsets::name_of_p(p);
+                self.work_zero_written(
+                    out,
+                    (n, axis, v, was),
+                    ("work_offsets", name.to_string()),
+                    &format!("the {name} zero's"),
+                    "G10 L2",
+                    in_force,
+                );
                 Ok(true)
             }
+        }
+    }
+}
+
+/// Sets `axis` of `zero` to `v`; gives what it was.
+pub(super) fn set_axis(zero: &mut Position, axis: usize, v: f64) -> f64 {
+    let slot = match axis {
+        0 => &mut zero.x,
+        1 => &mut zero.y,
+        _ => &mut zero.z,
+    };
+    std::mem::replace(slot, v)
+}
+
+impl Machine {
+    /// A work offset value written through a system variable, in the
+    /// setup's units (the program's converted), within the work offsets'
+    /// range.
+    pub(super) fn work_value(&self, n: u32, v: f64, span: Span) -> Result<f64, Diagnostic> {
+        let unit = self.setup.units;
+        let v = v * self.units().mm() / unit.mm();
+        if v.abs() > unit.max_dimension() {
+            return Err(Diagnostic::error(
+                "g10-value",
+                span,
+                format!("#{n} = {v}: beyond the work offsets' range"),
+            ));
+        }
+        Ok(v)
+    }
+
+    /// What writing a work zero's axis through `#n` says (the event G10
+    /// gives and the block's sentence), and the zero moved now when its
+    /// system is in force (behaviour 20.10, 21).
+    pub(super) fn work_zero_written(
+        &mut self,
+        out: &mut Out,
+        (n, axis, v, was): (u32, usize, f64, f64),
+        (table, key): (&'static str, String),
+        whose: &str,
+        g10: &str,
+        in_force: bool,
+    ) {
+        out.events.push(EventKind::DataSet(DataSet {
+            table,
+            key,
+            field: ["x", "y", "z"][axis],
+            value: clean(v),
+            was: clean(was),
+        }));
+        out.notes.push(format!(
+            "#{n} is {whose} {}: set as {g10} sets it{}",
+            ["X", "Y", "Z"][axis],
+            if in_force {
+                "; the system is in force: its zero moves now"
+            } else {
+                ""
+            }
+        ));
+        if in_force {
+            self.select_work(self.state.modal.work);
         }
     }
 }

@@ -276,53 +276,29 @@ impl Machine {
         span: Span,
         out: &mut Out,
     ) -> Result<(), Diagnostic> {
-        let unit = self.setup.units;
-        let v = v * self.units().mm() / unit.mm();
-        if v.abs() > unit.max_dimension() {
-            return Err(Diagnostic::error(
-                "g10-value",
-                span,
-                format!("#{n} = {v}: beyond the work offsets' range"),
-            ));
-        }
+        let v = self.work_value(n, v, span)?;
         let mut zero = self
             .setup
             .extended_work_offsets
             .get(&p)
             .copied()
             .unwrap_or_default();
-        let slot = match axis {
-            0 => &mut zero.x,
-            1 => &mut zero.y,
-            _ => &mut zero.z,
-        };
-        let was = *slot;
-        *slot = v;
+        let was = super::sysvars::set_axis(&mut zero, axis, v);
         Arc::make_mut(&mut self.setup)
             .extended_work_offsets
             .insert(p, zero);
-        out.events.push(EventKind::DataSet(DataSet {
-            table: "extended_work_offsets",
-            key: format!("{p}"),
-            field: ["x", "y", "z"][axis],
-            value: clean(v),
-            was: clean(was),
-        }));
-        let work = self.state.modal.work;
-        let in_force =
-            matches!(work, crate::syntax::codes::WorkSystem::Additional(q) if u16::from(q) == p);
-        out.notes.push(format!(
-            "#{n} is the G54.1 P{p} zero's {}: set as G10 L20 sets it{}",
-            ["X", "Y", "Z"][axis],
-            if in_force {
-                "; the system is in force: its zero moves now"
-            } else {
-                ""
-            }
-        ));
-        if in_force {
-            self.select_work(work);
-        }
+        let in_force = matches!(
+            self.state.modal.work,
+            crate::syntax::codes::WorkSystem::Additional(q) if u16::from(q) == p
+        );
+        self.work_zero_written(
+            out,
+            (n, axis, v, was),
+            ("extended_work_offsets", format!("{p}")),
+            &format!("the G54.1 P{p} zero's"),
+            "G10 L20",
+            in_force,
+        );
         Ok(())
     }
 
