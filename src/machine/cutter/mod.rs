@@ -253,13 +253,7 @@ impl Machine {
             self.mill_general(b, out)
         };
         self.state.cutter.vector = saved;
-        for m in &mut out.moves[moves_before..] {
-            m.from = add3(m.from, saved);
-            m.to = add3(m.to, saved);
-            if let Some(a) = &mut m.arc {
-                a.center = add3(a.center, saved);
-            }
-        }
+        carry(&mut out.moves[moves_before..], saved);
         ran?;
         let mode = self.state.cutter.mode;
         // The register is read when the block runs (behaviour 4.12); a block
@@ -435,13 +429,7 @@ impl Machine {
         self.state.cutter.vector = [0.0; 3];
         let ran = self.motion_block(b, out);
         self.state.cutter.vector = saved;
-        for m in &mut out.moves[moves_before..] {
-            m.from = add3(m.from, saved);
-            m.to = add3(m.to, saved);
-            if let Some(a) = &mut m.arc {
-                a.center = add3(a.center, saved);
-            }
-        }
+        carry(&mut out.moves[moves_before..], saved);
         ran?;
         self.state.cutter.tip = None;
         let mode = self.state.cutter.mode;
@@ -474,4 +462,16 @@ fn sub3(a: Xyz, b: Xyz) -> Xyz {
 
 fn add3(a: Xyz, b: Xyz) -> Xyz {
     [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+}
+
+/// The block's moves, made with the vector off, carried by the vector as
+/// it stood (the programmed path stays where it is written).
+fn carry(moves: &mut [crate::machine::Move], v: [f64; 3]) {
+    for m in moves {
+        m.from = add3(m.from, v);
+        m.to = add3(m.to, v);
+        if let Some(a) = &mut m.arc {
+            a.center = add3(a.center, v);
+        }
+    }
 }
