@@ -6,18 +6,8 @@
 //! M30.
 
 mod common;
-use common::fixture;
-use offsetlab::report::Run;
-use offsetlab::{Checkpoints, RunOptions, Setup, report_at, run, run_observed};
-
-fn checkpointed(text: &str, setup: &Setup, every: u32) -> (Run, Checkpoints) {
-    let options = RunOptions {
-        keep_blocks: false,
-        checkpoint_every: every,
-        ..RunOptions::default()
-    };
-    run_observed(text, setup, options, &mut ())
-}
+use common::{checkpointed, fixture};
+use offsetlab::{RunOptions, Setup, report_at, run, run_observed};
 
 /// Every block's report made again equals the kept one.
 fn assert_same_reports(text: &str, setup: &Setup) {

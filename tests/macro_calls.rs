@@ -12,7 +12,7 @@ use std::collections::BTreeMap;
 use common::*;
 use offsetlab::report::Run;
 use offsetlab::view::block_view;
-use offsetlab::{Checkpoints, RunOptions, Setup, report_at, run, run_observed, run_with};
+use offsetlab::{RunOptions, report_at, run, run_with};
 
 /// The last value the run gave each variable (None: vacant).
 fn variables(r: &Run, text: &str) -> BTreeMap<u32, Option<f64>> {
@@ -23,16 +23,6 @@ fn variables(r: &Run, text: &str) -> BTreeMap<u32, Option<f64>> {
         }
     }
     m
-}
-
-/// The first error: (code, line, column).
-fn first_error(r: &Run) -> (&'static str, u32, u32) {
-    let d = r
-        .diagnostics
-        .iter()
-        .find(|d| d.is_error())
-        .expect("an error");
-    (d.code, d.line, d.column)
 }
 
 /// The end points of the moves, X and Y.
@@ -424,15 +414,6 @@ fn behaviour21_11_clocks_stand_still_and_the_date_is_refused() {
     assert_eq!(v[&100], Some(0.0));
     assert_eq!(v[&101], Some(500.0));
     assert_eq!(first_error(&r).0, "macro-system-variable");
-}
-
-fn checkpointed(text: &str, setup: &Setup, every: u32) -> (Run, Checkpoints) {
-    let options = RunOptions {
-        keep_blocks: false,
-        checkpoint_every: every,
-        ..RunOptions::default()
-    };
-    run_observed(text, setup, options, &mut ())
 }
 
 /// Drilling by G66 at three places (the macro drills to Z−5, back to Z2).

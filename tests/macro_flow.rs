@@ -12,7 +12,7 @@ use common::*;
 
 use offsetlab::machine::EventKind;
 use offsetlab::report::Run;
-use offsetlab::{Checkpoints, End, RunOptions, Setup, report_at, run, run_observed, run_with};
+use offsetlab::{End, RunOptions, Setup, report_at, run, run_observed, run_with};
 use proptest::prelude::*;
 
 /// The reports of the blocks on `line`, in the order they ran.
@@ -362,15 +362,6 @@ fn behaviour20_16_message_stop_3006_is_a_stop_and_the_run_goes_on() {
             .iter()
             .any(|e| e.line == 2 && e.kind == EventKind::ProgramStop)
     );
-}
-
-fn checkpointed(text: &str, setup: &Setup, every: u32) -> (Run, Checkpoints) {
-    let options = RunOptions {
-        keep_blocks: false,
-        checkpoint_every: every,
-        ..RunOptions::default()
-    };
-    run_observed(text, setup, options, &mut ())
 }
 
 #[test]

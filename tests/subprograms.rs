@@ -12,7 +12,7 @@ use common::*;
 use offsetlab::report::Run;
 use offsetlab::setup::{Control, MainM99, SubprogramP};
 use offsetlab::view::block_view;
-use offsetlab::{Checkpoints, End, RunOptions, Setup, report_at, run, run_observed, run_with};
+use offsetlab::{End, RunOptions, Setup, report_at, run, run_with};
 
 fn with_control(control: Control) -> Setup {
     let mut s = Setup::default();
@@ -37,16 +37,6 @@ fn places<'a>(r: &'a Run, text: &'a str) -> Vec<(u32, Option<String>, Vec<String
             (v.line, v.program, v.stack)
         })
         .collect()
-}
-
-/// The first error: (code, line, column).
-fn first_error(r: &Run) -> (&'static str, u32, u32) {
-    let d = r
-        .diagnostics
-        .iter()
-        .find(|d| d.is_error())
-        .expect("an error");
-    (d.code, d.line, d.column)
 }
 
 /// A square contour stepped down 1 mm each time in G91, called four times.
@@ -386,15 +376,6 @@ fn behaviour19_8_a_subprogram_without_m99_stops_at_its_end() {
         d.message
     );
     assert_eq!(r.moves.len(), 1);
-}
-
-fn checkpointed(text: &str, setup: &Setup, every: u32) -> (Run, Checkpoints) {
-    let options = RunOptions {
-        keep_blocks: false,
-        checkpoint_every: every,
-        ..RunOptions::default()
-    };
-    run_observed(text, setup, options, &mut ())
 }
 
 #[test]

@@ -4,7 +4,7 @@
 use offsetlab::geometry::Xyz;
 use offsetlab::report::Run;
 use offsetlab::view::{BlockView, block_view};
-use offsetlab::{MachineKind, Setup, run};
+use offsetlab::{Checkpoints, MachineKind, RunOptions, Setup, run, run_observed};
 
 /// A mill setup with registers `(number, value)`.
 pub fn mill(registers: &[(u16, f64)]) -> Setup {
@@ -88,4 +88,25 @@ pub fn fixture(name: &str) -> (String, Setup) {
     let setup =
         Setup::from_json(&std::fs::read_to_string(format!("{dir}{name}.json")).unwrap()).unwrap();
     (text, setup)
+}
+
+/// A run keeping a checkpoint every `every` blocks and no block reports
+/// (as the page runs), with its checkpoints.
+pub fn checkpointed(text: &str, setup: &Setup, every: u32) -> (Run, Checkpoints) {
+    let options = RunOptions {
+        keep_blocks: false,
+        checkpoint_every: every,
+        ..RunOptions::default()
+    };
+    run_observed(text, setup, options, &mut ())
+}
+
+/// The first error: (code, line, column).
+pub fn first_error(r: &Run) -> (&'static str, u32, u32) {
+    let d = r
+        .diagnostics
+        .iter()
+        .find(|d| d.is_error())
+        .expect("an error");
+    (d.code, d.line, d.column)
 }
