@@ -345,10 +345,14 @@ impl<'a> Tracer<'a> {
     ) {
         // Arcs are tessellated for the scale they are drawn at.
         let arcs = (DRAW_TOLERANCE_PX / f.transform.scale, s.arc_points());
-        let keep = |m: usize| tp.kinds.get(m).is_some_and(|&k| is_rapid(k) == rapid);
+        let stride = f.stride.max(1);
+        let keep = |m: usize| {
+            (stride == 1 || m.is_multiple_of(stride))
+                && tp.kinds.get(m).is_some_and(|&k| is_rapid(k) == rapid)
+        };
         tp.visit(range, programmed, arcs, keep, |m, visit| match visit {
             Visit::Point(i, p) => {
-                let (u, v) = f.plane.project(&p);
+                let (u, v) = f.projection.project(&p);
                 let (x, y) = f.transform.to_screen(u, v);
                 self.point(s, m, i, (x, y));
                 false
@@ -464,9 +468,9 @@ fn whole_arc(
     // The plane's axes as the view shows them (a projection is linear).
     let [ea, eb, en] = arc.frame();
     let (a, b, n) = (
-        f.plane.project(&ea),
-        f.plane.project(&eb),
-        f.plane.project(&en),
+        f.projection.project(&ea),
+        f.projection.project(&eb),
+        f.projection.project(&en),
     );
     let (la, lb) = (a.0 * a.0 + a.1 * a.1, b.0 * b.0 + b.1 * b.1);
     let dot = a.0 * b.0 + a.1 * b.1;
@@ -477,7 +481,7 @@ fn whole_arc(
     }
     let (centre, sweep) = arc.centre_and_sweep(programmed, from);
     let screen = |p: Xyz| {
-        let (u, v) = f.plane.project(&p);
+        let (u, v) = f.projection.project(&p);
         f.transform.to_screen(u, v)
     };
     // Screen y runs down: the plane's turn from its first axis to its
