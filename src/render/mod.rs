@@ -165,7 +165,7 @@ pub const RASTER_FROM_MOVES: usize = 2_000;
 /// over it: a turned view cannot reuse the last frame's pixels as a pan
 /// does, and the whole path's frame comes when the gesture pauses
 /// (behaviour 10.8).
-pub const ORBIT_MOVES: usize = 40_000;
+pub const ORBIT_MOVES: usize = 10_000;
 /// Toolpaths of this many moves or more are drawn on the pixel layer in
 /// parts, front to back, what lies hidden not even recorded
 /// ([`Raster::plan`]): from here a drawing records more points than

@@ -209,7 +209,7 @@ mod tests {
         }
         let tp = toolpath(&program);
         let mut s = super::super::svg::SvgSurface::new();
-        // 60 002 moves over 40 000: every 2nd.
+        // About 1.5 × ORBIT_MOVES moves: every 2nd is drawn.
         let f = draw_scene_moving(&mut s, &tp, &iso(), 400.0, 300.0);
         assert_eq!(f.stride, tp.len().div_ceil(ORBIT_MOVES));
         assert_eq!(f.stride, 2);

@@ -345,12 +345,8 @@ impl<'a> Tracer<'a> {
     ) {
         // Arcs are tessellated for the scale they are drawn at.
         let arcs = (DRAW_TOLERANCE_PX / f.transform.scale, s.arc_points());
-        let stride = f.stride.max(1);
-        let keep = |m: usize| {
-            (stride == 1 || m.is_multiple_of(stride))
-                && tp.kinds.get(m).is_some_and(|&k| is_rapid(k) == rapid)
-        };
-        tp.visit(range, programmed, arcs, keep, |m, visit| match visit {
+        let keep = |m: usize| tp.kinds.get(m).is_some_and(|&k| is_rapid(k) == rapid);
+        let mut each = |m: usize, visit: Visit<'_>| match visit {
             Visit::Point(i, p) => {
                 let (u, v) = f.projection.project(&p);
                 let (x, y) = f.transform.to_screen(u, v);
@@ -367,7 +363,14 @@ impl<'a> Tracer<'a> {
                 // (Worked out only for a pen that may take it.)
                 s.takes_arcs() && self.arc(s, whole_arc(f, arc, programmed, (from, to), count))
             }
-        });
+        };
+        // A turned 3D view's sample (behaviour 10.8): every stride-th move alone.
+        match f.stride.max(1) {
+            1 => tp.visit(range, programmed, arcs, keep, &mut each),
+            n => (range.start.next_multiple_of(n)..range.end)
+                .step_by(n)
+                .for_each(|m| tp.visit(m..m + 1, programmed, arcs, keep, &mut each)),
+        }
     }
 
     /// Ends the tracing: draws the vertex passed over last, if any.
