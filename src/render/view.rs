@@ -533,6 +533,9 @@ mod tests {
     /// 0.40825) and (0,0,1) at (0, 0.81650): each axis √(0.5 + 1/6) =
     /// 0.81650 long on the screen, the isometric view's equal axes.
     #[test]
+    // The figures are the hand computation's, to five places (0.70711 is
+    // cos 45° as written above, not a constant to look up).
+    #[allow(clippy::approx_constant)]
     fn behaviour10_8_iso_view_projects_the_axes_by_hand() {
         let p = Plane::Orbit(Angles::ISO).projection();
         let near = |a: (f64, f64), b: (f64, f64)| {
