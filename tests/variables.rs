@@ -14,17 +14,22 @@ use offsetlab::report::{BlockReport, Run};
 use offsetlab::view::block_view;
 use offsetlab::{Earlier, RunOptions, Setup, report_at, rerun_observed};
 
-/// The variables a block reports: (number, value, line that set it).
-fn watched(b: &BlockReport) -> (u8, Vec<(u32, Option<f64>, Option<u32>)>) {
+/// One variable as a block reports it: (number, value, line that set it).
+type Row = (u32, Option<f64>, Option<u32>);
+
+/// The level and the variables a block reports.
+fn watched(b: &BlockReport) -> (u8, Vec<Row>) {
     let w: &WatchView = b.watch.as_deref().expect("a watch");
     let v = w
         .variables
         .iter()
-        .map(|&Watched {
+        .map(
+            |&Watched {
                  variable,
                  value,
                  line,
-             }| (variable, value, line))
+             }| (variable, value, line),
+        )
         .collect();
     (w.level, v)
 }
@@ -107,8 +112,14 @@ fn behaviour21_12_a_system_variable_shows_the_tables_value_after_each_block() {
     // block, and the line that set it through the variable stays line 2.
     let text = "G90 G54\n#5221 = 100.\nG10 L2 P1 X50.\nM30\n";
     let r = ok(text, &mill(&[]));
-    assert_eq!(watched(&r.blocks[1]), (0, vec![(5221, Some(100.0), Some(2))]));
-    assert_eq!(watched(&r.blocks[2]), (0, vec![(5221, Some(50.0), Some(2))]));
+    assert_eq!(
+        watched(&r.blocks[1]),
+        (0, vec![(5221, Some(100.0), Some(2))])
+    );
+    assert_eq!(
+        watched(&r.blocks[2]),
+        (0, vec![(5221, Some(50.0), Some(2))])
+    );
     // #2001 (tool offset 1, memory type A) read at line 1: 5.
     let r = ok("#1 = #2001 * 2\nM30\n", &mill(&[(1, 5.0)]));
     assert_eq!(
