@@ -180,6 +180,29 @@ fn behaviour21_13_a_macro_shows_its_own_level_and_the_caller_gets_its_marks_back
 }
 
 #[test]
+fn behaviour21_13_a_modal_calls_arguments_are_set_at_the_g66() {
+    // Line 3's move calls O9020 with G66's arguments, written on line 2:
+    // Z-5. → #26, R2. → #18. Inside the macro (level 1) they show line 2;
+    // after G67 and its M99 the main program touched no variable.
+    let text = "G90 G00 X0 Y0 Z10.
+G66 P9020 Z-5. R2.
+G00 X10.
+G67
+M30
+O9020
+G01 Z#26 F100.
+M99
+";
+    let r = ok(text, &mill(&[]));
+    let drill = on_line(&r, 7);
+    assert_eq!(
+        watched(drill[0]),
+        (1, vec![(18, Some(2.0), Some(2)), (26, Some(-5.0), Some(2))])
+    );
+    assert!(on_line(&r, 4)[0].watch.is_none());
+}
+
+#[test]
 fn behaviour21_13_reports_made_again_from_checkpoints_carry_the_same_variables() {
     for (text, every) in [(BOLT_CIRCLE, 3), (G65_BOLT_CIRCLE, 2), (BOLT_CIRCLE, 7)] {
         let setup = mill(&[]);

@@ -103,9 +103,20 @@ impl Machine {
     }
 
     /// The variables touched, with their values now; None when the program
-    /// touched none.
+    /// touched none (or none of the level standing).
+    #[inline]
     pub(crate) fn watched(&self) -> Option<Box<WatchView>> {
-        let w = self.watch.as_deref()?;
+        match self.watch.as_deref() {
+            Some(w) => self.watched_of(w),
+            None => None,
+        }
+    }
+
+    /// [`Machine::watched`] of a program that touched variables: out of
+    /// line, so a run keeping block reports pays one test per block.
+    #[cold]
+    #[inline(never)]
+    fn watched_of(&self, w: &Watch) -> Option<Box<WatchView>> {
         let level = self.macro_level();
         let locals = w.levels.get(usize::from(level)).into_iter().flat_map(|l| {
             l.iter()
@@ -123,7 +134,8 @@ impl Machine {
                 },
                 line: (m != READ).then_some(m),
             })
-            .collect();
-        Some(Box::new(WatchView { level, variables }))
+            .collect::<Vec<_>>();
+        // A macro's level may have touched variables its caller did not.
+        (!variables.is_empty()).then(|| Box::new(WatchView { level, variables }))
     }
 }

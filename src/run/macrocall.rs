@@ -88,8 +88,13 @@ pub(super) fn enter(machine: &mut Machine, jump: Jump, line: u32) -> Option<Box<
         m.in_modal = m.in_modal.saturating_add(1);
     }
     let number = m.level;
+    // The arguments were written at the G65, or at the G66 for its modal
+    // calls: the Variables panel names that line (behaviour 21.13).
+    let line = match (&m.modal, modal) {
+        (Some(call), true) => call.line,
+        _ => line,
+    };
     machine.set_locals(&args);
-    // The Variables panel shows the new level's arguments (behaviour 21.12).
     machine.watch_level(&args, line);
     Some(Box::new(Level {
         saved,
