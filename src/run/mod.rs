@@ -723,6 +723,7 @@ fn account(
             move_count: out.moves.len() as u32,
             data,
             variables,
+            watch: machine.watched(),
             place: place.take(),
         });
     }
