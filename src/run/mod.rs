@@ -606,6 +606,7 @@ fn fresh(setup: &Setup) -> Run {
         travel: Default::default(),
         end: End::Completed,
         skipped: 0,
+        positions: setup.positions_in_effect(),
     }
 }
 
@@ -714,10 +715,17 @@ fn account(
         }
     }
     if options.keep_blocks {
+        // The state before the block is the last block's after it (a
+        // run that keeps reports keeps every one from the first).
+        let before = match result.blocks.last() {
+            Some(b) => b.state.machine_position(),
+            None => crate::machine::start_machine_position(machine.setup()),
+        };
         result.blocks.push(BlockReport {
             index,
             span: block.span,
             state: *machine.state(),
+            before,
             notes: std::mem::take(&mut out.notes),
             first_move: first_move as u32,
             move_count: out.moves.len() as u32,
