@@ -576,7 +576,9 @@ fn decode_plain(fragment: &str) -> Result<Link, LinkError> {
     // The tool list (behaviour 9.9): `tool=NN:D10,L120`, repeatable.
     for spec in tools {
         let spec = spec.replacen(':', "=", 1);
-        doc.setup.set_tool(&spec).map_err(|e| err("link-plain", e))?;
+        doc.setup
+            .set_tool(&spec)
+            .map_err(|e| err("link-plain", e))?;
     }
     if doc.setup.machine == MachineKind::Lathe
         && let Some(v) = &mut view

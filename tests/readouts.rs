@@ -96,12 +96,18 @@ fn behaviour6_12_the_page_shows_the_distance_of_the_whole_run() {
     for i in [1u32, 511, 512, 513, 600] {
         let page = serde_json::to_value(s.block(i)).unwrap();
         let run = serde_json::to_value(block_view(&whole.blocks[i as usize], &text)).unwrap();
-        assert_eq!(page["distance_to_go"], json!({"x": 1.0, "y": 0.0, "z": 0.0}));
+        assert_eq!(
+            page["distance_to_go"],
+            json!({"x": 1.0, "y": 0.0, "z": 0.0})
+        );
         assert_eq!(page, run, "block {i}");
     }
     // The F block before them moves nothing.
     let first = serde_json::to_value(s.block(0)).unwrap();
-    assert_eq!(first["distance_to_go"], json!({"x": 0.0, "y": 0.0, "z": 0.0}));
+    assert_eq!(
+        first["distance_to_go"],
+        json!({"x": 0.0, "y": 0.0, "z": 0.0})
+    );
 }
 
 /// The summary reports the start and reference positions the run used, in
@@ -151,8 +157,10 @@ fn behaviour6_13_the_summary_has_the_positions_in_effect() {
 /// values are refused.
 #[test]
 fn behaviour7_53_the_tool_list_reads_writes_and_is_checked() {
-    let s = Setup::from_json(r#"{"tools":{"1":{"diameter":10,"length":120},"12":{"nose_radius":0.8,"tip":3}}}"#)
-        .unwrap();
+    let s = Setup::from_json(
+        r#"{"tools":{"1":{"diameter":10,"length":120},"12":{"nose_radius":0.8,"tip":3}}}"#,
+    )
+    .unwrap();
     assert_eq!(
         s.tools[&1],
         Tool {
@@ -195,8 +203,10 @@ fn behaviour7_53_the_tool_list_reads_writes_and_is_checked() {
 /// read it back.
 #[test]
 fn behaviour9_9_plain_links_carry_the_tool_list() {
-    let mut doc = offsetlab::Document::default();
-    doc.program = "T1 M06\n".into();
+    let mut doc = offsetlab::Document {
+        program: "T1 M06\n".into(),
+        ..Default::default()
+    };
     doc.setup.set_tool("1=D10,L120").unwrap();
     doc.setup.set_tool("2=D6").unwrap();
     let link = offsetlab::share::encode_plain(&doc, false);
@@ -235,13 +245,20 @@ fn tool_circles(s: &Session) -> (render::Frame, Vec<(f64, f64, f64, bool)>) {
         .skip(1)
         .map(|c| {
             let attr = |name: &str| -> f64 {
-                let start = c.find(&format!(" {name}=\"")).map(|i| i + 1).unwrap_or_else(|| {
-                    c.find(&format!("{name}=\"")).unwrap()
-                }) + name.len()
+                let start = c
+                    .find(&format!(" {name}=\""))
+                    .map(|i| i + 1)
+                    .unwrap_or_else(|| c.find(&format!("{name}=\"")).unwrap())
+                    + name.len()
                     + 2;
                 c[start..].split('"').next().unwrap().parse().unwrap()
             };
-            (attr("cx"), attr("cy"), attr("r"), c.contains("stroke-dasharray"))
+            (
+                attr("cx"),
+                attr("cy"),
+                attr("r"),
+                c.contains("stroke-dasharray"),
+            )
         })
         .collect();
     (frame, circles)
@@ -308,10 +325,16 @@ fn behaviour13_16_compensation_reads_the_register_not_the_tool_list() {
     let (_, circles) = tool_circles(&s);
     assert_eq!(circles.iter().filter(|c| c.3).count(), 1);
     // With D01 = 5 the register's circle (solid, radius 5) joins it.
-    let mut s = session(text, r#"{"tools":{"01":{"diameter":10}},"offsets":{"01":5}}"#);
+    let mut s = session(
+        text,
+        r#"{"tools":{"01":{"diameter":10}},"offsets":{"01":5}}"#,
+    );
     step(&mut s, "XY", 3);
     let (frame, circles) = tool_circles(&s);
     let r = 5.0 * frame.transform.scale;
-    let solid: Vec<_> = circles.iter().filter(|c| !c.3 && (c.2 - r).abs() < 0.01).collect();
+    let solid: Vec<_> = circles
+        .iter()
+        .filter(|c| !c.3 && (c.2 - r).abs() < 0.01)
+        .collect();
     assert_eq!(solid.len(), 1, "{circles:?}");
 }

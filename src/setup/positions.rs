@@ -120,7 +120,10 @@ impl Setup {
             machine_positions: self.settings.machine_positions(),
             start: round(self.start_position()),
             reference: round(self.first_reference()),
-            second_reference: round(self.second_reference.unwrap_or_else(|| self.first_reference())),
+            second_reference: round(
+                self.second_reference
+                    .unwrap_or_else(|| self.first_reference()),
+            ),
         }
     }
 }

@@ -76,7 +76,9 @@ impl Setup {
                     .ok()
                     .filter(|t| *t <= MAX_TIP)
                     .ok_or_else(|| {
-                        format!("tool `{spec}`: the tip direction T is a whole number 0 to {MAX_TIP}")
+                        format!(
+                            "tool `{spec}`: the tip direction T is a whole number 0 to {MAX_TIP}"
+                        )
                     })?;
             } else {
                 return Err(format!(
