@@ -405,6 +405,43 @@ G00 X50. Z0
 }
 
 #[test]
+fn behaviour21_15_lathe_work_offsets_are_x_first_and_z_second() {
+    // A two-axis lathe: #5221 G54 X, #5222 G54 Z, #5242 G55 Z (20 numbers
+    // a system). G54 Z at −100 in the setup.
+    let mut s = lathe(&[]);
+    s.work_offsets.by_p_mut(1).z = -100.0;
+    let text = "G54 G00 X20. Z0
+#100 = #5221
+#101 = #5222
+#5221 = 10.
+X20. Z0
+#102 = #5021
+#103 = #5022
+#5242 = -50.
+G55 X20. Z0
+#104 = #5021
+#105 = #5022
+#106 = #5242
+#5223 = 1.
+";
+    let r = run(text, &s);
+    let v = variables(&r, text);
+    assert_eq!(v[&100], Some(0.0));
+    assert_eq!(v[&101], Some(-100.0));
+    // G54 in force: its X zero moves to 10 at once (the tool stays, its
+    // work X reads 10), so X20. Z0 after it is machine X 10 + 20 = 30,
+    // Z −100 + 0 = −100.
+    assert_eq!(v[&102], Some(30.0));
+    assert_eq!(v[&103], Some(-100.0));
+    // G55 (X 0, Z −50 as written): X 20, Z −50.
+    assert_eq!(v[&104], Some(20.0));
+    assert_eq!(v[&105], Some(-50.0));
+    assert_eq!(v[&106], Some(-50.0));
+    // A third axis number of a two-axis lathe is no variable offsetlab has.
+    assert_eq!(first_error(&r), ("macro-system-variable", 13, 1));
+}
+
+#[test]
 fn behaviour21_11_clocks_stand_still_and_the_date_is_refused() {
     // #3001 reads 0 at the start, keeps what is written; #3011 (the date) is
     // no value a run has.

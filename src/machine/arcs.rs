@@ -6,7 +6,7 @@ use super::arc::{self, ArcError, Circle};
 use super::{ArcInfo, Machine, modal};
 use crate::diag::Diagnostic;
 use crate::geometry::{Xyz, to_units};
-use crate::setup::{MachineKind, Units};
+use crate::setup::MachineKind;
 use crate::syntax::Block;
 
 impl Machine {
@@ -35,10 +35,7 @@ impl Machine {
             p
         };
         let ccw = req.ccw;
-        let tol = match self.units() {
-            Units::Mm => 0.01,
-            Units::Inch => 0.0005 * 25.4,
-        };
+        let tol = self.arc_tolerance();
         let prog0 = self.state.programmed;
         let act0 = self.actual();
         let (p0, p1, a0, a1) = (
@@ -82,7 +79,7 @@ impl Machine {
             let f = |v: f64| format!("{:.d$}", to_units(v, unit));
             match e {
                 ArcError::RadiusMismatch { start, end } => format!(
-                    "the {path} arc's start is {} from its centre and its end {} (difference {} > {})",
+                    "the {path} arc's start is {} from its centre and its end {} (difference {} > {}, setting arc_tolerance: Fanuc parameter 3410, alarm PS0020)",
                     f(start),
                     f(end),
                     f((start - end).abs()),

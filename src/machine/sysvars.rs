@@ -10,7 +10,8 @@
 //! wear and geometry so, #2401–#2600 or #12001–#12999 the D wear and
 //! #2601–#2800 or #13001–#13999 the D geometry. Work offsets: #5201–#5203
 //! the external offset's X, Y, Z, then 20 numbers a system: #5221 G54 X …
-//! #5323 G59 Z. The lathe's numbers are not modelled yet (refused).
+//! #5323 G59 Z. On the lathe #5201–#5322 the same with X first and Z
+//! second (behaviour 21.15).
 
 use std::sync::Arc;
 
@@ -31,7 +32,20 @@ enum Target {
 
 impl Machine {
     fn system_target(&self, n: u32) -> Option<Target> {
-        if self.setup.machine != MachineKind::Mill {
+        if self.setup.machine == MachineKind::Lathe {
+            // A two-axis lathe's first axis is X and its second Z (the
+            // 0i-TF numbering, as the positions of 21.8): #5221 G54 X,
+            // #5222 G54 Z. Its tool offsets are 21.10's.
+            if let 5201..=5322 = n {
+                let k = (n - 5201) as usize;
+                let (p, axis) = (k / 20, k % 20);
+                let axis = match axis {
+                    0 => 0,
+                    1 => 2,
+                    _ => return None,
+                };
+                return (p <= 6).then_some(Target::Work(p, axis));
+            }
             return None;
         }
         let memory = self.setup.settings.offset_memory();

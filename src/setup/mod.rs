@@ -44,6 +44,9 @@ pub const MAX_EXTENDED_WORK: u16 = 99;
 pub const DEFAULT_RAPID_RATE: f64 = 24_000.0;
 /// The largest rapid rate a setup may give, in its units per minute.
 pub const MAX_RAPID_RATE: f64 = 1_000_000.0;
+/// The largest arc radius tolerance a setup may give, in its units
+/// (behaviour 7.56): past it the check would pass a different arc.
+pub const MAX_ARC_TOLERANCE: f64 = 10.0;
 
 /// Milling machine (G43/G44/G45–G48) or lathe (T-code offsets).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -502,6 +505,16 @@ impl Setup {
                 ),
             ));
         }
+        if let Some(t) = self.settings.arc_tolerance
+            && (!t.is_finite() || t <= 0.0 || t > MAX_ARC_TOLERANCE)
+        {
+            out.push(setup_error(
+                "setup-range",
+                format!(
+                    "settings.arc_tolerance = {t} must be more than 0 and at most {MAX_ARC_TOLERANCE} (setup units)"
+                ),
+            ));
+        }
         if let Some(d) = self.settings.peck_retract
             && (!d.is_finite() || d < 0.0 || d > max)
         {
@@ -579,6 +592,20 @@ impl Setup {
         self.settings
             .rapid_rate
             .map_or(DEFAULT_RAPID_RATE, |r| r * self.units.mm())
+    }
+
+    /// How far apart an arc's start and end may lie from its centre, in
+    /// millimetres (behaviour 2.13, 7.56): the setting (Fanuc parameter
+    /// 3410, in setup units), or 0.01 mm in a metric program and 0.0005 in
+    /// in an inch one (`units` is the program's units at the arc).
+    pub fn arc_tolerance_mm(&self, units: Units) -> f64 {
+        match self.settings.arc_tolerance {
+            Some(t) => t * self.units.mm(),
+            None => match units {
+                Units::Mm => 0.01,
+                Units::Inch => 0.0005 * 25.4,
+            },
+        }
     }
 
     /// The G73/G83 retract amount in millimetres.

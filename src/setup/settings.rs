@@ -145,6 +145,11 @@ pub struct Settings {
     /// 7.45, 21.4); read it with [`Settings::macro_nesting`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub macro_nesting: Option<u8>,
+    /// The arc radius check's tolerance in setup units (behaviour 7.56,
+    /// 2.13): Fanuc parameter 3410; read it with
+    /// [`crate::setup::Setup::arc_tolerance_mm`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub arc_tolerance: Option<f64>,
 }
 
 impl Settings {

@@ -417,9 +417,6 @@ impl Machine {
 
     /// The radius check's tolerance (behaviour 2.13).
     pub(in crate::machine) fn arc_tolerance(&self) -> f64 {
-        match self.units() {
-            crate::setup::Units::Mm => 0.01,
-            crate::setup::Units::Inch => 0.0005 * 25.4,
-        }
+        self.setup.arc_tolerance_mm(self.units())
     }
 }

@@ -323,10 +323,7 @@ impl Machine {
         dir: ArcDirection,
     ) -> Result<Circle, Diagnostic> {
         let ccw = dir == ArcDirection::Ccw;
-        let tol = match self.units() {
-            crate::setup::Units::Mm => 0.01,
-            crate::setup::Units::Inch => 0.0005 * 25.4,
-        };
+        let tol = self.arc_tolerance();
         let p0 = [at[1], at[0] / 2.0];
         let p1 = [to[1], to[0] / 2.0];
         let circle = match blk.value(Address::R) {
