@@ -37,7 +37,7 @@ pub(crate) use arcs::ArcRequest;
 pub use state::{ArcInfo, BlockState, DataSet, EventKind, Move, MoveKind, PolarState, VariableSet};
 
 use crate::diag::{Diagnostic, Span};
-use crate::geometry::{Xyz, add, scale};
+use crate::geometry::{Xyz, add};
 use crate::offsets::cutter::CutterState;
 use crate::offsets::lathe::LatheState;
 use crate::offsets::length::LengthState;
@@ -202,7 +202,7 @@ const AXES: [(Address, char); 3] = [(Address::X, 'X'), (Address::Y, 'Y'), (Addre
 impl Machine {
     /// A machine at the setup's start position, in its start state (behaviour 2.3).
     pub fn new(setup: Arc<Setup>) -> Machine {
-        let (start, origin) = start_and_origin(&setup);
+        let (start, origin) = setup.start_and_origin_mm();
         let state = BlockState {
             machine: setup.machine,
             system: setup.settings.gcode_system(),
@@ -777,26 +777,4 @@ impl Machine {
             None => Ok(()),
         }
     }
-}
-
-/// Where the tool starts (G54 coordinates, mm) and G54's zero with the
-/// external work offset every system carries (machine coordinates, mm,
-/// behaviour 17.9): a run's first position.
-fn start_and_origin(setup: &Setup) -> (Xyz, Xyz) {
-    let unit = setup.units.mm();
-    let w = &setup.work_offsets;
-    let origin = scale(add(w.get(0).to_array(), w.ext.to_array()), unit);
-    let start = scale(setup.start_position().to_array(), unit);
-    let start = match setup.machine {
-        MachineKind::Mill => start,
-        MachineKind::Lathe => [start[0], 0.0, start[2]],
-    };
-    (start, origin)
-}
-
-/// The tool's machine position before a run's first block, mm (the
-/// distance to go of the first block starts there, behaviour 6.12).
-pub fn start_machine_position(setup: &Setup) -> Xyz {
-    let (start, origin) = start_and_origin(setup);
-    add(start, origin)
 }

@@ -719,7 +719,7 @@ fn account(
         // run that keeps reports keeps every one from the first).
         let before = match result.blocks.last() {
             Some(b) => b.state.machine_position(),
-            None => crate::machine::start_machine_position(machine.setup()),
+            None => machine.setup().start_machine_position_mm(),
         };
         result.blocks.push(BlockReport {
             index,

@@ -127,3 +127,28 @@ impl Setup {
         }
     }
 }
+
+impl Setup {
+    /// Where the tool starts (G54 coordinates, mm; the lathe's Y 0) and
+    /// G54's zero with the external work offset every system carries
+    /// (machine coordinates, mm, behaviour 17.9): a run's first position.
+    pub fn start_and_origin_mm(&self) -> (crate::geometry::Xyz, crate::geometry::Xyz) {
+        use crate::geometry::{add, scale};
+        let unit = self.units.mm();
+        let w = &self.work_offsets;
+        let origin = scale(add(w.get(0).to_array(), w.ext.to_array()), unit);
+        let start = scale(self.start_position().to_array(), unit);
+        let start = match self.machine {
+            MachineKind::Mill => start,
+            MachineKind::Lathe => [start[0], 0.0, start[2]],
+        };
+        (start, origin)
+    }
+
+    /// The tool's machine position before a run's first block, mm (the
+    /// first block's distance to go starts there, behaviour 6.12).
+    pub fn start_machine_position_mm(&self) -> crate::geometry::Xyz {
+        let (start, origin) = self.start_and_origin_mm();
+        crate::geometry::add(start, origin)
+    }
+}
