@@ -588,6 +588,18 @@ impl Making {
     }
 }
 
+/// The tool's machine position before the block being reported (6.12):
+/// the last block's after it — a run that keeps reports keeps every one
+/// from the first — or where the run starts. Out of line: the runs that
+/// keep no reports (`check`) never come here.
+#[inline(never)]
+fn position_before(blocks: &[BlockReport], machine: &Machine) -> crate::geometry::Xyz {
+    match blocks.last() {
+        Some(b) => b.state.machine_position(),
+        None => machine.setup().start_machine_position_mm(),
+    }
+}
+
 /// A run of nothing yet.
 fn fresh(setup: &Setup) -> Run {
     Run {
@@ -715,12 +727,7 @@ fn account(
         }
     }
     if options.keep_blocks {
-        // The state before the block is the last block's after it (a
-        // run that keeps reports keeps every one from the first).
-        let before = match result.blocks.last() {
-            Some(b) => b.state.machine_position(),
-            None => machine.setup().start_machine_position_mm(),
-        };
+        let before = position_before(&result.blocks, machine);
         result.blocks.push(BlockReport {
             index,
             span: block.span,
