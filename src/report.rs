@@ -47,6 +47,9 @@ pub struct BlockReport {
     pub data: Vec<DataSet>,
     /// The variables a macro statement set (behaviour 20.8).
     pub variables: Vec<crate::machine::VariableSet>,
+    /// The variables the program touched up to this block, with their
+    /// values after it (behaviour 21.12): None when it touched none.
+    pub watch: Option<Box<crate::machine::WatchView>>,
     /// Where the block ran among subprogram calls (behaviour 19.7): None
     /// in the main program outside any call.
     pub place: Option<Box<Place>>,

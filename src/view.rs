@@ -263,6 +263,11 @@ pub struct BlockView<'a> {
     /// (behaviour 20.8).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub variables_set: Vec<crate::machine::VariableSet>,
+    /// The variables the program read or set up to this block, with their
+    /// values after it and the line that last set each (behaviour 21.12);
+    /// absent in a program without `#`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub watch: Option<crate::machine::WatchView>,
     /// The program the block ran in, inside a subprogram call (behaviour
     /// 19.7); absent in the main program outside calls.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -367,6 +372,7 @@ fn block_view_at<'a>(b: &BlockReport, text: &'a str, columns: (u32, u32)) -> Blo
         move_count: b.move_count,
         data_set: b.data.clone(),
         variables_set: b.variables.clone(),
+        watch: b.watch.as_deref().cloned(),
         program: b.place.as_ref().map(|p| p.program.clone()),
         stack: b
             .place

@@ -469,7 +469,7 @@ M99
 ";
 
 #[test]
-fn behaviour21_12_a_checkpoint_inside_a_macro_gives_the_same_report() {
+fn behaviour21_6_a_checkpoint_inside_a_macro_gives_the_same_report() {
     let setup = mill(&[]);
     for text in [BOLT_CIRCLE, MODAL_DRILL] {
         let full = run(text, &setup);

@@ -31,10 +31,12 @@ pub mod state;
 mod sysvars;
 mod sysvars_state;
 mod transform;
+mod watch;
 mod words;
 
 pub(crate) use arcs::ArcRequest;
 pub use state::{ArcInfo, BlockState, DataSet, EventKind, Move, MoveKind, PolarState, VariableSet};
+pub use watch::{WatchView, Watched};
 
 use crate::diag::{Diagnostic, Span};
 use crate::geometry::{Xyz, add};
@@ -195,6 +197,8 @@ pub struct Machine {
     pub(crate) jump: Option<calls::Jump>,
     /// Macro calls' state (behaviour 21), once a program makes one.
     pub(crate) macro_calls: Option<Box<macro_state::MacroCalls>>,
+    /// The variables the program touched (behaviour 21.12), once it reads or sets one.
+    watch: Option<Box<watch::Watch>>,
 }
 
 const AXES: [(Address, char); 3] = [(Address::X, 'X'), (Address::Y, 'Y'), (Address::Z, 'Z')];
@@ -251,6 +255,7 @@ impl Machine {
             overflow: false,
             jump: None,
             macro_calls: None,
+            watch: None,
             corner_cut: false,
             corner: [0.0; 3],
             corner_end: None,
@@ -280,7 +285,8 @@ impl Machine {
     }
 
     /// True when this machine runs any block exactly as `other` does: every
-    /// position, modal value, offset and cycle datum equal to the bit (a
+    /// position, modal value, offset, cycle datum and macro variable (with
+    /// the lines that set them, behaviour 21.12) equal to the bit (a
     /// run made again after an edit goes on with the earlier run's result
     /// from the first place where the two machines agree). The current
     /// block's place, the moves left and the overflow flag are set afresh
@@ -304,7 +310,8 @@ impl Machine {
                     m.feed_warned,
                     m.special,
                     m.corner_cut,
-                    m.corner
+                    m.corner,
+                    (&m.variables, &m.macro_calls, &m.watch)
                 )
             )
         }

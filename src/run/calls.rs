@@ -212,7 +212,7 @@ impl<'t> Runner<'t> {
                 if !local && !calls.called.contains(&entry.line()) {
                     calls.called.push(entry.line());
                 }
-                let level = super::macrocall::enter(&mut self.machine, jump);
+                let level = super::macrocall::enter(&mut self.machine, jump, self.block.span.line);
                 let mut site = site(&calls.current.label, &self.block);
                 if let Some(l) = &level {
                     site.push_str(&l.site());

@@ -237,6 +237,7 @@ pub fn report_at(
                             _ => None,
                         })
                         .collect(),
+                    watch: r.machine.watched(),
                     place,
                 });
             }

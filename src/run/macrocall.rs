@@ -32,6 +32,8 @@ pub(crate) struct Level {
     number: u8,
     /// Made by G66's modal call.
     modal: bool,
+    /// The line of the call's block, where its arguments were set.
+    line: u32,
 }
 
 impl Level {
@@ -53,6 +55,7 @@ impl Level {
     /// A repeat of L: the locals start again from the arguments.
     pub(super) fn again(&self, machine: &mut Machine) {
         machine.set_locals(&self.args);
+        machine.watch_level(&self.args, self.line);
     }
 
     /// M99: the caller's locals and level come back (Fanuc: the locals of
@@ -64,12 +67,13 @@ impl Level {
         if self.modal {
             m.in_modal = m.in_modal.saturating_sub(1);
         }
+        machine.watch_leave();
     }
 }
 
 /// The run makes the call the machine asked for: for a macro, the caller's
 /// locals are kept and the called level's set. None for M98 and M97.
-pub(super) fn enter(machine: &mut Machine, jump: Jump) -> Option<Box<Level>> {
+pub(super) fn enter(machine: &mut Machine, jump: Jump, line: u32) -> Option<Box<Level>> {
     let Jump::Macro { modal, .. } = jump else {
         return None;
     };
@@ -84,12 +88,20 @@ pub(super) fn enter(machine: &mut Machine, jump: Jump) -> Option<Box<Level>> {
         m.in_modal = m.in_modal.saturating_add(1);
     }
     let number = m.level;
+    // The arguments were written at the G65, or at the G66 for its modal
+    // calls: the Variables panel names that line (behaviour 21.13).
+    let line = match (&m.modal, modal) {
+        (Some(call), true) => call.line,
+        _ => line,
+    };
     machine.set_locals(&args);
+    machine.watch_level(&args, line);
     Some(Box::new(Level {
         saved,
         args,
         number,
         modal,
+        line,
     }))
 }
 

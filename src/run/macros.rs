@@ -38,13 +38,16 @@ impl Variables for Vars<'_> {
         if let ALARM | MESSAGE_STOP = n {
             return Err(flow::write_only(n, span));
         }
-        match macros::kind(n) {
+        let v = match macros::kind(n) {
             Kind::System => match self.machine.read_system(n, span)? {
-                Some(v) => Ok(Value::Number(v)),
-                None => Err(system_variable(n, span)),
+                Some(v) => Value::Number(v),
+                None => return Err(system_variable(n, span)),
             },
-            _ => self.machine.variables.read(n, span),
-        }
+            _ => self.machine.variables.read(n, span)?,
+        };
+        // The Variables panel shows what the program read (behaviour 21.12).
+        self.machine.watch(n, span, false);
+        Ok(v)
     }
 
     fn write(&mut self, n: u32, v: Value, span: Span) -> Result<(), Diagnostic> {
@@ -54,11 +57,13 @@ impl Variables for Vars<'_> {
         }
         match macros::kind(n) {
             Kind::System => match self.machine.write_system(n, v.number(), span, self.out)? {
-                true => Ok(()),
-                false => Err(system_variable(n, span)),
+                true => {}
+                false => return Err(system_variable(n, span)),
             },
-            _ => self.machine.variables.write(n, v, span),
+            _ => self.machine.variables.write(n, v, span)?,
         }
+        self.machine.watch(n, span, true);
+        Ok(())
     }
 }
 

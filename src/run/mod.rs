@@ -738,6 +738,7 @@ fn account(
             move_count: out.moves.len() as u32,
             data,
             variables,
+            watch: machine.watched(),
             place: place.take(),
         });
     }

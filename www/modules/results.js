@@ -10,6 +10,7 @@ import { PROGRESS_AFTER_MS } from './page.js';
 import { showPositions } from './positions.js';
 import { openSetupJson } from './settings.js';
 import { showState } from './state.js';
+import { showVariables } from './variables.js';
 import { stepReported } from './stepper.js';
 import { saveWork } from './storage.js';
 import { setMachinePlanes, viewReported } from './view.js';
@@ -118,6 +119,7 @@ export function showViewState(m) {
   if (m.step < 0) currentBlock = null;
   stepReported(m.step, m.blocks, currentBlock, m.stepSeq);
   showState($('state-panel'), currentBlock, { blocks: blockCount, setup: work.setup });
+  showVariables($('variables-panel'), currentBlock);
   editor.showCurrent(currentBlock ? currentBlock.line : null, m.cause !== 'line');
   if (['view', 'step', 'pick', 'line'].includes(m.cause)) persist();
   // A run may move the current block (a shorter program): the autosave follows.
@@ -150,6 +152,7 @@ export function showStopped(text, { kind, stepSeq }) {
   currentBlock = null;
   stepReported(-1, 0, null, stepSeq);
   showState($('state-panel'), null, { blocks: 0 });
+  showVariables($('variables-panel'), null);
   editor.showCurrent(null, false);
   document.body.dataset.stopped = kind;
 }

@@ -46,9 +46,16 @@ const KEYWORD = /^(WHILE|GOTO|THEN|END|DO|IF|EQ|NE|GT|LT|GE|LE|AND|OR|XOR|MOD|SI
 
 export const gcodeLanguage = StreamLanguage.define({
   name: 'gcode',
-  startState: () => ({}),
-  token(stream) {
+  // `begins`: nothing but blanks read yet in this block, where a `/` is
+  // the optional block skip (behaviour 1); elsewhere it divides (`#1 / 2`,
+  // `ATAN[#1]/[#2]`).
+  startState: () => ({ begins: true }),
+  copyState: (s) => ({ ...s }),
+  token(stream, state) {
+    if (stream.sol()) state.begins = true;
     if (stream.eatSpace()) return null;
+    const begins = state.begins;
+    state.begins = false;
     const ch = stream.peek();
     if (ch === '(') {
       if (stream.skipTo(')')) stream.next();
@@ -57,24 +64,27 @@ export const gcodeLanguage = StreamLanguage.define({
     }
     if (ch === ';') {
       stream.next();
+      state.begins = true;
       return 'end';
     }
     if (ch === '%') {
       stream.next();
       return 'program';
     }
-    if (ch === '/') {
+    if (ch === '/' && begins) {
       stream.next();
       stream.match(/^[0-9]/);
+      state.begins = true; // `/N10 …` and `/ G01 …`: the block follows
       return 'skip';
     }
+    if (ch === ':' && begins && stream.match(/^:[0-9]+/)) return 'program'; // `:1000`, a program header (behaviour 19.1)
     if (stream.match(KEYWORD)) return 'macro';
     if (stream.match(/^#[0-9]*/)) return 'macroVariable';
     if (ch === '[' || ch === ']') {
       stream.next();
       return 'macroBracket';
     }
-    if (ch === '=' || ch === '*' || ch === '+' || ch === '-' || ch === ',') {
+    if (ch === '=' || ch === '*' || ch === '/' || ch === '+' || ch === '-' || ch === ',') {
       stream.next();
       return 'macroOperator';
     }
