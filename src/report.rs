@@ -36,6 +36,9 @@ pub struct BlockReport {
     pub state: BlockState,
     /// What the offsets did, as sentences (empty when nothing changed).
     pub notes: Vec<String>,
+    /// The tool's position in machine coordinates (mm) before the block:
+    /// its distance to go runs from there (behaviour 6.12).
+    pub before: Xyz,
     /// Index of the first move of this block in [`Run::moves`].
     pub first_move: u32,
     /// Number of moves of this block.
@@ -197,6 +200,8 @@ pub struct Run {
     /// Blocks the run could not run and passed over, with the setting
     /// `continue_past_errors` on (behaviour 2.24); each has its diagnostics.
     pub skipped: u32,
+    /// The start and reference positions in effect (behaviour 13.16).
+    pub positions: crate::setup::PositionsInEffect,
 }
 
 /// A value the program set, as it stands at the run's end: the last G10
