@@ -1,6 +1,8 @@
 //! Helpers shared by the native integration tests.
 #![allow(dead_code)]
 
+pub mod session;
+
 use offsetlab::geometry::Xyz;
 use offsetlab::report::Run;
 use offsetlab::view::{BlockView, block_view};
