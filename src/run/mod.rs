@@ -17,6 +17,7 @@ mod ahead;
 mod calls;
 mod checkpoint;
 mod flow;
+mod library;
 mod macrocall;
 mod macros;
 #[cfg(not(target_arch = "wasm32"))]
@@ -422,6 +423,20 @@ pub const PROGRESS_EVERY: usize = 1 << 20;
 /// it has read; with [`RunOptions::checkpoint_every`], also its
 /// [`Checkpoints`] (otherwise empty).
 pub fn run_observed(
+    text: &str,
+    setup: &Setup,
+    options: RunOptions,
+    observer: &mut impl Observer,
+) -> (Run, Checkpoints) {
+    if let Some(joined) = library::Joined::new(text, setup) {
+        return joined.run_observed(options, observer);
+    }
+    run_text(text, setup, options, observer)
+}
+
+/// [`run_observed`] of one text (a run with a library reads the text it
+/// makes of it with its own setup, `library.rs`).
+fn run_text(
     text: &str,
     setup: &Setup,
     options: RunOptions,

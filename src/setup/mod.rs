@@ -13,6 +13,7 @@ use crate::diag::{Diagnostic, Span};
 
 mod choices;
 mod positions;
+pub mod programs;
 mod registers;
 mod settings;
 mod specs;
@@ -282,6 +283,10 @@ pub struct Setup {
     /// Lathe registers read by the offset part of T codes.
     #[serde(with = "register_map", skip_serializing_if = "BTreeMap::is_empty")]
     pub lathe_offsets: BTreeMap<u16, LatheRegister>,
+    /// The library: programs kept with the document by number, each text
+    /// opening with its own header (behaviour 9.10, 19.10).
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    pub programs: BTreeMap<u32, String>,
 }
 
 impl Default for Setup {
@@ -301,6 +306,7 @@ impl Default for Setup {
             extended_work_offsets: BTreeMap::new(),
             offsets: BTreeMap::new(),
             lathe_offsets: BTreeMap::new(),
+            programs: BTreeMap::new(),
         }
     }
 }
@@ -351,7 +357,7 @@ impl Setup {
 
     /// Every problem with this setup (empty when it is usable).
     pub fn validate(&self) -> Vec<Diagnostic> {
-        let mut out = Vec::new();
+        let mut out = programs::check(&self.programs);
         if self.version == 0 || self.version > SETUP_VERSION {
             out.push(setup_error(
                 "setup-version",
