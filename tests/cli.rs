@@ -513,6 +513,8 @@ fn behaviour19_10_cli_program_files_fill_the_library() {
     assert_eq!(blocks[4]["line"], 2);
     assert_eq!(blocks[4]["program"], "O1002");
     assert_eq!(blocks[4]["actual"]["x"], 10.0);
+    assert_eq!(blocks[4]["text"], "G91 G01 X10. F100");
+    assert_eq!(blocks[4]["library"], true);
     assert_eq!(blocks[7]["actual"]["x"], 20.0);
     assert_eq!(
         blocks[7]["stack"],

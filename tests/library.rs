@@ -44,6 +44,17 @@ fn behaviour19_10_m98_calls_a_program_of_the_setups_library() {
         g01.place.as_ref().unwrap().stack,
         vec!["O1000 line 3", "O1002"]
     );
+    assert!(g01.place.as_ref().unwrap().library);
+    // Its view reads its text from the library (the file's bytes 6..23
+    // are `G90 G00 X0 Y0 Z0`'s).
+    let g01_index = g01.index as usize;
+    let view = offsetlab::view::block_views(&r, MAIN)
+        .nth(g01_index)
+        .unwrap();
+    assert_eq!(
+        (view.text, view.line, view.column),
+        ("G91 G01 X10. F100", 2, 1)
+    );
     // The moves of the library program carry its lines too.
     assert!(
         r.moves

@@ -22,6 +22,8 @@ pub(crate) struct Joined {
     pub(crate) text: String,
     /// The setup without its library (the run's own).
     pub(crate) setup: Setup,
+    /// The library, for the run's report.
+    programs: std::collections::BTreeMap<u32, String>,
     /// Where the library starts (bytes).
     from: usize,
     /// The library's programs in order.
@@ -85,10 +87,11 @@ impl Joined {
             line += breaks(&text[start..]);
         }
         let mut setup = setup.clone();
-        setup.programs.clear();
+        let programs = std::mem::take(&mut setup.programs);
         Some(Joined {
             text,
             setup,
+            programs,
             from,
             parts,
         })
@@ -191,7 +194,10 @@ impl Joined {
 
     /// A block's report in its own text's terms.
     pub(crate) fn block(&self, b: &mut BlockReport) {
-        self.span(&mut b.span);
+        let library = self.span(&mut b.span).is_some();
+        if let (true, Some(place)) = (library, &mut b.place) {
+            place.library = true;
+        }
         for note in &mut b.notes {
             *note = self.sentence(note, true);
         }
@@ -213,6 +219,7 @@ impl Joined {
     /// be called, 19.10).
     pub(crate) fn run(&self, run: &mut Run) {
         run.blocks.iter_mut().for_each(|b| self.block(b));
+        run.library.clone_from(&self.programs);
         for m in &mut run.moves {
             m.line = self.line(m.line);
         }

@@ -621,6 +621,7 @@ fn fresh(setup: &Setup) -> Run {
         travel: Default::default(),
         end: End::Completed,
         skipped: 0,
+        library: Default::default(),
     }
 }
 
