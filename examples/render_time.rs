@@ -3,7 +3,9 @@
 //! FRAMES [RGBA_OUT]]`, every frame a whole one; with `EDITED=FILE2`, each
 //! frame after the first draws FILE2 and FILE alternately on the last
 //! frame's pixels, as the page does after an edit (`Raster::kept`; all
-//! that a frame keeps for the next one: `render::Kept`).
+//! that a frame keeps for the next one: `render::Kept`). With `ORBIT=1`,
+//! each frame is a moving frame of the 3D view turned a degree further
+//! (behaviour 10.8).
 use std::time::Instant;
 
 use offsetlab::render::{self, Font, Kept, Pen, Rect, Scene, Stroke, Surface};
@@ -87,7 +89,15 @@ fn main() {
             }
         };
         let t = Instant::now();
-        render::draw_scene(&mut layer, drawn, &Scene::default(), w, h);
+        if std::env::var_os("ORBIT").is_some() {
+            let scene = Scene {
+                plane: render::Plane::Orbit(render::Angles::ISO.turned(frame as f64, 0.0)),
+                ..Scene::default()
+            };
+            render::draw_scene_moving(&mut layer, drawn, &scene, w, h);
+        } else {
+            render::draw_scene(&mut layer, drawn, &Scene::default(), w, h);
+        }
         let kept = layer.kept.raster().kept();
         println!(
             "{} moves: {:.1} ms{}; {} vector segments, {:.0} CSS px long",

@@ -22,7 +22,9 @@
 //      (4c: X101.318 becomes X101.7318, the path moves by 0.4 mm and keeps
 //      its bounds: the frame is drawn again only around the moves changed).
 //   5  the 1M-block path panned (mouse drag on #view) and zoomed (wheel)
-//      for a few seconds: frames the worker finished per second.
+//      for a few seconds: frames the worker finished per second; then the
+//      3D view turned (Shift+drag in the 3D view, scripts/bench-orbit.mjs)
+//      for half as long: the same count while orbiting.
 //
 // Usage (make bench-browser builds the wasm package and the page first):
 //
@@ -99,6 +101,7 @@ import { existsSync, mkdirSync, readdirSync, readFileSync, rmSync, statSync } fr
 import { cpus, loadavg } from 'node:os';
 import { basename, join } from 'node:path';
 import { ROOT, launchBrowser, openPage, startServer, waitForRun } from '../tests/e2e/harness.mjs';
+import { orbitFrames } from './bench-orbit.mjs';
 
 // ---------------------------------------------------------------- options
 
@@ -723,6 +726,12 @@ async function runBig(server, big, run) {
       out.t5 = await panZoom(page);
       log(`  run ${run}: target 5: ${out.t5.fps.toFixed(2)} frames/s (pan ${out.t5.pan.fps.toFixed(2)}, zoom ${out.t5.zoom.fps.toFixed(2)}), `
         + `frame median ${fmtMs(out.t5.frameMs?.median)}, input ${out.t5.inputsPerSecond.toFixed(0)} events/s`);
+      // The 3D view turned (issue 23), where the page has one.
+      if (await page.locator('#plane option[value="3D"]').count()) {
+        out.t5orbit = await orbitFrames(page, OPTS.seconds / 2, { now, within, stats, sleep, limit: LIMIT });
+        log(`  run ${run}: target 5, 3D view turned: ${out.t5orbit.fps.toFixed(2)} frames/s, `
+          + `moving frame median ${fmtMs(out.t5orbit.movingFrameMs?.median)}, whole frame median ${fmtMs(out.t5orbit.wholeFrameMs?.median)}`);
+      }
     }
     await context.close();
   } catch (error) {
@@ -1011,6 +1020,8 @@ function headline(results) {
     requestToFrame: stats(edits.map((e) => e.requestToFrame)),
     fps: stats(t5.map((x) => x.fps)),
     fpsSmall: stats(t5small.map((x) => x.fps)),
+    fpsOrbit: stats(t3runs.map((r) => r.t5orbit?.fps).filter((v) => typeof v === 'number')),
+    orbitMovingMs: stats(t3runs.map((r) => r.t5orbit?.movingFrameMs?.median).filter((v) => typeof v === 'number')),
   };
   const verdict = (s, ok) => (s ? (ok(s.median) ? 'met' : 'not met') : 'not measured');
   h.status = {
@@ -1022,6 +1033,7 @@ function headline(results) {
     editX: verdict(h.keyToFrameX, (v) => v < 16),
     editF: verdict(h.keyToFrameF, (v) => v < 16),
     fps: verdict(h.fps, (v) => v >= 30),
+    fpsOrbit: verdict(h.fpsOrbit, (v) => v >= 30),
   };
   return h;
 }
@@ -1060,6 +1072,8 @@ function report(results) {
       h.fps ? `${range(h.fps, fps)}${t5none.length ? ` (${t5none.length} of ${t5none.length + t5.length} runs: ${t5none[0].noFrame})` : ''}` : '—',
       '≥ 30', h.status.fps],
     ['5', `  the same on ${smallName} (for comparison)`, range(h.fpsSmall, fps), '≥ 30', h.fpsSmall ? (h.fpsSmall.median >= 30 ? 'met' : 'not met') : ''],
+    ['5', `${bigName}: the 3D view turned (Shift+drag), frames drawn per second`, range(h.fpsOrbit, fps), '≥ 30', h.status.fpsOrbit],
+    ['5', '  time per moving (sampled) frame while turned', range(h.orbitMovingMs, fmtMs), '—', ''],
   ];
   const out = [];
   out.push(`offsetlab browser benchmark, ${env.date}`);

@@ -42,6 +42,9 @@ pub enum ViewPlane {
     /// Lathe face view (polar coordinate interpolation): X (as radius)
     /// right, C up.
     XC,
+    /// Mill 3D view at the view's `angles` (behaviour 10.8).
+    #[serde(rename = "3D")]
+    D3,
 }
 
 impl ViewPlane {
@@ -53,6 +56,7 @@ impl ViewPlane {
             ViewPlane::YZ => "YZ",
             ViewPlane::ZX => "ZX",
             ViewPlane::XC => "XC",
+            ViewPlane::D3 => "3D",
         }
     }
 
@@ -64,6 +68,7 @@ impl ViewPlane {
             "YZ" => ViewPlane::YZ,
             "ZX" => ViewPlane::ZX,
             "XC" => ViewPlane::XC,
+            "3D" => ViewPlane::D3,
             _ => return None,
         })
     }
@@ -88,6 +93,10 @@ pub struct ViewState {
     /// Offset of the view centre from the fitted centre.
     #[serde(default)]
     pub pan: [f64; 2],
+    /// The 3D view's yaw and pitch in degrees (behaviour 10.9); written
+    /// with plane `3D` only, absent there: the isometric view.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub angles: Option<[f64; 2]>,
     /// The band the cutter sweeps is drawn (behaviour 16.20); absent: no.
     #[serde(default, skip_serializing_if = "is_false")]
     pub swept: bool,
@@ -115,6 +124,7 @@ impl Default for ViewState {
             plane: ViewPlane::XY,
             zoom: 1.0,
             pan: [0.0, 0.0],
+            angles: None,
             swept: false,
             legend: true,
         }
@@ -236,6 +246,16 @@ impl Document {
             if v.pan.iter().any(|p| !p.is_finite() || p.abs() > MAX_PAN) {
                 bad(format!("view.pan = {:?} is outside ±{MAX_PAN}", v.pan));
             }
+            if let Some([yaw, pitch]) = v.angles
+                && !(yaw.is_finite()
+                    && (-360.0..=360.0).contains(&yaw)
+                    && pitch.is_finite()
+                    && (-90.0..=90.0).contains(&pitch))
+            {
+                bad(format!(
+                    "view.angles = [{yaw}, {pitch}]: yaw is -360 to 360, pitch -90 to 90 degrees"
+                ));
+            }
         }
         if let Some(s) = self.step
             && s > MAX_STEP
@@ -293,6 +313,7 @@ mod tests {
                 plane: ViewPlane::ZX,
                 zoom: 2.5,
                 pan: [1.0, -2.0],
+                angles: None,
                 swept: true,
                 legend: false,
             }),

@@ -50,6 +50,7 @@ pub const PLAIN_KEYS: &[&str] = &[
     "mirror",
     "start",
     "plane",
+    "angles",
     "zoom",
     "pan",
     "swept",
@@ -239,6 +240,9 @@ pub fn encode_plain(doc: &Document, embed: bool) -> String {
     }
     if let Some(v) = &doc.view {
         parts.push(format!("plane={}", v.plane.as_str()));
+        if let Some([yaw, pitch]) = v.angles {
+            parts.push(format!("angles={yaw},{pitch}"));
+        }
         if v.zoom != 1.0 {
             parts.push(format!("zoom={}", v.zoom));
         }
@@ -507,8 +511,16 @@ fn decode_plain(fragment: &str) -> Result<Link, LinkError> {
             }
             "plane" => {
                 let plane =
-                    ViewPlane::parse(v).ok_or_else(|| bad(key, v, "XY, XZ, YZ, ZX or XC"))?;
+                    ViewPlane::parse(v).ok_or_else(|| bad(key, v, "XY, XZ, YZ, 3D, ZX or XC"))?;
                 view.get_or_insert_with(ViewState::default).plane = plane;
+            }
+            "angles" => {
+                let p: Vec<&str> = v.split(',').collect();
+                if p.len() != 2 {
+                    return Err(bad(key, v, "two numbers yaw,pitch (degrees)"));
+                }
+                let view = view.get_or_insert_with(ViewState::default);
+                view.angles = Some([number(key, p[0])?, number(key, p[1])?]);
             }
             "zoom" => view.get_or_insert_with(ViewState::default).zoom = number(key, v)?,
             "pan" => {
@@ -623,6 +635,7 @@ mod tests {
                 plane: ViewPlane::XY,
                 zoom: 2.0,
                 pan: [5.0, -5.0],
+                angles: None,
                 swept: true,
                 legend: false,
             }),

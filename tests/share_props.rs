@@ -77,6 +77,7 @@ fn document() -> impl Strategy<Value = Document> {
                         plane: [ViewPlane::XY, ViewPlane::XZ, ViewPlane::YZ, ViewPlane::ZX][p],
                         zoom: z as f64 / 10.0,
                         pan: [a as f64 / 4.0, b as f64 / 4.0],
+                        angles: None,
                         // The swept width (behaviour 16.20), on for half the pans.
                         swept: a % 2 == 0,
                         // The legend folded away (behaviour 10.9) for some.

@@ -10,7 +10,7 @@
 //        insert, length}: the program of run `base` with from..to replaced;
 //        file: a File the page opened, read here straight into wasm memory)
 //      · theme {name}
-//      view {op: zoom {x, y, factor} | pan {dx, dy} | fit | plane {plane} | set {view}}
+//      view {op: zoom {x, y, factor} | pan {dx, dy} | orbit {dx, dy} | fit | plane {plane} | set {view}}
 //      step {index} · pick {x, y, tolerance} · line {line}
 //      call {id, op, ...}: op document {base, embed, forms} · decode {text, base}
 //        · read {text, base} · canonical {document} · export {format}
@@ -320,7 +320,7 @@ function handle(message) {
       break;
     case 'view':
       view(message);
-      invalidate('view', message.op === 'zoom' || message.op === 'pan');
+      invalidate('view', message.op === 'zoom' || message.op === 'pan' || message.op === 'orbit');
       break;
     case 'step':
       session.set_step(message.index);
@@ -485,6 +485,9 @@ function view(message) {
       break;
     case 'pan':
       session.pan_by(message.dx, message.dy);
+      break;
+    case 'orbit':
+      session.orbit_by(message.dx, message.dy);
       break;
     case 'fit':
       session.fit();

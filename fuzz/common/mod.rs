@@ -445,6 +445,12 @@ pub fn round_trip(data: &[u8]) {
                 f64::from(i16_at(data, 4)) / 8.0,
                 f64::from(i16_at(data, 6)) / 8.0,
             ],
+            // The 3D view's angles (behaviour 10.9) for some: yaw 0–255°,
+            // pitch −90…90°.
+            angles: (flags & 128 != 0).then(|| {
+                let byte = |i: usize| f64::from(data.get(i).copied().unwrap_or(0));
+                [byte(8), byte(9) * 180.0 / 255.0 - 90.0]
+            }),
             swept: flags & 32 != 0,
             legend: flags & 64 == 0,
         });

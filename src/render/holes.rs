@@ -24,13 +24,13 @@ const RING_PX: f64 = 4.5;
 
 /// The index of a plane's normal among x, y, z: the axis a hole seen as a
 /// point runs along. The lathe's views have none (its drilling runs along
-/// Z, which they show).
+/// Z, which they show), nor the 3D view (a hole is seen as its plunge).
 fn normal(plane: Plane) -> Option<usize> {
     match plane {
         Plane::Xy => Some(2),
         Plane::Xz => Some(1),
         Plane::Yz => Some(0),
-        Plane::LatheZx | Plane::LatheXc => None,
+        Plane::LatheZx | Plane::LatheXc | Plane::Orbit(_) => None,
     }
 }
 

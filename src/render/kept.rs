@@ -56,7 +56,7 @@
 //! this module.
 
 use super::display::{self, Damage, LayerChange, Op};
-use super::paths::draw_paths_in_parts;
+use super::paths::{draw_paths, draw_paths_in_parts};
 use super::raster::{Drawing, Raster};
 use super::resume::{Traced, record_paths};
 use super::{Frame, IN_PARTS_FROM_MOVES, Rect, Scene, Transform};
@@ -187,7 +187,11 @@ impl Kept {
         scene: &Scene,
         split: usize,
     ) -> usize {
-        let (traced, moves_traced) = if tp.len() >= IN_PARTS_FROM_MOVES {
+        let (traced, moves_traced) = if f.stride > 1 {
+            // A turned 3D view's sample (behaviour 10.8): in one go, not kept.
+            draw_paths(&mut self.raster, f, tp, scene, split);
+            (None, tp.len().div_ceil(f.stride))
+        } else if tp.len() >= IN_PARTS_FROM_MOVES {
             let moves = draw_paths_in_parts(&mut self.raster, f, tp, scene, split);
             (None, moves)
         } else {

@@ -19,6 +19,7 @@ pub mod canvas;
 pub mod display;
 mod holes;
 mod kept;
+mod orbit;
 mod paths;
 pub mod raster;
 mod resume;
@@ -40,7 +41,7 @@ use paths::draw_paths;
 pub use raster::Raster;
 pub use scene::Scene;
 pub use style::{Align, Font, Stroke, Theme};
-pub use view::{Extent, Plane, Rect, Transform, nice_step};
+pub use view::{Angles, Extent, Plane, Projection, Rect, Transform, nice_step};
 
 /// What draws the paths: strokes of straight segments in CSS pixels, y down.
 pub trait Pen {
@@ -158,6 +159,13 @@ pub const RESTART_EVERY: usize = 16;
 /// layer when it has one ([`Surface::raster`]); smaller ones as vector
 /// strokes, which have round joins and the browser's own anti-aliasing.
 pub const RASTER_FROM_MOVES: usize = 2_000;
+
+/// While the 3D view is turned (a gesture's moving frame), a path of more
+/// moves than this is drawn by a sample of about this many, spread evenly
+/// over it: a turned view cannot reuse the last frame's pixels as a pan
+/// does, and the whole path's frame comes when the gesture pauses
+/// (behaviour 10.8).
+pub const ORBIT_MOVES: usize = 10_000;
 /// Toolpaths of this many moves or more are drawn on the pixel layer in
 /// parts, front to back, what lies hidden not even recorded
 /// ([`Raster::plan`]): from here a drawing records more points than
@@ -185,6 +193,11 @@ pub struct Frame {
     pub height: f64,
     /// The plane drawn.
     pub plane: Plane,
+    /// The plane's projection, worked out once for the frame.
+    pub projection: Projection,
+    /// Every how many moves one is drawn: 1, but in a frame of a 3D
+    /// view being turned over a large path ([`ORBIT_MOVES`]).
+    pub stride: usize,
     /// The rectangle the path is fitted into.
     pub plot: Rect,
     /// The legend box.
@@ -283,6 +296,8 @@ impl Frame {
             width,
             height,
             plane,
+            projection: plane.projection(),
+            stride: 1,
             plot,
             legend,
             transform,
@@ -312,12 +327,21 @@ impl Frame {
 }
 
 /// The box of both paths in the plane (with the centre line on the lathe):
-/// the projection of their 3D box, arcs included.
+/// the box of the projections of their 3D box's eight corners, arcs
+/// included (in the 3D view the projected box, behaviour 10.8).
 pub fn path_extent(toolpath: &Toolpath, plane: Plane) -> Option<Extent> {
     let (min, max) = toolpath.bounds()?;
+    let projection = plane.projection();
     let mut extent: Option<Extent> = None;
-    for p in [min, max] {
-        let (u, v) = plane.project(&p);
+    for corner in 0..8 {
+        let pick = |axis: usize| {
+            if corner >> axis & 1 == 0 {
+                min[axis]
+            } else {
+                max[axis]
+            }
+        };
+        let (u, v) = projection.project(&[pick(0), pick(1), pick(2)]);
         match &mut extent {
             Some(e) => e.include(u, v),
             None if u.is_finite() && v.is_finite() => extent = Some(Extent::point(u, v)),
@@ -393,12 +417,21 @@ fn draw_scene_as(
     height: f64,
     moving: bool,
 ) -> Frame {
-    let frame = scene.frame(toolpath, width, height);
+    let mut frame = scene.frame(toolpath, width, height);
     let moves = toolpath.len();
+    if moving && frame.plane.is_orbit() && moves > ORBIT_MOVES {
+        frame.stride = moves.div_ceil(ORBIT_MOVES);
+    }
+    let sampled = frame.stride > 1;
     let split = scene.drawn_moves(toolpath);
     surface.clear(frame.width, frame.height, frame.theme.background);
-    draw_grid(surface, &frame);
-    draw_axes(surface, &frame);
+    if frame.plane.is_orbit() {
+        orbit::draw_grid(surface, &frame, toolpath);
+        orbit::draw_axes(surface, &frame, toolpath);
+    } else {
+        draw_grid(surface, &frame);
+        draw_axes(surface, &frame);
+    }
     // Past a few thousand moves the canvas's own stroking is what makes a
     // frame slow (`raster`): the paths go on a pixel layer instead.
     let large = moves >= RASTER_FROM_MOVES;
@@ -408,8 +441,8 @@ fn draw_scene_as(
     // The swept band is vectors under the paths, never on their kept layer
     // (behaviour 16.20).
     paths::draw_swept(surface, &frame, toolpath, scene, split);
-    let reused = large && surface.reuse_layer(&frame.transform, !moving);
-    let moved = reused && moving;
+    let reused = large && !sampled && surface.reuse_layer(&frame.transform, !moving);
+    let moved = (reused && moving) || sampled;
     if reused {
         // A moved layer's arrows come back with the next whole frame.
     } else if large && let Some(kept) = surface.kept() {

@@ -346,9 +346,9 @@ impl<'a> Tracer<'a> {
         // Arcs are tessellated for the scale they are drawn at.
         let arcs = (DRAW_TOLERANCE_PX / f.transform.scale, s.arc_points());
         let keep = |m: usize| tp.kinds.get(m).is_some_and(|&k| is_rapid(k) == rapid);
-        tp.visit(range, programmed, arcs, keep, |m, visit| match visit {
+        let mut each = |m: usize, visit: Visit<'_>| match visit {
             Visit::Point(i, p) => {
-                let (u, v) = f.plane.project(&p);
+                let (u, v) = f.projection.project(&p);
                 let (x, y) = f.transform.to_screen(u, v);
                 self.point(s, m, i, (x, y));
                 false
@@ -363,7 +363,14 @@ impl<'a> Tracer<'a> {
                 // (Worked out only for a pen that may take it.)
                 s.takes_arcs() && self.arc(s, whole_arc(f, arc, programmed, (from, to), count))
             }
-        });
+        };
+        // A turned 3D view's sample (behaviour 10.8): every stride-th move alone.
+        match f.stride.max(1) {
+            1 => tp.visit(range, programmed, arcs, keep, &mut each),
+            n => (range.start.next_multiple_of(n)..range.end)
+                .step_by(n)
+                .for_each(|m| tp.visit(m..m + 1, programmed, arcs, keep, &mut each)),
+        }
     }
 
     /// Ends the tracing: draws the vertex passed over last, if any.
@@ -464,9 +471,9 @@ fn whole_arc(
     // The plane's axes as the view shows them (a projection is linear).
     let [ea, eb, en] = arc.frame();
     let (a, b, n) = (
-        f.plane.project(&ea),
-        f.plane.project(&eb),
-        f.plane.project(&en),
+        f.projection.project(&ea),
+        f.projection.project(&eb),
+        f.projection.project(&en),
     );
     let (la, lb) = (a.0 * a.0 + a.1 * a.1, b.0 * b.0 + b.1 * b.1);
     let dot = a.0 * b.0 + a.1 * b.1;
@@ -477,7 +484,7 @@ fn whole_arc(
     }
     let (centre, sweep) = arc.centre_and_sweep(programmed, from);
     let screen = |p: Xyz| {
-        let (u, v) = f.plane.project(&p);
+        let (u, v) = f.projection.project(&p);
         f.transform.to_screen(u, v)
     };
     // Screen y runs down: the plane's turn from its first axis to its

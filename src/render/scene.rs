@@ -254,7 +254,7 @@ pub fn draw_arrows(s: &mut impl Surface, f: &Frame, tp: &Toolpath, drawn: usize)
             continue;
         };
         let screen = |q: &[f64; 3]| {
-            let (u, v) = f.plane.project(q);
+            let (u, v) = f.projection.project(q);
             f.transform.to_screen(u, v)
         };
         let (to, from) = (screen(&a), screen(&p));
@@ -292,7 +292,7 @@ pub fn draw_marker(
     cutter: Option<Cutter>,
 ) {
     let screen = |q: &[f64; 3]| {
-        let (u, v) = f.plane.project(q);
+        let (u, v) = f.projection.project(q);
         f.transform.to_screen(u, v)
     };
     let (a, p) = (screen(&actual), screen(&programmed));
@@ -356,7 +356,7 @@ pub fn pick(tp: &Toolpath, f: &Frame, x: f64, y: f64, tolerance: f64) -> Option<
             (within, ArcPoints::Exact),
             |_| true,
             |m, i, q| {
-                let (u, v) = f.plane.project(&q);
+                let (u, v) = f.projection.project(&q);
                 let here = f.transform.to_screen(u, v);
                 if !(here.0.is_finite() && here.1.is_finite()) {
                     return;

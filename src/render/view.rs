@@ -1,5 +1,6 @@
-//! The view: which plane is drawn, and the world-to-screen transform that
-//! fits a path into a rectangle of the drawing surface. Screen coordinates are
+//! The view: which plane is drawn (or the 3D view's angles), the projection
+//! of a 3D point onto the screen's plane, and the world-to-screen transform
+//! that fits a path into a rectangle of the drawing surface. Screen coordinates are
 //! CSS pixels with y pointing down; world coordinates are the toolpath's units
 //! with the vertical axis pointing up, as on a machine drawing.
 
@@ -23,6 +24,110 @@ pub enum Plane {
     /// interpolation up (the toolpath's Y), the spindle axis at the origin
     /// (behaviour 14.16).
     LatheXc,
+    /// The mill's 3D view: orthographic, turned by a yaw and a pitch
+    /// (behaviour 10.8). XY, XZ and YZ are this view at fixed angles.
+    Orbit(Angles),
+}
+
+/// The 3D view's angles in thousandths of a degree (whole numbers, so a
+/// view compares, hashes and round-trips through a link exactly).
+///
+/// Yaw turns the part about Z: at 0 the screen's right is +X, at 90 it is
+/// +Y. Pitch lifts the eye from the XY plane: at 0 the screen's up is +Z
+/// (a front view), at 90 the eye looks straight down (the top view).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Angles {
+    yaw: i32,
+    pitch: i32,
+}
+
+impl Angles {
+    /// The isometric view: yaw 45°, pitch atan(1/√2) ≈ 35.264°, the three
+    /// axes drawn at the same length.
+    pub const ISO: Angles = Angles {
+        yaw: 45_000,
+        pitch: 35_264,
+    };
+
+    /// Angles in degrees: yaw taken into [0, 360), pitch limited to
+    /// [-90, 90], both to a thousandth; non-finite reads 0.
+    pub fn degrees(yaw: f64, pitch: f64) -> Angles {
+        let thousandths = |d: f64| {
+            if d.is_finite() {
+                (d.clamp(-1e6, 1e6) * 1000.0).round() as i64
+            } else {
+                0
+            }
+        };
+        Angles {
+            yaw: thousandths(yaw).rem_euclid(360_000) as i32,
+            pitch: thousandths(pitch).clamp(-90_000, 90_000) as i32,
+        }
+    }
+
+    /// Yaw in degrees, in [0, 360).
+    pub fn yaw(self) -> f64 {
+        f64::from(self.yaw) / 1000.0
+    }
+
+    /// Pitch in degrees, in [-90, 90].
+    pub fn pitch(self) -> f64 {
+        f64::from(self.pitch) / 1000.0
+    }
+
+    /// Turned by `dyaw` and `dpitch` degrees (pitch stops at ±90).
+    pub fn turned(self, dyaw: f64, dpitch: f64) -> Angles {
+        Angles::degrees(self.yaw() + dyaw, self.pitch() + dpitch)
+    }
+
+    /// The rotation from world to view: rows are the screen's right, the
+    /// screen's up and the direction towards the eye. With yaw ψ and pitch
+    /// θ: right = (cos ψ, sin ψ, 0), up = (−sin ψ sin θ, cos ψ sin θ, cos θ),
+    /// towards the eye = right × up = (sin ψ cos θ, −cos ψ cos θ, sin θ).
+    pub fn rotation(self) -> [[f64; 3]; 3] {
+        let (sy, cy) = sin_cos_degrees(self.yaw());
+        let (sp, cp) = sin_cos_degrees(self.pitch());
+        [
+            [cy, sy, 0.0],
+            [-sy * sp, cy * sp, cp],
+            [sy * cp, -cy * cp, sp],
+        ]
+    }
+}
+
+/// Sine and cosine of an angle in degrees, exact at multiples of 90° (so
+/// the plane views' rotations hold exact zeros and ones).
+fn sin_cos_degrees(d: f64) -> (f64, f64) {
+    let r = d.rem_euclid(360.0);
+    match r {
+        0.0 => (0.0, 1.0),
+        90.0 => (1.0, 0.0),
+        180.0 => (0.0, -1.0),
+        270.0 => (-1.0, 0.0),
+        _ => r.to_radians().sin_cos(),
+    }
+}
+
+/// A 3D point to the view's (horizontal, vertical) coordinates: the first
+/// two rows of a linear map. Every view goes through it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Projection {
+    rows: [[f64; 3]; 2],
+}
+
+impl Projection {
+    /// Projects an x, y, z vertex: (horizontal, vertical). Missing
+    /// coordinates read as 0.
+    #[inline]
+    pub fn project(&self, p: &[f64]) -> (f64, f64) {
+        let at = |i: usize| p.get(i).copied().unwrap_or(0.0);
+        let (x, y, z) = (at(0), at(1), at(2));
+        let [a, b] = &self.rows;
+        (
+            a[0] * x + a[1] * y + a[2] * z,
+            b[0] * x + b[1] * y + b[2] * z,
+        )
+    }
 }
 
 impl Plane {
@@ -34,18 +139,43 @@ impl Plane {
         }
     }
 
-    /// Projects an x, y, z vertex onto the plane: (horizontal, vertical).
-    /// Missing coordinates read as 0.
-    pub fn project(self, p: &[f64]) -> (f64, f64) {
-        let at = |i: usize| p.get(i).copied().unwrap_or(0.0);
-        let (x, y, z) = (at(0), at(1), at(2));
+    /// The mill's views as 3D angles: XY is the top view (yaw 0, pitch
+    /// 90), XZ the front (0, 0), YZ the side (90, 0); None for the lathe's.
+    pub fn angles(self) -> Option<Angles> {
         match self {
-            Plane::Xy => (x, y),
-            Plane::Xz => (x, z),
-            Plane::Yz => (y, z),
-            Plane::LatheZx => (z, x / 2.0),
-            Plane::LatheXc => (x / 2.0, y),
+            Plane::Xy => Some(Angles::degrees(0.0, 90.0)),
+            Plane::Xz => Some(Angles::degrees(0.0, 0.0)),
+            Plane::Yz => Some(Angles::degrees(90.0, 0.0)),
+            Plane::Orbit(a) => Some(a),
+            Plane::LatheZx | Plane::LatheXc => None,
         }
+    }
+
+    /// The view's projection: the first two rows of the rotation of its
+    /// angles; the lathe's views take X as a radius (halved).
+    pub fn projection(self) -> Projection {
+        let rows = match self.angles() {
+            Some(a) => {
+                let [r, u, _] = a.rotation();
+                [r, u]
+            }
+            None if self == Plane::LatheZx => [[0.0, 0.0, 1.0], [0.5, 0.0, 0.0]],
+            None => [[0.5, 0.0, 0.0], [0.0, 1.0, 0.0]],
+        };
+        Projection { rows }
+    }
+
+    /// Projects an x, y, z vertex onto the plane: (horizontal, vertical).
+    /// Missing coordinates read as 0. (Drawing loops keep the frame's
+    /// [`Projection`] rather than work it out per point.)
+    pub fn project(self, p: &[f64]) -> (f64, f64) {
+        self.projection().project(p)
+    }
+
+    /// True for the 3D view at any angles (the plane views are drawn
+    /// with their axes and grid as flat views).
+    pub fn is_orbit(self) -> bool {
+        matches!(self, Plane::Orbit(_))
     }
 
     /// Names of the horizontal and the vertical axis, for labels.
@@ -56,6 +186,7 @@ impl Plane {
             Plane::Yz => ("Y", "Z"),
             Plane::LatheZx => ("Z", "X (radius)"),
             Plane::LatheXc => ("X (radius)", "C"),
+            Plane::Orbit(_) => ("", ""),
         }
     }
 
@@ -67,11 +198,12 @@ impl Plane {
             Plane::Yz => "YZ",
             Plane::LatheZx => "ZX",
             Plane::LatheXc => "XC",
+            Plane::Orbit(_) => "3D",
         }
     }
 
     /// Reads a view name as [`Plane::name`] writes it (any case): XY, XZ,
-    /// YZ, ZX or XC.
+    /// YZ, ZX, XC, or 3D (at the isometric angles).
     pub fn parse(name: &str) -> Option<Plane> {
         Some(match name.to_ascii_uppercase().as_str() {
             "XY" => Plane::Xy,
@@ -79,6 +211,7 @@ impl Plane {
             "YZ" => Plane::Yz,
             "ZX" => Plane::LatheZx,
             "XC" => Plane::LatheXc,
+            "3D" => Plane::Orbit(Angles::ISO),
             _ => return None,
         })
     }
@@ -389,6 +522,101 @@ mod tests {
             (v.min_u, v.min_v, v.max_u, v.max_v),
             (-50.0, -50.0, 50.0, 50.0)
         );
+    }
+
+    /// Behaviour 10.8: the isometric view by hand. Yaw ψ = 45°, pitch
+    /// θ = 35.264° (tan θ = 1/√2, so sin θ = 1/√3 = 0.57735, cos θ =
+    /// √(2/3) = 0.81650); cos ψ = sin ψ = 0.70711.
+    /// right = (cos ψ, sin ψ, 0) = (0.70711, 0.70711, 0)
+    /// up = (−sin ψ sin θ, cos ψ sin θ, cos θ) = (−0.40825, 0.40825, 0.81650)
+    /// so (1,0,0) lands at (0.70711, −0.40825), (0,1,0) at (0.70711,
+    /// 0.40825) and (0,0,1) at (0, 0.81650): each axis √(0.5 + 1/6) =
+    /// 0.81650 long on the screen, the isometric view's equal axes.
+    #[test]
+    // The figures are the hand computation's, to five places (0.70711 is
+    // cos 45° as written above, not a constant to look up).
+    #[allow(clippy::approx_constant)]
+    fn behaviour10_8_iso_view_projects_the_axes_by_hand() {
+        let p = Plane::Orbit(Angles::ISO).projection();
+        let near = |a: (f64, f64), b: (f64, f64)| {
+            assert!(
+                (a.0 - b.0).abs() < 1e-4 && (a.1 - b.1).abs() < 1e-4,
+                "{a:?} vs {b:?}"
+            );
+        };
+        near(p.project(&[1.0, 0.0, 0.0]), (0.70711, -0.40825));
+        near(p.project(&[0.0, 1.0, 0.0]), (0.70711, 0.40825));
+        near(p.project(&[0.0, 0.0, 1.0]), (0.0, 0.81650));
+        // Linear: (10, 20, 30) = 10·X + 20·Y + 30·Z =
+        // (7.0711 + 14.1421 + 0, −4.0825 + 8.1650 + 24.4949) = (21.2132, 28.5774).
+        near(p.project(&[10.0, 20.0, 30.0]), (21.2132, 28.5774));
+        for unit in [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]] {
+            let (u, v) = p.project(&unit);
+            assert!((u.hypot(v) - 0.81650).abs() < 1e-4);
+        }
+    }
+
+    /// Behaviour 10.8: the plane views are the 3D view at fixed angles,
+    /// exactly: top (yaw 0, pitch 90) is XY, front (0, 0) is XZ, side
+    /// (90, 0) is YZ.
+    #[test]
+    fn behaviour10_8_plane_views_are_the_3d_view_at_fixed_angles() {
+        for (plane, yaw, pitch, seen) in [
+            (Plane::Xy, 0.0, 90.0, (1.0, 2.0)),
+            (Plane::Xz, 0.0, 0.0, (1.0, 3.0)),
+            (Plane::Yz, 90.0, 0.0, (2.0, 3.0)),
+        ] {
+            let orbit = Plane::Orbit(Angles::degrees(yaw, pitch));
+            assert_eq!(orbit.projection(), plane.projection(), "{plane:?}");
+            assert_eq!(plane.project(&[1.0, 2.0, 3.0]), seen);
+            assert_eq!(orbit.project(&[1.0, 2.0, 3.0]), seen);
+            assert_eq!(plane.angles(), Some(Angles::degrees(yaw, pitch)));
+        }
+        assert_eq!(Plane::LatheZx.angles(), None);
+        assert_eq!(Plane::parse("3d"), Some(Plane::Orbit(Angles::ISO)));
+        assert_eq!(Plane::Orbit(Angles::ISO).name(), "3D");
+    }
+
+    /// The rotation is a rotation at any angles (rows orthonormal, right
+    /// × up = towards the eye), so lengths along the screen are true.
+    #[test]
+    fn behaviour10_8_the_view_rotation_is_orthonormal() {
+        for (yaw, pitch) in [(0.0, 0.0), (30.0, 10.0), (123.456, -47.5), (300.0, 89.0)] {
+            let r = Angles::degrees(yaw, pitch).rotation();
+            for i in 0..3 {
+                for j in 0..3 {
+                    let dot: f64 = (0..3).map(|k| r[i][k] * r[j][k]).sum();
+                    let want = if i == j { 1.0 } else { 0.0 };
+                    assert!((dot - want).abs() < 1e-12, "{yaw} {pitch} {i}{j}");
+                }
+            }
+            let [a, b, n] = r;
+            let cross = [
+                a[1] * b[2] - a[2] * b[1],
+                a[2] * b[0] - a[0] * b[2],
+                a[0] * b[1] - a[1] * b[0],
+            ];
+            for k in 0..3 {
+                assert!((cross[k] - n[k]).abs() < 1e-12);
+            }
+        }
+    }
+
+    #[test]
+    fn behaviour10_8_angles_wrap_the_yaw_and_stop_the_pitch() {
+        // −30° of yaw is 330°; a pitch of 120° stops at 90° (straight down).
+        let a = Angles::degrees(-30.0, 120.0);
+        assert_eq!((a.yaw(), a.pitch()), (330.0, 90.0));
+        // 725.5° is two turns and 5.5°; thousandths are kept, the rest rounded.
+        let b = Angles::degrees(725.5, -12.34567);
+        assert_eq!((b.yaw(), b.pitch()), (5.5, -12.346));
+        assert_eq!(
+            Angles::degrees(f64::NAN, f64::INFINITY),
+            Angles::degrees(0.0, 0.0)
+        );
+        // Turning from the top view by −10° of yaw and −20° of pitch.
+        let c = Angles::degrees(0.0, 90.0).turned(-10.0, -20.0);
+        assert_eq!((c.yaw(), c.pitch()), (350.0, 70.0));
     }
 
     #[test]

@@ -392,11 +392,17 @@ impl Session {
         });
         let swept = scene.swept;
         let legend = !scene.legend_folded;
+        // The 3D view's angles, as its hundredths of a degree read.
+        let angles = match scene.plane {
+            render::Plane::Orbit(a) => Some([a.yaw(), a.pitch()]),
+            _ => None,
+        };
         let view = (plane != default_plane || zoom != 1.0 || pan != [0.0, 0.0] || swept || !legend)
             .then_some(ViewState {
                 plane,
                 zoom,
                 pan,
+                angles,
                 swept,
                 legend,
             });
@@ -439,6 +445,12 @@ impl Session {
         self.view.set_plane(self.last.run.machine, name)
     }
 
+    /// Turns the 3D view by a drag of (dx, dy) CSS pixels (see
+    /// [`view::View::orbit_by`]).
+    pub fn orbit_by(&mut self, dx: f64, dy: f64) -> bool {
+        self.view.orbit_by(self.last.run.machine, dx, dy)
+    }
+
     /// Zooms by `factor` about the CSS pixel (x, y) of the last frame.
     pub fn zoom_at(&mut self, x: f64, y: f64, factor: f64) {
         self.view.zoom_at(&self.last.toolpath, x, y, factor);
@@ -478,6 +490,11 @@ impl Session {
     /// The frame asked for (see [`view::View::ask`]).
     pub fn ask_frame(&mut self, width: u32, height: u32, dpr: f64) -> view::FrameAsk {
         self.view.ask(width, height, dpr, self.drawing)
+    }
+
+    /// The frame asked for during a gesture (see [`view::View::ask_moving`]).
+    pub fn ask_moving_frame(&mut self, width: u32, height: u32, dpr: f64) -> view::FrameAsk {
+        self.view.ask_moving(width, height, dpr, self.drawing)
     }
 
     /// True when the canvas already shows the frame `ask` asks for.

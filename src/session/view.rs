@@ -9,7 +9,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::offsets::cutter::Phase;
 use crate::render::scene::{self, Scene};
-use crate::render::{Frame, Plane, Theme};
+use crate::render::{Angles, Frame, Plane, Theme};
 use crate::report::{BlockReport, Run};
 use crate::run::Checkpoints;
 use crate::setup::{MachineKind, Setup};
@@ -21,8 +21,12 @@ use crate::toolpath::Toolpath;
 /// clears the current block.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct ViewChange {
-    /// `XY`, `XZ`, `YZ` (mill), `ZX` or `XC` (lathe).
+    /// `XY`, `XZ`, `YZ`, `3D` (mill), `ZX` or `XC` (lathe).
     pub plane: Option<String>,
+    /// The 3D view's yaw and pitch, degrees (behaviour 10.8): reported
+    /// with plane `3D` only; set, they choose the 3D view on the mill.
+    #[serde(default)]
+    pub angles: Option<[f64; 2]>,
     /// 1 fits the whole path.
     pub zoom: Option<f64>,
     /// The view centre's offset from the fitted centre, in program units.
@@ -38,6 +42,10 @@ pub struct ViewChange {
     #[serde(default)]
     pub legend: Option<bool>,
 }
+
+/// CSS pixels of drag per degree the 3D view turns: a drag across a
+/// 720-pixel view turns it about a full turn.
+pub const PIXELS_PER_DEGREE: f64 = 2.0;
 
 /// A frame asked for, its sizes clamped to what a canvas can be.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -232,6 +240,10 @@ impl View {
     pub fn view(&self) -> ViewChange {
         ViewChange {
             plane: Some(self.scene.plane.name().to_owned()),
+            angles: match self.scene.plane {
+                Plane::Orbit(a) => Some([a.yaw(), a.pitch()]),
+                _ => None,
+            },
             zoom: Some(self.scene.zoom),
             pan: Some(self.scene.pan),
             step: self.scene.step.map(i64::from),
@@ -245,6 +257,12 @@ impl View {
     pub fn set_view(&mut self, run: &Showing<'_>, change: &ViewChange) -> ViewChange {
         if let Some(plane) = &change.plane {
             self.set_plane(run.run.machine, plane);
+        }
+        if let Some([yaw, pitch]) = change.angles
+            && run.run.machine == MachineKind::Mill
+            && change.plane.as_deref().is_none_or(|p| p == "3D")
+        {
+            self.scene.plane = Plane::Orbit(Angles::degrees(yaw, pitch));
         }
         if let Some(zoom) = change.zoom {
             self.scene.set_zoom(zoom);
@@ -275,6 +293,23 @@ impl View {
             }
             _ => false,
         }
+    }
+
+    /// Turns the mill's view by a drag of (dx, dy) CSS pixels, a degree
+    /// for every [`PIXELS_PER_DEGREE`]: across turns about Z (yaw), up and
+    /// down lifts or lowers the eye (pitch, stopping at ±90°). A plane view
+    /// turns from its own angles (XY is the top view) into the 3D view.
+    /// False on the lathe, whose views are flat.
+    pub fn orbit_by(&mut self, machine: MachineKind, dx: f64, dy: f64) -> bool {
+        let Some(angles) = self.scene.plane.angles() else {
+            return false;
+        };
+        if machine != MachineKind::Mill || !(dx.is_finite() && dy.is_finite()) {
+            return false;
+        }
+        let turned = angles.turned(-dx / PIXELS_PER_DEGREE, dy / PIXELS_PER_DEGREE);
+        self.scene.plane = Plane::Orbit(turned);
+        true
     }
 
     /// Zooms by `factor` about the CSS pixel (x, y) of the last frame.
@@ -326,7 +361,8 @@ impl View {
         let device = |css: u32| ((f64::from(css) * dpr).round() as u32).clamp(1, 16384);
         let key = {
             let mut hash = DefaultHasher::new();
-            (drawing, self.scene.plane.name(), self.scene.step).hash(&mut hash);
+            // The plane with its angles: a turned 3D view is another drawing.
+            (drawing, self.scene.plane, self.scene.step).hash(&mut hash);
             (self.scene.theme.name, w, h, dpr.to_bits()).hash(&mut hash);
             hash.finish()
         };
@@ -346,6 +382,19 @@ impl View {
                 dpr_bits: dpr.to_bits(),
             },
         }
+    }
+
+    /// The frame asked for during a gesture: in the 3D view its large
+    /// paths may be a sample ([`crate::render::ORBIT_MOVES`]), a layer that
+    /// must not be taken for the whole drawing's.
+    pub fn ask_moving(&mut self, width: u32, height: u32, dpr: f64, drawing: u64) -> FrameAsk {
+        let mut ask = self.ask(width, height, dpr, drawing);
+        if self.scene.plane.is_orbit() {
+            let mut hash = DefaultHasher::new();
+            (ask.key, "sampled").hash(&mut hash);
+            ask.key = hash.finish();
+        }
+        ask
     }
 
     /// True when the canvas already shows the whole frame `ask` asks for:

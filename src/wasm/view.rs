@@ -37,7 +37,10 @@ impl Drawn {
 
 impl Session {
     fn draw(&mut self, width: u32, height: u32, dpr: f64, moving: bool) -> Result<bool, JsError> {
-        let ask = self.session.ask_frame(width, height, dpr);
+        let ask = match moving {
+            true => self.session.ask_moving_frame(width, height, dpr),
+            false => self.session.ask_frame(width, height, dpr),
+        };
         let Some((canvas, ctx)) = &self.canvas else {
             return Ok(false);
         };
@@ -63,7 +66,8 @@ impl Session {
         let (w, h) = (f64::from(ask.css.0), f64::from(ask.css.1));
         let (toolpath, scene) = (self.session.toolpath(), self.session.scene());
         let frame = draw(&mut surface, toolpath, scene, w, h);
-        let moved = moving && surface.reused();
+        // A turned 3D view's sample is no whole frame either.
+        let moved = moving && (surface.reused() || frame.stride > 1);
         surface.present((w, h), ask.scale).map_err(failed)?;
         self.session.frame_drawn(&ask, frame, moved);
         Ok(moved)
@@ -110,7 +114,8 @@ impl Session {
         self.session.set_theme(name);
     }
 
-    /// The view state: `{ plane: "XY"|"XZ"|"YZ"|"ZX"|"XC", zoom, pan: [u, v],
+    /// The view state: `{ plane: "XY"|"XZ"|"YZ"|"3D"|"ZX"|"XC", angles:
+    /// [yaw, pitch] (3D only), zoom, pan: [u, v],
     /// step }` ([`ViewChange`]; step null without a current block).
     pub fn view(&self) -> Result<JsValue, JsError> {
         to_js(&self.session.view())
@@ -138,6 +143,12 @@ impl Session {
     /// Moves the drawing by (dx, dy) CSS pixels.
     pub fn pan_by(&mut self, dx: f64, dy: f64) {
         self.session.pan_by(dx, dy);
+    }
+
+    /// Turns the mill's view by a drag of (dx, dy) CSS pixels into the 3D
+    /// view (behaviour 10.8); false on the lathe.
+    pub fn orbit_by(&mut self, dx: f64, dy: f64) -> bool {
+        self.session.orbit_by(dx, dy)
     }
 
     /// Zoom 1, no pan: the whole path.

@@ -34,6 +34,8 @@ export function viewOf(w) {
     // the legend shown), so a document opened does not keep the last one's.
     swept: Boolean(v.swept),
     legend: v.legend !== false,
+    // The 3D view's yaw and pitch (behaviour 10.9), when the document has them.
+    ...(Array.isArray(v.angles) ? { angles: v.angles } : {}),
   };
 }
 

@@ -1,5 +1,6 @@
 // The view's input: wheel zoom at the cursor, drag to pan, pinch with two
-// fingers, double-click to fit, a click on a segment selects its block,
+// fingers, turn the mill's view in 3D (Shift or Alt+drag, the Orbit mode's
+// drag, two fingers moving together in the 3D view), double-click to fit, a click on a segment selects its block,
 // keyboard zoom/pan on the focused canvas, the plane selector and the
 // zoom/fit buttons. The worker keeps the view state and draws; this module
 // only forwards what the user does and remembers the state the worker
@@ -13,12 +14,17 @@ const WHEEL_STEP = 1.0015; // zoom factor per wheel delta pixel
 let post = () => {};
 let state = { plane: 'XY', zoom: 1, pan: [0, 0], step: null };
 const listeners = new Set();
+let orbitMode = false; // the Orbit button: a plain drag turns the view
+let machineKind = 'mill';
 
-/** The view state last drawn: { plane, zoom, pan: [u, v], step }, and
+/** The view state last drawn: { plane, zoom, pan: [u, v], step }, `angles:
+ * [yaw, pitch]` in the 3D view (behaviour 10.8), and
  * `swept: true` while the cutter's swept width is drawn (behaviour 16.20),
  * `legend: false` while the legend is folded away (behaviour 10.7). */
 export function viewState() {
-  return { ...state, pan: [...state.pan] };
+  const copy = { ...state, pan: [...state.pan] };
+  if (state.angles) copy.angles = [...state.angles];
+  return copy;
 }
 
 /** Calls `f(state)` after every change the worker reports. */
@@ -30,6 +36,8 @@ export function onViewChange(f) {
 /** Called with each state message of the worker. */
 export function viewReported(view) {
   state = { plane: view.plane, zoom: view.zoom, pan: view.pan, step: view.step };
+  // Only in the 3D view, so the documents and links of the plane views stay as they were.
+  if (view.angles) state.angles = view.angles;
   // Only when on, so the documents and links of views without it stay as they were.
   if (view.swept) state.swept = true;
   if (view.legend === false) state.legend = false;
@@ -46,11 +54,25 @@ export function viewReported(view) {
 /** The lathe's views: ZX, and XC, the face of polar coordinate interpolation. */
 const LATHE_PLANES = new Set(['ZX', 'XC']);
 
+function setOrbitMode(on) {
+  orbitMode = on;
+  const button = document.getElementById('orbit');
+  if (button) button.setAttribute('aria-pressed', String(on));
+  document.body.dataset.orbit = on ? 'on' : 'off';
+}
+
 /** Shows the planes the machine has (mill: XY XZ YZ; lathe: ZX and the face, XC),
  * and the swept width option on the mill only (cutter compensation is the mill's). */
 export function setMachinePlanes(machine) {
+  machineKind = machine;
   const option = document.getElementById('swept-option');
   if (option) option.hidden = machine === 'lathe';
+  // The lathe's views are flat (behaviour 10.8): no 3D, no Orbit mode.
+  const orbit = document.getElementById('orbit');
+  if (orbit) {
+    orbit.hidden = machine === 'lathe';
+    if (orbit.hidden) setOrbitMode(false);
+  }
   const select = document.getElementById('plane');
   for (const option of select.options) {
     const lathe = LATHE_PLANES.has(option.value);
@@ -72,6 +94,7 @@ export function initView(canvas, postMessage) {
   document.getElementById('zoom-in').addEventListener('click', () => centreZoom(1.25));
   document.getElementById('zoom-out').addEventListener('click', () => centreZoom(0.8));
   document.getElementById('fit').addEventListener('click', () => send('fit'));
+  document.getElementById('orbit')?.addEventListener('click', () => setOrbitMode(!orbitMode));
   document.getElementById('plane').addEventListener('change', (event) => {
     send('plane', { plane: event.target.value });
   });
@@ -113,7 +136,9 @@ export function bindCanvas(canvas) {
       // A synthetic pointer (tests, some assistive tools) cannot be captured.
     }
     pointers.set(event.pointerId, local(event));
-    if (pointers.size === 1) press = { ...local(event), moved: false };
+    // A drag turns the mill's view with Shift or Alt held or in the Orbit mode.
+    const orbit = machineKind !== 'lathe' && (orbitMode || event.shiftKey || event.altKey);
+    if (pointers.size === 1) press = { ...local(event), moved: false, orbit };
     if (pointers.size === 2) {
       pinch = midpoint();
       press = null;
@@ -127,14 +152,17 @@ export function bindCanvas(canvas) {
     if (pointers.size >= 2 && pinch) {
       const m = midpoint();
       if (pinch.d > 0 && m.d > 0) send('zoom', { x: m.x, y: m.y, factor: m.d / pinch.d });
-      send('pan', { dx: m.x - pinch.x, dy: m.y - pinch.y });
+      // Two fingers moving together turn the 3D view (and any view in the
+      // Orbit mode); in a plane view they pan it.
+      const turn = machineKind !== 'lathe' && (orbitMode || state.plane === '3D');
+      send(turn ? 'orbit' : 'pan', { dx: m.x - pinch.x, dy: m.y - pinch.y });
       pinch = m;
       return;
     }
     if (press && Math.hypot(now.x - press.x, now.y - press.y) > CLICK_SLOP) press.moved = true;
     if (press?.moved) {
       canvas.classList.add('dragging');
-      send('pan', { dx: now.x - before.x, dy: now.y - before.y });
+      send(press.orbit ? 'orbit' : 'pan', { dx: now.x - before.x, dy: now.y - before.y });
     }
   });
   const release = (event) => {
