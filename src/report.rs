@@ -36,6 +36,9 @@ pub struct BlockReport {
     pub state: BlockState,
     /// What the offsets did, as sentences (empty when nothing changed).
     pub notes: Vec<String>,
+    /// The tool's position in machine coordinates (mm) before the block:
+    /// its distance to go runs from there (behaviour 6.12).
+    pub before: Xyz,
     /// Index of the first move of this block in [`Run::moves`].
     pub first_move: u32,
     /// Number of moves of this block.
@@ -204,6 +207,8 @@ pub struct Run {
     /// The setup's library the run called from (behaviour 19.10): the
     /// texts of the blocks whose place says `library` (empty without one).
     pub library: std::collections::BTreeMap<u32, String>,
+    /// The start and reference positions in effect (behaviour 13.16).
+    pub positions: crate::setup::PositionsInEffect,
 }
 
 /// A value the program set, as it stands at the run's end: the last G10

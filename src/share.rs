@@ -43,6 +43,7 @@ pub const PLAIN_KEYS: &[&str] = &[
     "machine",
     "units",
     "offset",
+    "tool",
     "decimal_input",
     "block_skip",
     "length_offset_without_z",
@@ -199,6 +200,7 @@ pub fn encode_plain(doc: &Document, embed: bool) -> String {
             }
         }
     }
+    parts.extend(s.tool_specs().into_iter().map(|t| format!("tool={t}")));
     let st = &s.settings;
     if st.decimal_input != d.decimal_input {
         parts.push("decimal_input=calculator".into());
@@ -380,6 +382,7 @@ fn decode_plain(fragment: &str) -> Result<Link, LinkError> {
     let mut doc = Document::default();
     let mut embed = false;
     let mut offsets = Vec::new();
+    let mut tools = Vec::new();
     let mut seen: Vec<&str> = Vec::new();
     let mut view: Option<ViewState> = None;
     let mut pairs = Vec::new();
@@ -409,7 +412,7 @@ fn decode_plain(fragment: &str) -> Result<Link, LinkError> {
                 ),
             ));
         }
-        if key != "offset" {
+        if key != "offset" && key != "tool" {
             if seen.contains(&key) {
                 return Err(err("link-plain", format!("`{key}` is given twice")));
             }
@@ -455,6 +458,7 @@ fn decode_plain(fragment: &str) -> Result<Link, LinkError> {
                 }
             }
             "offset" => offsets.push(v.to_string()),
+            "tool" => tools.push(v.to_string()),
             "decimal_input" => {
                 s.settings.decimal_input = match v {
                     "increment" => DecimalInput::Increment,
@@ -579,6 +583,13 @@ fn decode_plain(fragment: &str) -> Result<Link, LinkError> {
         let spec = spec.replacen(':', "=", 1);
         doc.setup
             .set_register(&spec)
+            .map_err(|e| err("link-plain", e))?;
+    }
+    // The tool list (behaviour 9.9): `tool=NN:D10,L120`, repeatable.
+    for spec in tools {
+        let spec = spec.replacen(':', "=", 1);
+        doc.setup
+            .set_tool(&spec)
             .map_err(|e| err("link-plain", e))?;
     }
     if doc.setup.machine == MachineKind::Lathe

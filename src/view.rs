@@ -212,6 +212,10 @@ pub struct BlockView<'a> {
     pub actual: Pos,
     /// The actual position in machine coordinates (behaviour 13.1).
     pub machine: Pos,
+    /// The block's motion as the control's distance to go shows it when
+    /// the block starts: its position after it less its position before
+    /// it, along the machine's axes (behaviour 6.12).
+    pub distance_to_go: Pos,
     /// Where the coordinate system lies on the machine.
     pub coordinates: CoordinatesView,
     /// Mill: the transformations in force, absent when none is.
@@ -339,6 +343,7 @@ fn block_view_at<'a>(b: &BlockReport, text: &'a str, columns: (u32, u32)) -> Blo
         programmed: pos(s.programmed, u, m),
         actual: pos(s.actual, u, m),
         machine: pos(s.machine_position(), u, m),
+        distance_to_go: pos(crate::geometry::sub(s.machine_position(), b.before), u, m),
         coordinates: CoordinatesView {
             zero: pos(s.coords.zero, u, m),
             shift: pos(s.coords.shift, u, m),
@@ -555,6 +560,9 @@ pub struct Summary {
     /// ([`Summary::with_hint`]).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub machine_hint: Option<HintView>,
+    /// The start and reference positions the run used, in the setup's
+    /// units (behaviour 13.16).
+    pub positions: crate::setup::PositionsInEffect,
 }
 
 /// How far the tool went and how long it took (behaviour 6.10).
@@ -621,6 +629,7 @@ pub fn summary(run: &Run) -> Summary {
         },
         skipped: run.skipped,
         machine_hint: None,
+        positions: run.positions,
     }
 }
 

@@ -567,3 +567,25 @@ fn behaviour19_10_cli_program_files_fill_the_library() {
             .starts_with("O2001\n")
     );
 }
+
+/// `--tool` sets an entry of the tool list (behaviour 7.53, 11.3): `link
+/// --plain` writes it back as `tool=01:D10,L120`; `run --format json`
+/// carries each block's distance to go (6.12); a bad spec exits 2.
+#[test]
+fn behaviour7_53_the_tool_option_sets_the_tool_list() {
+    let out = offsetlab(&["link", "--plain", "--tool", "1=D10,L120", "-"], b"T1 M06");
+    assert_eq!(out.status.code(), Some(0));
+    let link = String::from_utf8_lossy(&out.stdout);
+    assert!(link.contains("tool=01:D10,L120"), "{link}");
+    let (v, code) = json(
+        &["run", "--format", "json", "--tool", "1=D10", "-"],
+        "G90 G00 X3. Y4.",
+    );
+    assert_eq!(code, 0);
+    // From the origin (the default YASNAC start) to X3 Y4.
+    assert_eq!(v["blocks"][0]["distance_to_go"]["x"], 3.0);
+    assert_eq!(v["blocks"][0]["distance_to_go"]["y"], 4.0);
+    let out = offsetlab(&["check", "--tool", "1=Q5", "-"], b"G00 X1.");
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("tool `1=Q5`"));
+}

@@ -16,7 +16,7 @@
 //   banner.js     the message banners
 //   page.js       this page load: its address, embed mode, the tests' hooks
 //
-// and the panels: offsets.js, settings.js, stepper.js, view.js, share.js, export.js.
+// and the panels: offsets.js, settings.js (positions.js), tools.js, stepper.js, view.js, share.js, export.js.
 
 import { createEditor } from './dist/editor.js';
 import { initBanners, showStorageProblem } from './modules/banner.js';
@@ -42,6 +42,7 @@ import { initSettings, renderSettings, setMachine } from './modules/settings.js'
 import { cloneSetup } from './modules/setup.js';
 import { initShare } from './modules/share.js';
 import { initStepper } from './modules/stepper.js';
+import { initTools, renderTools } from './modules/tools.js';
 import { disableStorage, initStorage, loadWork } from './modules/storage.js';
 import { createSupervisor } from './modules/supervisor.js';
 import { initView, viewState } from './modules/view.js';
@@ -98,6 +99,7 @@ function change(mutate, source) {
   work.setupText = null;
   edited();
   if (source !== 'offsets') renderOffsets({ force: true });
+  if (source !== 'tools') renderTools({ force: true });
   renderSettings();
   scheduleRun();
   persist();
@@ -107,6 +109,7 @@ function replace(parsed, text) {
     work.setup = parsed;
     work.setupText = null;
     renderOffsets({ force: true });
+    renderTools({ force: true });
     renderSettings({ json: false });
   } else {
     work.setupText = text;
@@ -117,7 +120,9 @@ function replace(parsed, text) {
 }
 initOffsets({ getSetup, change });
 initSettings({ getSetup, change, replace });
+initTools({ getSetup, change });
 renderOffsets({ force: true });
+renderTools({ force: true });
 renderSettings();
 if (work.setupText !== null) $('setup').value = work.setupText;
 

@@ -88,6 +88,12 @@ struct Common {
     /// (08=X0.4,Z-0.2). Repeatable; applied after --setup.
     #[arg(long = "offset", value_name = "SPEC")]
     offsets: Vec<String>,
+    /// One tool of the tool list: mill N=D<diameter>,L<length>
+    /// (1=D10,L120), lathe N=R<nose radius>,T<tip>,L<length> (1=R0.8,T3).
+    /// Repeatable; it draws the tool at its size, compensation still reads
+    /// the registers.
+    #[arg(long = "tool", value_name = "SPEC")]
+    tools: Vec<String>,
     /// Setup document (JSON; see the README). A document that carries a
     /// program (as `link --decode` prints) may stand in for PROGRAM.
     #[arg(long, value_name = "FILE")]
@@ -307,6 +313,9 @@ fn load_setup(common: &Common) -> Result<(String, Document), Fatal> {
     }
     for spec in &common.offsets {
         doc.setup.set_register(spec).map_err(Fatal)?;
+    }
+    for spec in &common.tools {
+        doc.setup.set_tool(spec).map_err(Fatal)?;
     }
     for path in &common.programs {
         library_into(path, &mut doc.setup.programs)?;

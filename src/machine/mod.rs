@@ -39,7 +39,7 @@ pub use state::{ArcInfo, BlockState, DataSet, EventKind, Move, MoveKind, PolarSt
 pub use watch::{WatchView, Watched};
 
 use crate::diag::{Diagnostic, Span};
-use crate::geometry::{Xyz, add, scale};
+use crate::geometry::{Xyz, add};
 use crate::offsets::cutter::CutterState;
 use crate::offsets::lathe::LatheState;
 use crate::offsets::length::LengthState;
@@ -206,16 +206,7 @@ const AXES: [(Address, char); 3] = [(Address::X, 'X'), (Address::Y, 'Y'), (Addre
 impl Machine {
     /// A machine at the setup's start position, in its start state (behaviour 2.3).
     pub fn new(setup: Arc<Setup>) -> Machine {
-        let unit = setup.units.mm();
-        // G54's zero, with the external work offset every system carries
-        // (behaviour 17.9).
-        let w = &setup.work_offsets;
-        let origin = scale(add(w.get(0).to_array(), w.ext.to_array()), unit);
-        let start = scale(setup.start_position().to_array(), unit);
-        let start = match setup.machine {
-            MachineKind::Mill => start,
-            MachineKind::Lathe => [start[0], 0.0, start[2]],
-        };
+        let (start, origin) = setup.start_and_origin_mm();
         let state = BlockState {
             machine: setup.machine,
             system: setup.settings.gcode_system(),

@@ -211,7 +211,9 @@ impl<'a> CanvasSurface<'a> {
                 if let Some(stroke) = stroke {
                     ctx.set_stroke_style_str(stroke.color);
                     ctx.set_line_width(stroke.width);
-                    ctx.set_line_dash(&Array::new())?;
+                    // The tool list's circle is dashed (behaviour 13.16).
+                    let dash: Array = stroke.dash.iter().map(|d| JsValue::from_f64(*d)).collect();
+                    ctx.set_line_dash(&dash)?;
                     ctx.stroke();
                 }
             }

@@ -456,7 +456,7 @@ fn draw_scene_as(
         scene::draw_arrows(surface, &frame, toolpath, split);
     }
     if let Some(marker) = scene.marker {
-        scene::draw_marker(surface, &frame, marker, scene.cutter);
+        scene::draw_marker(surface, &frame, marker, (scene.cutter, scene.tool));
     }
     draw_scale_bar(surface, &frame, toolpath);
     draw_legend(surface, &frame, toolpath);

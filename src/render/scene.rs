@@ -57,6 +57,9 @@ pub struct Scene {
     /// The cutter of cutter radius compensation at the current block
     /// (behaviour 16.13), drawn round the tool marker in its plane.
     pub cutter: Option<Cutter>,
+    /// The current tool at its size from the setup's tool list (behaviour
+    /// 13.16), drawn dashed round the tool marker in its plane.
+    pub tool: Option<Cutter>,
     /// Draw the band the cutter sweeps along the current block (behaviour
     /// 16.20): off unless asked for.
     pub swept: bool,
@@ -76,6 +79,7 @@ impl Default for Scene {
             step: None,
             marker: None,
             cutter: None,
+            tool: None,
             swept: false,
             legend_folded: false,
             theme: &LIGHT,
@@ -289,7 +293,7 @@ pub fn draw_marker(
     s: &mut impl Surface,
     f: &Frame,
     [actual, programmed]: [[f64; 3]; 2],
-    cutter: Option<Cutter>,
+    (cutter, tool): (Option<Cutter>, Option<Cutter>),
 ) {
     let screen = |q: &[f64; 3]| {
         let (u, v) = f.projection.project(q);
@@ -297,7 +301,11 @@ pub fn draw_marker(
     };
     let (a, p) = (screen(&actual), screen(&programmed));
     s.begin_group("tool");
-    if let Some(c) = cutter.filter(|c| c.plane == f.plane) {
+    // The register's circle solid, the tool list's dashed (13.16).
+    for (c, dash) in [(cutter, &[][..]), (tool, &[5.0, 3.0][..])] {
+        let Some(c) = c.filter(|c| c.plane == f.plane) else {
+            continue;
+        };
         let r = c.radius * f.transform.scale;
         let a = screen(&[
             actual[0] + c.centre[0],
@@ -308,7 +316,7 @@ pub fn draw_marker(
             let edge = Stroke {
                 color: f.theme.tool,
                 width: 1.5,
-                dash: &[],
+                dash,
             };
             s.circle(a.0, a.1, r, None, Some(&edge));
         }

@@ -188,6 +188,10 @@ impl Surface for SvgSurface {
                 escape(stroke.color),
                 num(stroke.width)
             );
+            if !stroke.dash.is_empty() {
+                let dash: Vec<String> = stroke.dash.iter().map(|d| num(*d)).collect();
+                let _ = write!(self.body, " stroke-dasharray=\"{}\"", dash.join(" "));
+            }
         }
         self.body.push_str("/>\n");
     }

@@ -207,6 +207,7 @@ pub fn report_at(
     loop {
         let this = r.index;
         let first_move = r.move_count;
+        let before = r.machine.state().machine_position();
         match r.step()? {
             Step::Ran(flow) if this == index => {
                 let place = match r.calls.is_some() {
@@ -217,6 +218,7 @@ pub fn report_at(
                     index,
                     span: r.block.span,
                     state: *r.machine.state(),
+                    before,
                     notes: std::mem::take(&mut r.out.notes),
                     first_move: first_move as u32,
                     move_count: r.out.moves.len() as u32,

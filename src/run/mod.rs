@@ -603,6 +603,18 @@ impl Making {
     }
 }
 
+/// The tool's machine position before the block being reported (6.12):
+/// the last block's after it — a run that keeps reports keeps every one
+/// from the first — or where the run starts. Out of line: the runs that
+/// keep no reports (`check`) never come here.
+#[inline(never)]
+fn position_before(blocks: &[BlockReport], machine: &Machine) -> crate::geometry::Xyz {
+    match blocks.last() {
+        Some(b) => b.state.machine_position(),
+        None => machine.setup().start_machine_position_mm(),
+    }
+}
+
 /// A run of nothing yet.
 fn fresh(setup: &Setup) -> Run {
     Run {
@@ -622,6 +634,7 @@ fn fresh(setup: &Setup) -> Run {
         end: End::Completed,
         skipped: 0,
         library: Default::default(),
+        positions: setup.positions_in_effect(),
     }
 }
 
@@ -730,10 +743,12 @@ fn account(
         }
     }
     if options.keep_blocks {
+        let before = position_before(&result.blocks, machine);
         result.blocks.push(BlockReport {
             index,
             span: block.span,
             state: *machine.state(),
+            before,
             notes: std::mem::take(&mut out.notes),
             first_move: first_move as u32,
             move_count: out.moves.len() as u32,

@@ -180,35 +180,33 @@ impl View {
         // The cutter's circle while G41/G42 is the mode or its vector is on
         // (behaviour 16.13); on the lathe the nose's, about the nose centre
         // (behaviour 18.2).
-        self.scene.cutter = report.and_then(|b| {
+        self.scene.cutter = report.as_ref().and_then(|b| {
             let c = b.state.cutter;
             let on = c.mode != crate::syntax::codes::CutterCompensation::Cancel
                 || matches!(c.phase, Phase::StartUp | Phase::Offset);
             if !on || c.radius == 0.0 {
                 return None;
             }
-            let radius = c.radius.abs() * k;
-            Some(match b.state.machine {
-                MachineKind::Mill => scene::Cutter {
-                    radius,
-                    plane: match b.state.modal.plane {
-                        crate::machine::modal::Plane::XY => Plane::Xy,
-                        crate::machine::modal::Plane::ZX => Plane::Xz,
-                        crate::machine::modal::Plane::YZ => Plane::Yz,
-                    },
-                    centre: [0.0; 3],
-                },
-                MachineKind::Lathe => {
-                    // The imaginary nose is the centre + R × the tip's
-                    // vector (Z, X radius); X is a diameter in the path.
-                    let [tz, tx] = crate::offsets::cutter::nose::tip_vector(c.tip.unwrap_or(0));
-                    scene::Cutter {
-                        radius,
-                        plane: Plane::LatheZx,
-                        centre: [-2.0 * radius * tx, 0.0, -radius * tz],
-                    }
-                }
-            })
+            Some(circle(&b.state, c.radius.abs() * k, c.tip.unwrap_or(0)))
+        });
+        // The tool at its size from the tool list (behaviour 13.16): the
+        // mill's cutter seen along its axis in the plan view, the lathe's
+        // nose circle about its centre.
+        self.scene.tool = report.as_ref().and_then(|b| {
+            let s = &b.state;
+            let (number, plane) = match s.machine {
+                MachineKind::Mill => (s.tool, Plane::Xy),
+                MachineKind::Lathe => (s.lathe.tool, Plane::LatheZx),
+            };
+            let t = run.setup.tool(number)?;
+            let radius = match s.machine {
+                MachineKind::Mill => t.diameter / 2.0,
+                MachineKind::Lathe => t.nose_radius,
+            } * run.setup.units.mm()
+                * k;
+            let mut c = circle(s, radius, t.tip);
+            c.plane = plane;
+            (radius > 0.0).then_some(c)
         });
     }
 
@@ -415,5 +413,31 @@ impl View {
     /// frame is drawn whole.
     pub fn forget_frame(&mut self) {
         self.last_whole = None;
+    }
+}
+
+/// A circle of `radius` (the toolpath's units) round the tool: in the
+/// compensation plane about the marker on the mill; on the lathe about the
+/// nose centre, which lies R × the tip's vector (Z, X radius) from the
+/// imaginary nose the path follows (behaviour 18.2; X is a diameter).
+fn circle(s: &crate::machine::BlockState, radius: f64, tip: u8) -> scene::Cutter {
+    match s.machine {
+        MachineKind::Mill => scene::Cutter {
+            radius,
+            plane: match s.modal.plane {
+                crate::machine::modal::Plane::XY => Plane::Xy,
+                crate::machine::modal::Plane::ZX => Plane::Xz,
+                crate::machine::modal::Plane::YZ => Plane::Yz,
+            },
+            centre: [0.0; 3],
+        },
+        MachineKind::Lathe => {
+            let [tz, tx] = crate::offsets::cutter::nose::tip_vector(tip);
+            scene::Cutter {
+                radius,
+                plane: Plane::LatheZx,
+                centre: [-2.0 * radius * tx, 0.0, -radius * tz],
+            }
+        }
     }
 }

@@ -17,12 +17,14 @@ pub mod programs;
 mod registers;
 mod settings;
 mod specs;
+mod tools;
 
 pub use choices::*;
-pub use positions::MachinePositions;
+pub use positions::{MachinePositions, PositionsInEffect};
 use registers::register_map;
 pub use registers::{LatheRegister, MAX_TIP, MillPart, MillRegister};
 pub use settings::*;
+pub use tools::{MAX_TOOL, Tool};
 
 /// The only document version this build writes; every version up to it reads.
 pub const SETUP_VERSION: u32 = 1;
@@ -287,6 +289,10 @@ pub struct Setup {
     /// opening with its own header (behaviour 9.10, 19.10).
     #[serde(skip_serializing_if = "BTreeMap::is_empty")]
     pub programs: BTreeMap<u32, String>,
+    /// The tool list, keyed by tool number: each tool's size, for drawing
+    /// it (behaviour 13.16); compensation reads the registers, not this.
+    #[serde(with = "register_map", skip_serializing_if = "BTreeMap::is_empty")]
+    pub tools: BTreeMap<u16, Tool>,
 }
 
 impl Default for Setup {
@@ -307,6 +313,7 @@ impl Default for Setup {
             offsets: BTreeMap::new(),
             lathe_offsets: BTreeMap::new(),
             programs: BTreeMap::new(),
+            tools: BTreeMap::new(),
         }
     }
 }
@@ -450,6 +457,7 @@ impl Setup {
                 ));
             }
         }
+        self.validate_tools(&mut out);
         let max = self.units.max_dimension();
         let mut check_pos = |what: &str, p: Position| {
             for (axis, v) in [("x", p.x), ("y", p.y), ("z", p.z)] {

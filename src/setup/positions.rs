@@ -88,3 +88,67 @@ impl Setup {
         self.home()
     }
 }
+
+/// The start and reference positions a run uses, as the setup gives them or
+/// setting 7.49 fills them in (behaviour 13.16): what the Settings panel
+/// shows beside the fields left at 0 0 0.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct PositionsInEffect {
+    /// The setup's units, which the positions are in.
+    pub units: super::Units,
+    /// Setting 7.49 as in effect (the control's default when left out).
+    pub machine_positions: MachinePositions,
+    /// Where the tool starts, in G54 coordinates (lathe X a diameter).
+    pub start: Position,
+    /// The first reference position (G28), in machine coordinates.
+    pub reference: Position,
+    /// The second reference position (G30), in machine coordinates.
+    pub second_reference: Position,
+}
+
+impl Setup {
+    /// The start and reference positions in effect (behaviour 13.16).
+    /// Rounded to a millionth of the unit, as the reports are (6.2).
+    pub fn positions_in_effect(&self) -> PositionsInEffect {
+        let round = |p: Position| Position {
+            x: crate::geometry::round6(p.x),
+            y: crate::geometry::round6(p.y),
+            z: crate::geometry::round6(p.z),
+        };
+        PositionsInEffect {
+            units: self.units,
+            machine_positions: self.settings.machine_positions(),
+            start: round(self.start_position()),
+            reference: round(self.first_reference()),
+            second_reference: round(
+                self.second_reference
+                    .unwrap_or_else(|| self.first_reference()),
+            ),
+        }
+    }
+}
+
+impl Setup {
+    /// Where the tool starts (G54 coordinates, mm; the lathe's Y 0) and
+    /// G54's zero with the external work offset every system carries
+    /// (machine coordinates, mm, behaviour 17.9): a run's first position.
+    pub fn start_and_origin_mm(&self) -> (crate::geometry::Xyz, crate::geometry::Xyz) {
+        use crate::geometry::{add, scale};
+        let unit = self.units.mm();
+        let w = &self.work_offsets;
+        let origin = scale(add(w.get(0).to_array(), w.ext.to_array()), unit);
+        let start = scale(self.start_position().to_array(), unit);
+        let start = match self.machine {
+            MachineKind::Mill => start,
+            MachineKind::Lathe => [start[0], 0.0, start[2]],
+        };
+        (start, origin)
+    }
+
+    /// The tool's machine position before a run's first block, mm (the
+    /// first block's distance to go starts there, behaviour 6.12).
+    pub fn start_machine_position_mm(&self) -> crate::geometry::Xyz {
+        let (start, origin) = self.start_and_origin_mm();
+        crate::geometry::add(start, origin)
+    }
+}

@@ -7,6 +7,7 @@ import { showBanner } from './banner.js';
 import { showDiagnostics, showNotRun } from './diagnostics.js';
 import { setProgramRegisters } from './offsets.js';
 import { PROGRESS_AFTER_MS } from './page.js';
+import { showPositions } from './positions.js';
 import { openSetupJson } from './settings.js';
 import { showState } from './state.js';
 import { showVariables } from './variables.js';
@@ -104,6 +105,7 @@ export function showResult({ summary, diagnostics }) {
   editor.setDiagnostics(diagnostics);
   setProgramRegisters(summary.registers ?? [], summary.set_by_program ?? [], summary.offset_memory ?? null);
   setMachinePlanes(summary.machine);
+  showPositions(summary);
   offerMachine(summary.machine_hint);
 }
 
@@ -116,7 +118,7 @@ export function showViewState(m) {
   if (m.block !== undefined) currentBlock = m.block;
   if (m.step < 0) currentBlock = null;
   stepReported(m.step, m.blocks, currentBlock, m.stepSeq);
-  showState($('state-panel'), currentBlock, { blocks: blockCount });
+  showState($('state-panel'), currentBlock, { blocks: blockCount, setup: work.setup });
   showVariables($('variables-panel'), currentBlock);
   // A library program's block is not in the editor's text (behaviour 19.10).
   editor.showCurrent(currentBlock && !currentBlock.library ? currentBlock.line : null, m.cause !== 'line');

@@ -3,6 +3,8 @@
 // their values and vectors, feed, spindle, and the sentence saying what the
 // offsets did. Everything is set as text (textContent), never as markup.
 
+import { toolText } from './tools.js';
+
 function decimals(units) {
   return units === 'inch' ? 4 : 3;
 }
@@ -67,8 +69,11 @@ function transforms(t, u) {
   return parts.join(' · ');
 }
 
-/** Rows [label, value, key] of the panel for one block report. */
-export function stateRows(b) {
+/**
+ * Rows [label, value, key] of the panel for one block report; `setup`
+ * (optional) gives the tool list's line for the current tool (13.16).
+ */
+export function stateRows(b, setup = {}) {
   const u = b.units;
   const unit = u === 'inch' ? 'in' : 'mm';
   const rows = [
@@ -82,6 +87,9 @@ export function stateRows(b) {
     ['Programmed', `${position(b.programmed, u)} ${unit}`, 'programmed'],
     ['Actual', `${position(b.actual, u)} ${unit}`, 'actual'],
     ['Machine position', `${position(b.machine, u)} ${unit}`, 'machine'],
+    // Behaviour 6.12: as the block starts, the whole of its motion is to go
+    // (the page steps by whole blocks).
+    ...(b.distance_to_go ? [['Distance to go (at the block’s start)', `${vector(b.distance_to_go, u)} ${unit}`, 'to-go']] : []),
   ];
   if (b.coordinates) rows.push(['Coordinate system', coordinates(b.coordinates, u), 'coordinates']);
   if (b.transforms) rows.push(['Transformations', transforms(b.transforms, u), 'transforms']);
@@ -145,10 +153,12 @@ export function stateRows(b) {
   const feed = b.feed === null ? '—' : `F${b.feed}`;
   const spindle = b.spindle === null ? '—' : `S${b.spindle}`;
   rows.push(['Feed · spindle · tool', `${feed} · ${spindle} · T${two(b.tool)}`, 'feed']);
+  const tool = toolText(b, setup ?? {}, fmt);
+  if (tool) rows.push(['Tool (tool list)', tool, 'tool']);
   return rows;
 }
 
-export function showState(panel, block, { blocks = 0 } = {}) {
+export function showState(panel, block, { blocks = 0, setup = {} } = {}) {
   const list = panel.querySelector('dl');
   const why = panel.querySelector('.explanation');
   if (!block) {
@@ -159,7 +169,7 @@ export function showState(panel, block, { blocks = 0 } = {}) {
     panel.dataset.block = '';
     return;
   }
-  const items = stateRows(block).flatMap(([label, value, key]) => {
+  const items = stateRows(block, setup).flatMap(([label, value, key]) => {
     const dt = document.createElement('dt');
     dt.textContent = label;
     const dd = document.createElement('dd');
