@@ -65,6 +65,10 @@ pub struct Place {
     /// sequence number (or line), then the program being read
     /// (`["O1000 N40", "O2000"]`).
     pub stack: Vec<String>,
+    /// The program is the setup's library's (behaviour 19.10): the block's
+    /// span and line are in that program's text, not the file's.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub library: bool,
 }
 
 impl BlockReport {
@@ -200,6 +204,9 @@ pub struct Run {
     /// Blocks the run could not run and passed over, with the setting
     /// `continue_past_errors` on (behaviour 2.24); each has its diagnostics.
     pub skipped: u32,
+    /// The setup's library the run called from (behaviour 19.10): the
+    /// texts of the blocks whose place says `library` (empty without one).
+    pub library: std::collections::BTreeMap<u32, String>,
     /// The start and reference positions in effect (behaviour 13.16).
     pub positions: crate::setup::PositionsInEffect,
 }

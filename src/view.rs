@@ -276,11 +276,35 @@ pub struct BlockView<'a> {
     /// outside calls.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub stack: Vec<String>,
+    /// The program is the setup's library's: `line`, `column` and `text`
+    /// are in its text (behaviour 19.10); absent otherwise.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub library: bool,
 }
 
 /// Builds the report of one block.
 pub fn block_view<'a>(b: &BlockReport, text: &'a str) -> BlockView<'a> {
     block_view_at(b, text, b.span.columns(text))
+}
+
+/// The text block `b` was read from: the file's `text`, or for a block
+/// of a library program (behaviour 19.10) that program's text in
+/// `library` (its place's program, `O1002` or Haas's `O1002 N100`).
+pub fn text_of<'a>(
+    b: &BlockReport,
+    text: &'a str,
+    library: &'a std::collections::BTreeMap<u32, String>,
+) -> &'a str {
+    let Some(place) = b.place.as_deref().filter(|p| p.library) else {
+        return text;
+    };
+    let digits = place.program.get(1..).unwrap_or("");
+    let digits = &digits[..digits.bytes().take_while(u8::is_ascii_digit).count()];
+    digits
+        .parse::<u32>()
+        .ok()
+        .and_then(|n| library.get(&n))
+        .map_or(text, String::as_str)
 }
 
 /// The reports of every block of a run, in order, their columns found in
@@ -289,9 +313,15 @@ pub fn block_view<'a>(b: &BlockReport, text: &'a str) -> BlockView<'a> {
 /// blocks).
 pub fn block_views<'a>(run: &'a Run, text: &'a str) -> impl Iterator<Item = BlockView<'a>> + 'a {
     let mut columns = crate::diag::Columns::new(text);
-    run.blocks
-        .iter()
-        .map(move |b| block_view_at(b, text, columns.of(b.span)))
+    run.blocks.iter().map(
+        move |b| match b.place.as_deref().is_some_and(|p| p.library) {
+            true => {
+                let own = text_of(b, text, &run.library);
+                block_view_at(b, own, b.span.columns(own))
+            }
+            false => block_view_at(b, text, columns.of(b.span)),
+        },
+    )
 }
 
 /// [`block_view`] with the block's columns already known.
@@ -379,6 +409,7 @@ fn block_view_at<'a>(b: &BlockReport, text: &'a str, columns: (u32, u32)) -> Blo
             .as_ref()
             .map(|p| p.stack.clone())
             .unwrap_or_default(),
+        library: b.place.as_ref().is_some_and(|p| p.library),
     }
 }
 

@@ -481,6 +481,93 @@ fn behaviour1_24_a_mill_program_on_the_lathe_is_offered_the_mill_and_mixed_words
     assert!(v["summary"].get("machine_hint").is_none(), "{v}");
 }
 
+#[test]
+fn behaviour19_10_cli_program_files_fill_the_library() {
+    // The main program calls O1002 twice and the macro O2001 once; both
+    // are in another file, after a `%` line. Lines are counted in each
+    // program's text from its header: O2001's `#3=1/0` is its line 3, the
+    // divisor `0` its column 6.
+    let main = temp_file(
+        "lib_main.nc",
+        b"O1000\nG90 G00 X0 Y0 Z0\nM98 P1002 L2\nG65 P2001 A3.\nM30\n",
+    );
+    let subs = temp_file(
+        "lib_subs.nc",
+        b"%\nO1002 (STEP)\nG91 G01 X10. F100\nM99\nO2001\nG91 G01 Y#1\n#3=1/0\nM99\n%\n",
+    );
+    let (v, code) = json(
+        &[
+            "run",
+            "--format",
+            "json",
+            "--program",
+            subs.to_str().unwrap(),
+            main.to_str().unwrap(),
+        ],
+        "",
+    );
+    assert_eq!(code, 1);
+    let blocks = v["blocks"].as_array().unwrap();
+    // Block 4: O1002's G01, its line 2, X0 + 10 = 10; block 7: the second
+    // pass, X 10 + 10 = 20.
+    assert_eq!(blocks[4]["line"], 2);
+    assert_eq!(blocks[4]["program"], "O1002");
+    assert_eq!(blocks[4]["actual"]["x"], 10.0);
+    assert_eq!(blocks[4]["text"], "G91 G01 X10. F100");
+    assert_eq!(blocks[4]["library"], true);
+    assert_eq!(blocks[7]["actual"]["x"], 20.0);
+    assert_eq!(
+        blocks[7]["stack"],
+        serde_json::json!(["O1000 line 3", "O1002"])
+    );
+    // Block 11: O2001's G91 G01 Y#1 with A3. (#1 = 3): Y 0 + 3 = 3.
+    assert_eq!(blocks[11]["program"], "O2001");
+    assert_eq!(blocks[11]["line"], 2);
+    assert_eq!(blocks[11]["actual"]["y"], 3.0);
+    let d = &v["diagnostics"][0];
+    assert_eq!(
+        (d["line"].as_u64(), d["column"].as_u64()),
+        (Some(3), Some(6))
+    );
+    assert!(d["message"].as_str().unwrap().starts_with("in O2001: "));
+    // A file without a header is a usage error (exit 2) that says why.
+    let bare = temp_file("lib_bare.nc", b"G01 X1.\nM99\n");
+    let out = offsetlab(
+        &[
+            "run",
+            "--program",
+            bare.to_str().unwrap(),
+            main.to_str().unwrap(),
+        ],
+        b"",
+    );
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("no program header"));
+    // `link` carries the library: decoded, its document holds both.
+    let out = offsetlab(
+        &[
+            "link",
+            "--program",
+            subs.to_str().unwrap(),
+            main.to_str().unwrap(),
+        ],
+        b"",
+    );
+    let link = String::from_utf8(out.stdout).unwrap().trim().to_string();
+    let out = offsetlab(&["link", "--decode", &link], b"");
+    let doc: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(
+        doc["programs"]["1002"],
+        "O1002 (STEP)\nG91 G01 X10. F100\nM99\n"
+    );
+    assert!(
+        doc["programs"]["2001"]
+            .as_str()
+            .unwrap()
+            .starts_with("O2001\n")
+    );
+}
+
 /// `--tool` sets an entry of the tool list (behaviour 7.53, 11.3): `link
 /// --plain` writes it back as `tool=01:D10,L120`; `run --format json`
 /// carries each block's distance to go (6.12); a bad spec exits 2.

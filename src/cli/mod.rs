@@ -98,6 +98,11 @@ struct Common {
     /// program (as `link --decode` prints) may stand in for PROGRAM.
     #[arg(long, value_name = "FILE")]
     setup: Option<PathBuf>,
+    /// A file of programs for the setup's library (behaviour 9.10, 19.10):
+    /// each program in it, by its O/: header, is there for M98/G65 to
+    /// call. Repeatable; a file without a header is refused.
+    #[arg(long = "program", value_name = "FILE")]
+    programs: Vec<PathBuf>,
     /// Program file, or - for standard input.
     #[arg(value_name = "PROGRAM")]
     program: Option<String>,
@@ -312,6 +317,9 @@ fn load_setup(common: &Common) -> Result<(String, Document), Fatal> {
     for spec in &common.tools {
         doc.setup.set_tool(spec).map_err(Fatal)?;
     }
+    for path in &common.programs {
+        library_into(path, &mut doc.setup.programs)?;
+    }
     let doc = doc.validated().map_err(|e| Fatal(e.to_string()))?;
     let name = match &common.program {
         Some(path) => path.clone(),
@@ -327,6 +335,43 @@ fn load_setup(common: &Common) -> Result<(String, Document), Fatal> {
         }
     };
     Ok((name, doc))
+}
+
+/// Adds the programs of the file at `path` to the library, each from its
+/// header to the next (behaviour 19.10); a number the library holds
+/// already keeps its first program (19.1). A file without a header, or
+/// with blocks before its first, is refused: the library keeps programs
+/// by their number, and a program's lines are counted from its header.
+fn library_into(
+    path: &std::path::Path,
+    library: &mut std::collections::BTreeMap<u32, String>,
+) -> Result<(), Fatal> {
+    let name = format!("--program {}", path.display());
+    let file = std::fs::File::open(path).map_err(|e| Fatal(format!("cannot read {name}: {e}")))?;
+    let text = read_text(&name, file, offsetlab::syntax::MAX_PROGRAM_BYTES)?;
+    let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
+    let headers = offsetlab::syntax::program_headers(text);
+    let Some(first) = headers.first() else {
+        return Err(Fatal(format!(
+            "{name}: no program header; the library keeps programs by number, so each opens with its O or : line (O1002)"
+        )));
+    };
+    if !text[..first.pos]
+        .trim_matches(|c: char| c.is_whitespace() || c == '%')
+        .is_empty()
+    {
+        return Err(Fatal(format!(
+            "{name}: blocks before the first program header (line {}); the library keeps whole programs, each from its O or : line",
+            first.line
+        )));
+    }
+    for (i, h) in headers.iter().enumerate() {
+        let end = headers.get(i + 1).map_or(text.len(), |next| next.pos);
+        library
+            .entry(h.number)
+            .or_insert_with(|| text[h.pos..end].to_string());
+    }
+    Ok(())
 }
 
 /// The run of `run` and `check`: a large program's parser on a thread of

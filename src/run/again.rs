@@ -42,8 +42,10 @@ pub fn rerun_observed(
     earlier: Option<Earlier<'_>>,
     observer: &mut impl Observer,
 ) -> (Run, Checkpoints, Reuse) {
+    // A run with a library is made whole (its blocks are not read in the
+    // text's order, as a run with calls, behaviour 19.9).
     let plan = match earlier {
-        Some(earlier) if super::refused(text, setup).is_none() => {
+        Some(earlier) if setup.programs.is_empty() && super::refused(text, setup).is_none() => {
             Plan::new(earlier, text, setup, options)
         }
         _ => None,

@@ -108,6 +108,7 @@ impl<'t> Calls<'t> {
         Some(Box::new(Place {
             program: self.current.label.clone(),
             stack,
+            library: false,
         }))
     }
 }

@@ -189,6 +189,9 @@ pub fn report_at(
     checkpoints: &Checkpoints,
     index: u32,
 ) -> Option<BlockReport> {
+    if let Some(joined) = super::library::Joined::new(text, setup) {
+        return joined.report_at(checkpoints, index);
+    }
     if index as usize >= checkpoints.block_count() {
         return None;
     }

@@ -17,6 +17,7 @@ mod ahead;
 mod calls;
 mod checkpoint;
 mod flow;
+mod library;
 mod macrocall;
 mod macros;
 #[cfg(not(target_arch = "wasm32"))]
@@ -427,6 +428,20 @@ pub fn run_observed(
     options: RunOptions,
     observer: &mut impl Observer,
 ) -> (Run, Checkpoints) {
+    if let Some(joined) = library::Joined::new(text, setup) {
+        return joined.run_observed(options, observer);
+    }
+    run_text(text, setup, options, observer)
+}
+
+/// [`run_observed`] of one text (a run with a library reads the text it
+/// makes of it with its own setup, `library.rs`).
+fn run_text(
+    text: &str,
+    setup: &Setup,
+    options: RunOptions,
+    observer: &mut impl Observer,
+) -> (Run, Checkpoints) {
     if let Some(refused) = refused(text, setup) {
         return (refused, Checkpoints::default());
     }
@@ -618,6 +633,7 @@ fn fresh(setup: &Setup) -> Run {
         travel: Default::default(),
         end: End::Completed,
         skipped: 0,
+        library: Default::default(),
         positions: setup.positions_in_effect(),
     }
 }

@@ -105,6 +105,7 @@ fn on_two_threads(text: &str, setup: &Setup, options: RunOptions) -> Option<Run>
     // back before a block that failed: one thread does.
     if options.checkpoint_every != 0
         || setup.settings.continue_past_errors
+        || !setup.programs.is_empty()
         || !setup.validate().is_empty()
         || check_size(text).is_some()
     {

@@ -330,7 +330,10 @@ impl Session {
     /// Block `index` as reported (the CLI's JSON `blocks` entries), or
     /// None out of range.
     pub fn block(&self, index: u32) -> Option<BlockView<'_>> {
-        self.report(index).map(|b| block_view(&b, &self.last.text))
+        self.report(index).map(|b| {
+            let text = crate::view::text_of(&b, &self.last.text, &self.last.setup.programs);
+            block_view(&b, text)
+        })
     }
 
     /// The last executed block at or before 1-based `line` (the block a

@@ -13,6 +13,7 @@ use crate::diag::{Diagnostic, Span};
 
 mod choices;
 mod positions;
+pub mod programs;
 mod registers;
 mod settings;
 mod specs;
@@ -284,6 +285,10 @@ pub struct Setup {
     /// Lathe registers read by the offset part of T codes.
     #[serde(with = "register_map", skip_serializing_if = "BTreeMap::is_empty")]
     pub lathe_offsets: BTreeMap<u16, LatheRegister>,
+    /// The library: programs kept with the document by number, each text
+    /// opening with its own header (behaviour 9.10, 19.10).
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    pub programs: BTreeMap<u32, String>,
     /// The tool list, keyed by tool number: each tool's size, for drawing
     /// it (behaviour 13.16); compensation reads the registers, not this.
     #[serde(with = "register_map", skip_serializing_if = "BTreeMap::is_empty")]
@@ -307,6 +312,7 @@ impl Default for Setup {
             extended_work_offsets: BTreeMap::new(),
             offsets: BTreeMap::new(),
             lathe_offsets: BTreeMap::new(),
+            programs: BTreeMap::new(),
             tools: BTreeMap::new(),
         }
     }
@@ -358,7 +364,7 @@ impl Setup {
 
     /// Every problem with this setup (empty when it is usable).
     pub fn validate(&self) -> Vec<Diagnostic> {
-        let mut out = Vec::new();
+        let mut out = programs::check(&self.programs);
         if self.version == 0 || self.version > SETUP_VERSION {
             out.push(setup_error(
                 "setup-version",

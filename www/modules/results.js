@@ -120,7 +120,8 @@ export function showViewState(m) {
   stepReported(m.step, m.blocks, currentBlock, m.stepSeq);
   showState($('state-panel'), currentBlock, { blocks: blockCount, setup: work.setup });
   showVariables($('variables-panel'), currentBlock);
-  editor.showCurrent(currentBlock ? currentBlock.line : null, m.cause !== 'line');
+  // A library program's block is not in the editor's text (behaviour 19.10).
+  editor.showCurrent(currentBlock && !currentBlock.library ? currentBlock.line : null, m.cause !== 'line');
   if (['view', 'step', 'pick', 'line'].includes(m.cause)) persist();
   // A run may move the current block (a shorter program): the autosave follows.
   else if (m.cause === 'run' && work.viewKnown) saveWork(currentWork);

@@ -3,6 +3,7 @@
 // changes — and the raw setup document (JSON) under "Advanced", kept in step
 // with the form both ways.
 
+import { librarySection } from './library.js';
 import {
   MAX_POSITION, WORK_SYSTEMS, checkNumber, decimalsFor, machineOf, pointOf, setPoint, setSetting,
   setWorkOffset, settingOf, setupText, unitName, unitsOf, workOffset,
@@ -282,6 +283,8 @@ export function initSettings({ getSetup, change, replace }) {
   works.append(summary, line('Zero point of each work coordinate system as a machine position; G54 is active at start. The additional systems (extended_work_offsets) and the second to fourth reference positions are set in the document below.', 'works'));
   for (const def of POINTS.slice(2)) works.append(pointField(def));
   parts.push(works);
+  ctx.library = librarySection({ getSetup, change });
+  parts.push(ctx.library.element);
   ctx.form.replaceChildren(...parts);
   ctx.form.addEventListener('submit', (e) => e.preventDefault());
 
@@ -323,6 +326,7 @@ export function renderSettings({ json = true } = {}) {
   }
   for (const el of ctx.form.querySelectorAll('[data-machine]')) el.hidden = el.dataset.machine !== machine;
   ctx.form.classList.toggle('lathe', machine === 'lathe');
+  ctx.library?.render();
   if (json && document.activeElement !== ctx.json) ctx.json.value = setupText(setup);
 }
 

@@ -77,7 +77,8 @@ export function stateRows(b, setup = {}) {
   const u = b.units;
   const unit = u === 'inch' ? 'in' : 'mm';
   const rows = [
-    ['Block', `line ${b.line}: ${b.text}`, 'block'],
+    // A library program's block: its line in that program (behaviour 19.10).
+    ['Block', `${b.library ? `${b.program} ` : ''}line ${b.line}: ${b.text}`, 'block'],
     // Inside a subprogram call (behaviour 19.7): the program and the calls
     // open, outermost first.
     ...(b.program ? [['Program · calls', `${b.program} · ${(b.stack ?? []).join(' → ')}`, 'program']] : []),

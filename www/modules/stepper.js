@@ -68,7 +68,8 @@ export function stepReported(current, count, block, answered = seq) {
   } else if (step < 0) {
     el.position.textContent = `all ${blocks} blocks — step to see one`;
   } else {
-    const where = block ? ` · line ${block.line}` : '';
+    // A block of the setup's library names its program (behaviour 19.10).
+    const where = block ? ` · ${block.library ? `${block.program} ` : ''}line ${block.line}` : '';
     el.position.textContent = `block ${step + 1} of ${blocks}${where}`;
   }
   el.slider.setAttribute('aria-valuetext', el.position.textContent);

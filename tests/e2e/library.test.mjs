@@ -1,0 +1,45 @@
+// Browser end-to-end test of the setup's library of programs (issue 22
+// item 1, behaviour 9.10 and 19.10): the main program calls O1002, which
+// the editor does not hold; pasted into the settings panel's library it is
+// called, stepping into it shows its own line and text, the saved work
+// keeps it, and removing it brings the alarm back. Screenshot: library.png.
+
+import assert from 'node:assert/strict';
+import { describe, test } from 'node:test';
+import { savedWork, shoot, stateText, typeProgram, useBrowser, waitForRun, waitForView } from './harness.mjs';
+
+const { withPage } = useBrowser();
+
+const MAIN = ['O1000', 'G90 G00 X0 Y0 Z0', 'M98 P1002 L2', 'M30'].join('\n');
+const STEP = ['O1002', 'G91 G01 X10. F100', 'M99'].join('\n');
+
+describe('library', () => {
+  test('a program pasted into the library is called, stepped into and kept', async () => {
+    await withPage(async (page) => {
+      await typeProgram(page, MAIN);
+      // Nothing holds O1002 yet: PS0076 at the M98.
+      assert.match(await page.locator('#diagnostics').textContent(), /program-not-found|PS0076/);
+      await page.locator('#library > summary').click();
+      await page.locator('#library-paste').fill(STEP);
+      await page.locator('#library-add').click();
+      await waitForRun(page);
+      assert.equal(await page.locator('#library-list li').count(), 1);
+      assert.match(await page.locator('#library-list li').textContent(), /O1002 — G91 G01 X10\. F100/);
+      // Blocks: O1000 (0), G90 (1), M98 (2), O1002's header (3), its G01
+      // (4) at X0 + 10 = 10.
+      for (let i = 0; i <= 4; i += 1) await page.locator('#step-next').click();
+      await waitForView(page, (v, a) => v.step === a, 4);
+      assert.equal(await stateText(page, 'block'), 'O1002 line 2: G91 G01 X10. F100');
+      assert.match(await stateText(page, 'program'), /O1002/);
+      assert.match(await stateText(page, 'programmed'), /X10\.000/);
+      await shoot(page, 'library');
+      const saved = await savedWork(page);
+      assert.match(JSON.stringify(saved), /O1002\\nG91 G01 X10\. F100/);
+      // Removed, the call has nothing to call again.
+      await page.locator('#library-list button[data-program="1002"]').click();
+      await waitForRun(page);
+      assert.equal(await page.locator('#library-list li').count(), 0);
+      assert.match(await page.locator('#diagnostics').textContent(), /program-not-found|PS0076/);
+    });
+  });
+});
