@@ -3,9 +3,7 @@
 //! (`Machine::offset_plain`) moves as the same block run by the general
 //! code, and the corner of two lines (`lines_corner`) is the general
 //! rule's, bit for bit, on random contours of lines and arcs with inside
-//! and outside corners; so is the corner of a line and an arc, of an arc
-//! and a line, and of two arcs (the general rule's body inlined for those
-//! kinds, `corner_by_rule`).
+//! and outside corners.
 #![cfg(not(target_arch = "wasm32"))]
 
 use offsetlab::offsets::cutter::geometry::{self as geo, Outside, Path, Rule};
@@ -167,66 +165,6 @@ proptest! {
         let a2 = a1 + turn;
         let prev = Path::Line { from: [x0, y0], to: p };
         let next = Path::Line { from: p, to: [p[0] + l2 * a2.cos(), p[1] + l2 * a2.sin()] };
-        let rule = Rule::Offset(Outside::Vectors);
-        let fast = geo::corner(&prev, &next, o, o, rule);
-        let general = geo::general_corner(&prev, &next, o, o, rule);
-        prop_assert_eq!(format!("{fast:?}"), format!("{general:?}"));
-    }
-
-    /// Behaviour 16.5–16.7, 16.12: the corner of a line and an arc, an arc
-    /// and a line, or two arcs in offset mode (tangent, nearly tangent,
-    /// inside, obtuse and acute outside, offset circles that do not meet)
-    /// is the general rule's, bit for bit, for either side.
-    #[test]
-    fn the_corner_of_a_line_and_an_arc_or_two_arcs_is_the_general_rules(
-        p in (-50.0f64..50.0, -50.0f64..50.0),
-        prev_arc in any::<bool>(),
-        next_arc in any::<bool>(),
-        (a1, l1, r1, sweep1, ccw1) in (
-            0.0f64..std::f64::consts::TAU,
-            0.01f64..60.0,
-            0.5f64..40.0,
-            0.05f64..3.0,
-            any::<bool>(),
-        ),
-        turn in prop_oneof![
-            -std::f64::consts::PI..std::f64::consts::PI,
-            Just(0.0),
-            -1e-5f64..1e-5,
-            -0.03f64..0.03,
-            Just(std::f64::consts::PI),
-        ],
-        (l2, r2, sweep2, ccw2) in (0.01f64..60.0, 0.5f64..40.0, 0.05f64..3.0, any::<bool>()),
-        o in prop_oneof![0.1f64..5.0, -5.0f64..-0.1, 0.5f64..60.0, -60.0f64..-0.5],
-    ) {
-        let p = [p.0, p.1];
-        let rot = |v: [f64; 2], a: f64| [v[0] * a.cos() - v[1] * a.sin(), v[0] * a.sin() + v[1] * a.cos()];
-        let left = |v: [f64; 2]| [-v[1], v[0]];
-        let add = |a: [f64; 2], b: [f64; 2], k: f64| [a[0] + b[0] * k, a[1] + b[1] * k];
-        // The first path ends at p going along t1.
-        let t1 = [a1.cos(), a1.sin()];
-        let prev = if prev_arc {
-            // The centre left of t1 for G03, right for G02; the start a
-            // sweep back about it.
-            let side = if ccw1 { 1.0 } else { -1.0 };
-            let c = add(p, left(t1), side * r1);
-            let back = if ccw1 { -sweep1 } else { sweep1 };
-            let from = add(c, rot([p[0] - c[0], p[1] - c[1]], back), 1.0);
-            Path::Arc { from, to: p, center: c, ccw: ccw1 }
-        } else {
-            Path::Line { from: add(p, t1, -l1), to: p }
-        };
-        // The second starts at p going along t1 turned by `turn`.
-        let t2 = rot(t1, turn);
-        let next = if next_arc {
-            let side = if ccw2 { 1.0 } else { -1.0 };
-            let c = add(p, left(t2), side * r2);
-            let on = if ccw2 { sweep2 } else { -sweep2 };
-            let to = add(c, rot([p[0] - c[0], p[1] - c[1]], on), 1.0);
-            Path::Arc { from: p, to, center: c, ccw: ccw2 }
-        } else {
-            Path::Line { from: p, to: add(p, t2, l2) }
-        };
         let rule = Rule::Offset(Outside::Vectors);
         let fast = geo::corner(&prev, &next, o, o, rule);
         let general = geo::general_corner(&prev, &next, o, o, rule);

@@ -150,12 +150,6 @@ impl Transforms {
     /// (behaviour 13.8, 13.9; a rotation keeps the turn).
     pub fn reverses(&self, plane: Plane) -> bool {
         let (a, b, _) = plane.axes();
-        // Neither stage on (most programs): both factors are 1 (cutter
-        // compensation asks at every block, the `check` instruction count
-        // with G41, docs/performance.md).
-        if self.scaling.is_none() && self.mirror[a].is_none() && self.mirror[b].is_none() {
-            return false;
-        }
         (self.axis_factor(a) < 0.0) != (self.axis_factor(b) < 0.0)
     }
 

@@ -22,10 +22,7 @@ impl Machine {
     }
 
     /// [`Machine::cutter_next`] where the block has worked out its offset
-    /// (`offset`, from the mode and register it read). Inlined where it
-    /// is called: the next move is then not written to memory and read
-    /// back (the `check` instruction count with G41, docs/performance.md).
-    #[inline(always)]
+    /// (`offset`, from the mode and register it read).
     pub(super) fn cutter_next_with(
         &self,
         ahead: &mut dyn Ahead,
@@ -52,7 +49,6 @@ impl Machine {
 
     /// [`Machine::cutter_next`] where the words alone do not tell: the
     /// blocks run on a copy of the machine.
-    #[inline(never)]
     fn read_next(&self, ahead: &mut dyn Ahead, scratch: &mut Out) -> Next {
         let limit = usize::from(self.setup.settings.cutter_blocks_without_motion());
         let mut probe = self.clone();
@@ -219,7 +215,6 @@ impl Machine {
     /// copy can tell (then it reads them). A block passed over this way
     /// changes nothing the next block's path depends on but the motion
     /// mode (no code but group 01's, no plane coordinate changed).
-    #[inline(never)]
     fn plain_past_still(&self, ahead: &mut dyn Ahead) -> Option<Next> {
         // The lathe's blocks (diameter X, U/W) are read on the copy.
         if self.nose_lathe() {

@@ -83,37 +83,34 @@ impl Machine {
         out: &mut Out,
         ahead: &mut dyn Ahead,
         (i, path): (usize, Path),
-        before_radius: f64,
+        before: crc::CutterState,
         words: Words,
     ) -> Result<(), Diagnostic> {
         let o = words.offset;
+        let t = match self.setup.settings.cutter_start_up() {
+            CutterStartUp::A => Type::A,
+            CutterStartUp::B => Type::B,
+        };
+        let outside = match self.setup.settings.cutter_outside_corner() {
+            CutterOutsideCorner::Vectors => Outside::Vectors,
+            CutterOutsideCorner::Arc => Outside::Arc,
+        };
         let next = self.cutter_next_with(ahead, out, o);
         // The rule first, the corner once: a corner is a few hundred bytes,
-        // made at every block in offset mode. The settings are read where
-        // they apply.
+        // made at every block in offset mode.
         let (rule, next_path, o2, cancels) = match next {
             Next::Move {
                 path: n,
                 offset: 0.0,
-            } => {
-                let t = match self.setup.settings.cutter_start_up() {
-                    CutterStartUp::A => Type::A,
-                    CutterStartUp::B => Type::B,
-                };
-                (Rule::Cancel(t), n, o, Some(t))
-            }
+            } => (Rule::Cancel(t), n, o, true),
             // The corner is made with this block's radius on both sides: a
             // new D counts from the next block's end (behaviour 16.8).
             Next::Move { path: n, offset } => {
-                let outside = match self.setup.settings.cutter_outside_corner() {
-                    CutterOutsideCorner::Vectors => Outside::Vectors,
-                    CutterOutsideCorner::Arc => Outside::Arc,
-                };
-                (Rule::Offset(outside), n, o.abs() * offset.signum(), None)
+                (Rule::Offset(outside), n, o.abs() * offset.signum(), false)
             }
             Next::Unknown(why) => {
                 self.look_ahead_note(b, out, why);
-                (Rule::Perpendicular, path, o, None)
+                (Rule::Perpendicular, path, o, false)
             }
         };
         // Borrowed where it was made, not moved out of the result (a copy
@@ -125,16 +122,16 @@ impl Machine {
             Err(NoIntersection) => return Err(self.no_intersection(b, o)),
         };
         out.note(|| {
-            if let Some(t) = cancels {
+            if cancels {
                 crc::before_cancel_note(&words, t, corner, &path, &next_path)
             } else {
                 crc::corner_note(&words, corner, &path, &next_path, o2)
             }
         });
-        if before_radius != self.state.cutter.radius {
+        if before.radius != self.state.cutter.radius {
             out.note(|| format!(
                 "the radius changed from {} to {}: this block starts on the old offset and ends on the new one",
-                show(before_radius.abs(), self.units()),
+                show(before.radius.abs(), self.units()),
                 show(self.state.cutter.radius.abs(), self.units())
             ));
         }

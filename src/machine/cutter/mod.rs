@@ -371,7 +371,7 @@ impl Machine {
         }
         self.state.cutter.phase = Phase::Offset;
         if let Some((i, path)) = own {
-            return self.offset_move(b, out, ahead, (i, path), before.radius, words);
+            return self.offset_move(b, out, ahead, (i, path), before, words);
         }
         if let Some(d) = self.ijk_direction(b)
             && b.codes().cutter().is_some()
@@ -421,11 +421,11 @@ impl Machine {
         out: &mut Out,
         ahead: &mut dyn Ahead,
     ) -> Result<(), Diagnostic> {
-        let before_radius = self.state.cutter.radius;
+        let before = self.state.cutter;
         let moves_before = out.moves.len();
         // As in `compensate`: the block runs with the vector off, its moves
         // are carried by the vector as it stood.
-        let saved = self.state.cutter.vector;
+        let saved = before.vector;
         self.state.cutter.vector = [0.0; 3];
         let ran = self.motion_block(b, out);
         self.state.cutter.vector = saved;
@@ -452,7 +452,7 @@ impl Machine {
             units: self.units(),
             tip: None,
         };
-        self.offset_move(b, out, ahead, own, before_radius, words)
+        self.offset_move(b, out, ahead, own, before, words)
     }
 }
 

@@ -103,7 +103,6 @@ pub enum Path {
 
 impl Path {
     /// Where the path starts.
-    #[inline(always)]
     pub fn start(&self) -> P2 {
         match *self {
             Path::Line { from, .. } | Path::Arc { from, .. } => from,
@@ -111,7 +110,6 @@ impl Path {
     }
 
     /// Where the path ends.
-    #[inline(always)]
     pub fn end(&self) -> P2 {
         match *self {
             Path::Line { to, .. } | Path::Arc { to, .. } => to,
@@ -119,7 +117,6 @@ impl Path {
     }
 
     /// The unit direction of travel at `p`, a point of the path.
-    #[inline(always)]
     fn tangent_at(&self, p: P2) -> P2 {
         match *self {
             Path::Line { from, to } => unit(sub(to, from)),
@@ -131,19 +128,16 @@ impl Path {
     }
 
     /// The direction of travel where the path starts.
-    #[inline(always)]
     pub fn start_tangent(&self) -> P2 {
         self.tangent_at(self.start())
     }
 
     /// The direction of travel where the path ends.
-    #[inline(always)]
     pub fn end_tangent(&self) -> P2 {
         self.tangent_at(self.end())
     }
 
     /// True for an arc.
-    #[inline(always)]
     pub fn is_arc(&self) -> bool {
         matches!(self, Path::Arc { .. })
     }
@@ -157,7 +151,6 @@ impl Path {
     /// less the offset where the tool is inside the arc (left of a G03),
     /// plus it outside. Zero or less when the tool does not fit inside
     /// (behaviour 16: interference, Fanuc PS0041/PS0038). None for a line.
-    #[inline(always)]
     pub fn offset_radius(&self, o: f64) -> Option<f64> {
         match *self {
             Path::Line { .. } => None,
@@ -172,7 +165,6 @@ impl Path {
 
     /// The offset path `o` to the left; `t` is the path's direction where
     /// it is offset (a line's only one).
-    #[inline(always)]
     fn offset(&self, o: f64, t: P2) -> Offset {
         match *self {
             Path::Line { from, .. } => Offset::Line {
@@ -271,7 +263,7 @@ fn crossings(a: Offset, b: Offset) -> Points {
 }
 
 /// The crossing of two offset paths nearest to `near`.
-#[inline(always)]
+#[inline]
 fn crossing_near(a: Offset, b: Offset, near: P2) -> Option<P2> {
     crossings(a, b)
         .iter()
@@ -460,83 +452,6 @@ pub fn corner(
     {
         return lines_corner(from, to, q, end, o1);
     }
-    // A line and an arc, or two arcs, in offset mode on the same side (the
-    // corners of a contour's rounded corners): the general rule below
-    // itself, copied here with the kinds of the two paths and the rule
-    // known, so that what does not apply to them is left out by the
-    // compiler and the arithmetic is the same (the `check` instruction
-    // count with G41, docs/performance.md; `tests/cutter_fast.rs` holds
-    // them equal).
-    if o1 * o2 > 0.0 && rule == Rule::Offset(Outside::Vectors) {
-        let rule = Rule::Offset(Outside::Vectors);
-        match (*prev, *next) {
-            (
-                Path::Line { from, to },
-                Path::Arc {
-                    from: q,
-                    to: e,
-                    center,
-                    ccw,
-                },
-            ) => {
-                let prev = Path::Line { from, to };
-                let next = Path::Arc {
-                    from: q,
-                    to: e,
-                    center,
-                    ccw,
-                };
-                return corner_by_rule(&prev, &next, o1, o2, rule);
-            }
-            (
-                Path::Arc {
-                    from,
-                    to,
-                    center,
-                    ccw,
-                },
-                Path::Line { from: q, to: e },
-            ) => {
-                let prev = Path::Arc {
-                    from,
-                    to,
-                    center,
-                    ccw,
-                };
-                let next = Path::Line { from: q, to: e };
-                return corner_by_rule(&prev, &next, o1, o2, rule);
-            }
-            (
-                Path::Arc {
-                    from,
-                    to,
-                    center,
-                    ccw,
-                },
-                Path::Arc {
-                    from: q,
-                    to: e,
-                    center: c2,
-                    ccw: ccw2,
-                },
-            ) => {
-                let prev = Path::Arc {
-                    from,
-                    to,
-                    center,
-                    ccw,
-                };
-                let next = Path::Arc {
-                    from: q,
-                    to: e,
-                    center: c2,
-                    ccw: ccw2,
-                };
-                return corner_by_rule(&prev, &next, o1, o2, rule);
-            }
-            (Path::Line { .. }, Path::Line { .. }) => {}
-        }
-    }
     general_corner(prev, next, o1, o2, rule)
 }
 
@@ -587,19 +502,6 @@ fn lines_corner(f1: P2, p: P2, q: P2, e2: P2, o: f64) -> Result<Corner, NoInters
 /// [`corner`] by the general rule, for any two paths.
 #[doc(hidden)]
 pub fn general_corner(
-    prev: &Path,
-    next: &Path,
-    o1: f64,
-    o2: f64,
-    rule: Rule,
-) -> Result<Corner, NoIntersection> {
-    corner_by_rule(prev, next, o1, o2, rule)
-}
-
-/// The general rule's body, inlined where the kinds of the paths and the
-/// rule are known ([`corner`]).
-#[inline(always)]
-fn corner_by_rule(
     prev: &Path,
     next: &Path,
     o1: f64,

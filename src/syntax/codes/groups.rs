@@ -87,13 +87,12 @@ impl Plane {
     /// Axis indices (first, second, normal). CW/CCW are seen from the normal's
     /// positive side, in the right-handed frame (first, second):
     /// G17 (X, Y), G18 (Z, X), G19 (Y, Z).
-    #[inline(always)]
     pub fn axes(self) -> (usize, usize, usize) {
-        // A table, not a match: cutter compensation asks at every step of
-        // a block (the `check` instruction count with G41,
-        // docs/performance.md).
-        const AXES: [(usize, usize, usize); 3] = [(0, 1, 2), (2, 0, 1), (1, 2, 0)];
-        AXES[self as usize]
+        match self {
+            Plane::XY => (0, 1, 2),
+            Plane::ZX => (2, 0, 1),
+            Plane::YZ => (1, 2, 0),
+        }
     }
 }
 
