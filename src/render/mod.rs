@@ -28,6 +28,7 @@ pub mod style;
 pub mod svg;
 #[cfg(test)]
 mod test_support;
+mod tracer;
 pub mod view;
 
 use crate::setup::MachineKind;
