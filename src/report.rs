@@ -204,6 +204,11 @@ pub struct Run {
     /// Blocks the run could not run and passed over, with the setting
     /// `continue_past_errors` on (behaviour 2.24); each has its diagnostics.
     pub skipped: u32,
+    /// The largest |radius| (mm) of cutter or nose radius compensation
+    /// over the blocks that moved with it engaged, 0 without: the page's
+    /// fit leaves room for the circle it draws round the tool (behaviour
+    /// 10.5).
+    pub cutter_reach: f64,
     /// The setup's library the run called from (behaviour 19.10): the
     /// texts of the blocks whose place says `library` (empty without one).
     pub library: std::collections::BTreeMap<u32, String>,

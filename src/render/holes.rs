@@ -30,7 +30,7 @@ fn normal(plane: Plane) -> Option<usize> {
         Plane::Xy => Some(2),
         Plane::Xz => Some(1),
         Plane::Yz => Some(0),
-        Plane::LatheZx | Plane::LatheXc | Plane::Orbit(_) => None,
+        Plane::LatheZx | Plane::LatheXc | Plane::Orbit(_) | Plane::LatheOrbit(_) => None,
     }
 }
 

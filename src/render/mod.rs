@@ -28,6 +28,7 @@ pub mod style;
 pub mod svg;
 #[cfg(test)]
 mod test_support;
+mod tool;
 mod tracer;
 pub mod view;
 
@@ -225,12 +226,23 @@ impl Frame {
     /// of the area beside the legend and the area below it, so the legend
     /// never covers the path.
     pub fn fit(toolpath: &Toolpath, plane: Plane, width: f64, height: f64) -> Frame {
-        Frame::fit_with(toolpath, plane, width, height, &style::LIGHT, false, true)
+        Frame::fit_with(
+            toolpath,
+            plane,
+            width,
+            height,
+            &style::LIGHT,
+            false,
+            true,
+            scene::Reach::default(),
+        )
     }
 
     /// [`Frame::fit`] with a colour scheme and, when `tool_row`, room in
     /// the legend for the tool marker; without `legend` (folded away) the
-    /// path gets the whole surface less the margins.
+    /// path gets the whole surface less the margins; the path's box grown
+    /// by `reach`, what is drawn round the tool (behaviour 10.5).
+    #[allow(clippy::too_many_arguments)]
     pub fn fit_with(
         toolpath: &Toolpath,
         plane: Plane,
@@ -239,6 +251,7 @@ impl Frame {
         theme: &'static Theme,
         tool_row: bool,
         legend_shown: bool,
+        reach: scene::Reach,
     ) -> Frame {
         let width = if width.is_finite() {
             width.max(1.0)
@@ -272,7 +285,7 @@ impl Frame {
         let below_top = legend.bottom() + 8.0;
         let below = Rect::new(l, below_top, full.w, height - b - below_top);
         let min_size = 10.0 / toolpath.units.mm();
-        let (extent, min_size) = match path_extent(toolpath, plane) {
+        let (extent, min_size) = match reaching_extent(toolpath, plane, reach) {
             Some(extent) => (extent, min_size),
             // Nothing drawn: show the origin and a few grid cells around it.
             None => (Extent::point(0.0, 0.0), 10.0 * min_size),
@@ -331,24 +344,20 @@ impl Frame {
 /// the box of the projections of their 3D box's eight corners, arcs
 /// included (in the 3D view the projected box, behaviour 10.8).
 pub fn path_extent(toolpath: &Toolpath, plane: Plane) -> Option<Extent> {
-    let (min, max) = toolpath.bounds()?;
-    let projection = plane.projection();
-    let mut extent: Option<Extent> = None;
-    for corner in 0..8 {
-        let pick = |axis: usize| {
-            if corner >> axis & 1 == 0 {
-                min[axis]
-            } else {
-                max[axis]
-            }
-        };
-        let (u, v) = projection.project(&[pick(0), pick(1), pick(2)]);
-        match &mut extent {
-            Some(e) => e.include(u, v),
-            None if u.is_finite() && v.is_finite() => extent = Some(Extent::point(u, v)),
-            None => {}
-        }
-    }
+    reaching_extent(toolpath, plane, scene::Reach::default())
+}
+
+/// [`path_extent`] of the paths' 3D box grown by `reach`, what is drawn
+/// round the tool over the run (behaviour 10.5): a constant of the run,
+/// so a frame pays eight projections for it.
+pub fn reaching_extent(toolpath: &Toolpath, plane: Plane, reach: scene::Reach) -> Option<Extent> {
+    let bounds = toolpath.bounds()?;
+    let bounds = if reach == scene::Reach::default() {
+        bounds
+    } else {
+        reach.grow(bounds, toolpath.machine == MachineKind::Lathe)
+    };
+    let mut extent = tool::projected_box(plane, bounds);
     if let (Some(e), true) = (&mut extent, plane.has_centre_line()) {
         e.include(e.min_u, 0.0);
     }
@@ -457,7 +466,7 @@ fn draw_scene_as(
         scene::draw_arrows(surface, &frame, toolpath, split);
     }
     if let Some(marker) = scene.marker {
-        scene::draw_marker(surface, &frame, marker, (scene.cutter, scene.tool));
+        tool::draw_marker(surface, &frame, marker, (scene.cutter, scene.tool));
     }
     draw_scale_bar(surface, &frame, toolpath);
     draw_legend(surface, &frame, toolpath);

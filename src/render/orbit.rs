@@ -1,5 +1,6 @@
-//! What the 3D view draws around the paths (behaviour 10.8): the grid on
-//! the XY plane at Z = 0 under the path, the three axes through the origin,
+//! What the 3D view draws around the paths (behaviour 10.8, 10.18): the
+//! grid on the XY plane at Z = 0 under the path (the lathe's: on the
+//! profile's plane, Z and X as a radius), the three axes through the origin,
 //! and a small triad in the corner that shows which way X, Y and Z point
 //! at the view's angles. The paths, arrows and tool marker go through the
 //! frame's projection like those of the plane views.
@@ -11,10 +12,55 @@ const MAX_LINES: f64 = 200.0;
 /// Length of the corner triad's arms, CSS pixels.
 const TRIAD_PX: f64 = 28.0;
 
-/// The grid's box on the XY plane: the path's X and Y range with the
-/// origin, rounded out to whole steps (min x, min y, max x, max y).
-fn grid_box(tp: &Toolpath, step: f64) -> [f64; 4] {
-    let (lo, hi) = tp.bounds().unwrap_or(([0.0; 3], [0.0; 3]));
+/// The machine's space as the 3D view draws it: the grid's plane is
+/// spanned by the toolpath's coordinates `axes[0]` and `axes[1]` (at 0 of
+/// `axes[2]`), each a unit `scale` of the toolpath's long, named `names`.
+/// The mill's grid is XY at Z = 0; the lathe's the plane of the profile,
+/// Z along the spindle and X as a radius (the toolpath's X is a diameter),
+/// at C = 0 (behaviour 10.18).
+struct Space {
+    axes: [usize; 3],
+    scale: [f64; 3],
+    names: [&'static str; 3],
+}
+
+const MILL: Space = Space {
+    axes: [0, 1, 2],
+    scale: [1.0, 1.0, 1.0],
+    names: ["X", "Y", "Z"],
+};
+const LATHE: Space = Space {
+    axes: [2, 0, 1],
+    scale: [1.0, 2.0, 1.0],
+    names: ["Z", "X", "C"],
+};
+
+fn space(f: &Frame) -> &'static Space {
+    if f.plane.is_lathe() { &LATHE } else { &MILL }
+}
+
+impl Space {
+    /// The toolpath's point of the space's (a, b, c).
+    fn point(&self, q: [f64; 3]) -> [f64; 3] {
+        let mut p = [0.0; 3];
+        for k in 0..3 {
+            p[self.axes[k]] = q[k] * self.scale[k];
+        }
+        p
+    }
+
+    /// The path's box in the space's coordinates.
+    fn bounds(&self, tp: &Toolpath) -> ([f64; 3], [f64; 3]) {
+        let (lo, hi) = tp.bounds().unwrap_or(([0.0; 3], [0.0; 3]));
+        let get = |p: [f64; 3]| std::array::from_fn(|k| p[self.axes[k]] / self.scale[k]);
+        (get(lo), get(hi))
+    }
+}
+
+/// The grid's box on its plane: the path's range along the two axes with
+/// the origin, rounded out to whole steps (min a, min b, max a, max b).
+fn grid_box(sp: &Space, tp: &Toolpath, step: f64) -> [f64; 4] {
+    let (lo, hi) = sp.bounds(tp);
     let out = |v: f64, up: bool| {
         let n = v / step;
         let n = if up { n.ceil() } else { n.floor() };
@@ -30,10 +76,10 @@ fn grid_box(tp: &Toolpath, step: f64) -> [f64; 4] {
 
 /// The grid's step: the plane views' 1-2-5 step for the frame's scale,
 /// larger when the box would need more than [`MAX_LINES`] lines.
-fn grid_step_for(tp: &Toolpath, f: &Frame) -> f64 {
+fn grid_step_for(sp: &Space, tp: &Toolpath, f: &Frame) -> f64 {
     let mut step = annotate::grid_step(&f.transform);
     for _ in 0..40 {
-        let [x0, y0, x1, y1] = grid_box(tp, step);
+        let [x0, y0, x1, y1] = grid_box(sp, tp, step);
         if (x1 - x0) / step <= MAX_LINES && (y1 - y0) / step <= MAX_LINES {
             break;
         }
@@ -42,12 +88,13 @@ fn grid_step_for(tp: &Toolpath, f: &Frame) -> f64 {
     step
 }
 
-/// The grid lines on the XY plane at Z = 0, projected.
+/// The grid lines on the grid's plane, projected.
 pub(super) fn draw_grid(s: &mut impl Surface, f: &Frame, tp: &Toolpath) {
-    let step = grid_step_for(tp, f);
-    let [x0, y0, x1, y1] = grid_box(tp, step);
+    let sp = space(f);
+    let step = grid_step_for(sp, tp, f);
+    let [x0, y0, x1, y1] = grid_box(sp, tp, step);
     let screen = |x: f64, y: f64| {
-        let (u, v) = f.projection.project(&[x, y, 0.0]);
+        let (u, v) = f.projection.project(&sp.point([x, y, 0.0]));
         f.transform.to_screen(u, v)
     };
     let lines = |lo: f64, hi: f64| {
@@ -70,15 +117,16 @@ pub(super) fn draw_grid(s: &mut impl Surface, f: &Frame, tp: &Toolpath) {
     s.end_group();
 }
 
-/// The axes through the origin (X and Y across the grid, Z over the
-/// path's height) and the corner triad with the axes' names.
+/// The axes through the origin (the grid's two across it, the third over
+/// the path's range along it) and the corner triad with the axes' names.
 pub(super) fn draw_axes(s: &mut impl Surface, f: &Frame, tp: &Toolpath) {
-    let step = grid_step_for(tp, f);
-    let [x0, y0, x1, y1] = grid_box(tp, step);
-    let (lo, hi) = tp.bounds().unwrap_or(([0.0; 3], [0.0; 3]));
+    let sp = space(f);
+    let step = grid_step_for(sp, tp, f);
+    let [x0, y0, x1, y1] = grid_box(sp, tp, step);
+    let (lo, hi) = sp.bounds(tp);
     let (z0, z1) = (lo[2].min(0.0), hi[2].max(step));
     let screen = |p: [f64; 3]| {
-        let (u, v) = f.projection.project(&p);
+        let (u, v) = f.projection.project(&sp.point(p));
         f.transform.to_screen(u, v)
     };
     s.begin_group("axes");
@@ -107,12 +155,10 @@ pub(super) fn draw_axes(s: &mut impl Surface, f: &Frame, tp: &Toolpath) {
         width: 1.5,
         ..f.theme.axis()
     };
-    for (name, unit) in [
-        ("X", [1.0, 0.0, 0.0]),
-        ("Y", [0.0, 1.0, 0.0]),
-        ("Z", [0.0, 0.0, 1.0]),
-    ] {
-        let (u, v) = f.projection.project(&unit);
+    for (k, name) in sp.names.iter().enumerate() {
+        let mut unit = [0.0; 3];
+        unit[k] = 1.0;
+        let (u, v) = f.projection.project(&sp.point(unit));
         let tip = (origin.0 + u * TRIAD_PX, origin.1 - v * TRIAD_PX);
         s.begin_path(&stroke);
         s.move_to(origin.0, origin.1);
@@ -225,7 +271,7 @@ mod tests {
         // with step 10 the box is rounded out to the next tens.
         let tp = square();
         let (lo, hi) = tp.bounds().unwrap();
-        let [x0, y0, x1, y1] = grid_box(&tp, 10.0);
+        let [x0, y0, x1, y1] = grid_box(&MILL, &tp, 10.0);
         assert!(x0 <= lo[0].min(0.0) && y0 <= lo[1].min(0.0));
         assert!(x1 >= hi[0] && y1 >= hi[1]);
         for v in [x0, y0, x1, y1] {

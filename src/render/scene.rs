@@ -10,6 +10,7 @@
 //! centre, in program units along the plane's horizontal and vertical axes.
 
 use super::style::{LIGHT, Stroke, Theme};
+pub use super::tool::{Reach, draw_marker};
 use super::{Frame, Plane, Rect, Surface, Transform};
 use crate::document::{MAX_PAN, MAX_ZOOM, MIN_ZOOM};
 use crate::setup::MachineKind;
@@ -37,6 +38,10 @@ pub struct Cutter {
     /// lathe the nose centre lies this far from the imaginary tool nose the
     /// program follows (behaviour 18.2).
     pub centre: [f64; 3],
+    /// A mill tool of the tool list: a cylinder up the spindle (+Z) from
+    /// the tool point, this long (0: the list has no length), drawn in
+    /// every mill view (behaviour 10.16); None for a circle in `plane`.
+    pub length: Option<f64>,
 }
 
 /// The view state of a session.
@@ -66,6 +71,9 @@ pub struct Scene {
     /// The legend is folded away (behaviour 10.7): the path gets the
     /// whole surface, and nothing covers it.
     pub legend_folded: bool,
+    /// How far the tool and compensation drawings reach from the path
+    /// over the run: the fit leaves room for them (behaviour 10.5).
+    pub reach: Reach,
     /// Colours.
     pub theme: &'static Theme,
 }
@@ -82,6 +90,7 @@ impl Default for Scene {
             tool: None,
             swept: false,
             legend_folded: false,
+            reach: Reach::default(),
             theme: &LIGHT,
         }
     }
@@ -117,6 +126,7 @@ impl Scene {
             self.theme,
             true,
             !self.legend_folded,
+            self.reach,
         )
     }
 
@@ -284,55 +294,6 @@ pub fn tool_symbol(s: &mut impl Surface, t: &Theme, (x, y): (f64, f64)) {
         dash: &[],
     };
     s.circle(x, y, 5.5, Some(t.tool), Some(&ring));
-}
-
-/// The tool marker at the current block's actual end point, and a ring at
-/// its programmed end point; with cutter radius compensation, the cutter's
-/// circle round the marker when the view is its plane.
-pub fn draw_marker(
-    s: &mut impl Surface,
-    f: &Frame,
-    [actual, programmed]: [[f64; 3]; 2],
-    (cutter, tool): (Option<Cutter>, Option<Cutter>),
-) {
-    let screen = |q: &[f64; 3]| {
-        let (u, v) = f.projection.project(q);
-        f.transform.to_screen(u, v)
-    };
-    let (a, p) = (screen(&actual), screen(&programmed));
-    s.begin_group("tool");
-    // The register's circle solid, the tool list's dashed (13.16).
-    for (c, dash) in [(cutter, &[][..]), (tool, &[5.0, 3.0][..])] {
-        let Some(c) = c.filter(|c| c.plane == f.plane) else {
-            continue;
-        };
-        let r = c.radius * f.transform.scale;
-        let a = screen(&[
-            actual[0] + c.centre[0],
-            actual[1] + c.centre[1],
-            actual[2] + c.centre[2],
-        ]);
-        if r.is_finite() && r > 0.5 && a.0.is_finite() && a.1.is_finite() {
-            let edge = Stroke {
-                color: f.theme.tool,
-                width: 1.5,
-                dash,
-            };
-            s.circle(a.0, a.1, r, None, Some(&edge));
-        }
-    }
-    if p.0.is_finite() && p.1.is_finite() {
-        let ring = Stroke {
-            color: f.theme.label,
-            width: 1.5,
-            dash: &[],
-        };
-        s.circle(p.0, p.1, 4.5, None, Some(&ring));
-    }
-    if a.0.is_finite() && a.1.is_finite() {
-        tool_symbol(s, f.theme, a);
-    }
-    s.end_group();
 }
 
 /// Distance from point `p` to the segment `a`–`b`.

@@ -27,6 +27,11 @@ pub enum Plane {
     /// The mill's 3D view: orthographic, turned by a yaw and a pitch
     /// (behaviour 10.8). XY, XZ and YZ are this view at fixed angles.
     Orbit(Angles),
+    /// The lathe's 3D view (behaviour 10.18): the same turn of the lathe's
+    /// space, Z along the spindle to the right, X **as a radius** up and
+    /// the face's C (the toolpath's Y) towards the eye, so that at yaw 0
+    /// and pitch 0 it is exactly the ZX view.
+    LatheOrbit(Angles),
 }
 
 /// The 3D view's angles in thousandths of a degree (whole numbers, so a
@@ -139,30 +144,64 @@ impl Plane {
         }
     }
 
-    /// The mill's views as 3D angles: XY is the top view (yaw 0, pitch
-    /// 90), XZ the front (0, 0), YZ the side (90, 0); None for the lathe's.
+    /// The views as 3D angles, those a drag turns from: XY is the top
+    /// view (yaw 0, pitch 90), XZ the front (0, 0), YZ the side (90, 0);
+    /// the lathe's ZX is its 3D view at (0, 0). None for the face view XC,
+    /// which no yaw and pitch of the lathe's space show (behaviour 10.18).
     pub fn angles(self) -> Option<Angles> {
         match self {
             Plane::Xy => Some(Angles::degrees(0.0, 90.0)),
-            Plane::Xz => Some(Angles::degrees(0.0, 0.0)),
+            Plane::Xz | Plane::LatheZx => Some(Angles::degrees(0.0, 0.0)),
             Plane::Yz => Some(Angles::degrees(90.0, 0.0)),
-            Plane::Orbit(a) => Some(a),
-            Plane::LatheZx | Plane::LatheXc => None,
+            Plane::Orbit(a) | Plane::LatheOrbit(a) => Some(a),
+            Plane::LatheXc => None,
         }
     }
 
     /// The view's projection: the first two rows of the rotation of its
-    /// angles; the lathe's views take X as a radius (halved).
+    /// angles; the lathe's views take X as a radius (halved). The lathe's
+    /// space is turned as the mill's with its Z as the mill's X, its X
+    /// radius as the mill's Z and its Y (C) as the mill's −Y (a right-handed
+    /// frame): a row (a, b, c) of the rotation reads z·a − y·b + (x/2)·c.
     pub fn projection(self) -> Projection {
-        let rows = match self.angles() {
-            Some(a) => {
+        let rows = match self {
+            Plane::LatheZx => [[0.0, 0.0, 1.0], [0.5, 0.0, 0.0]],
+            Plane::LatheXc => [[0.5, 0.0, 0.0], [0.0, 1.0, 0.0]],
+            Plane::LatheOrbit(a) => {
+                let [r, u, _] = a.rotation();
+                let lathe = |row: [f64; 3]| [row[2] / 2.0, -row[1], row[0]];
+                [lathe(r), lathe(u)]
+            }
+            Plane::Xy | Plane::Xz | Plane::Yz | Plane::Orbit(_) => {
+                let a = self.angles().unwrap_or(Angles::ISO);
                 let [r, u, _] = a.rotation();
                 [r, u]
             }
-            None if self == Plane::LatheZx => [[0.0, 0.0, 1.0], [0.5, 0.0, 0.0]],
-            None => [[0.5, 0.0, 0.0], [0.0, 1.0, 0.0]],
         };
         Projection { rows }
+    }
+
+    /// The plane as the machine has it: a 3D view is the machine's own
+    /// (the lathe's turns the lathe's space); None for a plane the machine
+    /// does not have (XY, XZ, YZ on the lathe; ZX, XC on the mill).
+    pub fn on(self, machine: MachineKind) -> Option<Plane> {
+        let lathe = machine == MachineKind::Lathe;
+        match self {
+            Plane::Orbit(a) | Plane::LatheOrbit(a) => Some(if lathe {
+                Plane::LatheOrbit(a)
+            } else {
+                Plane::Orbit(a)
+            }),
+            p if p.is_lathe() == lathe => Some(p),
+            _ => None,
+        }
+    }
+
+    /// The 3D view of the machine at `angles`.
+    pub fn orbit(machine: MachineKind, angles: Angles) -> Plane {
+        Plane::Orbit(angles)
+            .on(machine)
+            .unwrap_or(Plane::Orbit(angles))
     }
 
     /// Projects an x, y, z vertex onto the plane: (horizontal, vertical).
@@ -175,7 +214,7 @@ impl Plane {
     /// True for the 3D view at any angles (the plane views are drawn
     /// with their axes and grid as flat views).
     pub fn is_orbit(self) -> bool {
-        matches!(self, Plane::Orbit(_))
+        matches!(self, Plane::Orbit(_) | Plane::LatheOrbit(_))
     }
 
     /// Names of the horizontal and the vertical axis, for labels.
@@ -186,7 +225,7 @@ impl Plane {
             Plane::Yz => ("Y", "Z"),
             Plane::LatheZx => ("Z", "X (radius)"),
             Plane::LatheXc => ("X (radius)", "C"),
-            Plane::Orbit(_) => ("", ""),
+            Plane::Orbit(_) | Plane::LatheOrbit(_) => ("", ""),
         }
     }
 
@@ -198,12 +237,13 @@ impl Plane {
             Plane::Yz => "YZ",
             Plane::LatheZx => "ZX",
             Plane::LatheXc => "XC",
-            Plane::Orbit(_) => "3D",
+            Plane::Orbit(_) | Plane::LatheOrbit(_) => "3D",
         }
     }
 
     /// Reads a view name as [`Plane::name`] writes it (any case): XY, XZ,
-    /// YZ, ZX, XC, or 3D (at the isometric angles).
+    /// YZ, ZX, XC, or 3D (at the isometric angles; the mill's until
+    /// [`Plane::on`] makes it the lathe's).
     pub fn parse(name: &str) -> Option<Plane> {
         Some(match name.to_ascii_uppercase().as_str() {
             "XY" => Plane::Xy,
@@ -221,10 +261,10 @@ impl Plane {
         self == Plane::LatheZx
     }
 
-    /// True for the lathe's views (ZX and the face, XC); the others are the
-    /// mill's.
+    /// True for the lathe's views (ZX, the face XC and its 3D view); the
+    /// others are the mill's.
     pub fn is_lathe(self) -> bool {
-        matches!(self, Plane::LatheZx | Plane::LatheXc)
+        matches!(self, Plane::LatheZx | Plane::LatheXc | Plane::LatheOrbit(_))
     }
 
     /// True when the origin is the spindle axis seen end on (the face
@@ -572,7 +612,7 @@ mod tests {
             assert_eq!(orbit.project(&[1.0, 2.0, 3.0]), seen);
             assert_eq!(plane.angles(), Some(Angles::degrees(yaw, pitch)));
         }
-        assert_eq!(Plane::LatheZx.angles(), None);
+        assert_eq!(Plane::LatheXc.angles(), None);
         assert_eq!(Plane::parse("3d"), Some(Plane::Orbit(Angles::ISO)));
         assert_eq!(Plane::Orbit(Angles::ISO).name(), "3D");
     }

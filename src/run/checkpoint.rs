@@ -122,6 +122,9 @@ pub(super) struct Segment {
     pub(super) travel: crate::travel::Travel,
     /// The blocks among them skipped past their errors (behaviour 2.24).
     pub(super) skipped: u32,
+    /// The largest |radius| of cutter or nose radius compensation among
+    /// their blocks that moved with it engaged (mm; behaviour 10.5).
+    pub(super) cutter_reach: f64,
 }
 
 impl Segment {
@@ -135,6 +138,9 @@ impl Segment {
         self.first_units = self.first_units.or(other.first_units);
         self.travel.add(&other.travel);
         self.skipped = self.skipped.saturating_add(other.skipped);
+        if other.cutter_reach > self.cutter_reach {
+            self.cutter_reach = other.cutter_reach;
+        }
     }
 }
 

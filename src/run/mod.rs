@@ -633,6 +633,7 @@ fn fresh(setup: &Setup) -> Run {
         travel: Default::default(),
         end: End::Completed,
         skipped: 0,
+        cutter_reach: 0.0,
         library: Default::default(),
         positions: setup.positions_in_effect(),
     }
@@ -658,6 +659,7 @@ fn close(
     result.bounds = all.bounds;
     result.travel = all.travel;
     result.skipped = all.skipped;
+    result.cutter_reach = all.cutter_reach;
     result.registers = all.registers;
     result.units = all.first_units.unwrap_or(result.end_units);
     diag::finish(&mut diagnostics, text);
@@ -696,9 +698,15 @@ fn account(
         observer.on_move(m);
     }
     if !out.moves.is_empty() {
+        let state = machine.state();
         segment
             .travel
-            .block(&out.moves, machine.state(), machine.setup().rapid_rate_mm());
+            .block(&out.moves, state, machine.setup().rapid_rate_mm());
+        // The circle the page draws round the tool (behaviour 10.5).
+        let radius = state.cutter.radius.abs();
+        if radius > segment.cutter_reach && state.cutter.engaged() {
+            segment.cutter_reach = radius;
+        }
     }
     if options.keep_moves {
         result.moves.extend_from_slice(&out.moves);

@@ -394,7 +394,7 @@ impl Session {
         let legend = !scene.legend_folded;
         // The 3D view's angles, as its hundredths of a degree read.
         let angles = match scene.plane {
-            render::Plane::Orbit(a) => Some([a.yaw(), a.pitch()]),
+            render::Plane::Orbit(a) | render::Plane::LatheOrbit(a) => Some([a.yaw(), a.pitch()]),
             _ => None,
         };
         let view = (plane != default_plane || zoom != 1.0 || pan != [0.0, 0.0] || swept || !legend)

@@ -154,6 +154,7 @@ impl View {
                 _ => Some(step),
             };
         }
+        self.scene.reach = reach(run);
         self.update_marker(run);
         // The layout drawn (which picking measures against) holds while the
         // drawing is the one drawn last.
@@ -199,13 +200,17 @@ impl View {
                 MachineKind::Lathe => (s.lathe.tool, Plane::LatheZx),
             };
             let t = run.setup.tool(number)?;
+            let to_path = run.setup.units.mm() * k;
             let radius = match s.machine {
                 MachineKind::Mill => t.diameter / 2.0,
                 MachineKind::Lathe => t.nose_radius,
-            } * run.setup.units.mm()
-                * k;
+            } * to_path;
             let mut c = circle(s, radius, t.tip);
             c.plane = plane;
+            // The mill's cutter is a cylinder up the spindle (10.16).
+            if s.machine == MachineKind::Mill {
+                c.length = Some(t.length * to_path);
+            }
             (radius > 0.0).then_some(c)
         });
     }
@@ -239,7 +244,7 @@ impl View {
         ViewChange {
             plane: Some(self.scene.plane.name().to_owned()),
             angles: match self.scene.plane {
-                Plane::Orbit(a) => Some([a.yaw(), a.pitch()]),
+                Plane::Orbit(a) | Plane::LatheOrbit(a) => Some([a.yaw(), a.pitch()]),
                 _ => None,
             },
             zoom: Some(self.scene.zoom),
@@ -257,10 +262,13 @@ impl View {
             self.set_plane(run.run.machine, plane);
         }
         if let Some([yaw, pitch]) = change.angles
-            && run.run.machine == MachineKind::Mill
-            && change.plane.as_deref().is_none_or(|p| p == "3D")
+            && change
+                .plane
+                .as_deref()
+                .is_none_or(|p| p.eq_ignore_ascii_case("3D"))
         {
-            self.scene.plane = Plane::Orbit(Angles::degrees(yaw, pitch));
+            let angles = Angles::degrees(yaw, pitch);
+            self.scene.plane = Plane::orbit(run.run.machine, angles);
         }
         if let Some(zoom) = change.zoom {
             self.scene.set_zoom(zoom);
@@ -281,32 +289,34 @@ impl View {
     }
 
     /// Chooses the plane drawn (`XY`, `XZ`, `YZ` on the mill; `ZX` and the
-    /// face view `XC` on the lathe). False, changing nothing, for another
-    /// name.
+    /// face view `XC` on the lathe; `3D`, the isometric view, on both).
+    /// False, changing nothing, for another name.
     pub fn set_plane(&mut self, machine: MachineKind, name: &str) -> bool {
-        match Plane::parse(name) {
-            Some(plane) if plane.is_lathe() == (machine == MachineKind::Lathe) => {
+        match Plane::parse(name).and_then(|p| p.on(machine)) {
+            Some(plane) => {
                 self.scene.plane = plane;
                 true
             }
-            _ => false,
+            None => false,
         }
     }
 
-    /// Turns the mill's view by a drag of (dx, dy) CSS pixels, a degree
-    /// for every [`PIXELS_PER_DEGREE`]: across turns about Z (yaw), up and
-    /// down lifts or lowers the eye (pitch, stopping at ±90°). A plane view
-    /// turns from its own angles (XY is the top view) into the 3D view.
-    /// False on the lathe, whose views are flat.
+    /// Turns the view by a drag of (dx, dy) CSS pixels, a degree for
+    /// every [`PIXELS_PER_DEGREE`]: across turns about the vertical axis
+    /// (yaw: the mill's Z, the lathe's X), up and down lifts or lowers the
+    /// eye (pitch, stopping at ±90°). A plane view turns from its own
+    /// angles (XY is the top view, the lathe's ZX the front) into the
+    /// machine's 3D view. False in the lathe's face view XC, which does not
+    /// turn (behaviour 10.18).
     pub fn orbit_by(&mut self, machine: MachineKind, dx: f64, dy: f64) -> bool {
         let Some(angles) = self.scene.plane.angles() else {
             return false;
         };
-        if machine != MachineKind::Mill || !(dx.is_finite() && dy.is_finite()) {
+        if !(dx.is_finite() && dy.is_finite()) {
             return false;
         }
         let turned = angles.turned(-dx / PIXELS_PER_DEGREE, dy / PIXELS_PER_DEGREE);
-        self.scene.plane = Plane::Orbit(turned);
+        self.scene.plane = Plane::orbit(machine, turned);
         true
     }
 
@@ -416,6 +426,48 @@ impl View {
     }
 }
 
+/// How far the drawings round the tool reach from the path over the run
+/// (behaviour 10.5), in the toolpath's units: the largest of the tool
+/// list's tools the run changes to (the mill's radius, and its length up
+/// the spindle or its diameter without one; the lathe's nose circle, whose
+/// far side lies 2R from the imaginary nose) and of the compensation's
+/// radius while engaged. Worked out once a run.
+fn reach(run: &Showing<'_>) -> scene::Reach {
+    let k = 1.0 / run.run.units.mm();
+    let to_path = run.setup.units.mm() * k;
+    let lathe = run.run.machine == MachineKind::Lathe;
+    let mut reach = scene::Reach {
+        radius: run.run.cutter_reach * k,
+        up: 0.0,
+    };
+    let mut seen = std::collections::BTreeSet::new();
+    for e in &run.run.events {
+        let number = match e.kind {
+            crate::machine::EventKind::ToolChange { tool } if !lathe => tool,
+            crate::machine::EventKind::ToolIndex { tool } if lathe => tool,
+            _ => continue,
+        };
+        if !seen.insert(number) {
+            continue;
+        }
+        let Some(t) = run.setup.tool(number) else {
+            continue;
+        };
+        if lathe {
+            reach.radius = reach.radius.max(t.nose_radius * to_path);
+        } else {
+            let r = t.diameter / 2.0 * to_path;
+            let up = if t.length > 0.0 { t.length } else { t.diameter } * to_path;
+            reach.radius = reach.radius.max(r);
+            reach.up = reach.up.max(up);
+        }
+    }
+    if lathe {
+        reach.radius *= 2.0;
+    }
+    reach
+}
+
 /// A circle of `radius` (the toolpath's units) round the tool: in the
 /// compensation plane about the marker on the mill; on the lathe about the
 /// nose centre, which lies R × the tip's vector (Z, X radius) from the
@@ -430,6 +482,7 @@ fn circle(s: &crate::machine::BlockState, radius: f64, tip: u8) -> scene::Cutter
                 crate::machine::modal::Plane::YZ => Plane::Yz,
             },
             centre: [0.0; 3],
+            length: None,
         },
         MachineKind::Lathe => {
             let [tz, tx] = crate::offsets::cutter::nose::tip_vector(tip);
@@ -437,6 +490,7 @@ fn circle(s: &crate::machine::BlockState, radius: f64, tip: u8) -> scene::Cutter
                 radius,
                 plane: Plane::LatheZx,
                 centre: [-2.0 * radius * tx, 0.0, -radius * tz],
+                length: None,
             }
         }
     }
