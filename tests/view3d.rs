@@ -1,7 +1,8 @@
 //! The 3D view in the page's session (behaviour 10.8, 10.9): a drag turns
 //! the mill's view from a plane into the 3D view, the view state and the
 //! document carry its angles, and a link carries them in its `angles`
-//! field; the lathe's views stay flat.
+//! field; the lathe's ZX view turns into the lathe's 3D view (10.18),
+//! its face view XC does not.
 
 use offsetlab::render::svg::SvgSurface;
 use offsetlab::session::view::ViewChange;
@@ -61,18 +62,74 @@ fn behaviour10_8_a_drag_turns_a_plane_view_into_the_3d_view() {
     assert_eq!((v.plane.as_deref(), v.angles), (Some("XZ"), None));
 }
 
-/// Behaviour 10.8: the lathe's views are flat: no drag turns them, no
-/// angles choose the 3D view there.
+const LATHE: &str = "G50 X120. Z60.;\nG00 X40. Z2.;\nG01 Z-30. F0.2;\nX80.;\nG00 X120. Z60.;";
+
+/// Behaviour 10.18: the lathe's ZX view is its 3D view at yaw 0, pitch 0,
+/// and a drag turns it as the mill's: (−60, 40) pixels give yaw 0 + 30 =
+/// 30, pitch 0 + 20 = 20. Its 3D preset is the isometric view, angles
+/// alone choose it, and the mill's planes stay refused. The face view XC
+/// does not turn (no yaw and pitch of the lathe's space show it: its
+/// screen's right is X, which the turn keeps upright).
 #[test]
-fn behaviour10_8_the_lathe_does_not_turn() {
-    let mut s = session(
-        "G50 X120. Z60.;\nG01 X100. Z0 F0.2;",
-        r#"{"machine":"lathe"}"#,
+fn behaviour10_18_the_lathe_turns_from_zx_and_its_face_view_does_not() {
+    let mut s = session(LATHE, r#"{"machine":"lathe"}"#);
+    assert_eq!(s.view().plane.as_deref(), Some("ZX"));
+    assert!(s.orbit_by(-60.0, 40.0));
+    let v = s.view();
+    assert_eq!(
+        (v.plane.as_deref(), v.angles),
+        (Some("3D"), Some([30.0, 20.0]))
     );
+    assert!(s.scene().plane.is_lathe() && s.scene().plane.is_orbit());
+    assert!(s.set_plane("3D"));
+    assert_eq!(s.view().angles, Some([45.0, 35.264]));
+    assert!(s.set_plane("ZX"));
+    let v = s.set_view(&change(r#"{"angles":[10,5]}"#));
+    assert_eq!(
+        (v.plane.as_deref(), v.angles),
+        (Some("3D"), Some([10.0, 5.0]))
+    );
+    assert!(!s.set_plane("XY"));
+    assert!(s.set_plane("XC"));
     assert!(!s.orbit_by(30.0, 30.0));
-    assert!(!s.set_plane("3D"));
-    let v = s.set_view(&change(r#"{"angles":[30,20]}"#));
-    assert_eq!((v.plane.as_deref(), v.angles), (Some("ZX"), None));
+    assert_eq!(s.view().plane.as_deref(), Some("XC"));
+    // Drawn: the lathe's legend, and the triad names Z, X and C.
+    s.set_view(&change(r#"{"plane":"3D","angles":[30,20]}"#));
+    let mut svg = SvgSurface::new();
+    let f = render::draw_scene(&mut svg, s.toolpath(), s.scene(), 700.0, 500.0);
+    let out = svg.finish(f.width, f.height);
+    assert!(out.contains("lathe · 3D · mm"), "{out}");
+    for name in [">Z<", ">X<", ">C<"] {
+        assert!(out.contains(name), "{name}");
+    }
+    // The path's box (X 40–120 as a diameter, Z −30–60) lies in the plot.
+    let (lo, hi) = s.toolpath().bounds().unwrap();
+    for c in 0..8 {
+        let p = [0, 1, 2].map(|k| if c >> k & 1 == 0 { lo[k] } else { hi[k] });
+        let (u, v) = f.projection.project(&p);
+        let (x, y) = f.transform.to_screen(u, v);
+        assert!(x >= f.plot.x - 1e-6 && x <= f.plot.right() + 1e-6, "{p:?}");
+        assert!(y >= f.plot.y - 1e-6 && y <= f.plot.bottom() + 1e-6, "{p:?}");
+    }
+}
+
+/// Behaviour 10.18 and 10.9: the lathe's 3D view goes into the document
+/// and the links as the mill's, and a lathe session given them shows it.
+#[test]
+fn behaviour10_18_the_lathe_3d_view_goes_into_the_document_and_the_link() {
+    let mut s = session(LATHE, r#"{"machine":"lathe"}"#);
+    s.set_view(&change(r#"{"plane":"3D","angles":[30,20]}"#));
+    let doc = s.document();
+    let json: serde_json::Value = serde_json::from_str(&doc.to_json_pretty()).unwrap();
+    assert_eq!(json["view"]["plane"], "3D");
+    assert_eq!(json["view"]["angles"], serde_json::json!([30.0, 20.0]));
+    let plain = share::encode_plain(&doc, false);
+    assert!(plain.contains("plane=3D&angles=30,20"), "{plain}");
+    let back = share::decode(&plain).unwrap().document;
+    assert_eq!(back.view, doc.view);
+    let mut t = session(LATHE, r#"{"machine":"lathe"}"#);
+    t.set_view(&change(r#"{"plane":"3D","angles":[30,20]}"#));
+    assert_eq!(t.scene().plane, s.scene().plane);
 }
 
 /// Behaviour 10.9: the document's view holds plane "3D" and `angles`

@@ -659,6 +659,50 @@ mod tests {
         assert_eq!((c.yaw(), c.pitch()), (350.0, 70.0));
     }
 
+    /// Behaviour 10.18: the lathe's 3D view turns the lathe's space, Z
+    /// (spindle) as the mill's X, X as a radius as the mill's Z, C (the
+    /// toolpath's Y) as the mill's −Y. At yaw 0, pitch 0 it is the ZX view,
+    /// exactly. At the isometric angles (right = (0.70711, 0.70711, 0), up
+    /// = (−0.40825, 0.40825, 0.81650) in that space): X20 (a diameter, 10
+    /// as a radius) Z10 is the space's (10, 0, 10): u = 0.70711·10 =
+    /// 7.0711, v = −0.40825·10 + 0.81650·10 = 4.0825; C5 (Y 5) is (0, −5,
+    /// 0): u = −3.5355, v = −2.0412. Looking down X (pitch 90): right is Z,
+    /// up is −C: X30 Y4 Z7 is at (7, −4).
+    #[test]
+    // Hand figures to five places (0.70711 is cos 45°, written out).
+    #[allow(clippy::approx_constant)]
+    fn behaviour10_18_the_lathe_3d_view_turns_the_lathes_space_by_hand() {
+        let front = Plane::LatheOrbit(Angles::degrees(0.0, 0.0));
+        assert_eq!(front.projection(), Plane::LatheZx.projection());
+        assert_eq!(front.project(&[120.0, 0.0, 60.0]), (60.0, 60.0));
+        let iso = Plane::LatheOrbit(Angles::ISO).projection();
+        let near = |a: (f64, f64), b: (f64, f64)| {
+            assert!(
+                (a.0 - b.0).abs() < 1e-4 && (a.1 - b.1).abs() < 1e-4,
+                "{a:?} vs {b:?}"
+            );
+        };
+        near(iso.project(&[20.0, 0.0, 10.0]), (7.0711, 4.0825));
+        near(iso.project(&[0.0, 5.0, 0.0]), (-3.5355, -2.0412));
+        let down = Plane::LatheOrbit(Angles::degrees(0.0, 90.0));
+        assert_eq!(down.project(&[30.0, 4.0, 7.0]), (7.0, -4.0));
+        // The machine's own 3D view; the face view XC has no angles.
+        assert_eq!(
+            Plane::parse("3D").unwrap().on(MachineKind::Lathe),
+            Some(Plane::LatheOrbit(Angles::ISO))
+        );
+        assert_eq!(
+            Plane::LatheOrbit(Angles::ISO).on(MachineKind::Mill),
+            Some(Plane::Orbit(Angles::ISO))
+        );
+        assert_eq!(Plane::Xy.on(MachineKind::Lathe), None);
+        assert_eq!(Plane::LatheXc.on(MachineKind::Mill), None);
+        assert_eq!(Plane::LatheZx.angles(), Some(Angles::degrees(0.0, 0.0)));
+        assert_eq!(Plane::LatheOrbit(Angles::ISO).name(), "3D");
+        assert!(Plane::LatheOrbit(Angles::ISO).is_lathe());
+        assert!(Plane::LatheOrbit(Angles::ISO).is_orbit());
+    }
+
     #[test]
     fn lathe_view_draws_x_as_a_radius() {
         assert_eq!(Plane::LatheZx.project(&[120.0, 0.0, 60.0]), (60.0, 60.0));
