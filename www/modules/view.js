@@ -1,6 +1,8 @@
 // The view's input: wheel zoom at the cursor, drag to pan, pinch with two
-// fingers, turn the mill's view in 3D (Shift or Alt+drag, the Orbit mode's
-// drag, two fingers moving together in the 3D view), double-click to fit, a click on a segment selects its block,
+// fingers, turn the view in 3D (Shift or Alt+drag, the Orbit mode's drag,
+// two fingers moving together in the 3D view, Alt+arrow keys on the focused
+// drawing; the mill's views and the lathe's but its face view XC, behaviour
+// 10.8, 10.18, 10.19), double-click to fit, a click on a segment selects its block,
 // keyboard zoom/pan on the focused canvas, the plane selector and the
 // zoom/fit buttons. The worker keeps the view state and draws; this module
 // only forwards what the user does and remembers the state the worker
@@ -9,13 +11,15 @@
 // over once only): `bindCanvas()` gives it the same input.
 
 const CLICK_SLOP = 4; // px a press may move and still count as a click
+// Alt+arrow turns the 3D view as a drag of this many CSS pixels the same
+// way (2 px a degree, src/session/view.rs: 5° a press), behaviour 10.19.
+const KEY_TURN_PX = 10;
 const WHEEL_STEP = 1.0015; // zoom factor per wheel delta pixel
 
 let post = () => {};
 let state = { plane: 'XY', zoom: 1, pan: [0, 0], step: null };
 const listeners = new Set();
 let orbitMode = false; // the Orbit button: a plain drag turns the view
-let machineKind = 'mill';
 
 /** The view state last drawn: { plane, zoom, pan: [u, v], step }, `angles:
  * [yaw, pitch]` in the 3D view (behaviour 10.8), and
@@ -43,6 +47,7 @@ export function viewReported(view) {
   if (view.legend === false) state.legend = false;
   const select = document.getElementById('plane');
   if (select && select.value !== state.plane) select.value = state.plane;
+  showTurnable();
   const swept = document.getElementById('swept');
   if (swept) swept.checked = Boolean(view.swept);
   const legend = document.getElementById('legend');
@@ -53,6 +58,23 @@ export function viewReported(view) {
 
 /** The lathe's views: ZX, and XC, the face of polar coordinate interpolation. */
 const LATHE_PLANES = new Set(['ZX', 'XC']);
+/** Views of both machines: the 3D view (the mill's or the lathe's, behaviour 10.18). */
+const BOTH_PLANES = new Set(['3D']);
+
+/** Whether the current view turns: all but the lathe's face view XC,
+ * which no yaw and pitch show (behaviour 10.18). */
+const turnable = () => state.plane !== 'XC';
+
+/** The Orbit button is off in the face view, saying why. */
+function showTurnable() {
+  const orbit = document.getElementById('orbit');
+  if (!orbit) return;
+  orbit.disabled = !turnable();
+  orbit.title = turnable()
+    ? 'Dragging turns the view in 3D (also Shift+drag or Alt+drag, Alt+arrow keys on the focused drawing, or two fingers in 3D)'
+    : 'The face view XC does not turn: choose ZX or 3D to turn the lathe in 3D';
+  if (!turnable()) setOrbitMode(false);
+}
 
 function setOrbitMode(on) {
   orbitMode = on;
@@ -61,24 +83,18 @@ function setOrbitMode(on) {
   document.body.dataset.orbit = on ? 'on' : 'off';
 }
 
-/** Shows the planes the machine has (mill: XY XZ YZ; lathe: ZX and the face, XC),
- * and the swept width option on the mill only (cutter compensation is the mill's). */
+/** Shows the planes the machine has (mill: XY XZ YZ; lathe: ZX and the face, XC;
+ * both: 3D), and the swept width option on the mill only (cutter compensation is the mill's). */
 export function setMachinePlanes(machine) {
-  machineKind = machine;
   const option = document.getElementById('swept-option');
   if (option) option.hidden = machine === 'lathe';
-  // The lathe's views are flat (behaviour 10.8): no 3D, no Orbit mode.
-  const orbit = document.getElementById('orbit');
-  if (orbit) {
-    orbit.hidden = machine === 'lathe';
-    if (orbit.hidden) setOrbitMode(false);
-  }
   const select = document.getElementById('plane');
   for (const option of select.options) {
     const lathe = LATHE_PLANES.has(option.value);
-    option.hidden = lathe !== (machine === 'lathe');
+    option.hidden = !BOTH_PLANES.has(option.value) && lathe !== (machine === 'lathe');
     option.disabled = option.hidden;
   }
+  showTurnable();
 }
 
 const send = (op, extra = {}) => post({ type: 'view', op, ...extra });
@@ -136,8 +152,8 @@ export function bindCanvas(canvas) {
       // A synthetic pointer (tests, some assistive tools) cannot be captured.
     }
     pointers.set(event.pointerId, local(event));
-    // A drag turns the mill's view with Shift or Alt held or in the Orbit mode.
-    const orbit = machineKind !== 'lathe' && (orbitMode || event.shiftKey || event.altKey);
+    // A drag turns the view with Shift or Alt held or in the Orbit mode (not the face view).
+    const orbit = turnable() && (orbitMode || event.shiftKey || event.altKey);
     if (pointers.size === 1) press = { ...local(event), moved: false, orbit };
     if (pointers.size === 2) {
       pinch = midpoint();
@@ -154,7 +170,7 @@ export function bindCanvas(canvas) {
       if (pinch.d > 0 && m.d > 0) send('zoom', { x: m.x, y: m.y, factor: m.d / pinch.d });
       // Two fingers moving together turn the 3D view (and any view in the
       // Orbit mode); in a plane view they pan it.
-      const turn = machineKind !== 'lathe' && (orbitMode || state.plane === '3D');
+      const turn = turnable() && (orbitMode || state.plane === '3D');
       send(turn ? 'orbit' : 'pan', { dx: m.x - pinch.x, dy: m.y - pinch.y });
       pinch = m;
       return;
@@ -185,9 +201,26 @@ export function bindCanvas(canvas) {
     send('fit');
   });
 
-  // Keyboard on the focused view: arrows pan, + and - zoom, 0 fits.
+  // Keyboard on the focused view: Shift+arrows pan, Alt+arrows turn it in
+  // 3D (behaviour 10.19: as a drag of KEY_TURN_PX that way, so Alt+→ turns
+  // as a drag to the right), + and - zoom, 0 fits. Plain arrows stay the
+  // stepper's; the editor never sees these (they are the canvas's own).
   canvas.addEventListener('keydown', (event) => {
-    if (event.ctrlKey || event.metaKey || event.altKey) return;
+    if (event.ctrlKey || event.metaKey) return;
+    const turns = {
+      ArrowLeft: [-KEY_TURN_PX, 0], ArrowRight: [KEY_TURN_PX, 0], ArrowUp: [0, -KEY_TURN_PX], ArrowDown: [0, KEY_TURN_PX],
+    };
+    if (event.altKey && !event.shiftKey && event.key in turns) {
+      // Alt+←/→ is also the browser's Back/Forward: the focused drawing takes it.
+      event.preventDefault();
+      event.stopPropagation();
+      if (turnable()) {
+        const [dx, dy] = turns[event.key];
+        send('orbit', { dx, dy });
+      }
+      return;
+    }
+    if (event.altKey) return;
     const r = canvas.getBoundingClientRect();
     const centre = { x: r.width / 2, y: r.height / 2 };
     const pans = { ArrowLeft: [40, 0], ArrowRight: [-40, 0], ArrowUp: [0, 40], ArrowDown: [0, -40] };
