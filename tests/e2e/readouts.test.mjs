@@ -59,11 +59,16 @@ describe('readouts', () => {
       const rapid = bbox(png, COLORS.actualRapid);
       const ratio = tool.w / rapid.w;
       assert.ok(ratio > 0.45 && ratio < 0.56, `tool ${tool.w} px of rapid ${rapid.w} px: ${ratio}`);
-      // Centred on the marker at the rapid's end, X20 Y10: the dot drawn
-      // alone before (the view is the same: the fit is the path's).
+      // Centred on the marker at the rapid's end, X20 Y10 (the fit now
+      // leaves room for the tool, 10.17, so the view is not the one of the
+      // dot drawn alone before): the circle is 10 mm across, so a mm is
+      // tool.w / 10 px, and X20 Y10 is 20 mm right of and 10 mm above the
+      // rapid's start at the work zero.
+      const mm = tool.w / 10;
       const centre = (b) => [(b.x0 + b.x1) / 2, (b.y0 + b.y1) / 2];
-      const [[cx, cy], [dx, dy]] = [centre(tool), centre(dot)];
-      assert.ok(Math.hypot(cx - dx, cy - dy) < 3, `${JSON.stringify(tool)} vs ${JSON.stringify(dot)}`);
+      const [cx, cy] = centre(tool);
+      const [ex, ey] = [rapid.x0 + 20 * mm, rapid.y1 - 10 * mm];
+      assert.ok(Math.hypot(cx - ex, cy - ey) < 5, `${JSON.stringify(tool)} vs (${ex}, ${ey})`);
       // The state panel names the tool's size from the list.
       assert.equal(await stateText(page, 'tool'), 'T01 · diameter 10.000');
       await page.locator('#tools-panel').scrollIntoViewIfNeeded();
