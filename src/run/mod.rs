@@ -702,10 +702,12 @@ fn account(
         segment
             .travel
             .block(&out.moves, state, machine.setup().rapid_rate_mm());
-        // The circle the page draws round the tool (behaviour 10.5).
-        let radius = state.cutter.radius.abs();
-        if radius > segment.cutter_reach && state.cutter.engaged() {
-            segment.cutter_reach = radius;
+        // The circle the page draws round the tool (behaviour 10.17).
+        if state.cutter.engaged() {
+            let radius = state.cutter.radius.abs();
+            if radius > segment.cutter_reach {
+                segment.cutter_reach = radius;
+            }
         }
     }
     if options.keep_moves {
