@@ -60,7 +60,7 @@ enum Command {
         /// The block the page shows first (0 = the first executed block).
         #[arg(long, value_name = "N")]
         step: Option<u32>,
-        /// The view plane: XY, XZ, YZ, 3D (isometric; mill), ZX or XC, the face view (lathe).
+        /// The view plane: XY, XZ, YZ (mill), ZX or XC, the face view (lathe), or 3D (isometric; either).
         #[arg(long, value_name = "PLANE")]
         plane: Option<String>,
         /// Decode LINK (a URL, a #fragment or the fragment) and print its
@@ -230,7 +230,7 @@ fn execute(cli: Cli, out: &mut impl Write) -> Result<ExitCode, Fatal> {
             if let Some(p) = plane {
                 let plane = ViewPlane::parse(&p).ok_or_else(|| {
                     Fatal(format!(
-                        "--plane {p}: expected XY, XZ, YZ, 3D (mill), ZX or XC (lathe)"
+                        "--plane {p}: expected XY, XZ, YZ (mill), ZX or XC (lathe), or 3D"
                     ))
                 })?;
                 doc.view.get_or_insert_with(ViewState::default).plane = plane;

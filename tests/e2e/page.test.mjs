@@ -104,9 +104,9 @@ describe('view', () => {
       await waitForView(page, (v) => v.plane === 'YZ');
       await loadExample(page, 'lathe-taper');
       await waitForView(page, (v) => v.plane === 'ZX');
-      // The lathe's views: ZX and the face of polar interpolation, XC.
+      // The lathe's views: ZX, the face of polar interpolation, XC, and its 3D view (10.18).
       const shown = await page.locator('#plane option:not([hidden])').evaluateAll((os) => os.map((o) => o.value));
-      assert.deepEqual(shown, ['ZX', 'XC']);
+      assert.deepEqual(shown, ['ZX', 'XC', '3D']);
       assert.match(await page.locator('#summary').textContent(), /0 errors · 0 warnings · lathe, mm/);
       // The offset table's four lathe columns fit the panel (the Z wear inputs ran past its right edge).
       const overflow = await page.evaluate(() => {

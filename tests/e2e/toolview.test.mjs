@@ -116,7 +116,7 @@ describe('the tool in every view, the lathe in 3D, turning by keyboard', () => {
       await loadExample(page, 'lathe-taper');
       await waitForView(page, (v) => v.plane === 'ZX');
       const shown = await page.locator('#plane option:not([hidden])').evaluateAll((os) => os.map((o) => o.value));
-      assert.deepEqual(shown, ['3D', 'ZX', 'XC']);
+      assert.deepEqual(shown, ['ZX', 'XC', '3D']);
       assert.equal(await page.locator('#orbit').isVisible(), true, 'the Orbit button on the lathe');
       const flat = decode(await page.locator('#view').screenshot());
       // Shift+drag from ZX (yaw 0, pitch 0): 60 px left is 30° of yaw, 40 px down 20° of pitch.

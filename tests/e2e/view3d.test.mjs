@@ -136,7 +136,7 @@ describe('3D view', () => {
       // The lathe turns in 3D too (behaviour 10.18, tests/e2e/toolview.test.mjs).
       assert.equal(await page.locator('#orbit').isVisible(), true, 'the Orbit button on the lathe');
       const shown = await page.locator('#plane option:not([hidden])').evaluateAll((os) => os.map((o) => o.value));
-      assert.deepEqual(shown, ['3D', 'ZX', 'XC']);
+      assert.deepEqual(shown, ['ZX', 'XC', '3D']);
     }, { hasTouch: true, scale: 1 });
   });
 });
