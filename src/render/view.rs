@@ -686,6 +686,14 @@ mod tests {
         near(iso.project(&[0.0, 5.0, 0.0]), (-3.5355, -2.0412));
         let down = Plane::LatheOrbit(Angles::degrees(0.0, 90.0));
         assert_eq!(down.project(&[30.0, 4.0, 7.0]), (7.0, -4.0));
+        // From the tailstock (yaw 90, pitch 0: right = (0, 1, 0), up = (0,
+        // 0, 1), so u = −C, v = X/2): a polar face move's corner X20 C−10
+        // at Z−1 (the toolpath's (20, −10, −1)) is at (10, 10); the face
+        // view XC draws it at (20/2, −10) = (10, −10): the same face, a
+        // quarter turn round (XC's (h, v) is here (−v, h)).
+        let tailstock = Plane::LatheOrbit(Angles::degrees(90.0, 0.0));
+        assert_eq!(tailstock.project(&[20.0, -10.0, -1.0]), (10.0, 10.0));
+        assert_eq!(Plane::LatheXc.project(&[20.0, -10.0, -1.0]), (10.0, -10.0));
         // The machine's own 3D view; the face view XC has no angles.
         assert_eq!(
             Plane::parse("3D").unwrap().on(MachineKind::Lathe),
