@@ -70,7 +70,8 @@ describe('readouts', () => {
       const [ex, ey] = [rapid.x0 + 20 * mm, rapid.y1 - 10 * mm];
       assert.ok(Math.hypot(cx - ex, cy - ey) < 5, `${JSON.stringify(tool)} vs (${ex}, ${ey})`);
       // The state panel names the tool's size from the list.
-      assert.equal(await stateText(page, 'tool'), 'T01 · diameter 10.000');
+      // No length listed: the drawing leaves the tool open at the top, and says so (10.16).
+      assert.equal(await stateText(page, 'tool'), 'T01 · diameter 10.000 · no length: drawn open at the top');
       await page.locator('#tools-panel').scrollIntoViewIfNeeded();
       await shoot(page, 'tool-at-size');
 
@@ -102,7 +103,7 @@ describe('readouts', () => {
       await page.locator('#step-slider').fill('3');
       await step(page, 3);
       assert.deepEqual((await page.evaluate(() => window.offsetlab.setup())).tools, { '01': { diameter: 10 } });
-      assert.match(await stateText(page, 'tool'), /^T01 · diameter 10\.000 — D01 holds 0: compensation reads the register/);
+      assert.match(await stateText(page, 'tool'), /^T01 · diameter 10\.000 · no length: drawn open at the top — D01 holds 0: compensation reads the register/);
       // The actual path is the programmed one: no offset came from the list.
       assert.equal(await stateText(page, 'actual'), await stateText(page, 'programmed'));
     }, { hash: `#program=${encodeURIComponent(text)}&tool=1:D10` });

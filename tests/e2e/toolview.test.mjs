@@ -9,7 +9,7 @@
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 import {
-  MARKS, countDifferences, decode, loadExample, shootCanvas, useBrowser, waitForView,
+  MARKS, countDifferences, decode, loadExample, shootCanvas, stateText, useBrowser, waitForView,
 } from './harness.mjs';
 
 const { withPage } = useBrowser();
@@ -67,6 +67,7 @@ describe('the tool in every view, the lathe in 3D, turning by keyboard', () => {
       const tool = bbox(png, MARKS.tool);
       const ratio = tool.h / tool.w;
       assert.ok(ratio > 5 && ratio < 6.6, `the tool's outline ${tool.w} × ${tool.h} px: ${ratio}`);
+      assert.equal(await stateText(page, 'tool'), 'T01 · diameter 10.000 · length 60.000');
       // All of it inside the drawing at zoom 1 (the fit holds the tool, 10.17).
       assert.ok(tool.x0 > 4 && tool.y0 > 4 && tool.x1 < png.width - 4 && tool.y1 < png.height - 4, JSON.stringify(tool));
 

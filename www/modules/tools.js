@@ -177,6 +177,8 @@ export function toolText(block, setup, fmt) {
   if (!lathe && tool.diameter) parts.push(`diameter ${fmt(tool.diameter, u)}`);
   if (lathe && tool.nose_radius) parts.push(`nose R ${fmt(tool.nose_radius, u)} · tip ${tool.tip ?? 0}`);
   if (tool.length) parts.push(`length ${fmt(tool.length, u)}`);
+  // The drawing's open top (behaviour 10.16) says the length is not known; so does this.
+  else if (!lathe && tool.diameter) parts.push('no length: drawn open at the top');
   if (parts.length === 0) return null;
   let text = `T${registerKey(block.tool)} · ${parts.join(' · ')}`;
   const c = block.cutter;
