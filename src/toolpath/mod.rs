@@ -218,10 +218,9 @@ pub const MEMO_SLOTS: usize = 3;
 /// move and kept while the path has that many moves: a toolpath only ever
 /// grows at its end ([`Toolpath::push`], [`Toolpath::append_moves`]), so an
 /// answer about the moves it had is still about them. The view asks some of
-/// them for every change of a pan or zoom gesture (several hundred a
-/// second), which a walk over a million moves each time could not keep up
-/// with. Not part of the path: two toolpaths with the same moves are equal
-/// whatever each has worked out.
+/// them for every step of a pan or zoom gesture, whose steps come faster
+/// than a walk over a large path's moves. Not part of the path: two
+/// toolpaths with the same moves are equal whatever each has worked out.
 #[derive(Default)]
 struct Memo(Mutex<(usize, [Option<bool>; MEMO_SLOTS])>);
 
