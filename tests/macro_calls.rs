@@ -41,25 +41,9 @@ fn near(got: &[[f64; 2]], want: &[[f64; 2]]) {
     }
 }
 
-/// Four holes of a bolt circle, one G65 each: the macro reads the centre
-/// (X #24, Y #25), the radius (R #18) and the angle (A #1) from its locals.
-const BOLT_CIRCLE: &str = "O1000
-#1 = 7.
-G90 G21 G00 X0 Y0
-N40 G65 P9010 X10. Y5. R20. A45.
-G65 P9010 X10. Y5. R20. A135.
-G65 P9010 X10. Y5. R20. A225.
-G65 P9010 X10. Y5. R20. A315.
-#101 = #1
-M30
-O9010
-G00 X[#24+#18*COS[#1]] Y[#25+#18*SIN[#1]]
-M99
-";
-
 #[test]
 fn behaviour21_1_a_bolt_circle_by_g65() {
-    let r = ok(BOLT_CIRCLE, &mill(&[]));
+    let r = ok(programs::G65_BOLT_CIRCLE, &mill(&[]));
     // 20 cos 45° = 20 sin 45° = 14.1421356 → 14.142 (the least increment):
     // (10 ± 14.142, 5 ± 14.142) (the rapid to (0, 0) where the tool
     // stands makes no move).
@@ -73,9 +57,9 @@ fn behaviour21_1_a_bolt_circle_by_g65() {
         ],
     );
     // The caller's #1 (7) is back after the calls.
-    assert_eq!(variables(&r, BOLT_CIRCLE)[&101], Some(7.0));
+    assert_eq!(variables(&r, programs::G65_BOLT_CIRCLE)[&101], Some(7.0));
     // The call's sentence names the arguments and their locals.
-    let v = at_line(&r, BOLT_CIRCLE, 4);
+    let v = at_line(&r, programs::G65_BOLT_CIRCLE, 4);
     assert!(
         v.explanation.contains(
             "G65 P9010: calls O9010 with X=#24=10.000, Y=#25=5.000, R=#18=20.000, A=#1=45.000"
@@ -92,7 +76,7 @@ fn behaviour21_1_a_bolt_circle_by_g65() {
         .blocks
         .iter()
         .find(|b| b.span.line == 11)
-        .map(|b| block_view(b, BOLT_CIRCLE))
+        .map(|b| block_view(b, programs::G65_BOLT_CIRCLE))
         .unwrap();
     assert_eq!(inside.stack, vec!["O1000 N40 (G65, level 1)", "O9010"]);
 }
@@ -471,7 +455,7 @@ M99
 #[test]
 fn behaviour21_6_a_checkpoint_inside_a_macro_gives_the_same_report() {
     let setup = mill(&[]);
-    for text in [BOLT_CIRCLE, MODAL_DRILL] {
+    for text in [programs::G65_BOLT_CIRCLE, MODAL_DRILL] {
         let full = run(text, &setup);
         assert!(!full.has_errors());
         for every in [1, 2, 3, 7] {

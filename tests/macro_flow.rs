@@ -34,23 +34,9 @@ fn limited(max_blocks: usize) -> RunOptions {
     }
 }
 
-const BOLT_CIRCLE: &str = "O2000 (BOLT CIRCLE)
-G90 G21 G17 G00 Z10.
-#1 = 50. (RADIUS)
-#2 = 6 (HOLES)
-#3 = 0 (HOLES DRILLED)
-WHILE [#3 LT #2] DO1
-#4 = #3 * 360 / #2
-G81 X[#1*COS[#4]] Y[#1*SIN[#4]] Z-5. R2. F100
-#3 = #3 + 1
-END1
-G80 G00 Z10.
-M30
-";
-
 #[test]
 fn behaviour20_13_a_bolt_circle_drilled_by_a_while_loop() {
-    let r = ok(BOLT_CIRCLE, &mill(&[]));
+    let r = ok(programs::WHILE_BOLT_CIRCLE, &mill(&[]));
     // Hole k at 60k degrees on R50: X = 50 cos 60k, Y = 50 sin 60k.
     // k=0: (50, 0); k=1: (25, 43.30127 → 43.301); k=2: (-25, 43.301);
     // k=3: (-50, 50 sin 180 = 6e-15 → 0); k=4: (-25, -43.301); k=5: (25, -43.301).
@@ -368,7 +354,7 @@ fn behaviour20_16_message_stop_3006_is_a_stop_and_the_run_goes_on() {
 fn behaviour20_15_a_checkpoint_inside_a_loop_gives_the_same_report() {
     let nested = "#1 = 0\nWHILE [#1 LT 3] DO1\n#2 = 0\nWHILE [#2 LT 2] DO2\nG01 X[#1*10] Y[#2*20] F200\n#2 = #2 + 1\nEND2\n#1 = #1 + 1\nEND1\nM30\n";
     let setup = mill(&[]);
-    for text in [BOLT_CIRCLE, nested] {
+    for text in [programs::WHILE_BOLT_CIRCLE, nested] {
         let full = run(text, &setup);
         for every in [1, 2, 3, 7, 1000] {
             let (light, checkpoints) = checkpointed(text, &setup, every);
@@ -388,11 +374,12 @@ fn behaviour20_15_a_checkpoint_inside_a_loop_gives_the_same_report() {
 #[test]
 fn behaviour20_15_a_program_with_loops_runs_the_same_on_two_threads() {
     let setup = mill(&[]);
-    let one = run_with(BOLT_CIRCLE, &setup, RunOptions::default());
-    match offsetlab::run_on_two_threads(BOLT_CIRCLE, &setup, RunOptions::default()) {
+    let one = run_with(programs::WHILE_BOLT_CIRCLE, &setup, RunOptions::default());
+    match offsetlab::run_on_two_threads(programs::WHILE_BOLT_CIRCLE, &setup, RunOptions::default())
+    {
         Some(two) => assert_eq!(two, one),
         None => assert_eq!(
-            offsetlab::run_pipelined(BOLT_CIRCLE, &setup, RunOptions::default()),
+            offsetlab::run_pipelined(programs::WHILE_BOLT_CIRCLE, &setup, RunOptions::default()),
             one
         ),
     }

@@ -39,23 +39,9 @@ fn on_line(r: &Run, line: u32) -> Vec<&BlockReport> {
     r.blocks.iter().filter(|b| b.span.line == line).collect()
 }
 
-const BOLT_CIRCLE: &str = "O2000 (BOLT CIRCLE)
-G90 G21 G17 G00 Z10.
-#1 = 50. (RADIUS)
-#2 = 6 (HOLES)
-#3 = 0 (HOLES DRILLED)
-WHILE [#3 LT #2] DO1
-#4 = #3 * 360 / #2
-G81 X[#1*COS[#4]] Y[#1*SIN[#4]] Z-5. R2. F100
-#3 = #3 + 1
-END1
-G80 G00 Z10.
-M30
-";
-
 #[test]
 fn behaviour21_12_each_block_reports_the_variables_touched_with_the_line_that_set_them() {
-    let r = ok(BOLT_CIRCLE, &mill(&[]));
+    let r = ok(programs::WHILE_BOLT_CIRCLE, &mill(&[]));
     // Before line 3 the program touched no variable: no watch at all.
     assert!(r.blocks[0].watch.is_none() && r.blocks[1].watch.is_none());
     // Line 3 sets #1 = 50.
@@ -84,7 +70,7 @@ fn behaviour21_12_each_block_reports_the_variables_touched_with_the_line_that_se
         [(3, Some(6.0), Some(9)), (4, Some(300.0), Some(7))]
     );
     // The CLI's JSON carries it as `watch`.
-    let json = serde_json::to_value(block_view(last, BOLT_CIRCLE)).unwrap();
+    let json = serde_json::to_value(block_view(last, programs::WHILE_BOLT_CIRCLE)).unwrap();
     assert_eq!(json["watch"]["variables"][3]["value"], 300.0);
     assert_eq!(json["watch"]["variables"][3]["line"], 7);
 }
@@ -128,24 +114,9 @@ fn behaviour21_12_a_system_variable_shows_the_tables_value_after_each_block() {
     );
 }
 
-/// Four holes of a bolt circle, one G65 each (behaviour 21.1's program).
-const G65_BOLT_CIRCLE: &str = "O1000
-#1 = 7.
-G90 G21 G00 X0 Y0
-N40 G65 P9010 X10. Y5. R20. A45.
-G65 P9010 X10. Y5. R20. A135.
-G65 P9010 X10. Y5. R20. A225.
-G65 P9010 X10. Y5. R20. A315.
-#101 = #1
-M30
-O9010
-G00 X[#24+#18*COS[#1]] Y[#25+#18*SIN[#1]]
-M99
-";
-
 #[test]
 fn behaviour21_13_a_macro_shows_its_own_level_and_the_caller_gets_its_marks_back() {
-    let r = ok(G65_BOLT_CIRCLE, &mill(&[]));
+    let r = ok(programs::G65_BOLT_CIRCLE, &mill(&[]));
     // Before the call the main program's #1 = 7, from line 2.
     assert_eq!(watched(&r.blocks[2]), (0, vec![(1, Some(7.0), Some(2))]));
     // After the G65 block the macro's level 1 stands, its locals the
@@ -204,7 +175,11 @@ M99
 
 #[test]
 fn behaviour21_13_reports_made_again_from_checkpoints_carry_the_same_variables() {
-    for (text, every) in [(BOLT_CIRCLE, 3), (G65_BOLT_CIRCLE, 2), (BOLT_CIRCLE, 7)] {
+    for (text, every) in [
+        (programs::WHILE_BOLT_CIRCLE, 3),
+        (programs::G65_BOLT_CIRCLE, 2),
+        (programs::WHILE_BOLT_CIRCLE, 7),
+    ] {
         let setup = mill(&[]);
         let kept = ok(text, &setup);
         let (_, checkpoints) = checkpointed(text, &setup, every);

@@ -120,30 +120,16 @@ impl Machine {
             None => self.write_state(n, v, span, out),
             Some(Target::Tool(field, number)) => {
                 self.check_register(n, number, span)?;
-                if v.abs() > MAX_OFFSET_VALUE + 1e-9 {
-                    return Err(Diagnostic::error(
-                        "g10-value",
-                        span,
-                        format!(
-                            "#{n} = {v}: an offset is at most ±{MAX_OFFSET_VALUE} (Fanuc alarm PS0032)"
-                        ),
-                    ));
-                }
+                offset_in_range(n, v, span)?;
                 let mut reg = self.setup.offsets.get(&number).copied().unwrap_or_default();
                 let was = field.get(&reg);
                 field.set(&mut reg, v);
                 Arc::make_mut(&mut self.setup).offsets.insert(number, reg);
-                out.events.push(EventKind::DataSet(DataSet {
-                    table: "offsets",
-                    key: format!("{number:02}"),
-                    field: field.key(),
-                    value: clean(v),
-                    was: clean(was),
-                }));
-                out.notes.push(format!(
+                let note = format!(
                     "#{n} is {}: set as G10 sets it, read by the blocks after this one",
                     field.label(number)
-                ));
+                );
+                offset_written(out, ("offsets", number, field.key()), (v, was), note);
                 Ok(true)
             }
             Some(Target::Work(p, axis)) => {
@@ -169,6 +155,37 @@ impl Machine {
 }
 
 /// Sets `axis` of `zero` to `v`; gives what it was.
+/// An offset written through `#n` is held to G10's limit (Fanuc alarm
+/// PS0032, behaviour 17.7).
+pub(super) fn offset_in_range(n: u32, v: f64, span: Span) -> Result<(), Diagnostic> {
+    if v.abs() > MAX_OFFSET_VALUE + 1e-9 {
+        return Err(Diagnostic::error(
+            "g10-value",
+            span,
+            format!("#{n} = {v}: an offset is at most ±{MAX_OFFSET_VALUE} (Fanuc alarm PS0032)"),
+        ));
+    }
+    Ok(())
+}
+
+/// What an offset register written through `#` reports, on the mill and
+/// the lathe alike: the event G10 gives and the block's sentence.
+pub(super) fn offset_written(
+    out: &mut Out,
+    (table, number, field): (&'static str, u16, &'static str),
+    (v, was): (f64, f64),
+    note: String,
+) {
+    out.events.push(EventKind::DataSet(DataSet {
+        table,
+        key: format!("{number:02}"),
+        field,
+        value: clean(v),
+        was: clean(was),
+    }));
+    out.notes.push(note);
+}
+
 pub(super) fn set_axis(zero: &mut Position, axis: usize, v: f64) -> f64 {
     let slot = match axis {
         0 => &mut zero.x,

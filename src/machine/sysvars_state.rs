@@ -12,10 +12,11 @@
 use std::sync::Arc;
 
 use super::data::clean;
-use super::{EventKind, Machine, Out, state::DataSet};
+use super::sysvars::{offset_in_range, offset_written};
+use super::{Machine, Out};
 use crate::diag::{Diagnostic, Span};
 use crate::macros::alarm;
-use crate::setup::{MAX_OFFSET_VALUE, MachineKind};
+use crate::setup::MachineKind;
 
 /// The number of a modal code as #4001… give it (`G54.1 P1` is 54.1).
 fn g_number(code: &str) -> Option<f64> {
@@ -329,15 +330,7 @@ impl Machine {
                 was
             }
             _ => {
-                if v.abs() > MAX_OFFSET_VALUE + 1e-9 {
-                    return Err(Diagnostic::error(
-                        "g10-value",
-                        span,
-                        format!(
-                            "#{n} = {v}: an offset is at most ±{MAX_OFFSET_VALUE} (Fanuc alarm PS0032)"
-                        ),
-                    ));
-                }
+                offset_in_range(n, v, span)?;
                 let slot = match field {
                     LatheField::XWear => &mut reg.x_wear,
                     LatheField::ZWear => &mut reg.z_wear,
@@ -354,13 +347,6 @@ impl Machine {
         Arc::make_mut(&mut self.setup)
             .lathe_offsets
             .insert(number, reg);
-        out.events.push(EventKind::DataSet(DataSet {
-            table: "lathe_offsets",
-            key: format!("{number:02}"),
-            field: key,
-            value: clean(v),
-            was: clean(was),
-        }));
         let mut note = format!(
             "#{n} is offset {number:02} {name}: set as G10 sets it, read by the blocks after this one"
         );
@@ -369,7 +355,7 @@ impl Machine {
                 "; offset {number:02} is in force with its old values until a T code names it again"
             ));
         }
-        out.notes.push(note);
+        offset_written(out, ("lathe_offsets", number, key), (v, was), note);
         Ok(())
     }
 }

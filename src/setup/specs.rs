@@ -17,6 +17,27 @@ enum MillTable {
     D,
 }
 
+/// A spec part's number (`kind` names the spec in the message: `offset`
+/// or `tool`).
+pub(super) fn spec_number(kind: &str, spec: &str, t: &str) -> Result<f64, String> {
+    let t = t.trim();
+    t.parse::<f64>()
+        .ok()
+        .filter(|v| v.is_finite() && !t.is_empty())
+        .ok_or_else(|| format!("{kind} `{spec}`: `{t}` is not a number"))
+}
+
+/// A spec's tip direction `T`: a whole number 0 to 9 (behaviour 18.2).
+pub(super) fn spec_tip(kind: &str, spec: &str, v: &str) -> Result<u8, String> {
+    v.trim()
+        .parse::<u8>()
+        .ok()
+        .filter(|t| *t <= MAX_TIP)
+        .ok_or_else(|| {
+            format!("{kind} `{spec}`: the tip direction T is a whole number 0 to {MAX_TIP}")
+        })
+}
+
 impl Setup {
     /// Sets one register from a command-line style spec. Mill: `NN=VALUE`
     /// (`01=5.0`, `1=-2.5`), with wear `NN=VALUE,W<wear>`; in offset memory
@@ -40,13 +61,7 @@ impl Setup {
             ));
         }
         let n = parse_register_number(digits).map_err(|e| format!("offset `{spec}`: {e}"))?;
-        let number = |t: &str| -> Result<f64, String> {
-            let t = t.trim();
-            t.parse::<f64>()
-                .ok()
-                .filter(|v| v.is_finite() && !t.is_empty())
-                .ok_or_else(|| format!("offset `{spec}`: `{t}` is not a number"))
-        };
+        let number = |t: &str| spec_number("offset", spec, t);
         match self.machine {
             MachineKind::Mill => {
                 let mut part = MillPart::default();
@@ -88,16 +103,7 @@ impl Setup {
                     } else if let Some(v) = p.strip_prefix('R') {
                         reg.r = number(v)?;
                     } else if let Some(v) = p.strip_prefix('T') {
-                        reg.t = v
-                            .trim()
-                            .parse::<u8>()
-                            .ok()
-                            .filter(|t| *t <= MAX_TIP)
-                            .ok_or_else(|| {
-                                format!(
-                                    "offset `{spec}`: the tip direction T is a whole number 0 to {MAX_TIP}"
-                                )
-                            })?;
+                        reg.t = spec_tip("offset", spec, v)?;
                     } else {
                         return Err(format!(
                             "offset `{spec}`: lathe registers are NN=X<v>,Z<v> (wear XW<v>, ZW<v>; nose radius R<v>, RW<v>; tip T<0–9>)"

@@ -7,6 +7,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::registers::{MAX_TIP, parse_register_number};
+use super::specs::{spec_number, spec_tip};
 use super::{MAX_OFFSET_VALUE, Setup, is_zero, setup_error};
 use crate::diag::Diagnostic;
 
@@ -53,13 +54,7 @@ impl Setup {
             .ok()
             .filter(|n| (1..=MAX_TOOL).contains(n))
             .ok_or_else(|| format!("tool `{spec}`: the tool number is 1 to {MAX_TOOL}"))?;
-        let number = |t: &str| -> Result<f64, String> {
-            let t = t.trim();
-            t.parse::<f64>()
-                .ok()
-                .filter(|v| v.is_finite() && !t.is_empty())
-                .ok_or_else(|| format!("tool `{spec}`: `{t}` is not a number"))
-        };
+        let number = |t: &str| spec_number("tool", spec, t);
         let mut tool = Tool::default();
         for part in value.split(',').filter(|p| !p.trim().is_empty()) {
             let p = part.trim().to_ascii_uppercase();
@@ -70,16 +65,7 @@ impl Setup {
             } else if let Some(v) = p.strip_prefix('L') {
                 tool.length = number(v)?;
             } else if let Some(v) = p.strip_prefix('T') {
-                tool.tip = v
-                    .trim()
-                    .parse::<u8>()
-                    .ok()
-                    .filter(|t| *t <= MAX_TIP)
-                    .ok_or_else(|| {
-                        format!(
-                            "tool `{spec}`: the tip direction T is a whole number 0 to {MAX_TIP}"
-                        )
-                    })?;
+                tool.tip = spec_tip("tool", spec, v)?;
             } else {
                 return Err(format!(
                     "tool `{spec}`: a tool is N=D<diameter>,L<length> (mill) or N=R<nose radius>,T<0–9>,L<length> (lathe)"

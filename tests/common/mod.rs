@@ -1,6 +1,7 @@
 //! Helpers shared by the native integration tests.
 #![allow(dead_code)]
 
+pub mod programs;
 pub mod session;
 
 use offsetlab::geometry::Xyz;

@@ -11,6 +11,7 @@
 // behaviour 17.8) is shown apart, in the cell and in a list under the
 // table: the user's value stays the setup's.
 
+import { addForm, checkedField } from './fields.js';
 import {
   MAX_OFFSET, checkNumber, clean, decimalsFor, latheRegister, machineOf, millRegister,
   offsetMemorySetting, registerKey, registersIn, setLatheRegister, setMillRegister, tableSize,
@@ -75,14 +76,7 @@ export function initOffsets({ getSetup, change }) {
     addInput: document.getElementById('new-register'),
     addReason: document.getElementById('new-register-reason'),
   };
-  ctx.addForm.addEventListener('submit', (event) => {
-    event.preventDefault();
-    addRegister(ctx.addInput.value);
-  });
-  ctx.addInput.addEventListener('input', () => {
-    ctx.addReason.textContent = '';
-    ctx.addInput.removeAttribute('aria-invalid');
-  });
+  addForm(ctx.addForm, ctx.addInput, ctx.addReason, addRegister);
 }
 
 /**
@@ -105,15 +99,12 @@ function addRegister(text) {
   let reason = '';
   if (!/^\d{1,3}$/.test(String(text).trim())) reason = 'a register number such as 5 or 12';
   else if (n < 1 || n > max) reason = `registers are 01 to ${registerKey(max)}`;
-  if (reason) {
-    ctx.addReason.textContent = reason;
-    ctx.addInput.setAttribute('aria-invalid', 'true');
-    return;
-  }
+  if (reason) return reason;
   if (!added.includes(n)) added.push(n);
   ctx.addInput.value = '';
   renderOffsets();
   ctx.table.querySelector(`input[data-register="${n}"]`)?.focus();
+  return '';
 }
 
 function rowsFor(setup) {
@@ -259,39 +250,28 @@ function cell(n, field, reg, kind, units, cells, changed) {
   const lathe = kind === 'lathe';
   const label = LABEL[field];
   const td = document.createElement('td');
-  const input = document.createElement('input');
-  input.type = 'text';
-  input.inputMode = field === 't' ? 'numeric' : 'decimal';
-  input.autocomplete = 'off';
-  input.spellcheck = false;
-  input.value = String(reg[field]);
+  const { input, reason } = checkedField({
+    value: reg[field],
+    numeric: field === 't',
+    check: (text) => check(field, text, units),
+    apply: (value) => {
+      reg[field] = value;
+      // Memory A's one value is geometry + wear: a wear of an older
+      // document is taken into it (behaviour 17.1).
+      if (field === 'value') Object.assign(reg, { geometry: value, wear: 0 });
+      if (field === 'geometry' || field === 'wear') {
+        Object.assign(reg, { h: reg.geometry, h_wear: reg.wear, d: reg.geometry, d_wear: reg.wear });
+      }
+      changed();
+      ctx.change((s) => (lathe ? setLatheRegister(s, n, reg) : setMillRegister(s, n, reg, kind)), 'offsets');
+    },
+  });
   input.dataset.register = String(n);
   input.dataset.field = `${n}.${field}`;
   const unit = field === 't' ? '0–9' : unitName(units);
   input.setAttribute('aria-label', `Register ${registerKey(n)} ${label} (${unit})`);
-  const reason = document.createElement('span');
-  reason.className = 'reason';
   reason.id = `reason-${n}-${field}`;
-  reason.setAttribute('aria-live', 'polite');
   const described = [reason.id];
-  input.addEventListener('input', () => {
-    const checked = check(field, input.value, units);
-    reason.textContent = checked.reason ?? '';
-    if (checked.reason) {
-      input.setAttribute('aria-invalid', 'true');
-      return;
-    }
-    input.removeAttribute('aria-invalid');
-    reg[field] = checked.value;
-    // Memory A's one value is geometry + wear: a wear of an older
-    // document is taken into it (behaviour 17.1).
-    if (field === 'value') Object.assign(reg, { geometry: checked.value, wear: 0 });
-    if (field === 'geometry' || field === 'wear') {
-      Object.assign(reg, { h: reg.geometry, h_wear: reg.wear, d: reg.geometry, d_wear: reg.wear });
-    }
-    changed();
-    ctx.change((s) => (lathe ? setLatheRegister(s, n, reg) : setMillRegister(s, n, reg, kind)), 'offsets');
-  });
   td.append(input, reason);
   const set = cells.get(`${n}.${field}`);
   if (set) {

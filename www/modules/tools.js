@@ -7,6 +7,7 @@
 // Every field is checked as it is typed (a number 0 to 999.999 at the least
 // increment; the tip a digit 0–9); a valid value changes the setup at once.
 
+import { addForm, checkedField } from './fields.js';
 import {
   MAX_OFFSET, checkNumber, decimalsFor, machineOf, registerKey, unitName, unitsOf,
 } from './setup.js';
@@ -33,14 +34,7 @@ export function initTools({ getSetup, change }) {
     addInput: document.getElementById('new-tool'),
     addReason: document.getElementById('new-tool-reason'),
   };
-  ctx.addForm.addEventListener('submit', (event) => {
-    event.preventDefault();
-    addTool(ctx.addInput.value);
-  });
-  ctx.addInput.addEventListener('input', () => {
-    ctx.addReason.textContent = '';
-    ctx.addInput.removeAttribute('aria-invalid');
-  });
+  addForm(ctx.addForm, ctx.addInput, ctx.addReason, addTool);
 }
 
 function toolsOf(setup) {
@@ -79,17 +73,14 @@ function removeTool(setup, n) {
 function addTool(text) {
   const t = String(text).trim();
   const n = Number(t);
-  if (!/^\d{1,4}$/.test(t) || n < 1 || n > MAX_TOOL) {
-    ctx.addReason.textContent = `a tool number is 1 to ${MAX_TOOL}`;
-    ctx.addInput.setAttribute('aria-invalid', 'true');
-    return;
-  }
+  if (!/^\d{1,4}$/.test(t) || n < 1 || n > MAX_TOOL) return `a tool number is 1 to ${MAX_TOOL}`;
   ctx.addInput.value = '';
   ctx.change((s) => {
     if (!numbers(s).includes(n)) setField(s, n, 'length', 0);
   }, 'tools');
   renderTools({ force: true });
   ctx.table.querySelector(`input[data-tool="${n}"]`)?.focus();
+  return '';
 }
 
 function check(field, text, units) {
@@ -111,27 +102,16 @@ function toolRow(n, setup, columns, units) {
   const tool = entry(setup, n);
   for (const [field, , label] of columns) {
     const td = document.createElement('td');
-    const input = document.createElement('input');
-    input.type = 'text';
-    input.inputMode = field === 'tip' ? 'numeric' : 'decimal';
+    const { input, reason } = checkedField({
+      value: tool[field] ?? 0,
+      numeric: field === 'tip',
+      check: (text) => check(field, text, units),
+      apply: (value) => ctx.change((s) => setField(s, n, field, value), 'tools'),
+    });
     input.size = field === 'tip' ? 2 : 8;
-    input.value = String(tool[field] ?? 0);
     input.dataset.tool = String(n);
     input.dataset.field = field;
     input.setAttribute('aria-label', `Tool ${registerKey(n)} ${label}`);
-    const reason = document.createElement('span');
-    reason.className = 'reason';
-    reason.setAttribute('aria-live', 'polite');
-    input.addEventListener('input', () => {
-      const checked = check(field, input.value, units);
-      reason.textContent = checked.reason ?? '';
-      if (checked.reason) {
-        input.setAttribute('aria-invalid', 'true');
-        return;
-      }
-      input.removeAttribute('aria-invalid');
-      ctx.change((s) => setField(s, n, field, checked.value), 'tools');
-    });
     td.append(input, reason);
     tr.append(td);
   }
