@@ -42,10 +42,16 @@
 //                    drawn (default 120)
 //   --ref REV        measure the page of commit REV instead of the working
 //                    tree's www/: `git archive REV` into
-//                    target/bench-browser/ref-SHA/, its wasm package built
-//                    there with wasm-pack (CARGO_TARGET_DIR=target/bench-browser/cargo) and its
-//                    editor bundle with esbuild (once per commit): figures
-//                    others can reproduce while www/ and src/ move on
+//                    target/bench-browser/ref-SHA/ (files dated now, so
+//                    cargo builds them), its wasm package built there with
+//                    wasm-pack (CARGO_TARGET_DIR=target/bench-browser/cargo,
+//                    shared by the refs) and wasm-opt -O3 as `make wasm`,
+//                    its editor bundle with esbuild (once per commit; a
+//                    directory without the stamp of a finished build is
+//                    built again; the wasm's md5 is printed, with a note
+//                    when another ref of other sources has the same):
+//                    figures others can reproduce while www/ and src/
+//                    move on
 //   --count-calls    also count the canvas calls of each drawing (lineTo,
 //                    moveTo, stroke; adds a little to the drawing time)
 //   --canvas-experiment SPEC
@@ -97,11 +103,12 @@
 //     sent per second are printed beside them.
 
 import { spawnSync } from 'node:child_process';
-import { existsSync, mkdirSync, readdirSync, readFileSync, rmSync, statSync } from 'node:fs';
+import { mkdirSync, readdirSync, readFileSync, statSync } from 'node:fs';
 import { cpus, loadavg } from 'node:os';
 import { basename, join } from 'node:path';
 import { ROOT, launchBrowser, openPage, startServer, waitForRun } from '../tests/e2e/harness.mjs';
 import { orbitFrames } from './bench-orbit.mjs';
+import { buildRef } from './bench-ref.mjs';
 
 // ---------------------------------------------------------------- options
 
@@ -227,40 +234,6 @@ function generate(blocks) {
   }
   if (r.status !== 0) throw new Error(`the generator failed (${r.error?.message ?? `exit ${r.status}`})`);
   return { program, setup, bytes: statSync(program).size, blocks };
-}
-
-/** Runs a command for the build of --ref, its output on standard error; throws when it fails. */
-function build(cmd, args, options) {
-  log(`  ${cmd} ${args.join(' ')}`);
-  const r = spawnSync(cmd, args, { stdio: ['ignore', process.stderr, process.stderr], timeout: LIMIT.generate, ...options });
-  if (r.status !== 0) throw new Error(`${cmd} ${args.join(' ')} failed (${r.error?.message ?? `exit ${r.status}`})`);
-  return r;
-}
-
-/** The page of commit `rev`, built once in target/bench-browser/ref-SHA/: { root, sha }. */
-function buildRef(rev) {
-  const sha = spawnSync('git', ['rev-parse', '--verify', `${rev}^{commit}`], { cwd: ROOT, encoding: 'utf8' }).stdout.trim();
-  if (!/^[0-9a-f]{40}$/.test(sha)) throw new Error(`--ref ${rev}: not a commit`);
-  const dir = join(BENCH_DIR, `ref-${sha.slice(0, 12)}`);
-  const www = join(dir, 'www');
-  if (existsSync(join(www, 'pkg', 'offsetlab.js')) && existsSync(join(www, 'dist', 'editor.js'))) {
-    log(`page of ${sha.slice(0, 12)}: built before in ${dir}`);
-    return { root: www, sha };
-  }
-  log(`building the page of ${sha.slice(0, 12)} in ${dir}`);
-  rmSync(dir, { recursive: true, force: true });
-  mkdirSync(dir, { recursive: true });
-  build('sh', ['-c', `git -C "${ROOT}" archive ${sha} | tar -x -C "${dir}"`]);
-  build('wasm-pack', ['build', '--target', 'web', '--out-dir', 'www/pkg'], {
-    // Its own target directory: sharing the repository's made cargo take the
-    // snapshot's build for the working tree's (same package, same fingerprint).
-    cwd: dir, env: { ...process.env, CARGO_TARGET_DIR: join(ROOT, 'target', 'bench-browser', 'cargo') },
-  });
-  // The snapshot's own build:page script, with the repository's node_modules.
-  build('npm', ['run', '--silent', 'build:page'], {
-    cwd: dir, env: { ...process.env, PATH: `${join(ROOT, 'node_modules', '.bin')}:${process.env.PATH}` },
-  });
-  return { root: www, sha };
 }
 
 // ------------------------------------------ processes (peak memory, Linux)
@@ -1210,9 +1183,9 @@ async function main() {
   };
   let root;
   if (OPTS.ref) {
-    const built = buildRef(OPTS.ref);
+    const built = buildRef(OPTS.ref, { dir: BENCH_DIR, log, timeout: LIMIT.generate });
     root = built.root;
-    env.page = `commit ${built.sha.slice(0, 12)} (--ref ${OPTS.ref}), built in ${built.root.slice(ROOT.length + 1)}`;
+    env.page = `commit ${built.sha.slice(0, 12)} (--ref ${OPTS.ref}), built in ${built.root.slice(ROOT.length + 1)}, wasm md5 ${built.wasm}`;
   } else {
     const git = (args) => spawnSync('git', args, { cwd: ROOT, encoding: 'utf8' }).stdout.trim();
     const dirty = git(['status', '--porcelain', '--', 'www', 'src']) ? ', with uncommitted changes in www/ or src/' : '';

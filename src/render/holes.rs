@@ -73,13 +73,22 @@ pub(super) fn for_each_hole(
 }
 
 /// Whether `tp` has a hole seen along `plane`'s normal (the legend's row).
+/// Kept with the toolpath, one answer per normal: every frame's layout asks
+/// (the legend's row), and so does every step of a pan or zoom gesture, and
+/// a path without holes is only known to have none after a walk over all
+/// its moves.
 pub(super) fn has_holes(tp: &Toolpath, plane: Plane) -> bool {
-    let mut any = false;
-    for_each_hole(tp, plane, |_, _| {
-        any = true;
-        false
-    });
-    any
+    let Some(n) = normal(plane) else {
+        return false;
+    };
+    tp.remembered(n, |tp| {
+        let mut any = false;
+        for_each_hole(tp, plane, |_, _| {
+            any = true;
+            false
+        });
+        any
+    })
 }
 
 /// The ring of a hole, in the legend and the view.

@@ -19,6 +19,7 @@ mod tests;
 pub use builder::PathBuilder;
 
 use std::ops::Range;
+use std::sync::Mutex;
 
 use crate::geometry::Xyz;
 use crate::machine::Move;
@@ -206,6 +207,46 @@ pub struct Toolpath {
     bounds: Option<(Xyz, Xyz)>,
     /// Millimetres to `units`.
     k: f64,
+    /// Answers worked out from every move ([`Toolpath::remembered`]).
+    memo: Memo,
+}
+
+/// How many answers [`Toolpath::remembered`] keeps.
+pub const MEMO_SLOTS: usize = 3;
+
+/// Answers about the whole path, each worked out once by a walk over every
+/// move and kept while the path has that many moves: a toolpath only ever
+/// grows at its end ([`Toolpath::push`], [`Toolpath::append_moves`]), so an
+/// answer about the moves it had is still about them. The view asks some of
+/// them for every step of a pan or zoom gesture, whose steps come faster
+/// than a walk over a large path's moves. Not part of the path: two
+/// toolpaths with the same moves are equal whatever each has worked out.
+#[derive(Default)]
+struct Memo(Mutex<(usize, [Option<bool>; MEMO_SLOTS])>);
+
+impl Memo {
+    fn answers(&self) -> (usize, [Option<bool>; MEMO_SLOTS]) {
+        // A poisoned lock (a panic while it was held) only held answers: read them.
+        *self.0.lock().unwrap_or_else(|e| e.into_inner())
+    }
+}
+
+impl Clone for Memo {
+    fn clone(&self) -> Memo {
+        Memo(Mutex::new(self.answers()))
+    }
+}
+
+impl PartialEq for Memo {
+    fn eq(&self, _: &Memo) -> bool {
+        true
+    }
+}
+
+impl std::fmt::Debug for Memo {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Memo")
+    }
 }
 
 impl Toolpath {
@@ -604,6 +645,30 @@ impl Toolpath {
     /// moves.
     pub fn bounds(&self) -> Option<(Xyz, Xyz)> {
         self.bounds
+    }
+
+    /// The answer `work_out(self)` kept in `slot` (below [`MEMO_SLOTS`]),
+    /// worked out now if the path has had moves added since, or never was:
+    /// for questions about all the moves that a view asks again and again
+    /// (whether any hole is seen along a plane's normal, behaviour 6.11).
+    /// Each slot is one question, always asked with the same `work_out`.
+    pub fn remembered(&self, slot: usize, work_out: impl FnOnce(&Toolpath) -> bool) -> bool {
+        if slot >= MEMO_SLOTS {
+            return work_out(self);
+        }
+        let (moves, answers) = self.memo.answers();
+        if moves == self.len()
+            && let Some(known) = answers[slot]
+        {
+            return known;
+        }
+        let answer = work_out(self);
+        let mut kept = self.memo.0.lock().unwrap_or_else(|e| e.into_inner());
+        if kept.0 != self.len() {
+            *kept = (self.len(), [None; MEMO_SLOTS]);
+        }
+        kept.1[slot] = Some(answer);
+        answer
     }
 }
 

@@ -177,3 +177,38 @@ fn shared_moves_are_the_same_at_the_start_and_at_the_end() {
     assert_eq!(rapid.shared_moves(&t), (4, 2));
     assert_eq!(Toolpath::default().shared_moves(&t), (0, 0));
 }
+
+#[test]
+fn a_remembered_answer_is_worked_out_again_once_moves_are_added() {
+    let r = run("G01 X10. F100.\nG01 Y5.", &Setup::default());
+    let mut t = Toolpath::new(r.machine, r.units);
+    t.push(&r.moves[0]);
+    let walks = std::cell::Cell::new(0);
+    let moves = |t: &Toolpath| {
+        walks.set(walks.get() + 1);
+        t.len() > 1
+    };
+    // One move: worked out once (false), then read back without a walk.
+    assert!(!t.remembered(0, moves));
+    assert!(!t.remembered(0, moves));
+    // A clone keeps the answer; equality does not look at answers.
+    let copy = t.clone();
+    assert!(!copy.remembered(0, moves));
+    assert_eq!(walks.get(), 1);
+    assert_eq!(
+        copy,
+        Toolpath::from_run(&run("G01 X10. F100.", &Setup::default()))
+    );
+    // Another slot is its own question.
+    assert!(!t.remembered(1, moves));
+    assert_eq!(walks.get(), 2);
+    // A second move: the answer is about two moves now (true).
+    t.push(&r.moves[1]);
+    assert!(t.remembered(0, moves));
+    assert!(t.remembered(0, moves));
+    assert_eq!(walks.get(), 3);
+    // Past the slots: worked out every time, never kept.
+    assert!(t.remembered(MEMO_SLOTS, moves));
+    assert!(t.remembered(MEMO_SLOTS, moves));
+    assert_eq!(walks.get(), 5);
+}
