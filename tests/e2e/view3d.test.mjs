@@ -96,8 +96,16 @@ describe('3D view', () => {
           // The actual feed path's blue (src/render/style.rs), roughly.
           if (!(b > 150 && r < 90 && g < 140)) continue;
           await page.mouse.click(box.x + x / scale, box.y + y / scale);
-          const w = await page.evaluate(() => JSON.parse(document.body.dataset.view));
-          if (w.step !== null) picked = w.step;
+          // The worker answers the click: under load its answer can come
+          // after the click returns, so wait a little for it.
+          const step = await page
+            .waitForFunction(() => {
+              const s = JSON.parse(document.body.dataset.view).step;
+              return s === null ? null : { s };
+            }, null, { timeout: 1500 })
+            .then(async (h) => (await h.jsonValue()).s)
+            .catch(() => null);
+          if (step !== null) picked = step;
         }
       }
       assert.ok(picked !== null, 'a click on the 3D drawing picks a block');
