@@ -10,7 +10,7 @@
 //! centre, in program units along the plane's horizontal and vertical axes.
 
 use super::style::{LIGHT, Stroke, Theme};
-pub use super::tool::{Reach, draw_marker};
+pub use super::tool::{Cutter, Reach, draw_marker, tool_symbol};
 use super::{Frame, Plane, Rect, Surface, Transform};
 use crate::document::{MAX_PAN, MAX_ZOOM, MIN_ZOOM};
 use crate::setup::MachineKind;
@@ -21,28 +21,6 @@ use crate::toolpath::{ArcPoints, Toolpath};
 const MIN_ARROW_PX: f64 = 2.5;
 /// At most this many arrows are drawn (a huge program would bury its path).
 const MAX_ARROWS: usize = 20_000;
-
-/// The cutter G41/G42 offsets the tool by: its radius (the toolpath's
-/// units), the view plane of the plane it compensates in, and where its
-/// centre lies from the tool marker.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Cutter {
-    /// |register D| (mill) or the nose radius R (lathe) in the toolpath's
-    /// units.
-    pub radius: f64,
-    /// The view of the compensation plane (G17 XY, G18 XZ, G19 YZ; the
-    /// lathe's ZX).
-    pub plane: Plane,
-    /// From the tool marker to the circle's centre, in the toolpath's
-    /// coordinates (X a diameter on the lathe): zero on the mill; on the
-    /// lathe the nose centre lies this far from the imaginary tool nose the
-    /// program follows (behaviour 18.2).
-    pub centre: [f64; 3],
-    /// A mill tool of the tool list: a cylinder up the spindle (+Z) from
-    /// the tool point, this long (0: the list has no length), drawn in
-    /// every mill view (behaviour 10.16); None for a circle in `plane`.
-    pub length: Option<f64>,
-}
 
 /// The view state of a session.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -283,17 +261,6 @@ pub fn draw_arrows(s: &mut impl Surface, f: &Frame, tp: &Toolpath, drawn: usize)
         }
     }
     s.end_group();
-}
-
-/// The tool as drawn in the view and in the legend: a filled disc with a
-/// ring in the background colour so it stands out on any path.
-pub fn tool_symbol(s: &mut impl Surface, t: &Theme, (x, y): (f64, f64)) {
-    let ring = Stroke {
-        color: t.background,
-        width: 1.5,
-        dash: &[],
-    };
-    s.circle(x, y, 5.5, Some(t.tool), Some(&ring));
 }
 
 /// Distance from point `p` to the segment `a`–`b`.

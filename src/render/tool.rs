@@ -7,8 +7,41 @@
 //! a line where it is seen edge on, an ellipse between. Also how far these
 //! reach beyond the path, which the fit leaves room for (10.5).
 
-use super::scene::{Cutter, tool_symbol};
+use super::style::Theme;
 use super::{Extent, Frame, Plane, Stroke, Surface};
+
+/// The cutter G41/G42 offsets the tool by: its radius (the toolpath's
+/// units), the view plane of the plane it compensates in, and where its
+/// centre lies from the tool marker.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Cutter {
+    /// |register D| (mill) or the nose radius R (lathe) in the toolpath's
+    /// units.
+    pub radius: f64,
+    /// The view of the compensation plane (G17 XY, G18 XZ, G19 YZ; the
+    /// lathe's ZX).
+    pub plane: Plane,
+    /// From the tool marker to the circle's centre, in the toolpath's
+    /// coordinates (X a diameter on the lathe): zero on the mill; on the
+    /// lathe the nose centre lies this far from the imaginary tool nose the
+    /// program follows (behaviour 18.2).
+    pub centre: [f64; 3],
+    /// A mill tool of the tool list: a cylinder up the spindle (+Z) from
+    /// the tool point, this long (0: the list has no length), drawn in
+    /// every mill view (behaviour 10.16); None for a circle in `plane`.
+    pub length: Option<f64>,
+}
+
+/// The tool as drawn in the view and in the legend: a filled disc with a
+/// ring in the background colour so it stands out on any path.
+pub fn tool_symbol(s: &mut impl Surface, t: &Theme, (x, y): (f64, f64)) {
+    let ring = Stroke {
+        color: t.background,
+        width: 1.5,
+        dash: &[],
+    };
+    s.circle(x, y, 5.5, Some(t.tool), Some(&ring));
+}
 
 /// Segments of a projected circle (an ellipse) drawn as a polyline.
 const ELLIPSE_SEGMENTS: usize = 72;
