@@ -4,7 +4,7 @@
 //! picking and the block of a line, whether a frame asked for is the one
 //! the canvas shows, the program buffer and its edits (the length check,
 //! ranges, invalid UTF-8, programs too large to keep), the document of the
-//! current state and the exports. `tests/wasm.rs` pins what only a browser
+//! current state and the exports. `tests/wasm/` pins what only a browser
 //! shows: the JS shape of each export and the canvas pixels.
 
 mod common;

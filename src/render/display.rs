@@ -179,7 +179,7 @@ pub fn damage(
 /// a slanted edge cut by the clip otherwise than a whole one, also inside
 /// the clip: the current block's marker, cut by the box of a changed move
 /// beside it, was painted with edges a shade darker than in a whole frame
-/// (`tests/wasm.rs`). Lines and rectangles along the axes — the grid, the
+/// (`tests/wasm/`). Lines and rectangles along the axes — the grid, the
 /// axes, the scale bar's box, the pixel layer — cover whole pixels or
 /// parts of them the same either way, and the grid's lines span the
 /// surface: they do not grow the box.

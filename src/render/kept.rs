@@ -47,7 +47,7 @@
 //!
 //! Each is used only where it is known to be what it stands for, so that a
 //! frame made from them has the pixels of a frame made from nothing: the
-//! raster's tests, the resume tests and `tests/wasm.rs`'s canvas tests
+//! raster's tests, the resume tests and the canvas tests of `tests/wasm/`
 //! compare the two.
 //!
 //! The layers are one-way: the raster draws and records pixels; the tracer
