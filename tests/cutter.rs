@@ -312,6 +312,32 @@ fn behaviour16_7_an_acute_outside_corner_takes_the_extra_vectors() {
 }
 
 #[test]
+fn behaviour16_7_an_outside_corner_whose_offset_paths_do_not_meet_takes_the_extra_vectors() {
+    // X50. then G03 about (58, 0) with R8, starting down -Y: a right turn
+    // of 90° (α = 90°, 16.6's case), but the offset line y = 5 and the
+    // offset circle (radius 8 − 5 = 3 about (58, 0), y within ±3) do not
+    // meet. The extra vectors: (50, 5) stretched 5 along +X is (55, 5); the
+    // arc's start vector, 5 left of -Y = (55, 0), pulled back 5 along -Y is
+    // (55, 5) as well (that move goes nowhere and is not recorded); then on
+    // to (55, 0), on the offset circle. The arc ends 5 toward its centre
+    // from (58, -8): (58, -3).
+    let text = format!(
+        "{UP}X50.
+G03 X58. Y-8. R8.
+G01 X70.
+G40 X80. Y-20."
+    );
+    let r = ok(&text, &r5());
+    points(ends(&r, 3), &[[55.0, 5.0, 0.0], [55.0, 0.0, 0.0]]);
+    points(ends(&r, 4), &[[58.0, -3.0, 0.0]]);
+    let s = sentence(&r, 3);
+    assert!(
+        s.contains("outside corner (90.0°, the offset paths do not meet)"),
+        "{s}"
+    );
+}
+
+#[test]
 fn behaviour16_7_arc_to_line_at_an_acute_corner() {
     // G02 from (40, 10) about (40, 0) to (50, 0): it ends heading -Y, the
     // tool outside (radius 15). Then along (-s, s): a right turn of 135°

@@ -22,6 +22,11 @@ pub type P2 = [f64; 2];
 /// register holds).
 pub const TANGENT: f64 = 1e-6;
 
+/// A turn's cosine within this of 0 is a turn of 90° (α = 90°, an outside
+/// corner of 16.6): a right angle written in words and worked out through
+/// a unit vector or an arc's centre comes out a hair either side.
+const RIGHT_ANGLE: f64 = 1e-12;
+
 /// How far (mm) two offset paths may miss each other and still be taken
 /// as touching (a tangent line and circle computed from rounded words).
 const TOUCH: f64 = 1e-7;
@@ -390,6 +395,13 @@ impl Corner {
         if inside { 180.0 + turn } else { 180.0 - turn }
     }
 
+    /// True when the path turns by more than 90° (an outside corner's α
+    /// under 90°): an acute corner that is not so took the extra vectors
+    /// because the offset paths do not meet (behaviour 16.7).
+    pub fn under_90(&self) -> bool {
+        self.turn.1 < -RIGHT_ANGLE
+    }
+
     /// Where the tool centre stands after the corner.
     pub fn end(&self) -> P2 {
         self.steps().last().map_or([0.0, 0.0], Step::end)
@@ -487,7 +499,7 @@ fn lines_corner(f1: P2, p: P2, q: P2, e2: P2, o: f64) -> Result<Corner, NoInters
         let x = meet().ok_or(NoIntersection)?;
         return Ok(Corner::points(Kind::Inside, alpha, &[x]));
     }
-    if cos >= 0.0
+    if cos >= -RIGHT_ANGLE
         && let Some(x) = meet()
     {
         return Ok(Corner::points(Kind::Obtuse, alpha, &[x]));
@@ -531,7 +543,7 @@ pub fn general_corner(
     };
     let tangent = cos > 0.0 && sin.abs() < TANGENT;
     // 90° of turn or less: an obtuse corner (α of 90° or more).
-    let obtuse = cos >= 0.0;
+    let obtuse = cos >= -RIGHT_ANGLE;
     match rule {
         Rule::Perpendicular => Ok(Corner::points(Kind::Perpendicular, alpha, &[end1])),
         Rule::StartUp(Type::A) => Ok(Corner::points(Kind::NextPerpendicular, alpha, &[start2])),
@@ -589,9 +601,15 @@ pub fn general_corner(
             let r = o.abs();
             let v2 = add(end1, mul(t1, r));
             let v3 = add(start2, mul(t2, -r));
-            let all = [end1, v2, v3, start2];
             let first = if prev.is_arc() { 0 } else { 1 };
             let last = if next.is_arc() { 4 } else { 3 };
+            // At α = 90° (offset paths that do not meet) the two stretched
+            // vectors are one point: one step, not a move of no length.
+            if dist(v2, v3) <= TOUCH {
+                let all = [end1, v2, start2];
+                return Ok(Corner::points(Kind::Acute, alpha, &all[first..last - 1]));
+            }
+            let all = [end1, v2, v3, start2];
             Ok(Corner::points(Kind::Acute, alpha, &all[first..last]))
         }
     }

@@ -239,8 +239,13 @@ pub fn corner_note(w: &Words, corner: &Corner, prev: &Path, next: &Path, o2: f64
         Kind::Acute => {
             let more = corner.steps().len() - 1;
             format!(
-                "{name}: outside corner ({}, under 90°): the tool goes {} past the corner along this block, across, and onto the next block's offset path {} before its start ({more} more move{}: the manual's extra vectors keep it {} off the corner point)",
+                "{name}: outside corner ({}, {}): the tool goes {} past the corner along this block, across, and onto the next block's offset path {} before its start ({more} more move{}: the manual's extra vectors keep it {} off the corner point)",
                 angle(corner.alpha()),
+                if corner.under_90() {
+                    "under 90°"
+                } else {
+                    "the offset paths do not meet"
+                },
                 w.r(),
                 w.r(),
                 if more == 1 { "" } else { "s" },
