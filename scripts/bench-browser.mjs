@@ -109,6 +109,9 @@ import { basename, join } from 'node:path';
 import { ROOT, launchBrowser, openPage, startServer, waitForRun } from '../tests/e2e/harness.mjs';
 import { orbitFrames } from './bench-orbit.mjs';
 import { buildRef } from './bench-ref.mjs';
+import { TimedOut, median, sleep, stats, within } from './bench-common.mjs';
+import { PAGE_INIT, instrumentWorker, renderers, sampleMemory, workerCdp } from './bench-instrument.mjs';
+import { fmtMB, fmtMs, print } from './bench-report.mjs';
 
 // ---------------------------------------------------------------- options
 
@@ -177,35 +180,6 @@ const LIMIT = {
   grace: 10_000, // frames begun during pan and zoom may finish this much later
 };
 
-class TimedOut extends Error {}
-
-/** `promise`, or a TimedOut error after `ms`. */
-function within(promise, ms, what) {
-  let timer;
-  return Promise.race([
-    promise,
-    new Promise((_, reject) => {
-      timer = setTimeout(() => reject(new TimedOut(`${what}: timed out after ${ms / 1000} s`)), ms);
-    }),
-  ]).finally(() => clearTimeout(timer));
-}
-
-const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
-
-// ------------------------------------------------------------- statistics
-
-function median(xs) {
-  const v = xs.filter((x) => Number.isFinite(x)).sort((a, b) => a - b);
-  if (!v.length) return null;
-  const m = Math.floor(v.length / 2);
-  return v.length % 2 ? v[m] : (v[m - 1] + v[m]) / 2;
-}
-function stats(xs) {
-  const v = xs.filter((x) => Number.isFinite(x));
-  if (!v.length) return null;
-  return { median: median(v), min: Math.min(...v), max: Math.max(...v), n: v.length };
-}
-
 // ------------------------------------------------------ the programs
 
 const BENCH_DIR = join(ROOT, 'target', 'bench-browser');
@@ -234,309 +208,6 @@ function generate(blocks) {
   }
   if (r.status !== 0) throw new Error(`the generator failed (${r.error?.message ?? `exit ${r.status}`})`);
   return { program, setup, bytes: statSync(program).size, blocks };
-}
-
-// ------------------------------------------ processes (peak memory, Linux)
-
-function readProc(pid, file) {
-  try {
-    return readFileSync(`/proc/${pid}/${file}`, 'utf8');
-  } catch {
-    return '';
-  }
-}
-
-/** Every descendant process of `root` (from /proc/PID/stat's parent pid). */
-function descendants(root) {
-  const parent = new Map();
-  for (const name of readdirSync('/proc')) {
-    if (!/^\d+$/.test(name)) continue;
-    const stat = readProc(name, 'stat');
-    const m = /\) \S (\d+)/.exec(stat);
-    if (m) parent.set(Number(name), Number(m[1]));
-  }
-  const out = [];
-  const want = new Set([root]);
-  let grew = true;
-  while (grew) {
-    grew = false;
-    for (const [pid, ppid] of parent) {
-      if (want.has(ppid) && !want.has(pid)) {
-        want.add(pid);
-        out.push(pid);
-        grew = true;
-      }
-    }
-  }
-  return out;
-}
-
-/** Chromium renderer processes started by this script: { pid, rss, hwm } in bytes. */
-function renderers() {
-  return descendants(process.pid)
-    .filter((pid) => readProc(pid, 'cmdline').includes('--type=renderer'))
-    .map((pid) => {
-      const status = readProc(pid, 'status');
-      const kb = (key) => Number(new RegExp(`^${key}:\\s+(\\d+) kB`, 'm').exec(status)?.[1] ?? NaN) * 1024;
-      return { pid, rss: kb('VmRSS'), hwm: kb('VmHWM') };
-    })
-    .filter((p) => Number.isFinite(p.rss));
-}
-
-// -------------------------------------------------- page instrumentation
-
-/**
- * Runs in the page before its scripts. Logs (page clock) the messages to and
- * from the worker, the body's data-rendered / data-drawn / data-opened
- * changes, key presses, the file input's change, file reads and
- * localStorage writes; keeps the main thread's long tasks and animation
- * frames; and collects the worker's own timings from the benchmark's
- * BroadcastChannel.
- */
-const PAGE_INIT = `(() => {
-  const now = () => performance.now();
-  const B = window.__bench = { log: [], worker: [], frames: [], longtasks: [], origin: performance.timeOrigin };
-  try {
-    new PerformanceObserver((list) => {
-      for (const e of list.getEntries()) B.longtasks.push([e.startTime, e.duration]);
-    }).observe({ type: 'longtask', buffered: true });
-  } catch (e) { B.noLongtasks = String(e); }
-  const frame = () => {
-    B.frames.push(now());
-    if (B.frames.length > 100000) B.frames.splice(0, 50000);
-    requestAnimationFrame(frame);
-  };
-  requestAnimationFrame(frame);
-  new BroadcastChannel('offsetlab-bench').onmessage = (e) => {
-    const d = e.data;
-    B.worker.push({ ...d, t: d.t - B.origin, end: d.end - B.origin, seen: now() });
-  };
-  const W = window.Worker;
-  window.Worker = class extends W {
-    constructor(...args) {
-      super(...args);
-      this.addEventListener('message', (e) => {
-        const d = e.data || {};
-        B.log.push({ t: now(), k: 'in', type: d.type, gen: d.gen });
-      });
-    }
-    postMessage(m, ...rest) {
-      const t = now();
-      super.postMessage(m, ...rest);
-      B.log.push({ t, end: now(), k: 'out', type: m && m.type, gen: m && m.gen, op: m && m.op });
-    }
-  };
-  new MutationObserver((records) => {
-    const t = now();
-    for (const r of records) {
-      if (r.target === document.body) B.log.push({ t, k: 'attr', name: r.attributeName, value: document.body.getAttribute(r.attributeName) });
-    }
-  }).observe(document, { subtree: true, attributes: true, attributeFilter: ['data-rendered', 'data-drawn', 'data-opened'] });
-  addEventListener('keydown', (e) => B.log.push({ t: now(), k: 'key', key: e.key }), true);
-  addEventListener('change', (e) => {
-    if (e.target && e.target.id === 'open-file') B.log.push({ t: now(), k: 'change' });
-  }, true);
-  const text = Blob.prototype.text;
-  Blob.prototype.text = function () {
-    const t = now();
-    const size = this.size;
-    return text.call(this).then((v) => { B.log.push({ t, end: now(), k: 'blob-text', size }); return v; });
-  };
-  const setItem = Storage.prototype.setItem;
-  Storage.prototype.setItem = function (key, value) {
-    const t = now();
-    try { return setItem.call(this, key, value); } finally {
-      B.log.push({ t, end: now(), k: 'storage', key, chars: String(value).length });
-    }
-  };
-  /**
-   * Run \`gen\` as the page and the worker saw it, once it is drawn: the run
-   * request, the result handled, the page's drawn message handled, the
-   * worker's run, the render after it and the end of that frame.
-   */
-  B.settled = (gen) => {
-    const L = B.log;
-    const post = L.find((e) => e.k === 'out' && e.type === 'run' && e.gen === gen);
-    let i = L.findIndex((e) => e.k === 'in' && e.type === 'result' && e.gen === gen);
-    if (!post || i < 0) return null;
-    const out = { gen, post: post.t, postEnd: post.end, result: L[i].t, rendered: null, drawnMessage: null };
-    let drawnIn = null;
-    for (i += 1; i < L.length && out.drawnMessage === null; i += 1) {
-      const e = L[i];
-      if (out.rendered === null && e.k === 'attr' && e.name === 'data-rendered') out.rendered = e.t;
-      if (!drawnIn && e.k === 'in' && e.type === 'drawn') drawnIn = e;
-      if (drawnIn && e.k === 'attr' && e.name === 'data-drawn' && e.t >= drawnIn.t) out.drawnMessage = e.t;
-    }
-    // worker.js starts the run in the microtask after the request arrives.
-    out.run = B.worker.find((e) => e.name === 'run' && e.t >= post.t) || null;
-    out.render = out.run && (B.worker.find((e) => e.name === 'render' && e.t >= out.run.end) || null);
-    out.frame = out.render && (B.worker.find((e) => e.name === 'frame' && e.render === out.render.id) || null);
-    return out;
-  };
-})();`;
-
-/**
- * Evaluated in the worker: times Session.run and Session.render, and the end
- * of each frame (a timer set by render() fires once the worker thread is
- * free again, after the rasterisation that ends the animation frame); sends
- * each timing (absolute ms) to the page on the benchmark's BroadcastChannel.
- */
-async function instrumentWorker(page) {
-  const worker = await within(
-    (async () => {
-      for (;;) {
-        const [w] = page.workers();
-        if (w) return w;
-        await sleep(50);
-      }
-    })(),
-    LIMIT.step, 'the worker',
-  );
-  await within(worker.evaluate(async ([countCalls, experiment]) => {
-    if (self.__bench) return;
-    const m = await import(new URL('./pkg/offsetlab.js', self.location.href).href);
-    const wasm = await m.default();
-    const at = () => performance.timeOrigin + performance.now();
-    const channel = new BroadcastChannel('offsetlab-bench');
-    const B = { memory: wasm.memory, calls: null, id: 0 };
-    self.__bench = B;
-    if (experiment) {
-      // --canvas-experiment: not the page as shipped.
-      const C = OffscreenCanvasRenderingContext2D.prototype;
-      const { lineTo, stroke, beginPath, moveTo, setLineDash } = C;
-      if (experiment.nodash) C.setLineDash = function solid() { return setLineDash.call(this, []); };
-      if (experiment.split > 0) {
-        let n = 0;
-        C.beginPath = function begin() { n = 0; return beginPath.call(this); };
-        C.lineTo = function split(x, y) {
-          lineTo.call(this, x, y);
-          n += 1;
-          if (n % experiment.split === 0) {
-            stroke.call(this);
-            beginPath.call(this);
-            moveTo.call(this, x, y);
-          }
-        };
-      }
-    }
-    if (countCalls) {
-      const C = OffscreenCanvasRenderingContext2D.prototype;
-      for (const name of ['lineTo', 'moveTo', 'stroke']) {
-        const f = C[name];
-        C[name] = function counted(...args) {
-          if (B.calls) B.calls[name] += 1;
-          return f.apply(this, args);
-        };
-      }
-    }
-    const P = m.Session.prototype;
-    // The worker runs a program with run(), since 5f0e44d run_with_progress(),
-    // since run_buffer() (the program written into wasm memory before the call).
-    for (const name of ['run', 'run_with_progress', 'run_buffer']) {
-      const run = P[name];
-      if (typeof run !== 'function') continue;
-      P[name] = function timedRun(...args) {
-        const t = at();
-        try {
-          return run.apply(this, args);
-        } finally {
-          channel.postMessage({ name: 'run', t, end: at(), wasm: B.memory.buffer.byteLength });
-        }
-      };
-    }
-    // render() draws a whole frame; render_moving() (since the pixel layer)
-    // a frame of a pan or zoom gesture, which returns true when it was the
-    // last whole frame's pixels moved.
-    for (const name of ['render', 'render_moving']) {
-      const render = P[name];
-      if (typeof render !== 'function') continue;
-      P[name] = function timedRender(...args) {
-        B.id += 1;
-        const id = B.id;
-        if (countCalls) B.calls = { lineTo: 0, moveTo: 0, stroke: 0 };
-        const t = at();
-        let result;
-        try {
-          result = render.apply(this, args);
-          return result;
-        } finally {
-          const end = at();
-          const calls = B.calls;
-          B.calls = null;
-          channel.postMessage({ name: 'render', id, t, end, calls, moving: result === true });
-          setTimeout(() => channel.postMessage({ name: 'frame', render: id, t: end, end: at(), wasm: B.memory.buffer.byteLength }), 0);
-        }
-      };
-    }
-  }, [OPTS.countCalls, OPTS.experiment]), LIMIT.step, 'instrumenting the worker');
-  return worker;
-}
-
-/** A CDP session on the worker (through the browser's session), for Runtime.getHeapUsage. */
-async function workerCdp(browser) {
-  const session = await browser.newBrowserCDPSession();
-  const { targetInfos } = await session.send('Target.getTargets');
-  const target = targetInfos.find((t) => t.type === 'worker' && t.url.endsWith('/worker.js'));
-  if (!target) return null;
-  const { sessionId } = await session.send('Target.attachToTarget', { targetId: target.targetId, flatten: false });
-  let id = 0;
-  const waiting = new Map();
-  session.on('Target.receivedMessageFromTarget', (e) => {
-    if (e.sessionId !== sessionId) return;
-    const msg = JSON.parse(e.message);
-    const w = waiting.get(msg.id);
-    if (w) {
-      waiting.delete(msg.id);
-      w(msg.result ?? null);
-    }
-  });
-  return {
-    send(method, params = {}) {
-      id += 1;
-      const mine = id;
-      return new Promise((resolve) => {
-        waiting.set(mine, resolve);
-        session.send('Target.sendMessageToTarget', { sessionId, message: JSON.stringify({ id: mine, method, params }) })
-          .catch(() => resolve(null));
-      });
-    },
-  };
-}
-
-/** Samples the JS heaps and the renderers' RSS every 200 ms until stopped; resolves to the highest of each. */
-function sampleMemory(pageCdp, worker) {
-  // byPid: the highest RSS (or VmHWM) seen of each renderer process.
-  const peak = { pageHeap: 0, workerHeap: 0, workerSamples: 0, byPid: new Map() };
-  let stop = false;
-  let workerBusy = false;
-  const loop = (async () => {
-    while (!stop) {
-      const r = await within(pageCdp.send('Runtime.getHeapUsage'), LIMIT.cdp, 'page heap').catch(() => null);
-      if (r) peak.pageHeap = Math.max(peak.pageHeap, r.usedSize);
-      if (worker && !workerBusy) {
-        workerBusy = true;
-        // A busy worker answers when it is free: one question at a time.
-        worker.send('Runtime.getHeapUsage').then((h) => {
-          workerBusy = false;
-          if (h) {
-            peak.workerHeap = Math.max(peak.workerHeap, h.usedSize);
-            peak.workerSamples += 1;
-          }
-        });
-      }
-      for (const p of renderers()) {
-        peak.byPid.set(p.pid, Math.max(peak.byPid.get(p.pid) ?? 0, p.rss, p.hwm));
-      }
-      await sleep(200);
-    }
-  })();
-  const done = async () => {
-    stop = true;
-    await loop;
-    return peak;
-  };
-  done.peak = () => ({ ...peak, byPid: new Map(peak.byPid) });
-  return done;
 }
 
 // ------------------------------------------------------------ page steps
@@ -606,7 +277,7 @@ async function runBig(server, big, run) {
   try {
     const { context, page, problems } = await openFresh(browser, server);
     out.problems = problems;
-    await instrumentWorker(page);
+    await instrumentWorker(page, { countCalls: OPTS.countCalls, experiment: OPTS.experiment, limit: LIMIT });
     const wcdp = await within(workerCdp(browser), LIMIT.step, 'attaching to the worker').catch(() => null);
     const pcdp = await context.newCDPSession(page);
 
@@ -618,7 +289,7 @@ async function runBig(server, big, run) {
     const heapBefore = await pcdp.send('Runtime.getHeapUsage');
 
     // Target 3: from the file input's change event to the frame's end.
-    stopSampling = sampleMemory(pcdp, wcdp);
+    stopSampling = sampleMemory(pcdp, wcdp, LIMIT);
     const deadline = Date.now() + LIMIT.big;
     const t3 = { timedOut: false };
     out.t3 = t3;
@@ -874,7 +545,7 @@ async function runEdits(server, small, run) {
   try {
     const { context, page, problems } = await openFresh(browser, server);
     out.problems = problems;
-    await instrumentWorker(page);
+    await instrumentWorker(page, { countCalls: OPTS.countCalls, experiment: OPTS.experiment, limit: LIMIT });
     const s = await openFile(page, small.setup, LIMIT.step);
     await waitSettled(page, s.gen, LIMIT.step);
     const p = await openFile(page, small.program, LIMIT.small);
@@ -941,233 +612,6 @@ async function runEdits(server, small, run) {
   return out;
 }
 
-// ------------------------------------------------------------------ output
-
-function fmtMs(ms) {
-  if (ms === null || ms === undefined || !Number.isFinite(ms)) return '—';
-  if (ms >= 1000) return `${(ms / 1000).toFixed(2)} s`;
-  if (ms >= 100) return `${ms.toFixed(0)} ms`;
-  return `${ms.toFixed(1)} ms`;
-}
-function fmtMB(bytes) {
-  if (bytes === null || bytes === undefined || !Number.isFinite(bytes)) return '—';
-  return `${(bytes / 1e6).toFixed(0)} MB`;
-}
-const fmtN = (digits) => (v) => (Number.isFinite(v) ? v.toLocaleString('en', { maximumFractionDigits: digits, minimumFractionDigits: digits }) : '—');
-const range = (s, f) => (s ? (s.n > 1 ? `${f(s.median)} (${f(s.min)}–${f(s.max)})` : f(s.median)) : '—');
-
-function table(rows) {
-  const widths = rows[0].map((_, i) => Math.max(...rows.map((r) => String(r[i]).length)));
-  const line = (r) => `| ${r.map((c, i) => String(c).padEnd(widths[i])).join(' | ')} |`;
-  return [line(rows[0]), `|${widths.map((w) => '-'.repeat(w + 2)).join('|')}|`, ...rows.slice(1).map(line)].join('\n');
-}
-
-/** The headline figures and whether each target is met. */
-function headline(results) {
-  const { t3runs, t4runs } = results;
-  const t3 = t3runs.map((r) => r.t3).filter(Boolean);
-  const drawn = t3.filter((x) => !x.timedOut);
-  const t5 = t3runs.map((r) => r.t5).filter(Boolean);
-  const t5small = t4runs.map((r) => r.t5).filter(Boolean);
-  const editsOf = (kind) => t4runs.flatMap((r) => r.edits.filter((e) => !e.timedOut && (e.kind ?? 'n') === kind));
-  const [edits, editsX, editsF] = ['n', 'x', 'f'].map(editsOf);
-  const h = {
-    keyToFrameX: stats(editsX.map((e) => e.keyToFrame)),
-    requestToFrameX: stats(editsX.map((e) => e.requestToFrame)),
-    keyToFrameF: stats(editsF.map((e) => e.keyToFrame)),
-    requestToFrameF: stats(editsF.map((e) => e.requestToFrame)),
-    total: stats(drawn.map((x) => x.total)),
-    totalTimedOut: t3.length - drawn.length,
-    pageDrawn: stats(t3.map((x) => x.pageDrawn)),
-    longest: stats(t3.map((x) => x.main.longest)),
-    gap: stats(t3.map((x) => x.main.maxFrameGap)),
-    peak: stats(t3.map((x) => x.memory.rendererPeak)),
-    // Issue 6's measure: the JS heaps (page and worker) and the wasm memory.
-    heapsWasm: stats(t3.map((x) => {
-      const { pageHeapPeak: page, workerHeapPeak: worker, wasm } = x.memory;
-      return [page, worker, wasm].every((v) => typeof v === 'number') ? page + worker + wasm : null;
-    }).filter((v) => v !== null)),
-    keyToFrame: stats(edits.map((e) => e.keyToFrame)),
-    keyToDrawnMessage: stats(edits.map((e) => e.keyToDrawnMessage)),
-    debounce: stats(edits.map((e) => e.debounce)),
-    requestToFrame: stats(edits.map((e) => e.requestToFrame)),
-    fps: stats(t5.map((x) => x.fps)),
-    fpsSmall: stats(t5small.map((x) => x.fps)),
-    fpsOrbit: stats(t3runs.map((r) => r.t5orbit?.fps).filter((v) => typeof v === 'number')),
-    orbitMovingMs: stats(t3runs.map((r) => r.t5orbit?.movingFrameMs?.median).filter((v) => typeof v === 'number')),
-  };
-  const verdict = (s, ok) => (s ? (ok(s.median) ? 'met' : 'not met') : 'not measured');
-  h.status = {
-    time: h.totalTimedOut && !h.total ? 'not met (timed out)' : verdict(h.total, (v) => v < 1000),
-    responsive: verdict(h.longest, (v) => v < 100),
-    memory: verdict(h.heapsWasm, (v) => v < 400e6),
-    edit: verdict(h.keyToFrame, (v) => v < 16),
-    editNoDebounce: verdict(h.requestToFrame, (v) => v < 16),
-    editX: verdict(h.keyToFrameX, (v) => v < 16),
-    editF: verdict(h.keyToFrameF, (v) => v < 16),
-    fps: verdict(h.fps, (v) => v >= 30),
-    fpsOrbit: verdict(h.fpsOrbit, (v) => v >= 30),
-  };
-  return h;
-}
-
-function report(results) {
-  const { env, big, small, t3runs, t4runs } = results;
-  const h = headline(results);
-  const t3 = t3runs.map((r) => r.t3).filter(Boolean);
-  const t5 = t3runs.map((r) => r.t5).filter((x) => x && !x.noFrame);
-  const t5none = t3runs.map((r) => r.t5).filter((x) => x?.noFrame);
-  const t5small = t4runs.map((r) => r.t5).filter(Boolean);
-  const edits = t4runs.flatMap((r) => r.edits.filter((e) => !e.timedOut));
-  const bigName = `${big.blocks.toLocaleString('en')} blocks`;
-  const smallName = `${small.blocks.toLocaleString('en')} blocks`;
-  const timedOut = h.totalTimedOut ? `${h.totalTimedOut} of ${t3.length} runs not drawn within ${LIMIT.big / 1000} s` : '';
-  const totalText = h.total ? `${range(h.total, fmtMs)}${timedOut ? `; ${timedOut}` : ''}` : (timedOut ? `timed out: ${timedOut}` : '—');
-  const fps = (v) => v.toFixed(v < 10 ? 2 : 1);
-  const rows = [
-    ['#', 'target', 'measured: median (min–max)', 'goal', 'status'],
-    ['3', `${bigName} (${fmtMB(big.bytes)}) opened (Open…) until drawn`, totalText, '< 1.0 s', h.status.time],
-    ['3', '  until the page\'s `drawn` message (before rasterisation)', range(h.pageDrawn, fmtMs), '—', ''],
-    ['3', '  until the editor holds the whole text (it takes a long one in steps)', range(stats(t3.map((x) => x.editorReady)), fmtMs), '—', ''],
-    ['3', 'responsive: longest main-thread task meanwhile (until drawn and the editor done)', range(h.longest, fmtMs), '< 100 ms', h.status.responsive],
-    ['3', '  longest gap between main-thread animation frames', range(h.gap, fmtMs), '—', ''],
-    ['3', 'peak memory: JS heaps (page + worker) + wasm memory', range(h.heapsWasm, fmtMB), '< 400 MB', h.status.memory],
-    ['3', '  the renderer process\'s peak RSS (page, worker, wasm, DOM, canvases)', range(h.peak, fmtMB), '—', ''],
-    ['4', `${smallName}: one-character edit, keystroke until drawn`, range(h.keyToFrame, fmtMs), '< 16 ms', h.status.edit],
-    ['4', '  of which keystroke to run request (editor, the page\'s debounce if any)', range(h.debounce, fmtMs), '—', ''],
-    ['4', '  run request until drawn', range(h.requestToFrame, fmtMs), '< 16 ms', h.status.editNoDebounce],
-    ['4', '  keystroke until the page\'s `drawn` message', range(h.keyToDrawnMessage, fmtMs), '—', ''],
-    ['4b', `${smallName}: the same typed into the X word (the path and its bounds change), keystroke until drawn`, range(h.keyToFrameX, fmtMs), '< 16 ms', h.status.editX],
-    ['4b', '  run request until drawn', range(h.requestToFrameX, fmtMs), '—', ''],
-    ['4c', `${smallName}: the same typed after the X word's point (the path moves, its bounds stay), keystroke until drawn`, range(h.keyToFrameF, fmtMs), '< 16 ms', h.status.editF],
-    ['4c', '  run request until drawn', range(h.requestToFrameF, fmtMs), '—', ''],
-    ['5', `${bigName}: pan + zoom, frames drawn per second`,
-      h.fps ? `${range(h.fps, fps)}${t5none.length ? ` (${t5none.length} of ${t5none.length + t5.length} runs: ${t5none[0].noFrame})` : ''}` : '—',
-      '≥ 30', h.status.fps],
-    ['5', `  the same on ${smallName} (for comparison)`, range(h.fpsSmall, fps), '≥ 30', h.fpsSmall ? (h.fpsSmall.median >= 30 ? 'met' : 'not met') : ''],
-    ['5', `${bigName}: the 3D view turned (Shift+drag), frames drawn per second`, range(h.fpsOrbit, fps), '≥ 30', h.status.fpsOrbit],
-    ['5', '  time per moving (sampled) frame while turned', range(h.orbitMovingMs, fmtMs), '—', ''],
-  ];
-  const out = [];
-  out.push(`offsetlab browser benchmark, ${env.date}`);
-  out.push(`Chromium ${env.chromium} headless (flags of tests/e2e/harness.mjs: --headless --no-sandbox --disable-gpu …; software rendering), `
-    + `Node ${env.node}, ${env.cpus} CPUs, load average ${env.loadBefore.map((x) => x.toFixed(2)).join(' ')} before, `
-    + `${(env.loadAfter ?? []).map((x) => x.toFixed(2)).join(' ')} after`);
-  out.push(`Page: ${env.page}`);
-  if (OPTS.experiment) out.push(`EXPERIMENT (--canvas-experiment ${OPTS.experiment.spec}): the worker's canvas context was patched; these are not the page's figures.`);
-  out.push(`Load: ${env.loadNote}`);
-  out.push(`Runs: ${env.runs} fresh browsers for targets 3 and 5, ${env.runs} for target 4 (${env.edits} edits each); `
-    + `viewport 1280x800 at 2 device pixels per CSS pixel.`);
-  out.push('');
-  out.push(table(rows));
-
-  if (t3.some((x) => x.phases)) {
-    const ph = (k) => stats(t3.map((x) => x.phases?.[k]));
-    const rowsP = [
-      ['target 3: where the time goes (median over runs)', 'time', 'what'],
-      ['read the file (Blob.text)', range(ph('readFile'), fmtMs), 'the first Blob.text() (main thread): the .nc, or its first 4 KiB from 1 MiB on (the worker reads the file)'],
-      ['page until the run request', range(ph('beforePost'), fmtMs), 'CodeMirror setText, the text copied out of the editor, panels'],
-      ['postMessage of the run request', range(ph('postMessage'), fmtMs), 'structured clone of the program text'],
-      ['to the worker', range(ph('toWorker'), fmtMs), 'delivery, deserialisation, queue (a file handed over: its read), until Session.run starts'],
-      ['Session.run (wasm)', range(ph('run'), fmtMs), 'text into wasm memory, parse, run, toolpath; summary out'],
-      ['result handled by the page', range(ph('resultToPage'), fmtMs), 'from the run\'s end: summary, diagnostics, editor marks'],
-      ['worker: wait for its animation frame', range(ph('waitFrame'), fmtMs), 'from the run\'s end to render()'],
-      ['Session.render (wasm)', range(ph('render'), fmtMs), 'records the drawing (canvas calls)'],
-      ['rasterisation of the frame', range(ph('raster'), fmtMs), 'Chromium/Skia paints the recorded paths (worker thread)'],
-    ];
-    out.push('');
-    out.push(table(rowsP));
-    const calls = t3.find((x) => x.calls)?.calls;
-    if (calls) out.push('', `Canvas calls of that drawing: ${calls.lineTo.toLocaleString('en')} lineTo, ${calls.moveTo.toLocaleString('en')} moveTo, ${calls.stroke} stroke.`);
-  }
-  if (t3.length) {
-    const m = (k) => stats(t3.map((x) => x.memory[k]));
-    const mem = [
-      ['target 3: memory (median over runs)', 'size'],
-      ['renderer process RSS before opening the file', range(m('rendererBefore'), fmtMB)],
-      ['renderer process peak RSS (sampled every 200 ms)', range(m('rendererPeak'), fmtMB)],
-      ['  peak minus the RSS before', range(stats(t3.map((x) => x.memory.rendererPeak - x.memory.rendererBefore)), fmtMB)],
-      ['  highest until the page\'s drawn message (run and render, before rasterisation)', range(m('rendererUntilDrawnMessage'), fmtMB)],
-      ['page JS heap before', range(m('pageHeapBefore'), fmtMB)],
-      ['page JS heap, highest sample', range(m('pageHeapPeak'), fmtMB)],
-      ['worker JS heap, highest sample', range(m('workerHeapPeak'), fmtMB)],
-      ['worker wasm memory after the run (its peak)', range(m('wasm'), fmtMB)],
-    ];
-    out.push('');
-    out.push(table(mem));
-    const lt = stats(t3.map((x) => x.main.total));
-    const ltn = stats(t3.map((x) => x.main.count));
-    const st = t3[0].storage;
-    out.push('');
-    out.push(`Main thread during target 3: ${range(ltn, fmtN(0))} long tasks, ${range(lt, fmtMs)} in all. `
-      + `localStorage writes (run 1): ${st.length ? st.map((e) => `${(e.chars / 1e6).toFixed(1)} M characters in ${fmtMs(e.ms)}`).join(', ') : 'none'}.`);
-    out.push(`Summary line of the page: ${t3.find((x) => x.summary)?.summary ?? '—'}`);
-  }
-  for (const [kind, label] of [['n', 'N number'], ['x', 'X word'], ['f', 'X word\'s decimals']]) {
-    const these = edits.filter((x) => (x.kind ?? 'n') === kind);
-    if (!these.length) continue;
-    const e = (k) => stats(these.map((x) => x[k]));
-    const rowsE = [
-      [`target 4 (${label}): where the time goes (median over edits)`, 'time'],
-      ['keystroke to run request (editor, the page\'s debounce if any)', range(e('debounce'), fmtMs)],
-      ['postMessage of the run request', range(e('postMessage'), fmtMs)],
-      ['to the worker (until Session.run starts)', range(e('toWorker'), fmtMs)],
-      ['Session.run (wasm)', range(e('run'), fmtMs)],
-      ['run end to result handled by the page', range(e('resultToPage'), fmtMs)],
-      ['worker: wait for its animation frame', range(e('waitFrame'), fmtMs)],
-      ['Session.render (wasm)', range(e('render'), fmtMs)],
-      ['rasterisation of the frame', range(e('raster'), fmtMs)],
-    ];
-    out.push('');
-    out.push(table(rowsE));
-    const calls = these.find((x) => x.calls)?.calls;
-    if (calls) out.push('', `Canvas calls of each drawing: ${calls.lineTo.toLocaleString('en')} lineTo, ${calls.moveTo.toLocaleString('en')} moveTo, ${calls.stroke} stroke.`);
-  }
-  if (edits.length) {
-    const timed = t4runs.flatMap((r) => r.edits).filter((x) => x.timedOut).length;
-    out.push('');
-    out.push(`Edited line: ${t4runs.find((r) => r.line)?.line ?? '—'} (a 7 typed after the first digit of its N number, then Backspace, and the same in its X word); `
-      + `for 4c ${t4runs.find((r) => r.plainLine)?.plainLine ?? '—'} (the same after its X word's point); `
-      + `${edits.length} edits${timed ? `, ${timed} not drawn within ${LIMIT.edit / 1000} s` : ''}. `
-      + `Summary line of the page: ${t4runs.find((r) => r.summary)?.summary ?? '—'}`);
-  }
-  for (const [name, list] of [[bigName, t5], [smallName, t5small]]) {
-    if (!list.length) continue;
-    const f = (g) => stats(list.map(g));
-    const rows5 = [
-      [`target 5 on ${name}: detail (median over runs)`, 'value'],
-      ['pan (drag): frames drawn per second', range(f((x) => x.pan.fps), fps)],
-      ['zoom (wheel): frames drawn per second', range(f((x) => x.zoom.fps), fps)],
-      ['  of which whole frames (the rest moved from the last whole frame)', range(f((x) => x.wholeFps), fps)],
-      ['time per frame, render() to rasterised (median of each run)', range(f((x) => x.frameMs?.median), fmtMs)],
-      ['  moved frames (median of each run)', range(f((x) => x.movingFrameMs?.median), fmtMs)],
-      ['  whole frames (median of each run)', range(f((x) => x.wholeFrameMs?.median), fmtMs)],
-      ['  of which Session.render (wasm)', range(f((x) => x.renderMs?.median), fmtMs)],
-      ['  of which rasterisation', range(f((x) => x.rasterMs?.median), fmtMs)],
-      ['frames begun and not finished 10 s after the input', range(f((x) => x.unfinished), fmtN(0))],
-      ['input events sent per second', range(f((x) => x.inputsPerSecond), fmtN(0))],
-      ['view messages the page sent the worker', range(f((x) => x.viewMessages), fmtN(0))],
-      ['main thread: animation frames per second', range(f((x) => x.mainFramesPerSecond), fmtN(1))],
-      ['main thread: longest task', range(f((x) => x.mainLongest), fmtMs)],
-      ['main thread: long tasks in all', range(f((x) => x.mainLongTaskTotal), fmtMs)],
-      ['localStorage writes', range(f((x) => x.storageWrites), fmtN(0))],
-    ];
-    out.push('');
-    out.push(table(rows5));
-  }
-  const problems = [...t3runs, ...t4runs].filter((r) => r.error).map((r) => `run ${r.run}: ${r.error}`);
-  const consoleProblems = [...new Set([...t3runs, ...t4runs].flatMap((r) => r.problems ?? []))];
-  if (problems.length) out.push(`\nProblems: ${problems.join('; ')}`);
-  if (consoleProblems.length) out.push(`\nConsole errors or failed requests: ${consoleProblems.slice(0, 5).join('; ')}`);
-  if (env.timedOut) out.push(`\nThe benchmark stopped after ${Math.round(LIMIT.total / 60000)} min: the figures above are what was measured by then.`);
-  return `${out.join('\n')}\n`;
-}
-
-function print(results) {
-  if (OPTS.json) process.stdout.write(`${JSON.stringify({ ...results, headline: headline(results) }, null, 2)}\n`);
-  else process.stdout.write(report(results));
-}
-
 // -------------------------------------------------------------------- main
 
 async function main() {
@@ -1194,7 +638,7 @@ async function main() {
   const big = generate(OPTS.blocks);
   const small = generate(OPTS.editBlocks);
   const server = await startServer(root ? { root } : {});
-  const results = { env, options: OPTS, big, small, t3runs: [], t4runs: [] };
+  const results = { env, options: OPTS, limits: LIMIT, big, small, t3runs: [], t4runs: [] };
   let finished = false;
   const watchdog = setTimeout(() => {
     if (finished) return;
