@@ -369,3 +369,17 @@ export function useBrowser() {
   };
   return ctx;
 }
+
+/** The bounding box (device px) of the pixels near `color`, or null. */
+export function bbox(png, color, tolerance = 30) {
+  let [x0, y0, x1, y1] = [Infinity, Infinity, -Infinity, -Infinity];
+  for (let y = 0; y < png.height; y += 1) {
+    for (let x = 0; x < png.width; x += 1) {
+      const i = (y * png.width + x) * 4;
+      if (Math.hypot(png.data[i] - color[0], png.data[i + 1] - color[1], png.data[i + 2] - color[2]) <= tolerance) {
+        [x0, y0, x1, y1] = [Math.min(x0, x), Math.min(y0, y), Math.max(x1, x), Math.max(y1, y)];
+      }
+    }
+  }
+  return x1 >= x0 ? { x0, y0, x1, y1, w: x1 - x0, h: y1 - y0 } : null;
+}

@@ -8,7 +8,7 @@
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 import {
-  COLORS, MARKS, shoot, shootCanvas, stateText, typeProgram, useBrowser, waitForRun, waitForView,
+  bbox, COLORS, MARKS, shoot, shootCanvas, stateText, typeProgram, useBrowser, waitForRun, waitForView,
 } from './harness.mjs';
 
 const { withPage } = useBrowser();
@@ -17,20 +17,6 @@ const { withPage } = useBrowser();
 // Y20: at the rapid's end the tool stands in the middle of the drawing, the
 // rapid 20 mm wide beside it.
 const PROGRAM = 'T1 M06\nG90 G00 X20. Y10.\nG01 X40. F200.\nY20.\nX0.\nM30\n';
-
-/** The bounding box (device px) of the pixels near `color`, or null. */
-function bbox(png, color, tolerance = 30) {
-  let [x0, y0, x1, y1] = [Infinity, Infinity, -Infinity, -Infinity];
-  for (let y = 0; y < png.height; y += 1) {
-    for (let x = 0; x < png.width; x += 1) {
-      const i = (y * png.width + x) * 4;
-      if (Math.hypot(png.data[i] - color[0], png.data[i + 1] - color[1], png.data[i + 2] - color[2]) <= tolerance) {
-        [x0, y0, x1, y1] = [Math.min(x0, x), Math.min(y0, y), Math.max(x1, x), Math.max(y1, y)];
-      }
-    }
-  }
-  return x1 >= x0 ? { x0, y0, x1, y1, w: x1 - x0, h: y1 - y0 } : null;
-}
 
 const step = (page, n) => waitForView(page, (v, a) => v.step === a, n);
 

@@ -9,7 +9,7 @@
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 import {
-  MARKS, countDifferences, decode, loadExample, shootCanvas, stateText, useBrowser, waitForView,
+  MARKS, countDifferences, decode, loadExample, shootCanvas, stateText, useBrowser, waitForView, bbox,
 } from './harness.mjs';
 
 const { withPage } = useBrowser();
@@ -18,20 +18,6 @@ const { withPage } = useBrowser();
 // and leaves up to Z50: stepped to block 3 (X60.) the tool stands at
 // X60 Y10 Z-5.
 const PROGRAM = 'T1 M06\nG90 G00 X20. Y10. Z5.\nG01 Z-5. F100.\nX60.\nY40.\nG00 Z50.\nM30\n';
-
-/** The bounding box (device px) of the pixels near `color`, or null. */
-function bbox(png, color, tolerance = 30) {
-  let [x0, y0, x1, y1] = [Infinity, Infinity, -Infinity, -Infinity];
-  for (let y = 0; y < png.height; y += 1) {
-    for (let x = 0; x < png.width; x += 1) {
-      const i = (y * png.width + x) * 4;
-      if (Math.hypot(png.data[i] - color[0], png.data[i + 1] - color[1], png.data[i + 2] - color[2]) <= tolerance) {
-        [x0, y0, x1, y1] = [Math.min(x0, x), Math.min(y0, y), Math.max(x1, x), Math.max(y1, y)];
-      }
-    }
-  }
-  return x1 >= x0 ? { x0, y0, x1, y1, w: x1 - x0, h: y1 - y0 } : null;
-}
 
 /** A mouse drag on the drawing from (x0, y0) by (dx, dy), in steps, with `modifier` held. */
 async function drag(page, [x0, y0], [dx, dy], modifier) {
