@@ -110,7 +110,7 @@ import { ROOT, launchBrowser, openPage, startServer, waitForRun } from '../tests
 import { orbitFrames } from './bench-orbit.mjs';
 import { buildRef } from './bench-ref.mjs';
 import { TimedOut, median, sleep, stats, within } from './bench-common.mjs';
-import { PAGE_INIT, instrumentWorker, renderers, sampleMemory, workerCdp } from './bench-instrument.mjs';
+import { PAGE_INIT, instrumentWorker, renderers, sampleMemory, workerCdp, workerFrames } from './bench-instrument.mjs';
 import { fmtMB, fmtMs, print } from './bench-report.mjs';
 
 // ---------------------------------------------------------------- options
@@ -448,15 +448,7 @@ async function panZoom(page) {
   });
   // Frames begun during the input may finish a little later (their time is kept, not counted in the rate).
   const last = zoom.t1;
-  await page.waitForFunction((t) => {
-    const W = window.__bench.worker;
-    const begun = W.filter((e) => e.name === 'render' && e.t <= t);
-    const lastBegun = begun[begun.length - 1];
-    return !lastBegun || W.some((e) => e.name === 'frame' && e.render === lastBegun.id);
-  }, last, { timeout: LIMIT.grace }).catch(() => {});
-  const W = await page.evaluate(() => window.__bench.worker);
-  const renders = new Map(W.filter((e) => e.name === 'render').map((e) => [e.id, e]));
-  const frames = W.filter((e) => e.name === 'frame').map((e) => ({ ...e, start: renders.get(e.render)?.t ?? e.t }));
+  const { renders, frames } = await workerFrames(page, last, LIMIT.grace);
   const isMoving = (f) => renders.get(f.render)?.moving === true;
   const each = (p) => {
     const done = frames.filter((f) => f.end >= p.t0 && f.end <= p.t1);

@@ -307,3 +307,22 @@ export function sampleMemory(pageCdp, worker, limit) {
   done.peak = () => ({ ...peak, byPid: new Map(peak.byPid) });
   return done;
 }
+
+/**
+ * The worker's renders (by id) and finished frames (each with the start of
+ * its render), once the last frame begun by page time `last` has finished
+ * (waited for at most `grace` ms: frames begun during the input may end a
+ * little later).
+ */
+export async function workerFrames(page, last, grace) {
+  await page.waitForFunction((t) => {
+    const W = window.__bench.worker;
+    const begun = W.filter((e) => e.name === 'render' && e.t <= t);
+    const lastBegun = begun[begun.length - 1];
+    return !lastBegun || W.some((e) => e.name === 'frame' && e.render === lastBegun.id);
+  }, last, { timeout: grace }).catch(() => {});
+  const W = await page.evaluate(() => window.__bench.worker);
+  const renders = new Map(W.filter((e) => e.name === 'render').map((e) => [e.id, e]));
+  const frames = W.filter((e) => e.name === 'frame').map((e) => ({ ...e, start: renders.get(e.render)?.t ?? e.t }));
+  return { renders, frames };
+}

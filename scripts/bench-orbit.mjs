@@ -4,6 +4,8 @@
 // scripts/bench-browser.mjs with its own helpers, so the two measure frames
 // the same way.
 
+import { workerFrames } from './bench-instrument.mjs';
+
 /**
  * Chooses the 3D (iso) view, waits for its whole frame, then Shift+drags on
  * #view round a circle for `seconds` (CDP Input.dispatchMouseEvent, up to
@@ -48,15 +50,7 @@ export async function orbitFrames(page, seconds, { now, within, stats, sleep, li
   })(), seconds * 1000 + limit.step, 'orbit');
   await within(Promise.all(inflight), limit.step, 'orbit');
   const t1 = await now(page);
-  await page.waitForFunction((t) => {
-    const W = window.__bench.worker;
-    const begun = W.filter((e) => e.name === 'render' && e.t <= t);
-    const lastBegun = begun[begun.length - 1];
-    return !lastBegun || W.some((e) => e.name === 'frame' && e.render === lastBegun.id);
-  }, t1, { timeout: limit.grace }).catch(() => {});
-  const W = await page.evaluate(() => window.__bench.worker);
-  const renders = new Map(W.filter((e) => e.name === 'render').map((e) => [e.id, e]));
-  const frames = W.filter((e) => e.name === 'frame').map((e) => ({ ...e, start: renders.get(e.render)?.t ?? e.t }));
+  const { renders, frames } = await workerFrames(page, t1, limit.grace);
   const done = frames.filter((f) => f.end >= t0 && f.end <= t1);
   const begun = frames.filter((f) => f.start >= t0 && f.start <= t1);
   const moving = (f) => renders.get(f.render)?.moving === true;
