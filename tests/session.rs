@@ -8,6 +8,7 @@
 //! shows: the JS shape of each export and the canvas pixels.
 
 mod common;
+use common::programs;
 use common::session::{SQUARE, SQUARE_SETUP, block, draw, run, square, view_change};
 use offsetlab::render::svg::SvgSurface;
 use offsetlab::session::program::{KEPT_PROGRAM, ProgramBuffer};
@@ -253,22 +254,9 @@ fn pick_returns_the_block_under_the_pointer() {
     assert_eq!(s.pick(400.0, 250.0, 100.0), -1);
 }
 
-/// A large program of feed moves and arcs, with N numbers.
-fn numbered_program(blocks: usize) -> String {
-    let mut program = String::from("N1 G90 G00 X0 Y0\nN2 G01 F100.\n");
-    for i in 0..blocks {
-        if i % 5 == 4 {
-            program.push_str(&format!("N{} G02 X{}. Y0 R30.\n", i + 3, (i % 40) + 2));
-        } else {
-            program.push_str(&format!("N{} G01 X{}. Y{}.\n", i + 3, i % 40, (i % 3) * 20));
-        }
-    }
-    program
-}
-
 #[test]
 fn an_edit_is_run_again_from_the_last_run_with_the_result_of_a_whole_run() {
-    let program = numbered_program(3000);
+    let program = programs::numbered_program(3000);
     let edits = [
         program.replacen("N1500 G01 X", "N1500 G01 X1", 1),
         program.replacen("N1500 ", "N15007 ", 1),
@@ -293,7 +281,7 @@ fn an_edit_is_run_again_from_the_last_run_with_the_result_of_a_whole_run() {
 
 #[test]
 fn a_frame_of_what_the_canvas_shows_is_not_drawn_again() {
-    let program = numbered_program(3000);
+    let program = programs::numbered_program(3000);
     let mut s = Session::new();
     run(&mut s, &program, None);
     assert!(draw(&mut s, 400, 300, 1.0));

@@ -1,4 +1,5 @@
-//! Test programs that more than one test file runs.
+//! Test programs that more than one test file runs (the native tests and
+//! the wasm tests, which include this file by its path).
 
 /// A bolt circle of six holes drilled by a WHILE loop (behaviour 20.13,
 /// 21.12): hole k at 60k degrees on a radius of 50.
@@ -32,3 +33,16 @@ O9010
 G00 X[#24+#18*COS[#1]] Y[#25+#18*SIN[#1]]
 M99
 ";
+
+/// A large program of feed moves and arcs, with N numbers.
+pub fn numbered_program(blocks: usize) -> String {
+    let mut program = String::from("N1 G90 G00 X0 Y0\nN2 G01 F100.\n");
+    for i in 0..blocks {
+        if i % 5 == 4 {
+            program.push_str(&format!("N{} G02 X{}. Y0 R30.\n", i + 3, (i % 40) + 2));
+        } else {
+            program.push_str(&format!("N{} G01 X{}. Y{}.\n", i + 3, i % 40, (i % 3) * 20));
+        }
+    }
+    program
+}

@@ -383,3 +383,16 @@ export function bbox(png, color, tolerance = 30) {
   }
   return x1 >= x0 ? { x0, y0, x1, y1, w: x1 - x0, h: y1 - y0 } : null;
 }
+
+/** A mouse drag on the drawing from (x0, y0) by (dx, dy), in steps, with `modifier` held. */
+export async function drag(page, [x0, y0], [dx, dy], modifier) {
+  const box = await page.locator('#view').boundingBox();
+  if (modifier) await page.keyboard.down(modifier);
+  await page.mouse.move(box.x + x0, box.y + y0);
+  await page.mouse.down();
+  for (let i = 1; i <= 10; i += 1) {
+    await page.mouse.move(box.x + x0 + (dx * i) / 10, box.y + y0 + (dy * i) / 10);
+  }
+  await page.mouse.up();
+  if (modifier) await page.keyboard.up(modifier);
+}

@@ -9,7 +9,7 @@
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 import {
-  MARKS, countDifferences, decode, loadExample, shootCanvas, stateText, useBrowser, waitForView, bbox,
+  drag, MARKS, countDifferences, decode, loadExample, shootCanvas, stateText, useBrowser, waitForView, bbox,
 } from './harness.mjs';
 
 const { withPage } = useBrowser();
@@ -18,19 +18,6 @@ const { withPage } = useBrowser();
 // and leaves up to Z50: stepped to block 3 (X60.) the tool stands at
 // X60 Y10 Z-5.
 const PROGRAM = 'T1 M06\nG90 G00 X20. Y10. Z5.\nG01 Z-5. F100.\nX60.\nY40.\nG00 Z50.\nM30\n';
-
-/** A mouse drag on the drawing from (x0, y0) by (dx, dy), in steps, with `modifier` held. */
-async function drag(page, [x0, y0], [dx, dy], modifier) {
-  const box = await page.locator('#view').boundingBox();
-  if (modifier) await page.keyboard.down(modifier);
-  await page.mouse.move(box.x + x0, box.y + y0);
-  await page.mouse.down();
-  for (let i = 1; i <= 10; i += 1) {
-    await page.mouse.move(box.x + x0 + (dx * i) / 10, box.y + y0 + (dy * i) / 10);
-  }
-  await page.mouse.up();
-  if (modifier) await page.keyboard.up(modifier);
-}
 
 const near = (a, b) => Math.abs(a - b) < 0.01;
 

@@ -8,24 +8,11 @@
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 import {
-  countDifferences, decode, loadExample, shoot, shootCanvas, useBrowser, waitForView,
+  countDifferences, decode, drag, loadExample, shoot, shootCanvas, useBrowser, waitForView,
 } from './harness.mjs';
 
 const { withPage } = useBrowser();
 const drawn = (c) => c.actualFeed > 200;
-
-/** A mouse drag on the drawing from (x0, y0) by (dx, dy), in steps, with `modifier` held. */
-async function drag(page, [x0, y0], [dx, dy], modifier) {
-  const box = await page.locator('#view').boundingBox();
-  if (modifier) await page.keyboard.down(modifier);
-  await page.mouse.move(box.x + x0, box.y + y0);
-  await page.mouse.down();
-  for (let i = 1; i <= 10; i += 1) {
-    await page.mouse.move(box.x + x0 + (dx * i) / 10, box.y + y0 + (dy * i) / 10);
-  }
-  await page.mouse.up();
-  if (modifier) await page.keyboard.up(modifier);
-}
 
 describe('3D view', () => {
   test('the iso preset, Shift+drag and the Orbit button turn the view; the link keeps the angles', async () => {

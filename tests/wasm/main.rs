@@ -15,6 +15,10 @@ use web_sys::{OffscreenCanvas, OffscreenCanvasRenderingContext2d};
 
 wasm_bindgen_test_configure!(run_in_browser);
 
+#[allow(dead_code)]
+#[path = "../common/programs.rs"]
+mod programs;
+
 /// Seed 000 (spec's worked example): the G45–G48 square, register 01 = 6.
 const SQUARE: &str = include_str!("../data/seed000_square.nc");
 
@@ -482,22 +486,9 @@ fn stringify(value: &JsValue) -> String {
 
 mod links;
 
-/// A large program of feed moves and arcs, with N numbers.
-fn numbered_program(blocks: usize) -> String {
-    let mut program = String::from("N1 G90 G00 X0 Y0\nN2 G01 F100.\n");
-    for i in 0..blocks {
-        if i % 5 == 4 {
-            program.push_str(&format!("N{} G02 X{}. Y0 R30.\n", i + 3, (i % 40) + 2));
-        } else {
-            program.push_str(&format!("N{} G01 X{}. Y{}.\n", i + 3, i % 40, (i % 3) * 20));
-        }
-    }
-    program
-}
-
 #[wasm_bindgen_test]
 fn a_run_that_changes_nothing_drawn_leaves_the_canvas_as_it_is() {
-    let program = numbered_program(3000);
+    let program = programs::numbered_program(3000);
     let mut s = Session::new();
     run(&mut s, program.clone(), JsValue::NULL);
     let canvas = OffscreenCanvas::new(10, 10).expect("OffscreenCanvas");
@@ -549,7 +540,7 @@ fn an_edit_is_painted_where_it_changed_with_the_pixels_of_a_whole_frame() {
     // bounds, the canvas is painted only inside the box that changed
     // (render::display); the pixels are those of a whole frame — with the
     // current block's marker and highlight too, and when they move.
-    let program = numbered_program(3000);
+    let program = programs::numbered_program(3000);
     let edited = program.replacen("N1500 G01 X17.", "N1500 G01 X17.5", 1);
     assert_ne!(edited, program);
     // (first step, the program then, its step, whether the top left corner
@@ -613,7 +604,7 @@ fn typing_back_and_forth_across_views_paints_the_pixels_of_a_whole_frame() {
     // is made on the pixels of the one before the last (raster::keep::Older)
     // and put on the canvas whole. Each frame is pixel for pixel a new
     // session's whole frame.
-    let program = numbered_program(3000);
+    let program = programs::numbered_program(3000);
     let wide = program.replacen("N1500 G01 X17.", "N1500 G01 X1700.", 1);
     let edited = program.replacen("N1500 G01 X17.", "N1500 G01 X17.5", 1);
     let wider = program.replacen("N1500 G01 X17.", "N1500 G01 X1750.", 1);
