@@ -229,6 +229,35 @@ fn behaviour10_17_the_cutter_circle_in_the_3d_view() {
     all_in_plot(&f, &t);
 }
 
+/// Behaviour 10.17: the G17 compensation's circle in the side views is
+/// the circle seen edge on: a solid line D01 × 2 = 10 long, centred on the
+/// tool at its height. At step 2 (the corner at (−5, 45), Z 0) the XZ
+/// view's line runs from X −10 to X 0 at Z 0, the YZ view's from Y 40 to
+/// Y 50.
+#[test]
+fn behaviour10_17_the_cutter_circle_edge_on_in_the_side_views() {
+    let text =
+        "G00 X-20. Y-20.\nG01 G41 D01 X0 Y0 F100.\nY40.\nX60.\nY0\nX0\nG40 X-20. Y-20.\nM30\n";
+    let mut s = session(text, r#"{"offsets":{"01":5.0}}"#);
+    for (plane, a, b) in [
+        ("XZ", [-10.0, 45.0, 0.0], [0.0, 45.0, 0.0]),
+        ("YZ", [-5.0, 40.0, 0.0], [-5.0, 50.0, 0.0]),
+    ] {
+        view(&mut s, &format!(r#"{{"plane":"{plane}","step":2}}"#));
+        let (f, t) = drawn(&s);
+        let solid: Vec<_> = t.paths.iter().filter(|p| !p.0).map(|p| &p.1).collect();
+        assert_eq!(solid.len(), 1, "{plane}: {:?}", t.paths);
+        let at = |p: [f64; 3]| {
+            let (u, v) = f.projection.project(&p);
+            f.transform.to_screen(u, v)
+        };
+        assert_eq!(solid[0].len(), 2, "{plane}: {:?}", solid[0]);
+        near(solid[0][0], at(a));
+        near(solid[0][1], at(b));
+        all_in_plot(&f, &t);
+    }
+}
+
 /// Behaviour 10.18 with 10.13: the lathe's nose circle (tool 1, R 0.8,
 /// tip 3 at X40 Z2: its centre at X41.6 Z2.8, behaviour 10.13) is drawn
 /// dashed in the lathe's 3D view as the projected circle in the ZX plane:

@@ -2,7 +2,7 @@
 //! the tool list's tool dashed — on the mill its cylinder, D wide and L
 //! long up the spindle from the tool point, seen in any view; on the lathe
 //! the insert's nose circle — and the compensation's circle solid, from
-//! the register, in its plane's view and in the 3D view. A circle is drawn
+//! the register, in every view of its machine's space. A circle is drawn
 //! as the projection makes it: a circle where its plane faces the screen,
 //! a line where it is seen edge on, an ellipse between. Also how far these
 //! reach beyond the path, which the fit leaves room for (10.5).
@@ -230,8 +230,8 @@ pub(super) fn cylinder(f: &Frame, point: [f64; 3], radius: f64, length: f64) -> 
 /// The tool marker at the current block's actual end point and a ring at
 /// its programmed end point; round the marker, the tool list's tool
 /// (dashed) and the compensation's circle (solid): a circle in the view
-/// of its plane and in the 3D view, the mill tool's cylinder in every
-/// mill view.
+/// of its plane, a line in the other plane views, projected in the 3D
+/// view; the mill tool's cylinder in every mill view.
 pub fn draw_marker(
     s: &mut impl Surface,
     f: &Frame,
@@ -252,7 +252,7 @@ pub fn draw_marker(
         let centre = add(actual, c.centre, 1.0);
         let shapes = match (c.length, circle_axes(c.plane)) {
             (Some(length), _) => cylinder(f, centre, c.radius, length),
-            (None, Some(axes)) if c.plane == f.plane || f.plane.is_orbit() => {
+            (None, Some(axes)) if drawn_in(c.plane, f.plane) => {
                 seen(f, centre, axes, c.radius).into_iter().collect()
             }
             _ => Vec::new(),
@@ -273,6 +273,15 @@ pub fn draw_marker(
         tool_symbol(s, f.theme, a);
     }
     s.end_group();
+}
+
+/// Whether a circle in `circle`'s plane is drawn in the view `view`
+/// (behaviour 10.17): in every view of the same machine's space — its own
+/// plane's view a circle, the other plane views a line (edge on), the 3D
+/// view as projected — but not in the lathe's face view, whose up is the
+/// polar C of the toolpath's Y, not a length of the ZX plane.
+fn drawn_in(circle: Plane, view: Plane) -> bool {
+    circle.is_lathe() == view.is_lathe() && view != Plane::LatheXc
 }
 
 /// The box of a world box's eight corners through the frame's plane.
@@ -430,6 +439,26 @@ mod tests {
         near(b, (110.0, 100.0));
         // Under half a pixel: nothing.
         assert_eq!(seen(&f, [0.0; 3], axes, 0.1), None);
+    }
+
+    /// Behaviour 10.17: which views draw the compensation's circle: every
+    /// view of its machine's space but the lathe's face view.
+    #[test]
+    fn behaviour10_17_the_compensation_circle_is_drawn_in_every_view_of_its_space() {
+        let orbit = Plane::Orbit(Angles::ISO);
+        let lathe_orbit = Plane::LatheOrbit(Angles::ISO);
+        for circle in [Plane::Xy, Plane::Xz, Plane::Yz] {
+            for view in [Plane::Xy, Plane::Xz, Plane::Yz, orbit] {
+                assert!(drawn_in(circle, view), "{circle:?} in {view:?}");
+            }
+            for view in [Plane::LatheZx, Plane::LatheXc, lathe_orbit] {
+                assert!(!drawn_in(circle, view), "{circle:?} in {view:?}");
+            }
+        }
+        assert!(drawn_in(Plane::LatheZx, Plane::LatheZx));
+        assert!(drawn_in(Plane::LatheZx, lathe_orbit));
+        assert!(!drawn_in(Plane::LatheZx, Plane::LatheXc));
+        assert!(!drawn_in(Plane::LatheZx, Plane::Xy));
     }
 
     /// Behaviour 10.5: the box the fit holds grows by the reach. The mill's
