@@ -132,8 +132,12 @@ describe('cutter compensation lessons', () => {
         (_, p) => countColor(p, COLORS.actualFeed) > 150 && countColor(p, MARKS.tool) > 300);
       assert.ok(countColor(png, COLORS.actualFeed) > 150, 'the path up to the alarm is drawn');
       assert.ok(countColor(png, MARKS.tool) > 300, 'with the cutter at its end');
-      // The message, with its line, in the diagnostics list.
+      // The message, with its line, in the diagnostics list; a click on it
+      // selects the block and shows its start (11:1), not the end of its
+      // long comment.
       await item.click();
+      await page.waitForFunction(() => window.offsetlab.selection().includes('N45'));
+      assert.ok(await page.locator('.cm-scroller').evaluate((e) => e.scrollLeft) < 8, 'scrolled to the line start');
       await shoot(page, 'lesson-cutter-pocket-page');
     });
   });

@@ -290,7 +290,13 @@ export function createEditor(parent, { doc = '', label = 'Program', readOnly = f
     if (line < 1 || line > doc.lines) return;
     const anchor = offsetAt(doc, line, column);
     const head = Math.max(anchor, offsetAt(doc, line, endColumn ?? column));
-    view.dispatch({ selection: { anchor, head }, scrollIntoView: true, userEvent: 'select' });
+    // Scrolled to the start, not the head: a block's range ends where a
+    // long comment does, and its line:column is where it starts.
+    view.dispatch({
+      selection: { anchor, head },
+      effects: EditorView.scrollIntoView(anchor, { y: 'nearest', x: 'nearest' }),
+      userEvent: 'select',
+    });
     view.focus();
   }
 
