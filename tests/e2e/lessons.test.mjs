@@ -28,7 +28,9 @@ const field = (page, register, name) => page.locator(`#offsets input[data-field=
 
 /** Puts the cursor on `line` (1-based): the current block follows it. */
 async function cursorOn(page, line) {
-  await page.locator('.cm-line').nth(line - 1).click();
+  // At the line's start: a click at the middle of a line wider than the
+  // editor would scroll it sideways first, which no user does.
+  await page.locator('.cm-line').nth(line - 1).click({ position: { x: 2, y: 4 } });
 }
 
 /** The 1-based line of the program text that starts with `n` (a sequence number). */
