@@ -326,16 +326,3 @@ fn behaviour16_18_canned_cycles_ignore_the_compensation() {
     let (code, line, _) = alarm("G01 G41 D01 X50. F100.\nG81 X60. Y0 Z-5. R2.", &r5());
     assert_eq!((code, line), ("cutter-in-cycle", 2));
 }
-
-// ----- 16.19 chamfers and corner rounding --------------------------------
-
-#[test]
-fn behaviour16_19_chamfer_and_corner_words_in_compensation_are_refused() {
-    // In the start-up block: PS0039.
-    let (code, _, message) = alarm("G01 G41 D01 X50. ,C2. F100.\nY50.", &r5());
-    assert_eq!(code, "cutter-corner-words");
-    assert!(message.contains("PS0039"), "{message}");
-    // In offset mode: not modelled yet, said so.
-    let (code, line, _) = alarm("G01 G41 D01 X50. F100.\nX100. ,C2.\nY50.", &r5());
-    assert_eq!((code, line), ("corner-not-modelled", 2));
-}

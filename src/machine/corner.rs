@@ -433,7 +433,7 @@ impl Machine {
     }
 
     /// "X50.000 Y0.000": a point's coordinates in the selected plane.
-    fn plane_point(&self, p: Xyz) -> String {
+    pub(super) fn plane_point(&self, p: Xyz) -> String {
         let (ia, ib, _) = self.state.modal.plane.axes();
         let names = ['X', 'Y', 'Z'];
         let units = self.units();

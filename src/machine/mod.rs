@@ -401,14 +401,17 @@ impl Machine {
         self.span = block.span;
         self.overflow = false;
         let after_corner = self.corner_cut.then(|| self.run_from_corner());
-        match self.setup.machine {
-            MachineKind::Mill => self.mill_block(block, out, ahead)?,
-            MachineKind::Lathe => self.lathe_block(block, out, ahead, program)?,
-        }
+        let ran = match self.setup.machine {
+            MachineKind::Mill => self.mill_block(block, out, ahead),
+            MachineKind::Lathe => self.lathe_block(block, out, ahead, program),
+        };
         if let Some(end) = after_corner {
             Self::start_at_corner_end(out, end);
+            // Not left for a later block when this one fails and the run
+            // goes on (setting continue_past_errors).
             self.corner_end = None;
         }
+        ran?;
         if self.overflow {
             return Err(self.error(
                 "too-many-moves",

@@ -56,7 +56,10 @@ impl Machine {
         // The copy wants programmed moves: no vector to solve arcs with,
         // and plain moves take the fast path.
         probe.state.cutter.vector = [0.0; 3];
-        probe.corner_cut = false;
+        // After a `,C`/`,R` corner the next block runs from the virtual
+        // corner and its move starts at the cut's end (behaviour 2.32,
+        // 16.19): the copy keeps the corner for it (and sets its end
+        // when it runs from there).
         probe.corner_end = None;
         probe.moves_left = usize::MAX;
         probe.update_special();
@@ -142,7 +145,10 @@ impl Machine {
     /// the copy reads it then.
     pub(super) fn plain_next_path(&self, b: &Block, motion: Motion) -> Option<Path> {
         // The lathe's blocks (diameter X, U/W) are read on the copy.
+        // After a `,C`/`,R` corner the words count from the virtual
+        // corner (behaviour 2.32): read on the copy.
         if b.error
+            || self.corner_cut
             || self.nose_lathe()
             || !self.plain_words
             || self.state.modal.cycle.is_some()
@@ -216,8 +222,9 @@ impl Machine {
     /// changes nothing the next block's path depends on but the motion
     /// mode (no code but group 01's, no plane coordinate changed).
     fn plain_past_still(&self, ahead: &mut dyn Ahead) -> Option<Next> {
-        // The lathe's blocks (diameter X, U/W) are read on the copy.
-        if self.nose_lathe() {
+        // The lathe's blocks (diameter X, U/W) are read on the copy, and
+        // so are the blocks after a `,C`/`,R` corner (behaviour 2.32).
+        if self.nose_lathe() || self.corner_cut {
             return None;
         }
         // The copy stops at a block that takes the tool beyond any

@@ -4,6 +4,7 @@
 
 use crate::diag::Diagnostic;
 use crate::machine::Machine;
+use crate::machine::corner::CORNER_WORDS;
 use crate::offsets::cutter::Phase;
 use crate::syntax::codes::{CannedCycle, CutterCompensation, NonModal};
 use crate::syntax::{Address, Block};
@@ -42,22 +43,11 @@ impl Machine {
                 ),
             ));
         }
-        if let Some(w) = b.get(Address::CommaC).or_else(|| b.get(Address::CommaR)) {
-            let changes = codes.cutter().is_some_and(|c| c != now.mode);
-            let why = if changes || !engaged {
-                "a chamfer or corner rounding cannot be made in a block that starts, cancels or changes cutter compensation (Fanuc alarm PS0039)"
-            } else {
-                "a chamfer or corner rounding in cutter compensation is not modelled yet"
-            };
-            return Err(self.error(
-                if changes || !engaged {
-                    "cutter-corner-words"
-                } else {
-                    "corner-not-modelled"
-                },
-                w.span,
-                format!("{}: {why}", w.address.letter()),
-            ));
+        // In offset mode the corner is cut and compensated (behaviour
+        // 16.19); not where the mode starts, ends or changes side.
+        if b.holds_any(&CORNER_WORDS) && (!engaged || codes.cutter().is_some_and(|c| c != now.mode))
+        {
+            return Err(self.corner_in_cancel(b));
         }
         if codes.non_modal() == Some(NonModal::CornerArc) {
             let on = now.mode != CutterCompensation::Cancel
@@ -138,5 +128,20 @@ impl Machine {
             ));
         }
         Ok(())
+    }
+
+    /// `,C`/`,R` in a block that starts, cancels (G40 or D00) or changes
+    /// the side of the compensation (behaviour 16.19, Fanuc PS0039).
+    #[cold]
+    pub(super) fn corner_in_cancel(&self, b: &Block) -> Diagnostic {
+        let w = b.get(Address::CommaC).or_else(|| b.get(Address::CommaR));
+        self.error(
+            "cutter-corner-words",
+            w.map_or(b.span, |w| w.span),
+            format!(
+                "{}: a chamfer or corner rounding cannot be made in a block that starts, cancels or changes cutter compensation (Fanuc alarm PS0039)",
+                w.map_or(",C", |w| w.address.letter())
+            ),
+        )
     }
 }

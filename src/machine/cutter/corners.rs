@@ -138,6 +138,66 @@ impl Machine {
         self.apply_corner(b, out, i, corner, true)
     }
 
+    /// A block in offset mode whose `,C` or `,R` cut its corner (behaviour
+    /// 16.19): its moves `i` (to the chamfer's or the round's start) and
+    /// `i + 1` (the chamfer or the round) are compensated as two blocks
+    /// would be, the first ending at its corner with the chamfer or the
+    /// round, the second at its corner with the next block's move, which
+    /// starts where the chamfer or the round ends.
+    pub(super) fn offset_corner_cut(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+        ahead: &mut dyn Ahead,
+        i: usize,
+        before: crc::CutterState,
+        words: Words,
+    ) -> Result<(), Diagnostic> {
+        let o = words.offset;
+        let (Some(first), Some(second)) = (
+            self.move_path(&out.moves[i], [0.0; 3]),
+            self.move_path(&out.moves[i + 1], [0.0; 3]),
+        ) else {
+            return Err(self.error(
+                "corner-not-modelled",
+                b.span,
+                "the chamfer or corner rounding takes this block's whole move: in cutter compensation the move before it must be left (not modelled)",
+            ));
+        };
+        let outside = match self.setup.settings.cutter_outside_corner() {
+            CutterOutsideCorner::Vectors => Outside::Vectors,
+            CutterOutsideCorner::Arc => Outside::Arc,
+        };
+        let corner = self.corner_or_alarm(b, &first, &second, o, o, Rule::Offset(outside))?;
+        // The sentence of a corner between two blocks, said of the cut.
+        let cut_start = out.moves[i + 1].programmed_from;
+        out.note(|| {
+            let cut = if second.is_arc() {
+                "the corner round"
+            } else {
+                "the chamfer"
+            };
+            format!(
+                "at {}, where {cut} starts: {}",
+                self.plane_point(cut_start),
+                crc::corner_note(&words, &corner, &first, &second, o)
+                    .replace("the next block", cut)
+                    .replace("of the end point", "of that point")
+            )
+        });
+        // The first move ends at the chamfer's or the round's start, with
+        // the second set aside so that the corner's own steps come between.
+        let cut = out.moves.pop().expect("the chamfer's or the round's move");
+        let end = std::mem::replace(&mut self.state.programmed, cut.programmed_from);
+        let made = self.apply_corner(b, out, i, &corner, true);
+        let from = self.actual();
+        self.state.programmed = end;
+        made?;
+        out.moves.push(crate::machine::Move { from, ..cut });
+        let k = out.moves.len() - 1;
+        self.offset_move(b, out, ahead, (k, second), before, words)
+    }
+
     /// The corner by `rule`, or the alarm when an intersection it needs
     /// does not exist (behaviour 16.12: Fanuc PS0033).
     #[inline]

@@ -20,6 +20,7 @@ mod corners;
 mod nose;
 
 use super::arc::P2;
+use super::corner::CORNER_WORDS;
 use super::modal::FeedMode;
 use super::words::MOTION_WORDS;
 use super::{Ahead, Machine, Move, MoveKind, Out};
@@ -245,16 +246,22 @@ impl Machine {
         // the corner moves their ends below.
         let saved = before.vector;
         self.state.cutter.vector = [0.0; 3];
+        // `,C`/`,R` in offset mode (behaviour 16.19): the block cuts its
+        // corner on the programmed path, which is then compensated.
+        let corner_words = !lathe && b.holds_any(&CORNER_WORDS);
         let ran = if lathe {
             self.nose_run(b, out)
         } else if plain && self.state.modal.feed_mode != FeedMode::InverseTime {
             self.motion_block(b, out)
+        } else if corner_words {
+            self.corner_block(b, out, ahead)
         } else {
             self.mill_general(b, out)
         };
         self.state.cutter.vector = saved;
         carry(&mut out.moves[moves_before..], saved);
         ran?;
+        self.start_at_cut_end(out);
         let mode = self.state.cutter.mode;
         // The register is read when the block runs (behaviour 4.12); a block
         // without D or a group 07 code reads the one the block before read,
@@ -367,9 +374,16 @@ impl Machine {
             return Ok(());
         }
         if o == 0.0 {
+            if corner_words {
+                // D00 cancels: as G40 (behaviour 16.19, Fanuc PS0039).
+                return Err(self.corner_in_cancel(b));
+            }
             return self.cancel(b, out, own, before, (start, moves_before));
         }
         self.state.cutter.phase = Phase::Offset;
+        if corner_words && self.corner_cut && out.moves.len() == moves_before + 2 {
+            return self.offset_corner_cut(b, out, ahead, moves_before, before, words);
+        }
         if let Some((i, path)) = own {
             return self.offset_move(b, out, ahead, (i, path), before, words);
         }
@@ -392,6 +406,17 @@ impl Machine {
 }
 
 impl Machine {
+    /// The block after a `,C`/`,R` corner runs from the virtual corner
+    /// (behaviour 2.32); its move starts where the chamfer or the round
+    /// ended, and is compensated from there (behaviour 16.19). The run
+    /// sets the same start again after the block (a no-op then).
+    #[inline(always)]
+    fn start_at_cut_end(&self, out: &mut Out) {
+        if let Some(end) = self.corner_end {
+            Self::start_at_corner_end(out, end);
+        }
+    }
+
     /// True in offset mode on the mill where a block of motion words alone
     /// runs as [`Machine::offset_plain`] says: G41/G42 with a radius read
     /// from the D the block keeps, no canned cycle, no inverse time feed,
@@ -431,6 +456,7 @@ impl Machine {
         self.state.cutter.vector = saved;
         carry(&mut out.moves[moves_before..], saved);
         ran?;
+        self.start_at_cut_end(out);
         self.state.cutter.tip = None;
         let mode = self.state.cutter.mode;
         let o = self.cutter_offset(mode, self.state.cutter.radius);
