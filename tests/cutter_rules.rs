@@ -222,8 +222,55 @@ fn behaviour16_14_g41_with_i_j_and_no_move_sets_the_vector_from_their_direction(
     same(m.to, [0.0, 5.0, 0.0]);
     assert_eq!(at_line(&r, text, 1).cutter.unwrap().phase, "start_up");
     same(end(&r, 2), [50.0, 5.0, 0.0]);
-    // With a move, I/J/K in a G41 block are refused (not modelled).
-    assert_eq!(alarm("G01 G41 D01 X50. I1. F100.", &r5()).0, "cutter-ijk");
+    // On the lathe, with a move, they are not modelled.
+    let mut lathe = lathe(&[]);
+    lathe.set_register("01=R0.8,T3").unwrap();
+    let (code, _, _) = alarm("T0101\nG01 G42 X40. Z0 I1. F0.2\nZ-20.", &lathe);
+    assert_eq!(code, "cutter-ijk");
+    // Nor in a G40 block without a move.
+    let (code, line, _) = alarm("G01 G41 D01 X50. F100.\nX100.\nG40 I1. J0", &r5());
+    assert_eq!((code, line), ("cutter-ijk", 3));
+}
+
+#[test]
+fn behaviour16_14_a_g41_block_with_a_move_and_i_j_ends_perpendicular_to_their_direction() {
+    // Fanuc 15i-MA, the IJ-type vector: G41 X0 Y0 I1. J1. from (−20, 0)
+    // ends 5 left of the direction (1, 1)/√2, at (−5/√2, 5/√2), whatever
+    // the next block (X50. would have made it (0, 5)), and without the
+    // start-up type. The next block runs from there to its own corner.
+    let h = 5.0 * std::f64::consts::FRAC_1_SQRT_2;
+    let text = "G00 X-20.\nG01 G41 D01 X0 I1. J1. F100.\nX50.\nY-40.\nG40 X0";
+    let r = ok(text, &r5());
+    same(end(&r, 2), [-h, h, 0.0]);
+    assert_eq!(at_line(&r, text, 2).cutter.unwrap().phase, "start_up");
+    let m = r.moves.iter().find(|m| m.line == 3).unwrap();
+    same(m.from, [-h, h, 0.0]);
+    same(m.to, [55.0, 5.0, 0.0]);
+    // In offset mode G42 Y−40. I0 J−1. after X50.: the side changes; the
+    // block ends 5 right of −Y, at (45, −40), with no corner to the next.
+    let text = "G00 X-20.\nG01 G41 D01 X0 F100.\nX50.\nG42 Y-40. I0 J-1.\nX100. Y-60.\nG40 X120.";
+    let r = ok(text, &r5());
+    same(end(&r, 4), [45.0, -40.0, 0.0]);
+    let m = r.moves.iter().find(|m| m.line == 5).unwrap();
+    same(m.from, [45.0, -40.0, 0.0]);
+}
+
+#[test]
+fn behaviour16_14_a_g40_block_with_i_j_gives_the_direction_the_block_before_ends_on() {
+    // G42 along +X at y = −45 (X100. from (50, −40)); G40 X120. Y−60. I1.
+    // J−1.: the block before ends where y = −45 meets the offset of the
+    // direction (1, −1) from (100, −40), 5 to its right: the line
+    // x + y = 60 − 5√2, at x = 105 − 5√2. Without I/J (type A) it ends at
+    // (100, −45).
+    let x = 105.0 - 5.0 * std::f64::consts::SQRT_2;
+    let base = "G00 X50. Y-20.\nG01 G42 D01 Y-40. F100.\nX100.\n";
+    let r = ok(&format!("{base}G40 X120. Y-60. I1. J-1.\nM30"), &r5());
+    same(end(&r, 3), [x, -45.0, 0.0]);
+    same(end(&r, 4), [120.0, -60.0, 0.0]);
+    let text = explain(&r, 3);
+    assert!(text.contains("with I/J/K"), "{text}");
+    let plain = ok(&format!("{base}G40 X120. Y-60.\nM30"), &r5());
+    same(end(&plain, 3), [100.0, -45.0, 0.0]);
 }
 
 // ----- 16.15 mirror image -------------------------------------------------

@@ -99,8 +99,9 @@ const MILL: &[Kind] = &[
         before: "G00 X-10. Y0\n",
         block: "G01 G41 D01 X10. Y5. F100.",
         after: "X20. Y5.\nG40 X30.\n",
-        // I/J/K with a move: `cutter-ijk` (behaviour 16.14).
-        refused: "I J K R Q P L",
+        // I/J give the IJ-type vector's direction (behaviour 16.14); K is
+        // not a direction in G17 (`cutter-ijk`).
+        refused: "K R Q P L",
     },
     Kind {
         name: "G41 with I/J and no move (the vector's direction)",

@@ -20,9 +20,7 @@ use super::Machine;
 use super::modal::Motion;
 use crate::diag::Diagnostic;
 use crate::setup::MachineKind;
-use crate::syntax::codes::{
-    CannedCycle, Code, CutterCompensation, Group, MCode, NonModal, RotationMode, ScalingMode,
-};
+use crate::syntax::codes::{CannedCycle, Code, Group, MCode, NonModal, RotationMode, ScalingMode};
 use crate::syntax::{Address, Block, WordKind};
 
 use Address::*;
@@ -268,14 +266,10 @@ impl Machine {
         if c.rotation() == Some(RotationMode::Start) {
             add(&[R]);
         }
-        // G41/G42 read I/J/K as the direction of the vector (behaviour
+        // G40/G41/G42 read I/J/K as the direction of the vector (behaviour
         // 16.14); where they cannot, the compensation refused them first
         // (`cutter-ijk`).
-        if matches!(
-            c.cutter(),
-            Some(CutterCompensation::Left | CutterCompensation::Right)
-        ) && matches!(path, Path::Line(_))
-        {
+        if c.cutter().is_some() && matches!(path, Path::Line(_)) {
             add(&[I, J, K]);
         }
         // The lathe's positioning codes refuse a T code themselves

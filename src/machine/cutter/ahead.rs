@@ -89,6 +89,25 @@ impl Machine {
             }
             let before = probe.state.cutter;
             let radius_before = probe.cutter_radius();
+            // G40 with I/J/K and a move (behaviour 16.14): the block before
+            // ends on the direction they give from its end, as if a block
+            // went on that way in the mode and radius it has.
+            if codes.cutter() == Some(CutterCompensation::Cancel)
+                && before.mode != CutterCompensation::Cancel
+                && !probe.nose_lathe()
+                && !codes.motion().unwrap_or(probe.state.modal.motion).is_arc()
+                && probe.names_plane_axis(next)
+                && let Some(d) = probe.ijk_direction(next)
+            {
+                let shift = sub3(probe.state.coords.zero, self.state.coords.zero);
+                let at = self.in_plane(add3(probe.state.programmed, shift));
+                let path = Path::Line {
+                    from: at,
+                    to: [at[0] + d[0], at[1] + d[1]],
+                };
+                let offset = probe.cutter_offset(before.mode, radius_before);
+                return Next::Move { path, offset };
+            }
             scratch.clear();
             let index = self.index.saturating_add(1 + k as u32);
             let flow = match probe.execute(

@@ -157,6 +157,33 @@ impl Machine {
         Ok(())
     }
 
+    /// A G41/G42 block that moves in a straight line with I/J/K (behaviour
+    /// 16.14; Fanuc 15i-MA, "If I, J, and K are specified in G00/G01 mode
+    /// block"): the IJ-type vector, its move `i` ends perpendicular to the
+    /// direction they give, the offset's length to the left (G41) or right
+    /// (G42), with no intersection with the next block and, at the
+    /// start-up, whatever the start-up type.
+    pub(super) fn ij_vector_end(
+        &mut self,
+        out: &mut Out,
+        i: usize,
+        d: P2,
+        words: Words,
+        what: &str,
+    ) -> Result<(), Diagnostic> {
+        let n = geo::left(d);
+        let o = words.offset;
+        let end = self.set_cutter_vector([n[0] * o, n[1] * o]);
+        out.moves[i].to = end;
+        out.note(|| format!(
+            "{} ({what}) with I/J/K: the block ends {} {} of the direction they give, perpendicular to it, without an intersection with the next block (the IJ-type vector)",
+            words.name(),
+            show(o.abs(), self.units()),
+            crc::which(o)
+        ));
+        Ok(())
+    }
+
     /// A block that turns the compensation off (G40 or D00) while its
     /// vector is on (behaviour 16.10, 16.11).
     pub(super) fn cancel(
@@ -192,6 +219,14 @@ impl Machine {
                 "{code} cancel: the tool leaves the offset path and ends on the programmed point {}",
                 self.corner_name(self.in_plane(self.state.programmed))
             ));
+            if b.codes().cutter() == Some(CutterCompensation::Cancel)
+                && !self.nose_lathe()
+                && self.ijk_direction(b).is_some()
+            {
+                out.note(|| {
+                    "with I/J/K: the block before ended where its offset path meets the offset of the direction they give from its end point, as if a block went on that way (behaviour 16.14)".to_string()
+                });
+            }
             return Ok(());
         }
         let here = b.codes().cutter() == Some(CutterCompensation::Cancel) || b.has(Address::D);

@@ -178,6 +178,19 @@ impl Machine {
         (d[0].hypot(d[1]) > 0.0).then(|| geo::unit(d))
     }
 
+    /// The direction of a mill G41/G42 block's I/J/K when it moves in a
+    /// straight line (behaviour 16.14: the IJ-type vector); None otherwise.
+    pub(super) fn ij_vector(&self, b: &Block) -> Option<P2> {
+        let code = b.codes().cutter()?;
+        if code == CutterCompensation::Cancel
+            || self.nose_lathe()
+            || self.state.modal.motion.is_arc()
+        {
+            return None;
+        }
+        self.ijk_direction(b)
+    }
+
     /// True when a block names an axis of the plane (on the lathe U and W
     /// too).
     pub(super) fn names_plane_axis(&self, b: &Block) -> bool {
@@ -354,6 +367,10 @@ impl Machine {
                         ),
                     ));
                 }
+                if let Some(d) = self.ij_vector(b) {
+                    self.state.cutter.phase = Phase::StartUp;
+                    return self.ij_vector_end(out, i, d, words, "start-up");
+                }
                 return self.start_up(b, out, ahead, (i, path), words);
             }
             if let Some(d) = self.ijk_direction(b)
@@ -385,6 +402,11 @@ impl Machine {
             return self.offset_corner_cut(b, out, ahead, moves_before, before, words);
         }
         if let Some((i, path)) = own {
+            if let Some(d) = self.ij_vector(b)
+                && !path.is_arc()
+            {
+                return self.ij_vector_end(out, i, d, words, "offset mode");
+            }
             return self.offset_move(b, out, ahead, (i, path), before, words);
         }
         if let Some(d) = self.ijk_direction(b)
