@@ -134,6 +134,10 @@ describe('variables panel', () => {
       assert.deepEqual(await tokens('tok-bracket'), ['[', ']', '[', ']', '[', ']']);
       assert.ok((await tokens('tok-program')).includes(':1002'));
       assert.deepEqual(await tokens('tok-invalid'), []);
+      // A chamfer's or a corner R's comma word is one word, not an operator.
+      await paste(page, 'G01 X50. ,R10.\nY0 ,C2.\n');
+      assert.deepEqual(await tokens('tok-param'), [',R10.', ',C2.']);
+      assert.deepEqual(await tokens('tok-operator'), []);
     });
   });
 

@@ -15,7 +15,7 @@ const KINDS = {
   offset: 'tok-offset', // D and H: offset register words
   tool: 'tok-tool', // T: tool (and lathe offset) words
   feed: 'tok-feed', // F and S
-  param: 'tok-param', // P Q L A B C E…
+  param: 'tok-param', // P Q L A B C E… and the comma words ,C ,R ,A
   comment: 'tok-comment',
   macro: 'tok-macro', // IF WHILE GOTO DO END THEN, comparisons, functions
   macroVariable: 'tok-variable', // #1, #[…]
@@ -84,6 +84,8 @@ export const gcodeLanguage = StreamLanguage.define({
       stream.next();
       return 'macroBracket';
     }
+    // `,C` `,R` (chamfer and corner R, behaviour 2.30) and `,A`: one word.
+    if (stream.match(/^,[A-Za-z][ \t]*[+-]?[ \t]*[0-9.]*/)) return 'param';
     if (ch === '=' || ch === '*' || ch === '/' || ch === '+' || ch === '-' || ch === ',') {
       stream.next();
       return 'macroOperator';
