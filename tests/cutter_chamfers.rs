@@ -31,6 +31,17 @@ fn moves(r: &Run, line: u32) -> Vec<(MoveKind, [f64; 3], [f64; 3])> {
         .collect()
 }
 
+/// The arc of line 3's round (its second move).
+fn round(r: &Run) -> offsetlab::machine::ArcInfo {
+    r.moves
+        .iter()
+        .filter(|m| m.line == 3)
+        .nth(1)
+        .unwrap()
+        .arc
+        .unwrap()
+}
+
 #[test]
 fn behaviour16_19_an_outside_chamfer_is_compensated_with_two_corners() {
     // G41 on a path that turns right at (50, 0): the tool is outside. The
@@ -80,14 +91,7 @@ fn behaviour16_19_an_outside_round_is_an_arc_of_the_radius_plus_the_tool() {
     same(m[0].2, [40.0, 5.0, 0.0]);
     assert_eq!(m[1].0, MoveKind::ArcCw);
     same(m[1].2, [55.0, -10.0, 0.0]);
-    let arc = r
-        .moves
-        .iter()
-        .filter(|m| m.line == 3)
-        .nth(1)
-        .unwrap()
-        .arc
-        .unwrap();
+    let arc = round(&r);
     same(arc.center, [40.0, -10.0, 0.0]);
     assert!((arc.radius - 15.0).abs() < 1e-9, "{arc:?}");
 }
@@ -100,14 +104,7 @@ fn behaviour16_19_an_inside_round_is_an_arc_of_the_radius_less_the_tool() {
     let m = moves(&r, 3);
     same(m[0].2, [40.0, -5.0, 0.0]);
     same(m[1].2, [45.0, -10.0, 0.0]);
-    let arc = r
-        .moves
-        .iter()
-        .filter(|m| m.line == 3)
-        .nth(1)
-        .unwrap()
-        .arc
-        .unwrap();
+    let arc = round(&r);
     assert!((arc.radius - 5.0).abs() < 1e-9, "{arc:?}");
 }
 

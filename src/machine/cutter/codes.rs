@@ -132,54 +132,45 @@ impl Machine {
         )
     }
 
-    /// G41/G42 with I/J/K and no move (behaviour 16.14): the vector is the
-    /// offset perpendicular to the direction they give, made in this block
-    /// as offset motion.
+    /// A G41/G42 block with I/J/K (behaviour 16.14): the vector goes
+    /// perpendicular to the direction they give, the offset's length to
+    /// the left (G41) or right (G42). Without a move in the plane it is
+    /// made at once as offset motion; with one (`own`, the move's index)
+    /// the move ends on it — Fanuc's IJ-type vector (15i-MA, "If I, J,
+    /// and K are specified in G00/G01 mode block"): no intersection with
+    /// the next block and, at the start-up, whatever the start-up type.
     pub(super) fn direction_vector(
         &mut self,
         out: &mut Out,
         d: P2,
         words: Words,
-        what: &str,
+        (what, own): (&str, Option<usize>),
     ) -> Result<(), Diagnostic> {
         let from = self.mark();
         let n = geo::left(d);
         let o = words.offset;
-        self.set_cutter_vector([n[0] * o, n[1] * o]);
-        let at_feed = self.state.modal.motion == Motion::Linear;
-        self.emit(out, from, MoveKind::Offset, at_feed, None);
-        out.note(|| format!(
-            "{} ({what}) with I/J/K: the tool centre goes {} {} of the direction they give, perpendicular to it",
-            words.name(),
-            show(o.abs(), self.units()),
-            crc::which(o)
-        ));
-        Ok(())
-    }
-
-    /// A G41/G42 block that moves in a straight line with I/J/K (behaviour
-    /// 16.14; Fanuc 15i-MA, "If I, J, and K are specified in G00/G01 mode
-    /// block"): the IJ-type vector, its move `i` ends perpendicular to the
-    /// direction they give, the offset's length to the left (G41) or right
-    /// (G42), with no intersection with the next block and, at the
-    /// start-up, whatever the start-up type.
-    pub(super) fn ij_vector_end(
-        &mut self,
-        out: &mut Out,
-        i: usize,
-        d: P2,
-        words: Words,
-        what: &str,
-    ) -> Result<(), Diagnostic> {
-        let n = geo::left(d);
-        let o = words.offset;
         let end = self.set_cutter_vector([n[0] * o, n[1] * o]);
-        out.moves[i].to = end;
+        let whole = match own {
+            Some(i) => {
+                out.moves[i].to = end;
+                "the block ends"
+            }
+            None => {
+                let at_feed = self.state.modal.motion == Motion::Linear;
+                self.emit(out, from, MoveKind::Offset, at_feed, None);
+                "the tool centre goes"
+            }
+        };
         out.note(|| format!(
-            "{} ({what}) with I/J/K: the block ends {} {} of the direction they give, perpendicular to it, without an intersection with the next block (the IJ-type vector)",
+            "{} ({what}) with I/J/K: {whole} {} {} of the direction they give, perpendicular to it{}",
             words.name(),
             show(o.abs(), self.units()),
-            crc::which(o)
+            crc::which(o),
+            if own.is_some() {
+                ", without an intersection with the next block (the IJ-type vector)"
+            } else {
+                ""
+            }
         ));
         Ok(())
     }

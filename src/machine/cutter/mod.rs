@@ -369,7 +369,7 @@ impl Machine {
                 }
                 if let Some(d) = self.ij_vector(b) {
                     self.state.cutter.phase = Phase::StartUp;
-                    return self.ij_vector_end(out, i, d, words, "start-up");
+                    return self.direction_vector(out, d, words, ("start-up", Some(i)));
                 }
                 return self.start_up(b, out, ahead, (i, path), words);
             }
@@ -378,7 +378,7 @@ impl Machine {
                 && !self.state.modal.motion.is_arc()
             {
                 self.state.cutter.phase = Phase::StartUp;
-                return self.direction_vector(out, d, words, "start-up");
+                return self.direction_vector(out, d, words, ("start-up", None));
             }
             if b.codes().cutter().is_some() || before.mode == CutterCompensation::Cancel {
                 out.note(|| {
@@ -405,7 +405,7 @@ impl Machine {
             if let Some(d) = self.ij_vector(b)
                 && !path.is_arc()
             {
-                return self.ij_vector_end(out, i, d, words, "offset mode");
+                return self.direction_vector(out, d, words, ("offset mode", Some(i)));
             }
             return self.offset_move(b, out, ahead, (i, path), before, words);
         }
@@ -413,7 +413,7 @@ impl Machine {
             && b.codes().cutter().is_some()
             && !self.state.modal.motion.is_arc()
         {
-            return self.direction_vector(out, d, words, "offset mode");
+            return self.direction_vector(out, d, words, ("offset mode", None));
         }
         if before.radius != radius || before.mode != mode {
             out.note(|| {
