@@ -144,3 +144,19 @@ fn behaviour16_19_not_where_the_compensation_starts_ends_or_changes_side() {
         assert!(d.message.contains("PS0039"), "{}", d.message);
     }
 }
+
+#[test]
+fn behaviour16_19_an_inside_chamfer_too_short_for_the_tool_is_the_interference_alarm() {
+    // G41 inside a 135° left turn at (30, 0) (X30. then X0 Y30.): the
+    // chamfer turns 67.5° at each end, and each inside corner takes
+    // 5·tan(33.75°) = 3.341 of it. ,C2. is a chord of 2·2·sin(67.5°) =
+    // 3.696 < 6.682: its offset runs backwards (16.12, PS0041) at line 3;
+    // ,C10. (18.478) fits.
+    let text = |c: &str| {
+        format!("G00 X0 Y10.\nG01 G41 D01 X0 Y0 F100.\nX30. {c}\nX0 Y30.\nX-10.\nG40 Y40.\nM30\n")
+    };
+    let r = run(&text(",C2."), &r5());
+    assert_eq!(first_error(&r).0, "cutter-interference");
+    assert_eq!(first_error(&r).1, 3);
+    ok(&text(",C10."), &r5());
+}

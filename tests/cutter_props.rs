@@ -2,7 +2,8 @@
 //! 16.13): on random convex polygons and rounded rectangles, the tool
 //! centre runs exactly the radius from the programmed contour on every
 //! block of offset mode, on the side G41/G42 says, and G41 on a contour
-//! gives the corners G42 gives on the same contour reversed.
+//! gives the corners G42 gives on the same contour reversed; so with
+//! chamfers and corner rounds cut at the corners (16.19).
 #![cfg(not(target_arch = "wasm32"))]
 
 mod common;
@@ -60,6 +61,26 @@ fn contour(points: &[(f64, f64)], code: &str) -> String {
     }
     text += &format!("G40 X{} Y{}\nM30\n", mm(cx), mm(cy));
     text
+}
+
+/// [`contour`] with `word` (`,C…` or `,R…`) on every block of offset mode
+/// whose next block goes on round the polygon (behaviour 16.19): not the
+/// start-up, not the last edge before G40.
+fn cut_contour(points: &[(f64, f64)], code: &str, word: &str) -> String {
+    let text = contour(points, code);
+    let lines: Vec<&str> = text.lines().collect();
+    let last = lines.len() - 3;
+    lines
+        .iter()
+        .enumerate()
+        .map(|(i, l)| {
+            if (2..last).contains(&i) {
+                format!("{l} {word}\n")
+            } else {
+                format!("{l}\n")
+            }
+        })
+        .collect()
 }
 
 /// The signed distance of `p` from the line through `a` and `b`,
@@ -125,6 +146,46 @@ proptest! {
                 let c = m.programmed_to;
                 let d = (m.to[0] - c[0]).hypot(m.to[1] - c[1]);
                 prop_assert!(d >= radius - 2e-3, "{d} < {radius}\n{text}");
+            }
+        }
+    }
+
+    /// Behaviour 16.19: with a chamfer or a corner round at every corner,
+    /// every move of offset mode runs on the offset of the path it cuts:
+    /// a straight one (the block's or the chamfer) the radius from its
+    /// programmed line on the code's side, a round about its programmed
+    /// centre at its radius less the tool's inside (G41 in this
+    /// counter-clockwise polygon) or plus it outside (G42).
+    #[test]
+    fn chamfered_and_rounded_corners_are_compensated_on_the_cut_path(
+        points in polygon(),
+        radius in 0.5f64..1.0,
+        left in any::<bool>(),
+        round in any::<bool>(),
+    ) {
+        let code = if left { "G41" } else { "G42" };
+        let o = if left { radius } else { -radius };
+        // Cuts the tool fits inside: a round larger than it, a chamfer long
+        // enough that its offset does not run backwards (16.12).
+        let word = if round { ",R2." } else { ",C3." };
+        let text = cut_contour(&points, code, word);
+        let r = ok(&text, &setup(radius));
+        let moves = offset_moves(&r);
+        let arcs = moves.iter().filter(|m| m.arc.is_some()).count();
+        prop_assert_eq!(arcs, if round { points.len() } else { 0 }, "{}", text);
+        for m in &moves {
+            if let Some(a) = m.arc {
+                let want = 2.0 - o;
+                prop_assert!((a.radius - want).abs() < 2e-3, "{} vs {want}\n{text}", a.radius);
+                for p in [m.from, m.to] {
+                    let d = (p[0] - a.programmed_center[0]).hypot(p[1] - a.programmed_center[1]);
+                    prop_assert!((d - want).abs() < 2e-3, "{d} vs {want}\n{text}");
+                }
+            } else if m.programmed_from != m.programmed_to {
+                for p in [m.from, m.to] {
+                    let d = side_distance(p, m.programmed_from, m.programmed_to);
+                    prop_assert!((d - o).abs() < 2e-3, "{d} vs {o}\n{text}\n{m:?}");
+                }
             }
         }
     }
