@@ -187,9 +187,25 @@ fn behaviour1_7_words_read_but_not_modelled_are_refused_by_the_machine() {
     assert!(r.moves.is_empty(), "{text}: nothing moves");
     let r = run("G01 U1. C1. F0.1", &lathe(&[]));
     assert!(r.diagnostics[0].message.contains("the chamfer word C"));
-    // The mill's ,C and ,R are modelled (behaviour 2.30); the lathe's not.
-    let r = run("G01 U1. ,C1. F0.1\nW-1.", &lathe(&[]));
-    assert!(r.diagnostics[0].message.starts_with(",C: chamfering"));
+    // ,C and ,R are modelled on both (behaviour 2.30, 2.35), but not in the
+    // lathe's G70–G73 contours.
+    let r = run("G01 U4. ,C1. F0.1\nW-2.", &lathe(&[]));
+    assert!(
+        r.diagnostics.iter().all(|d| !d.is_error()),
+        "{:?}",
+        r.diagnostics
+    );
+    let r = run(
+        "G71 U1. R0.5\nG71 P10 Q20 U0.2 W0.1 F0.2\nN10 G00 X40.\nG01 Z0 ,C1.\nN20 X50.",
+        &lathe(&[]),
+    );
+    let d = r.diagnostics.iter().find(|d| d.is_error()).unwrap();
+    assert!(
+        d.message
+            .starts_with(",C: a chamfer or corner rounding here"),
+        "{}",
+        d.message
+    );
 }
 
 #[test]

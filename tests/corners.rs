@@ -175,9 +175,9 @@ fn behaviour2_33_the_corner_words_are_refused_where_no_corner_is_cut() {
         assert_eq!(got, code, "{text}: {msg}");
         assert!(msg.contains(says), "{text}: {msg}");
     }
-    // The lathe's chamfer words are another rule: refused until modelled.
-    let (code, _) = error_of("G01 U10. ,C1. F0.1\nW-10.", &lathe(&[]));
-    assert_eq!(code, "unsupported-word");
+    // The lathe cuts them too (2.35), with the same refusals.
+    let (code, _) = error_of("G01 U10. ,C1. ,R1. F0.1\nW-10.", &lathe(&[]));
+    assert_eq!(code, "corner-words");
 }
 
 #[test]
@@ -199,4 +199,87 @@ fn behaviour2_30_inch_words_are_inches() {
     let r = ok("G20 G01 X2. ,C0.2 F10.\nY2.", &Setup::default());
     same(r.moves[0].programmed_to, [(2.0 - 0.2) * 25.4, 0.0, 0.0]);
     same(r.moves[1].programmed_to, [50.8, 5.08, 0.0]);
+}
+
+// ----- 2.35 the lathe ----------------------------------------------------
+
+/// A lathe with offset 01 at zero, and with a nose of R0.8, tip 3.
+fn lathe_setup(nose: bool) -> Setup {
+    let mut s = lathe(&[(1, 0.0, 0.0)]);
+    if nose {
+        s.set_register("01=R0.8,T3").unwrap();
+    }
+    s
+}
+
+/// A face up to X50. with `face`'s word, then Z−20. with `turn`'s, then up
+/// to X60.
+fn lathe_profile(face: &str, turn: &str, code: &str) -> String {
+    format!("T0101\nG00 X40. Z2.\n{code}G01 Z0 F0.2\nX50. {face}\nZ-20. {turn}\nG40 X60.\nM30\n")
+}
+
+/// The moves of line `line` as (kind, X, Z of the actual end).
+fn ends(r: &offsetlab::Run, line: u32) -> Vec<(MoveKind, [f64; 3])> {
+    r.moves
+        .iter()
+        .filter(|m| m.line == line)
+        .map(|m| (m.kind, m.to))
+        .collect()
+}
+
+#[test]
+fn behaviour2_35_the_lathe_cuts_a_chamfer_and_a_corner_r_in_radius() {
+    // ,C1. at (X50 Z0): 1 on the part along each move, so the chamfer runs
+    // from X48. (radius 24) to Z−1. on X50. ,R2. at (X50 Z−20), the turn
+    // from −Z to +X: from Z−18. to X54. (radius 25 + 2), about X54. Z−18.,
+    // clockwise in the ZX view.
+    let r = ok(&lathe_profile(",C1.", ",R2.", ""), &lathe_setup(false));
+    let face = ends(&r, 4);
+    assert_eq!(face.len(), 2);
+    same(face[0].1, [48.0, 0.0, 0.0]);
+    same(face[1].1, [50.0, 0.0, -1.0]);
+    let turn = ends(&r, 5);
+    same(turn[0].1, [50.0, 0.0, -18.0]);
+    assert_eq!(turn[1].0, MoveKind::ArcCw);
+    same(turn[1].1, [54.0, 0.0, -20.0]);
+    let arc = r
+        .moves
+        .iter()
+        .filter(|m| m.line == 5)
+        .nth(1)
+        .unwrap()
+        .arc
+        .unwrap();
+    same(arc.center, [54.0, 0.0, -18.0]);
+    assert!((arc.radius - 2.0).abs() < 1e-9, "{arc:?}");
+    // The next block starts at the round's end.
+    same(
+        r.moves.iter().find(|m| m.line == 6).unwrap().from,
+        [54.0, 0.0, -20.0],
+    );
+}
+
+#[test]
+fn behaviour2_35_with_nose_radius_compensation_the_cut_path_is_compensated() {
+    // G42, R0.8, tip 3 (behaviour 16.19, 18.5). In radius space (z, r),
+    // k = 0.8√2: the face's offset line is z = 0.8; the chamfer from
+    // (0, 24) to (−1, 25), its offset 0.8 to its right, z + r = 24 + k;
+    // the diameter's, r = 25.8. The nose centre stops at (0.8, 23.2 + k)
+    // (a 135° outside corner: the intersection) and at (k − 1.8, 25.8);
+    // the imaginary nose (tip 3) is 0.8 less in both: X = 2·(22.4 + k) at
+    // Z0, then X50. at Z = k − 2.6.
+    let k = 0.8 * std::f64::consts::SQRT_2;
+    let r = ok(&lathe_profile(",C1.", "", "G42 "), &lathe_setup(true));
+    let face = ends(&r, 4);
+    assert_eq!(face.len(), 2, "{face:?}");
+    same(face[0].1, [2.0 * (22.4 + k), 0.0, 0.0]);
+    same(face[1].1, [50.0, 0.0, k - 2.6]);
+}
+
+#[test]
+fn behaviour2_35_not_in_a_g70_to_g73_contour() {
+    let text = "T0101\nG00 X60. Z2.\nG71 U1. R0.5\nG71 P10 Q20 U0.2 W0.1 F0.2\nN10 G00 X40.\nG01 Z0\nX50. ,C1.\nN20 Z-20.\nG70 P10 Q20\nM30\n";
+    let r = run(text, &lathe_setup(false));
+    let (code, line, _) = first_error(&r);
+    assert_eq!((code, line), ("unsupported-word", 7));
 }

@@ -1,6 +1,7 @@
-//! Chamfer and corner rounding at the end of a G01 block on the mill, the
-//! comma words `,C` and `,R` (behaviour 2.30–2.34; Fanuc 0i-MF "optional
-//! angle chamfering and corner R"): the control reads the next block, and
+//! Chamfer and corner rounding at the end of a G01 block on the mill and
+//! the lathe, the comma words `,C` and `,R` (behaviour 2.30–2.35; Fanuc
+//! 0i-MF and 0i-TF, "optional angle chamfering and corner R"): the
+//! control reads the next block, and
 //! between the two straight moves it cuts the corner with a line (`,C`: the
 //! distance from the corner to each end of the chamfer) or a tangent arc
 //! (`,R`: its radius). The inserted move belongs to the block that carries
@@ -11,6 +12,7 @@ use super::arc::P2;
 use super::{Ahead, ArcRequest, Machine, Mark, MoveKind, NoneAhead, Out};
 use crate::diag::Diagnostic;
 use crate::geometry::{Xyz, show};
+use crate::setup::MachineKind;
 use crate::syntax::codes::{Motion, NonModal};
 use crate::syntax::{Address, Block};
 
@@ -45,14 +47,14 @@ impl Machine {
         // A block run only to find the next move's direction for an
         // earlier corner makes its own move as written (behaviour 2.31).
         if self.reading_ahead {
-            return self.mill_general(b, out);
+            return self.corner_run(b, out);
         }
         let word = b.get(Address::CommaC).or_else(|| b.get(Address::CommaR));
         let word_span = word.map_or(b.span, |w| w.span);
         let letter = word.map_or(",C", |w| w.address.letter());
         let start = self.state.programmed;
         let moves_before = out.moves.len();
-        self.mill_general(b, out)?;
+        self.corner_run(b, out)?;
         // The word in the units the block's G20/G21 left.
         let corner = match corner {
             Corner::Chamfer(c) => Corner::Chamfer(self.mm(c)),
@@ -82,6 +84,9 @@ impl Machine {
         }
         let (ia, ib, normal) = self.state.modal.plane.axes();
         let plane = self.state.modal.plane.gcode();
+        // The lathe's X is a diameter: the corner is cut on the part, in
+        // radius (behaviour 2.35).
+        let s = self.corner_scale();
         let at = self.state.programmed;
         let made: Vec<usize> = (moves_before..out.moves.len()).collect();
         let in_plane_only = at[normal] == start[normal]
@@ -91,7 +96,10 @@ impl Machine {
         // The move as made: from the end of a corner the block before cut,
         // if it did (both corners must fit on it).
         let made_from = self.corner_end.unwrap_or(start);
-        let u = [at[ia] - made_from[ia], at[ib] - made_from[ib]];
+        let u = [
+            (at[ia] - made_from[ia]) * s[0],
+            (at[ib] - made_from[ib]) * s[1],
+        ];
         if !in_plane_only || len(u) < 1e-9 {
             return Err(self.error(
                 "corner-move",
@@ -151,8 +159,8 @@ impl Machine {
         let mut p2 = at;
         for k in 0..2 {
             let axis = [ia, ib][k];
-            p1[axis] = at[axis] - reach * uh[k];
-            p2[axis] = at[axis] + reach * vh[k];
+            p1[axis] = at[axis] - reach * uh[k] / s[k];
+            p2[axis] = at[axis] + reach * vh[k] / s[k];
         }
         // The block's move ends where the inserted one starts; the offsets'
         // vectors stand as they did at the corner.
@@ -221,6 +229,35 @@ impl Machine {
         self.corner_cut = true;
         self.corner = at;
         Ok(())
+    }
+
+    /// Runs a block with `,C`/`,R` as it is written, up to its corner: the
+    /// mill's general block, or the lathe's, which then reads the words.
+    fn corner_run(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+        if self.setup.machine == MachineKind::Mill {
+            return self.mill_general(b, out);
+        }
+        if self.state.polar.is_some() {
+            return Err(self.error(
+                "corner-not-modelled",
+                b.span,
+                "a chamfer or corner rounding in polar coordinate interpolation (the face) is not modelled yet",
+            ));
+        }
+        self.corner_words_read = true;
+        let ran = self.lathe_run(b, out, &mut super::program::NoText);
+        self.corner_words_read = false;
+        ran
+    }
+
+    /// From the program's coordinates of the plane's two axes to lengths
+    /// on the part: the lathe's X, a diameter, halved.
+    fn corner_scale(&self) -> [f64; 2] {
+        if self.setup.machine == MachineKind::Lathe {
+            [1.0, 0.5]
+        } else {
+            [1.0, 1.0]
+        }
     }
 
     /// Before the block after a corner: its words count from the corner
@@ -414,9 +451,10 @@ impl Machine {
                 ));
             }
         }
+        let s = self.corner_scale();
         let v = [
-            m.programmed_to[ia] - m.programmed_from[ia],
-            m.programmed_to[ib] - m.programmed_from[ib],
+            (m.programmed_to[ia] - m.programmed_from[ia]) * s[0],
+            (m.programmed_to[ib] - m.programmed_from[ib]) * s[1],
         ];
         let moved_normal = (m.programmed_to[normal] - m.programmed_from[normal]).abs() > 1e-9
             || (m.to[normal] - m.from[normal]).abs() > 1e-9;

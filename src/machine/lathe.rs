@@ -48,6 +48,9 @@ impl Machine {
         {
             return self.cutter_block(b, out, ahead);
         }
+        if b.holds_any(&super::corner::CORNER_WORDS) {
+            return self.corner_block(b, out, ahead);
+        }
         self.lathe_run(b, out, program)
     }
 

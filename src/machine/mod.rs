@@ -189,6 +189,9 @@ pub struct Machine {
     /// This machine is a copy running the next block to find its direction
     /// (behaviour 2.31): its own chamfers are not cut.
     reading_ahead: bool,
+    /// A lathe block with `,C`/`,R` runs through the chamfer's code, which
+    /// reads those words (behaviour 2.35); elsewhere the lathe refuses them.
+    pub(super) corner_words_read: bool,
     /// The program's macro variables (behaviour 20.1), kept with the
     /// machine so that a checkpoint holds them.
     pub(crate) variables: crate::macros::Store,
@@ -260,6 +263,7 @@ impl Machine {
             corner: [0.0; 3],
             corner_end: None,
             reading_ahead: false,
+            corner_words_read: false,
             variables: crate::macros::Store::default(),
         }
     }
@@ -460,13 +464,13 @@ impl Machine {
             == Some(NonModal::Repetitive(
                 crate::syntax::codes::Repetitive::Threading,
             ));
+        // The lathe's `,C`/`,R` are read where `corner.rs` runs the block
+        // (behaviour 2.35), not in a cycle's contour or its compensation.
         let modelled = |a: Address| {
             (g76 && a == Address::A)
-                || (!lathe
-                    && matches!(
-                        a,
-                        Address::CommaC | Address::CommaR | Address::A | Address::B | Address::C
-                    ))
+                || (matches!(a, Address::CommaC | Address::CommaR)
+                    && (!lathe || self.corner_words_read))
+                || (!lathe && matches!(a, Address::A | Address::B | Address::C))
         };
         let Some(w) = b.words.iter().find(|w| {
             UNMODELLED.contains(&w.address)
@@ -480,7 +484,9 @@ impl Machine {
             Address::C if lathe => "the C axis and the chamfer word C are not modelled yet",
             Address::A | Address::B | Address::C => "rotary axes are not modelled yet",
             Address::E => "thread lead (and Haas G187's corner tolerance) is not modelled yet",
-            _ => "chamfering and corner rounding (,C and ,R) are not modelled yet",
+            _ => {
+                "a chamfer or corner rounding here (a G70–G73 contour, a cycle, tool nose radius compensation) is not modelled yet: the lathe cuts it between two G01 moves (behaviour 2.35)"
+            }
         };
         Err(self.error("unsupported-word", w.span, format!("{letter}: {why}")))
     }

@@ -261,13 +261,13 @@ impl Machine {
         self.state.cutter.vector = [0.0; 3];
         // `,C`/`,R` in offset mode (behaviour 16.19): the block cuts its
         // corner on the programmed path, which is then compensated.
-        let corner_words = !lathe && b.holds_any(&CORNER_WORDS);
-        let ran = if lathe {
+        let corner_words = b.holds_any(&CORNER_WORDS);
+        let ran = if corner_words {
+            self.corner_block(b, out, ahead)
+        } else if lathe {
             self.nose_run(b, out)
         } else if plain && self.state.modal.feed_mode != FeedMode::InverseTime {
             self.motion_block(b, out)
-        } else if corner_words {
-            self.corner_block(b, out, ahead)
         } else {
             self.mill_general(b, out)
         };
