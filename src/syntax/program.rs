@@ -330,6 +330,10 @@ impl Blocks<'_> {
         self.dropped = since.dropped;
         self.warned_integer = since.warned_integer;
         (self.units, self.in_cycle) = since.context;
+        // The words' context taken back too: the one-pass reading of the
+        // next block reads K by it (a G80 in the text after `;` cancels no
+        // cycle).
+        self.context = self.in_cycle || self.mrc.is_some();
         self.header = None;
         let first = lexer::skip_blanks(bytes, start);
         let end = line_end(bytes, first);

@@ -605,3 +605,19 @@ fn behaviour1_11_a_g_code_past_the_first_65534_words_is_found_for_its_span_and_m
         .unwrap();
     assert_eq!(clash.message, expected.message);
 }
+
+#[test]
+fn a_g80_in_the_text_after_a_semicolon_cancels_no_cycle_in_either_reading() {
+    // Found by the property above: the text after `;` is taken back as
+    // one error (behaviour 1.22), its G80 with it, so K2.5 on the next line
+    // is still a G73 repeat count written with a point (decimal-point).
+    let text = "G73 ; G80 O1A \n K2.5 ";
+    let options = options_of(false, false, false, false);
+    let one = read_all(text, options, true);
+    assert_eq!(one, read_all(text, options, false));
+    assert!(
+        one.1.iter().any(|d| d.code == "decimal-point"),
+        "{:?}",
+        one.1
+    );
+}
