@@ -120,8 +120,10 @@ fn behaviour2_31_the_next_move_must_be_a_feed_move_in_the_plane() {
     let (code, msg) = error_of("G01 X50. ,C5. F100.\nZ-5.", &s);
     assert_eq!(code, "corner-next-move");
     assert!(msg.contains("G17 plane"), "{msg}");
-    let (code, _) = error_of("G01 X50. ,C5. F100.\nG03 X60. Y10. R10.", &s);
-    assert_eq!(code, "corner-not-modelled");
+    // An arc next (behaviour 2.36) that leaves the corner tangentially.
+    let (code, msg) = error_of("G01 X50. ,C5. F100.\nG03 X60. Y10. R10.", &s);
+    assert_eq!(code, "corner-angle");
+    assert!(msg.contains("tangentially"), "{msg}");
     let (code, _) = error_of("G01 X50. ,R5. F100.\nX80.", &s);
     assert_eq!(code, "corner-angle");
     // Nothing moves past the block before the one refused.
@@ -164,10 +166,11 @@ fn behaviour2_33_the_corner_words_are_refused_where_no_corner_is_cut() {
         ("G01 X50. Z-5. ,C5. F100.\nY40.", "corner-move", "G17"),
         ("G01 X4. ,C5. F100.\nY40.", "corner-too-long", "PS0055"),
         ("G01 X50. ,C5. F100.\nY4.", "corner-too-long", "line 2"),
+        // A half circle that ends going down, then up: no corner (2.36).
         (
-            "G02 X50. R25. ,C5. F100.\nY40.",
-            "corner-not-modelled",
-            "end of an arc",
+            "G02 X50. R25. ,C5. F100.\nG01 Y40.",
+            "corner-angle",
+            "backwards",
         ),
     ];
     for (text, code, says) in cases {
@@ -282,4 +285,98 @@ fn behaviour2_35_not_in_a_g70_to_g73_contour() {
     let r = run(text, &lathe_setup(false));
     let (code, line, _) = first_error(&r);
     assert_eq!((code, line), ("unsupported-word", 7));
+}
+
+// ----- 2.36 at an arc ----------------------------------------------------
+
+/// Along +X to the corner (20, 0); then G02 X40. Y0 R10., a half circle
+/// about (30, 0) that leaves the corner going up (+Y), ending at (40, 0)
+/// going down; then +X.
+const LINE_ARC: &str =
+    "G90 G17\nG00 X-10. Y0\nG01 X0 Y0 F100.\nX20. ,R2.\nG02 X40. Y0 R10. ,C2.\nG01 X60.\nM30\n";
+
+#[test]
+fn behaviour2_36_a_round_between_a_line_and_an_arc_is_tangent_to_both() {
+    // The path turns left at (20, 0). ,R2.: the round's centre is 2 left
+    // of the line (y = 2) and 2 outside the arc's circle (12 from
+    // (30, 0)): Q = (30 − √140, 2); it touches the line at (30 − √140, 0)
+    // and the arc at (30, 0) + 10·(Q − (30, 0))/12.
+    let r = ok(LINE_ARC, &Setup::default());
+    let s = 140f64.sqrt();
+    let m: Vec<_> = r.moves.iter().filter(|m| m.line == 4).collect();
+    assert_eq!(m.len(), 2);
+    same(m[0].to, [30.0 - s, 0.0, 0.0]);
+    assert_eq!(m[1].kind, MoveKind::ArcCcw);
+    let arc = m[1].arc.unwrap();
+    same(arc.center, [30.0 - s, 2.0, 0.0]);
+    same(m[1].to, [30.0 - s * 10.0 / 12.0, 2.0 * 10.0 / 12.0, 0.0]);
+    // The arc block runs on from there on its own circle.
+    let g02 = r.moves.iter().find(|m| m.line == 5).unwrap();
+    same(g02.from, m[1].to);
+    same(g02.arc.unwrap().center, [30.0, 0.0, 0.0]);
+}
+
+#[test]
+fn behaviour2_36_a_chamfer_at_an_arcs_end_is_a_chord_from_the_corner() {
+    // The half circle ends at (40, 0) going down; +X next: a left turn.
+    // ,C2.: the point of the circle 2 in a straight line from (40, 0),
+    // back along it, the angle a = 2·asin(0.1) from it about (30, 0):
+    // (30 + 10 cos a, 10 sin a); on the line, (42, 0). The arc is cut
+    // short there (its sweep from its start, the round's end, shrinks).
+    let r = ok(LINE_ARC, &Setup::default());
+    let a = 2.0 * 0.1f64.asin();
+    let m: Vec<_> = r.moves.iter().filter(|m| m.line == 5).collect();
+    assert_eq!(m.len(), 2);
+    same(m[0].to, [30.0 + 10.0 * a.cos(), 10.0 * a.sin(), 0.0]);
+    same(m[1].to, [42.0, 0.0, 0.0]);
+    let arc = m[0].arc.unwrap();
+    let start = (m[0].from[1] - 0.0).atan2(m[0].from[0] - 30.0);
+    let sweep = (10.0 * a.sin()).atan2(10.0 * a.cos()) - start;
+    assert!((arc.sweep - sweep).abs() < 1e-9, "{} vs {sweep}", arc.sweep);
+    assert!((arc.programmed_sweep - sweep).abs() < 1e-9);
+}
+
+#[test]
+fn behaviour2_36_with_cutter_compensation_the_round_at_an_arc_is_offset() {
+    // G42, D5 (behaviour 16.19): the tool is right of the path, outside
+    // the round. The line's move ends 5 right of its tangent point, at
+    // (30 − √140, −5); the round, about Q with radius 2 + 5, ends where
+    // the arc's offset circle (radius 10 − 5) begins:
+    // Q + 7·(√140, −2)/12 = (30 − 5√140/12, 5/6).
+    let text = LINE_ARC
+        .replace("G01 X0 Y0 F100.", "G01 G42 D01 X0 Y0 F100.")
+        .replace("M30", "G40 X80.\nM30");
+    let r = ok(&text, &mill(&[(1, 5.0)]));
+    let s = 140f64.sqrt();
+    let m: Vec<_> = r.moves.iter().filter(|m| m.line == 4).collect();
+    assert_eq!(m.len(), 2, "{m:?}");
+    same(m[0].to, [30.0 - s, -5.0, 0.0]);
+    same(m[1].to, [30.0 - 5.0 * s / 12.0, 5.0 / 6.0, 0.0]);
+    assert!((m[1].arc.unwrap().radius - 7.0).abs() < 1e-9);
+}
+
+#[test]
+fn behaviour2_36_tangent_paths_have_no_corner() {
+    // G03 X70. Y10. R10. from (60, 0) ends going up (+Y); Y30. goes on
+    // tangentially: no corner to round.
+    let text = "G01 X60. Y0 F100.\nG03 X70. Y10. R10. ,R3.\nG01 Y30.\n";
+    let (code, msg) = error_of(text, &Setup::default());
+    assert_eq!(code, "corner-angle", "{msg}");
+}
+
+#[test]
+fn behaviour2_36_the_lathe_chamfers_an_arc_in_radius() {
+    // Up the face to the corner (X50 Z0), then G02 to X60. Z−5. R5.: the
+    // chamfer's ends are 1 (on the part, X as a radius) in a straight line
+    // from the corner.
+    let text = "T0101\nG00 X40. Z2.\nG01 Z0 F0.2\nX50. ,C1.\nG02 X60. Z-5. R5.\nG01 Z-20.\nM30\n";
+    let r = ok(text, &lathe(&[(1, 0.0, 0.0)]));
+    let m: Vec<_> = r.moves.iter().filter(|m| m.line == 4).collect();
+    assert_eq!(m.len(), 2, "{m:?}");
+    let on_part = |p: [f64; 3]| ((p[0] / 2.0 - 25.0).hypot(p[2])).abs();
+    assert!((on_part(m[1].from) - 1.0).abs() < 1e-9, "{:?}", m[1].from);
+    assert!((on_part(m[1].to) - 1.0).abs() < 1e-9, "{:?}", m[1].to);
+    same(m[1].from, [48.0, 0.0, 0.0]);
+    let arc = r.moves.iter().find(|m| m.line == 5).unwrap();
+    same(arc.from, m[1].to);
 }

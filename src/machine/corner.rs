@@ -1,14 +1,15 @@
-//! Chamfer and corner rounding at the end of a G01 block on the mill and
-//! the lathe, the comma words `,C` and `,R` (behaviour 2.30–2.35; Fanuc
-//! 0i-MF and 0i-TF, "optional angle chamfering and corner R"): the
-//! control reads the next block, and
-//! between the two straight moves it cuts the corner with a line (`,C`: the
-//! distance from the corner to each end of the chamfer) or a tangent arc
-//! (`,R`: its radius). The inserted move belongs to the block that carries
-//! the word, so a single block stop is at its end; the next block's words
-//! still count from the corner as written.
+//! Chamfer and corner rounding at the end of a feed block on the mill and
+//! the lathe, the comma words `,C` and `,R` (behaviour 2.30–2.36; Fanuc
+//! 0i-MF and 0i-TF, "optional angle chamfering and corner R"): the control
+//! reads the next block, and between the two moves (straight, or arcs:
+//! `corner_geometry.rs`) it cuts the corner with a line (`,C`: the distance
+//! from the corner to each end of the chamfer) or a tangent arc (`,R`: its
+//! radius). The inserted move belongs to the block that carries the word,
+//! so a single block stop is at its end; the next block's words still
+//! count from the corner as written.
 
 use super::arc::P2;
+use super::corner_geometry::{self as geometry, Corner, Cut, CutError, Seg};
 use super::{Ahead, ArcRequest, Machine, Mark, MoveKind, NoneAhead, Out};
 use crate::diag::Diagnostic;
 use crate::geometry::{Xyz, show};
@@ -19,22 +20,13 @@ use crate::syntax::{Address, Block};
 /// The comma words this file handles.
 pub(super) const CORNER_WORDS: [Address; 2] = [Address::CommaC, Address::CommaR];
 
-/// What a `,C` or `,R` word asks for.
-#[derive(Clone, Copy, Debug, PartialEq)]
-enum Corner {
-    /// `,C`: a straight chamfer this far from the corner along each move.
-    Chamfer(f64),
-    /// `,R`: a tangent arc of this radius.
-    Round(f64),
-}
-
 /// A plane vector's length.
 fn len(v: P2) -> f64 {
     v[0].hypot(v[1])
 }
 
 impl Machine {
-    /// A mill block with `,C` or `,R` (behaviour 2.30): runs the block to its
+    /// A block with `,C` or `,R` (behaviour 2.30, 2.35, 2.36): runs the block to its
     /// corner, reads the next block's move, and inserts the chamfer or the
     /// corner arc.
     pub(super) fn corner_block(
@@ -46,31 +38,23 @@ impl Machine {
         let corner = self.corner_word(b)?;
         // A block run only to find the next move's direction for an
         // earlier corner makes its own move as written (behaviour 2.31).
-        if self.reading_ahead {
-            return self.corner_run(b, out);
-        }
         let word = b.get(Address::CommaC).or_else(|| b.get(Address::CommaR));
         let word_span = word.map_or(b.span, |w| w.span);
+        if self.reading_ahead {
+            return self.corner_run(b, out, word_span);
+        }
         let letter = word.map_or(",C", |w| w.address.letter());
         let start = self.state.programmed;
         let moves_before = out.moves.len();
-        self.corner_run(b, out)?;
+        self.corner_run(b, out, word_span)?;
         // The word in the units the block's G20/G21 left.
         let corner = match corner {
             Corner::Chamfer(c) => Corner::Chamfer(self.mm(c)),
             Corner::Round(r) => Corner::Round(self.mm(r)),
         };
         match self.state.modal.motion {
-            Motion::Linear => {}
-            Motion::Arc(_) => {
-                return Err(self.error(
-                    "corner-not-modelled",
-                    word_span,
-                    format!(
-                        "{letter}: a chamfer or corner rounding at the end of an arc is not modelled yet (only between two G01 moves)"
-                    ),
-                ));
-            }
+            // At the end of an arc too (behaviour 2.36).
+            Motion::Linear | Motion::Arc(_) => {}
             Motion::Rapid | Motion::LatheCycle(_) => {
                 return Err(self.error(
                     "corner-motion",
@@ -91,7 +75,10 @@ impl Machine {
         let made: Vec<usize> = (moves_before..out.moves.len()).collect();
         let in_plane_only = at[normal] == start[normal]
             && made.len() == 1
-            && out.moves[made[0]].kind == MoveKind::Feed
+            && matches!(
+                out.moves[made[0]].kind,
+                MoveKind::Feed | MoveKind::ArcCw | MoveKind::ArcCcw
+            )
             && out.moves[made[0]].to[normal] == out.moves[made[0]].from[normal];
         // The move as made: from the end of a corner the block before cut,
         // if it did (both corners must fit on it).
@@ -109,58 +96,120 @@ impl Machine {
                 ),
             ));
         }
-        let Some(v) = self.next_direction(ahead, letter, word_span)? else {
+        let Some((next, line)) = self.next_direction(ahead, letter, word_span)? else {
             out.notes.push(format!(
                 "{letter}: the next block cannot run (its error stops the run there), so no corner is cut at its start"
             ));
             return Ok(());
         };
-        let (lu, lv) = (len(u), len(v.0));
-        let (uh, vh) = ([u[0] / lu, u[1] / lu], [v.0[0] / lv, v.0[1] / lv]);
-        let cross = uh[0] * vh[1] - uh[1] * vh[0];
-        let dot = uh[0] * vh[0] + uh[1] * vh[1];
-        if cross.abs() < 1e-9 {
-            return Err(self.error(
-                "corner-angle",
-                word_span,
-                format!(
-                    "{letter}: the next block's move goes on along the same line{} (line {}): there is no corner to cut",
-                    if dot < 0.0 { ", backwards," } else { "" },
-                    v.1
-                ),
-            ));
-        }
-        // Distance from the corner to each end of the inserted move: the
-        // chamfer's own length, or the tangent length R·tan(φ/2) of a round,
-        // φ the angle the path turns by at the corner.
-        let (reach, corner_kind) = match corner {
-            Corner::Chamfer(c) => (c, corner),
-            Corner::Round(r) => {
-                let turn = cross.atan2(dot).abs();
-                (r * (turn / 2.0).tan(), corner)
-            }
-        };
         let units = self.units();
-        if reach > lu + 1e-9 || reach > lv + 1e-9 {
-            return Err(self.error(
-                "corner-too-long",
-                word_span,
-                format!(
-                    "{letter}: the {} needs {} of each move from the corner, but this block's move is {} and the next block's (line {}) {} long (Fanuc alarm PS0055)",
-                    if matches!(corner, Corner::Chamfer(_)) { "chamfer" } else { "corner rounding" },
-                    show(reach, units),
-                    show(lu, units),
-                    v.1,
-                    show(lv, units)
+        let k = [at[ia] * s[0], at[ib] * s[1]];
+        let before = match out.moves[made[0]].arc {
+            Some(info) => {
+                let c = info.programmed_center;
+                let from = [made_from[ia] * s[0], made_from[ib] * s[1]];
+                geometry::arc_seg(
+                    [c[ia] * s[0], c[ib] * s[1]],
+                    info.programmed_radius,
+                    info.programmed_sweep,
+                    (from, k),
+                )
+            }
+            None => Seg::Line {
+                dir: [u[0] / len(u), u[1] / len(u)],
+                len: len(u),
+            },
+        };
+        // The two ends of the inserted move in the plane, and a round's
+        // centre (from its start) and turn.
+        let (q1, q2, round) = match (before, next) {
+            (Seg::Line { dir: uh, len: lu }, Seg::Line { dir: vh, len: lv }) => {
+                let cross = uh[0] * vh[1] - uh[1] * vh[0];
+                let dot = uh[0] * vh[0] + uh[1] * vh[1];
+                if cross.abs() < 1e-9 {
+                    return Err(self.error(
+                        "corner-angle",
+                        word_span,
+                        format!(
+                            "{letter}: the next block's move goes on along the same line{} (line {line}): there is no corner to cut",
+                            if dot < 0.0 { ", backwards," } else { "" },
+                        ),
+                    ));
+                }
+                // Distance from the corner to each end of the inserted move:
+                // the chamfer's own length, or the tangent length R·tan(φ/2)
+                // of a round, φ the angle the path turns by at the corner.
+                let reach = match corner {
+                    Corner::Chamfer(c) => c,
+                    Corner::Round(r) => r * (cross.atan2(dot).abs() / 2.0).tan(),
+                };
+                if reach > lu + 1e-9 || reach > lv + 1e-9 {
+                    return Err(self.error(
+                        "corner-too-long",
+                        word_span,
+                        format!(
+                            "{letter}: the {} needs {} of each move from the corner, but this block's move is {} and the next block's (line {line}) {} long (Fanuc alarm PS0055)",
+                            if matches!(corner, Corner::Chamfer(_)) { "chamfer" } else { "corner rounding" },
+                            show(reach, units),
+                            show(lu, units),
+                            show(lv, units)
+                        ),
+                    ));
+                }
+                // A round's centre is R from both moves, on the side the
+                // path turns to.
+                let side = if cross > 0.0 { 1.0 } else { -1.0 };
+                let round = match corner {
+                    Corner::Round(r) => Some(([-uh[1] * side * r, uh[0] * side * r], cross > 0.0)),
+                    Corner::Chamfer(_) => None,
+                };
+                (
+                    [k[0] - reach * uh[0], k[1] - reach * uh[1]],
+                    [k[0] + reach * vh[0], k[1] + reach * vh[1]],
+                    round,
+                )
+            }
+            // An arc on either side (behaviour 2.36).
+            _ => match geometry::cut(k, before, next, corner) {
+                Ok(Cut::Chamfer { from, to }) => (from, to, None),
+                Ok(Cut::Round {
+                    from,
+                    to,
+                    center,
+                    ccw,
+                }) => (
+                    from,
+                    to,
+                    Some(([center[0] - from[0], center[1] - from[1]], ccw)),
                 ),
-            ));
-        }
+                Err(CutError::NoCorner { back }) => {
+                    return Err(self.error(
+                        "corner-angle",
+                        word_span,
+                        format!(
+                            "{letter}: the next block's move (line {line}) {}: there is no corner to cut",
+                            if back { "turns right back, backwards along the tangent" } else { "goes on tangentially" }
+                        ),
+                    ));
+                }
+                Err(CutError::TooLong) => {
+                    return Err(self.error(
+                        "corner-too-long",
+                        word_span,
+                        format!(
+                            "{letter}: the {} does not fit on this block's move and the next block's (line {line}) (Fanuc alarm PS0055)",
+                            if matches!(corner, Corner::Chamfer(_)) { "chamfer" } else { "corner rounding" },
+                        ),
+                    ));
+                }
+            },
+        };
         let mut p1 = at;
         let mut p2 = at;
-        for k in 0..2 {
-            let axis = [ia, ib][k];
-            p1[axis] = at[axis] - reach * uh[k] / s[k];
-            p2[axis] = at[axis] + reach * vh[k] / s[k];
+        for i in 0..2 {
+            let axis = [ia, ib][i];
+            p1[axis] = q1[i] / s[i];
+            p2[axis] = q2[i] / s[i];
         }
         // The block's move ends where the inserted one starts; the offsets'
         // vectors stand as they did at the corner.
@@ -173,9 +222,13 @@ impl Machine {
         if let Some(m) = out.moves.last_mut() {
             m.programmed_to = p1;
             m.to = shifted(p1);
+            if let Some(info) = &mut m.arc {
+                geometry::end_arc_at(info, (m.programmed_from, p1), (m.from, m.to));
+            }
         }
         self.state.programmed = p1;
         let from: Mark = self.mark();
+        let corner_kind = corner;
         let sentence = match corner_kind {
             Corner::Chamfer(c) => {
                 self.state.programmed = p2;
@@ -186,22 +239,19 @@ impl Machine {
                     self.plane_point(p1),
                     self.plane_point(p2),
                     self.plane_point(at),
-                    v.1
+                    line
                 )
             }
             Corner::Round(r) => {
-                // The centre is R from both moves, on the side the path
-                // turns to.
-                let side = if cross > 0.0 { 1.0 } else { -1.0 };
-                let n = [-uh[1] * side, uh[0] * side];
+                let (offset, ccw) = round.expect("a round's centre");
                 // As I/J/K: from the arc's start.
                 let mut center = [0.0; 3];
-                center[ia] = r * n[0];
-                center[ib] = r * n[1];
+                center[ia] = offset[0];
+                center[ib] = offset[1];
                 let req = ArcRequest {
                     target: p2,
                     actual_end: shifted(p2),
-                    ccw: cross > 0.0,
+                    ccw,
                     center,
                     ..ArcRequest::default()
                 };
@@ -220,7 +270,7 @@ impl Machine {
                     self.plane_point(p1),
                     self.plane_point(p2),
                     self.plane_point(at),
-                    v.1
+                    line
                 )
             }
         };
@@ -233,14 +283,19 @@ impl Machine {
 
     /// Runs a block with `,C`/`,R` as it is written, up to its corner: the
     /// mill's general block, or the lathe's, which then reads the words.
-    fn corner_run(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+    fn corner_run(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+        word: crate::diag::Span,
+    ) -> Result<(), Diagnostic> {
         if self.setup.machine == MachineKind::Mill {
             return self.mill_general(b, out);
         }
         if self.state.polar.is_some() {
             return Err(self.error(
                 "corner-not-modelled",
-                b.span,
+                word,
                 "a chamfer or corner rounding in polar coordinate interpolation (the face) is not modelled yet",
             ));
         }
@@ -281,6 +336,9 @@ impl Machine {
                 *from += e - p;
             }
             m.programmed_from = end;
+            if let Some(info) = &mut m.arc {
+                geometry::start_arc_at(info, (m.programmed_from, m.programmed_to), (m.from, m.to));
+            }
         }
     }
 
@@ -376,7 +434,7 @@ impl Machine {
         ahead: &mut dyn Ahead,
         letter: &str,
         span: crate::diag::Span,
-    ) -> Result<Option<(P2, u32)>, Diagnostic> {
+    ) -> Result<Option<(Seg, u32)>, Diagnostic> {
         let Some(next) = ahead.peek(0) else {
             return Err(self.error(
                 "corner-next-move",
@@ -431,16 +489,7 @@ impl Machine {
             ));
         };
         match m.kind {
-            MoveKind::Feed => {}
-            MoveKind::ArcCw | MoveKind::ArcCcw => {
-                return Err(self.error(
-                    "corner-not-modelled",
-                    span,
-                    format!(
-                        "{letter}: a chamfer or corner rounding before an arc (line {line}) is not modelled yet (only between two G01 moves)"
-                    ),
-                ));
-            }
+            MoveKind::Feed | MoveKind::ArcCw | MoveKind::ArcCcw => {}
             MoveKind::Rapid | MoveKind::Offset => {
                 return Err(self.error(
                     "corner-next-move",
@@ -458,7 +507,8 @@ impl Machine {
         ];
         let moved_normal = (m.programmed_to[normal] - m.programmed_from[normal]).abs() > 1e-9
             || (m.to[normal] - m.from[normal]).abs() > 1e-9;
-        if moved_normal || len(v) < 1e-9 {
+        // A full circle next starts and ends at the corner.
+        if moved_normal || (len(v) < 1e-9 && m.arc.is_none()) {
             return Err(self.error(
                 "corner-next-move",
                 span,
@@ -467,7 +517,23 @@ impl Machine {
                 ),
             ));
         }
-        Ok(Some((v, line)))
+        let next = match m.arc {
+            Some(info) => {
+                let c = info.programmed_center;
+                let at = |p: Xyz| [p[ia] * s[0], p[ib] * s[1]];
+                geometry::arc_seg(
+                    at(c),
+                    info.programmed_radius,
+                    info.programmed_sweep,
+                    (at(m.programmed_from), at(m.programmed_to)),
+                )
+            }
+            None => Seg::Line {
+                dir: [v[0] / len(v), v[1] / len(v)],
+                len: len(v),
+            },
+        };
+        Ok(Some((next, line)))
     }
 
     /// "X50.000 Y0.000": a point's coordinates in the selected plane.

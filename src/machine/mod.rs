@@ -13,6 +13,7 @@ mod arcs;
 pub(crate) mod calls;
 mod coords;
 mod corner;
+mod corner_geometry;
 mod cutter;
 mod cycles;
 mod data;
@@ -485,7 +486,7 @@ impl Machine {
             Address::A | Address::B | Address::C => "rotary axes are not modelled yet",
             Address::E => "thread lead (and Haas G187's corner tolerance) is not modelled yet",
             _ => {
-                "a chamfer or corner rounding here (a G70–G73 contour, a cycle, tool nose radius compensation) is not modelled yet: the lathe cuts it between two G01 moves (behaviour 2.35)"
+                "a chamfer or corner rounding here (a G70–G73 contour, a cycle, tool nose radius compensation) is not modelled yet: the lathe cuts it between two feed moves (behaviour 2.35)"
             }
         };
         Err(self.error("unsupported-word", w.span, format!("{letter}: {why}")))
