@@ -443,4 +443,58 @@ mod tests {
             Err(CutError::TooLong)
         );
     }
+
+    /// A path at the corner (0, 0): a line in direction `angle`, or an arc
+    /// whose centre lies `radius` from the corner at `angle`.
+    fn seg(line: bool, angle: f64, radius: f64, ccw: bool) -> Seg {
+        if line {
+            let d = [angle.cos(), angle.sin()];
+            return Seg::Line { dir: d, len: 100.0 };
+        }
+        Seg::Arc {
+            center: [radius * angle.cos(), radius * angle.sin()],
+            radius,
+            ccw,
+            sweep: 3.0,
+        }
+    }
+
+    /// The distance of `p` from the path (its line or its circle).
+    fn off(s: &Seg, p: P2) -> f64 {
+        match *s {
+            Seg::Line { dir, .. } => cross(dir, p).abs(),
+            Seg::Arc { center, radius, .. } => (norm(sub(p, center)) - radius).abs(),
+        }
+    }
+
+    #[cfg(not(target_arch = "wasm32"))]
+    proptest::proptest! {
+        /// Behaviour 2.36: whatever the two paths, a round found touches
+        /// both: its ends lie on them, `,R` from its centre, and it leaves
+        /// and meets each path along it (the tangents agree); a chamfer's
+        /// ends lie on the paths `,C` from the corner.
+        #[test]
+        fn a_round_is_tangent_to_both_paths_and_a_chamfer_a_chord_of_c(
+            (l1, a1, r1, c1) in (proptest::bool::ANY, 0.0f64..TAU, 5.0f64..50.0, proptest::bool::ANY),
+            (l2, a2, r2, c2) in (proptest::bool::ANY, 0.0f64..TAU, 5.0f64..50.0, proptest::bool::ANY),
+            size in 0.2f64..3.0,
+        ) {
+            let (before, after) = (seg(l1, a1, r1, c1), seg(l2, a2, r2, c2));
+            let k = [0.0, 0.0];
+            if let Ok(Cut::Round { from, to, center, ccw }) = cut(k, before, after, Corner::Round(size)) {
+                proptest::prop_assert!(off(&before, from) < 1e-9 && off(&after, to) < 1e-9);
+                proptest::prop_assert!((norm(sub(from, center)) - size).abs() < 1e-9);
+                proptest::prop_assert!((norm(sub(to, center)) - size).abs() < 1e-9);
+                let round = Seg::Arc { center, radius: size, ccw, sweep: 1.0 };
+                for (path, p) in [(before, from), (after, to)] {
+                    let (t, u) = (path.tangent(p), round.tangent(p));
+                    proptest::prop_assert!(cross(t, u).abs() < 1e-6 && dot(t, u) > 0.0, "{t:?} {u:?}");
+                }
+            }
+            if let Ok(Cut::Chamfer { from, to }) = cut(k, before, after, Corner::Chamfer(size)) {
+                proptest::prop_assert!(off(&before, from) < 1e-9 && off(&after, to) < 1e-9);
+                proptest::prop_assert!((norm(from) - size).abs() < 1e-9 && (norm(to) - size).abs() < 1e-9);
+            }
+        }
+    }
 }
