@@ -222,12 +222,7 @@ fn behaviour16_14_g41_with_i_j_and_no_move_sets_the_vector_from_their_direction(
     same(m.to, [0.0, 5.0, 0.0]);
     assert_eq!(at_line(&r, text, 1).cutter.unwrap().phase, "start_up");
     same(end(&r, 2), [50.0, 5.0, 0.0]);
-    // On the lathe, with a move, they are not modelled.
-    let mut lathe = lathe(&[]);
-    lathe.set_register("01=R0.8,T3").unwrap();
-    let (code, _, _) = alarm("T0101\nG01 G42 X40. Z0 I1. F0.2\nZ-20.", &lathe);
-    assert_eq!(code, "cutter-ijk");
-    // Nor in a G40 block without a move.
+    // Not in a G40 block without a move.
     let (code, line, _) = alarm("G01 G41 D01 X50. F100.\nX100.\nG40 I1. J0", &r5());
     assert_eq!((code, line), ("cutter-ijk", 3));
 }

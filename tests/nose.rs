@@ -197,6 +197,25 @@ fn behaviour18_4_start_up_waits_for_a_move_and_cancel_ends_on_the_programmed_poi
 }
 
 #[test]
+fn behaviour18_4_k_and_i_give_the_vector_of_a_start_up_and_the_exit_of_a_cancel() {
+    // The KI-type vector (16.14 in G18), R0.8, tip 3, in radius (z, r):
+    // G42 X40. Z0 K−1. I1. ends 0.8 right of (−1, 1)/√2, the centre at
+    // (0.4√2, 20 + 0.4√2), the imaginary nose 0.8 back in both: X
+    // 2·(19.2 + 0.4√2), Z 0.4√2 − 0.8 (the next block, −Z, would have put
+    // it at X40. Z−0.8). G40 ... K1. I1. after Z−20.: that block ends where
+    // r = 20.8 meets the offset of (1, 1)/√2 from (−20, 20), 0.8 to its
+    // right, z − r = −40 + 0.8√2: the centre at z = −19.2 + 0.8√2, the
+    // nose at Z −20 + 0.8√2, X40.
+    let k = 0.4 * std::f64::consts::SQRT_2;
+    let text =
+        "T0101\nG00 X40. Z2.\nG42 G01 X40. Z0 K-1. I1. F0.2\nZ-20.\nG40 X60. Z-25. K1. I1.\nM30\n";
+    let r = ok(text, &nose(1, 0.0, 0.0, 0.8, 3));
+    same(end(&r, 3), [2.0 * (19.2 + k), 0.0, k - 0.8]);
+    same(end(&r, 4), [40.0, 0.0, -20.0 + 2.0 * k]);
+    same(end(&r, 5), [60.0, 0.0, -25.0]);
+}
+
+#[test]
 fn behaviour18_5_the_corners_are_the_mills_inside_outside_and_acute() {
     // Inside corner: Z−20. at X40 then up the face to X60 (G42, R 0.5,
     // tip 0): heading −Z then +X turns right, toward the tool: inside, the

@@ -269,7 +269,7 @@ impl Machine {
         // G40/G41/G42 read I/J/K as the direction of the vector (behaviour
         // 16.14); where they cannot, the compensation refused them first
         // (`cutter-ijk`).
-        if c.cutter().is_some() && matches!(path, Path::Line(_)) {
+        if c.cutter().is_some() && matches!(path, Path::Line(_) | Path::LatheLine(_)) {
             add(&[I, J, K]);
         }
         // The lathe's positioning codes refuse a T code themselves

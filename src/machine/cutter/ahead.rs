@@ -94,7 +94,6 @@ impl Machine {
             // went on that way in the mode and radius it has.
             if codes.cutter() == Some(CutterCompensation::Cancel)
                 && before.mode != CutterCompensation::Cancel
-                && !probe.nose_lathe()
                 && !codes.motion().unwrap_or(probe.state.modal.motion).is_arc()
                 && probe.names_plane_axis(next)
                 && let Some(d) = probe.ijk_direction(next)

@@ -101,32 +101,20 @@ impl Machine {
             && b.holds_any(&[Address::I, Address::J, Address::K])
         {
             let arc = codes.motion().unwrap_or(self.state.modal.motion).is_arc();
-            let moves = self.names_plane_axis(b);
-            // The mill models the IJ-type vector of a G41/G42 block, with a
-            // move or without, and the direction of a G40 block with a move
-            // (behaviour 16.14); the lathe's are not modelled.
-            let modelled = if code == CutterCompensation::Cancel {
-                moves && !self.nose_lathe()
-            } else {
-                !moves || !self.nose_lathe()
-            };
-            if !arc && !modelled {
+            // The IJ-type vector of a G41/G42 block, with a move or without,
+            // and the direction of a G40 block with a move are modelled
+            // (behaviour 16.14, 18.4); a G40 without a move is not.
+            if !arc && code == CutterCompensation::Cancel && !self.names_plane_axis(b) {
                 let w = b
                     .get(Address::I)
                     .or_else(|| b.get(Address::J))
                     .or_else(|| b.get(Address::K));
-                let what = if self.nose_lathe() {
-                    "on the lathe (nose radius compensation), with a move or with G40"
-                } else {
-                    "in a G40 block without a move"
-                };
                 return Err(self.error(
                     "cutter-ijk",
                     w.map_or(b.span, |w| w.span),
                     format!(
-                        "{}: I/J/K in a {} block {what} (the direction of the corner vector) are not modelled yet",
+                        "{}: I/J/K in a G40 block without a move (the direction of the corner vector) are not modelled yet",
                         w.map_or("I", |w| w.address.letter()),
-                        code.gcode()
                     ),
                 ));
             }

@@ -211,7 +211,6 @@ impl Machine {
                 self.corner_name(self.in_plane(self.state.programmed))
             ));
             if b.codes().cutter() == Some(CutterCompensation::Cancel)
-                && !self.nose_lathe()
                 && self.ijk_direction(b).is_some()
             {
                 out.note(|| {

@@ -178,14 +178,12 @@ impl Machine {
         (d[0].hypot(d[1]) > 0.0).then(|| geo::unit(d))
     }
 
-    /// The direction of a mill G41/G42 block's I/J/K when it moves in a
-    /// straight line (behaviour 16.14: the IJ-type vector); None otherwise.
+    /// The direction of a G41/G42 block's I/J/K when it moves in a
+    /// straight line (behaviour 16.14: the IJ-type vector, on the lathe
+    /// K/I; 18.4); None otherwise.
     pub(super) fn ij_vector(&self, b: &Block) -> Option<P2> {
         let code = b.codes().cutter()?;
-        if code == CutterCompensation::Cancel
-            || self.nose_lathe()
-            || self.state.modal.motion.is_arc()
-        {
+        if code == CutterCompensation::Cancel || self.state.modal.motion.is_arc() {
             return None;
         }
         self.ijk_direction(b)
