@@ -190,6 +190,65 @@ proptest! {
         }
     }
 
+    /// Behaviour 2.36 with 16.19: with some edges bulged out as arcs
+    /// (G03, R twice the chord) and a corner round at every vertex, every
+    /// move of offset mode runs on the offset of the path it cuts: a line
+    /// the radius from its programmed line, an arc — the bulges and the
+    /// rounds — on its programmed circle's concentric one, the tool's
+    /// radius nearer the centre on the left of a counter-clockwise arc.
+    #[test]
+    fn rounds_at_arcs_are_compensated_on_the_cut_path(
+        points in polygon(),
+        bulges in prop::collection::vec(any::<bool>(), 8),
+        radius in 0.5f64..1.0,
+        left in any::<bool>(),
+    ) {
+        let code = if left { "G41" } else { "G42" };
+        let o = if left { radius } else { -radius };
+        // The contour with an arc for each edge `bulges` says and a round
+        // on every block of offset mode but the start-up and the last edge;
+        // every edge names its motion, and G40 goes back in G01.
+        let n = points.len();
+        let mut lines: Vec<String> = contour(&points, code).lines().map(String::from).collect();
+        let last = lines.len() - 3;
+        for (i, line) in lines.iter_mut().enumerate().take(last + 2).skip(2) {
+            if i >= last {
+                *line = format!("G01 {line}");
+                continue;
+            }
+            let k = (i - 1) % n;
+            let (a, b) = (points[(k + n - 1) % n], points[k]);
+            let chord = (b.0 - a.0).hypot(b.1 - a.1);
+            *line = if bulges[k] {
+                format!("G03 {line} R{} ,R2.", mm(2.0 * chord))
+            } else {
+                format!("G01 {line} ,R2.")
+            };
+        }
+        let text = lines.join("\n") + "\n";
+        let r = ok(&text, &setup(radius));
+        let moves = offset_moves(&r);
+        let bulged = (1..=n).filter(|k| bulges[k % n]).count();
+        let arcs = moves.iter().filter(|m| m.arc.is_some()).count();
+        prop_assert_eq!(arcs, n + bulged, "a round at each vertex and every bulge\n{}", text);
+        for m in &moves {
+            if let Some(a) = m.arc {
+                let c = a.programmed_center;
+                let s = if a.programmed_sweep > 0.0 { 1.0 } else { -1.0 };
+                let want = a.programmed_radius - o * s;
+                for p in [m.from, m.to] {
+                    let d = (p[0] - c[0]).hypot(p[1] - c[1]);
+                    prop_assert!((d - want).abs() < 2e-3, "{d} vs {want}\n{text}\n{m:?}");
+                }
+            } else if m.programmed_from != m.programmed_to {
+                for p in [m.from, m.to] {
+                    let d = side_distance(p, m.programmed_from, m.programmed_to);
+                    prop_assert!((d - o).abs() < 2e-3, "{d} vs {o}\n{text}\n{m:?}");
+                }
+            }
+        }
+    }
+
     /// Behaviour 16.5–16.7: G41 on a contour makes the corners G42 makes on
     /// the same contour gone round the other way (the tool on the same side
     /// of the material).
