@@ -26,9 +26,9 @@ fn len(v: P2) -> f64 {
 }
 
 impl Machine {
-    /// A block with `,C` or `,R` (behaviour 2.30, 2.35, 2.36): runs the block to its
-    /// corner, reads the next block's move, and inserts the chamfer or the
-    /// corner arc.
+    /// A block with `,C` or `,R` (behaviour 2.30, 2.35, 2.36): runs the
+    /// block to its corner, reads the next block's move, and inserts the
+    /// chamfer or the corner arc.
     pub(super) fn corner_block(
         &mut self,
         b: &Block,
@@ -36,10 +36,10 @@ impl Machine {
         ahead: &mut dyn Ahead,
     ) -> Result<(), Diagnostic> {
         let corner = self.corner_word(b)?;
-        // A block run only to find the next move's direction for an
-        // earlier corner makes its own move as written (behaviour 2.31).
         let word = b.get(Address::CommaC).or_else(|| b.get(Address::CommaR));
         let word_span = word.map_or(b.span, |w| w.span);
+        // A block run only to find the next move's direction for an
+        // earlier corner makes its own move as written (behaviour 2.31).
         if self.reading_ahead {
             return self.corner_run(b, out, word_span);
         }
@@ -121,7 +121,7 @@ impl Machine {
             },
         };
         // The two ends of the inserted move in the plane, and a round's
-        // centre (from its start) and turn.
+        // centre (from its start) and turn (None: a chamfer).
         let (q1, q2, round) = match (before, next) {
             (Seg::Line { dir: uh, len: lu }, Seg::Line { dir: vh, len: lv }) => {
                 let cross = uh[0] * vh[1] - uh[1] * vh[0];
@@ -228,22 +228,21 @@ impl Machine {
         }
         self.state.programmed = p1;
         let from: Mark = self.mark();
-        let corner_kind = corner;
-        let sentence = match corner_kind {
-            Corner::Chamfer(c) => {
+        let (Corner::Chamfer(size) | Corner::Round(size)) = corner;
+        let sentence = match round {
+            None => {
                 self.state.programmed = p2;
                 self.emit(out, from, MoveKind::Feed, true, None);
                 format!(
                     "{letter}{}: a chamfer from {} to {} cuts the corner at {} (line {}'s move starts there)",
-                    show(c, units),
+                    show(size, units),
                     self.plane_point(p1),
                     self.plane_point(p2),
                     self.plane_point(at),
                     line
                 )
             }
-            Corner::Round(r) => {
-                let (offset, ccw) = round.expect("a round's centre");
+            Some((offset, ccw)) => {
                 // As I/J/K: from the arc's start.
                 let mut center = [0.0; 3];
                 center[ia] = offset[0];
@@ -265,8 +264,8 @@ impl Machine {
                 self.emit(out, from, kind, true, Some(info));
                 format!(
                     "{letter}{}: an arc of radius {} from {} to {}, tangent to both moves, rounds the corner at {} (line {}'s move starts there)",
-                    show(r, units),
-                    show(r, units),
+                    show(size, units),
+                    show(size, units),
                     self.plane_point(p1),
                     self.plane_point(p2),
                     self.plane_point(at),

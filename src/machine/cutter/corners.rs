@@ -187,7 +187,9 @@ impl Machine {
         });
         // The first move ends at the chamfer's or the round's start, with
         // the second set aside so that the corner's own steps come between.
-        let cut = out.moves.pop().expect("the chamfer's or the round's move");
+        let Some(cut) = out.moves.pop() else {
+            return Ok(());
+        };
         let end = std::mem::replace(&mut self.state.programmed, cut.programmed_from);
         let made = self.apply_corner(b, out, i, &corner, true);
         let from = self.actual();
