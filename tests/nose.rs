@@ -278,9 +278,31 @@ fn behaviour18_8_g74_to_g76_in_compensation_are_refused() {
 }
 
 #[test]
+fn behaviour18_9_a_new_offset_number_for_the_tool_ends_its_block_on_the_new_nose() {
+    // Offset 01 R0.8 and 02 R0.4, both tip 3 at zero geometry. Z−10. ends
+    // 0.8 above its end (the next block goes on along −Z): X40. Z−10.8.
+    // T0102 Z−20. (16.8: the block's corner with the new radius on both
+    // sides) meets X60.'s offset at the inside corner: the centre at
+    // (z −19.6, r 20.4), the imaginary nose 0.4 back in both: X40. Z−20.
+    // X60. then ends 0.4 right of its end before the cancel: X59.2 Z−20.
+    let mut s = nose(1, 0.0, 0.0, 0.8, 3);
+    s.set_register("02=X0,Z0,R0.4,T3").unwrap();
+    let text = "T0101\nG00 X40. Z2.\nG42 G01 Z0 F0.2\nZ-10.\nT0102 Z-20.\nX60.\nG40 X70.\nM30\n";
+    let r = ok(text, &s);
+    same(end(&r, 4), [40.0, 0.0, -10.8]);
+    same(end(&r, 5), [40.0, 0.0, -20.0]);
+    same(end(&r, 6), [59.2, 0.0, -20.0]);
+    assert!(
+        explain(&r, 4).contains("the radius changed from 0.800 to 0.400"),
+        "{}",
+        explain(&r, 4)
+    );
+}
+
+#[test]
 fn behaviour18_9_what_the_mode_refuses() {
     let s = nose(1, 0.0, 0.0, 0.4, 3);
-    // A new offset number in compensation.
+    // Another tool in compensation.
     let text = "T0101\nG00 X40. Z2.\nG42 G01 Z0 F0.1\nZ-20. T0202\n";
     let (code, line, column, _) = alarm(text, &s);
     assert_eq!((code, line, column), ("nose-t-change", 4, 7));

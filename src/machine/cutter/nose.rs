@@ -169,8 +169,11 @@ impl Machine {
                 ),
             ));
         }
+        // A new offset number for the same tool reads its radius and tip
+        // as a new D does on the mill (16.8: the block ends on the new
+        // offset); another tool is not modelled under the compensation.
         if let Some(t) = b.get(Address::T)
-            && (t.int() % 100) as u16 != self.state.lathe.offset
+            && t.int() / 100 != self.state.lathe.tool
             && (now.mode != CutterCompensation::Cancel
                 || matches!(now.phase, Phase::StartUp | Phase::Offset))
         {
@@ -178,8 +181,9 @@ impl Machine {
                 "nose-t-change",
                 t.span,
                 format!(
-                    "T{:04}: a new offset number while {name} is on changes the nose radius and tip under the compensation, which is not modelled: cancel with G40 first",
-                    t.int()
+                    "T{:04}: a tool change while {name} is on is not modelled: cancel with G40 first (a new offset number for tool {:02} is read as a new nose radius and tip)",
+                    t.int(),
+                    self.state.lathe.tool
                 ),
             ));
         }
