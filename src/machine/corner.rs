@@ -70,7 +70,7 @@ impl Machine {
         let plane = self.state.modal.plane.gcode();
         // The lathe's X is a diameter: the corner is cut on the part, in
         // radius (behaviour 2.35).
-        let s = self.corner_scale();
+        let s = self.plane_scale();
         let at = self.state.programmed;
         let made: Vec<usize> = (moves_before..out.moves.len()).collect();
         let in_plane_only = at[normal] == start[normal]
@@ -304,16 +304,6 @@ impl Machine {
         ran
     }
 
-    /// From the program's coordinates of the plane's two axes to lengths
-    /// on the part: the lathe's X, a diameter, halved.
-    fn corner_scale(&self) -> [f64; 2] {
-        if self.setup.machine == MachineKind::Lathe {
-            [1.0, 0.5]
-        } else {
-            [1.0, 1.0]
-        }
-    }
-
     /// Before the block after a corner: its words count from the corner
     /// (behaviour 2.32), so the block runs from there; returns where the
     /// tool stands, the chamfer's or the round's end.
@@ -499,7 +489,7 @@ impl Machine {
                 ));
             }
         }
-        let s = self.corner_scale();
+        let s = self.plane_scale();
         let v = [
             (m.programmed_to[ia] - m.programmed_from[ia]) * s[0],
             (m.programmed_to[ib] - m.programmed_from[ib]) * s[1],

@@ -289,13 +289,6 @@ pub(super) fn arc_seg(center: P2, radius: f64, sweep: f64, (from, to): (P2, P2))
     }
 }
 
-/// A point of the program in the arc's plane (the lathe's X in radius).
-fn in_plane(info: &ArcInfo, p: Xyz) -> P2 {
-    let (ia, ib, _) = info.plane.axes();
-    let s = |i: usize| if info.diameter_x && i == 0 { 0.5 } else { 1.0 };
-    [p[ia] * s(ia), p[ib] * s(ib)]
-}
-
 /// The signed sweep from `a` to `b` about `c`, turning as `sweep` does.
 fn sweep_between(c: P2, a: P2, b: P2, sweep: f64) -> f64 {
     let t = travelled(c, a, b, sweep > 0.0);
@@ -306,26 +299,26 @@ fn sweep_between(c: P2, a: P2, b: P2, sweep: f64) -> f64 {
 /// An arc move cut short: it now ends at `to` (programmed) and `actual`,
 /// points of its circles; its start and centre stay.
 pub(super) fn end_arc_at(info: &mut ArcInfo, (from, to): (Xyz, Xyz), (afrom, ato): (Xyz, Xyz)) {
-    let c = in_plane(info, info.programmed_center);
+    let c = info.in_plane(info.programmed_center);
     info.programmed_sweep = sweep_between(
         c,
-        in_plane(info, from),
-        in_plane(info, to),
+        info.in_plane(from),
+        info.in_plane(to),
         info.programmed_sweep,
     );
-    let c = in_plane(info, info.center);
-    info.sweep = sweep_between(c, in_plane(info, afrom), in_plane(info, ato), info.sweep);
+    let c = info.in_plane(info.center);
+    info.sweep = sweep_between(c, info.in_plane(afrom), info.in_plane(ato), info.sweep);
 }
 
 /// An arc move that starts later on its circles, at `from` (programmed)
 /// and `afrom` (actual): the block after a cut corner (behaviour 2.36).
 pub(super) fn start_arc_at(info: &mut ArcInfo, (from, to): (Xyz, Xyz), (afrom, ato): (Xyz, Xyz)) {
-    let c = in_plane(info, info.programmed_center);
-    let (a, b) = (in_plane(info, from), in_plane(info, to));
+    let c = info.in_plane(info.programmed_center);
+    let (a, b) = (info.in_plane(from), info.in_plane(to));
     info.programmed_start_angle = (a[1] - c[1]).atan2(a[0] - c[0]);
     info.programmed_sweep = sweep_between(c, a, b, info.programmed_sweep);
-    let c = in_plane(info, info.center);
-    let (a, b) = (in_plane(info, afrom), in_plane(info, ato));
+    let c = info.in_plane(info.center);
+    let (a, b) = (info.in_plane(afrom), info.in_plane(ato));
     info.start_angle = (a[1] - c[1]).atan2(a[0] - c[0]);
     info.sweep = sweep_between(c, a, b, info.sweep);
 }

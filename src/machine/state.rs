@@ -101,14 +101,20 @@ impl ArcInfo {
     }
 
     fn plane_circle(&self, c: Xyz, radius: f64, start_angle: f64, sweep: f64) -> Circle {
-        let (ia, ib, _) = self.plane.axes();
-        let s = |i: usize| if self.diameter_x && i == 0 { 0.5 } else { 1.0 };
         Circle {
-            center: [c[ia] * s(ia), c[ib] * s(ib)],
+            center: self.in_plane(c),
             radius,
             start_angle,
             sweep,
         }
+    }
+
+    /// A point of the program in the arc's plane coordinates (radius space
+    /// on the lathe).
+    pub fn in_plane(&self, p: Xyz) -> crate::machine::arc::P2 {
+        let (ia, ib, _) = self.plane.axes();
+        let s = |i: usize| if self.diameter_x && i == 0 { 0.5 } else { 1.0 };
+        [p[ia] * s(ia), p[ib] * s(ib)]
     }
 
     /// The points where the actual and the programmed arc of `m` reach their

@@ -28,7 +28,7 @@ impl Machine {
     /// halved, so that the offsets are the nose radius away on the part
     /// (behaviour 18.1).
     #[inline(always)]
-    pub(super) fn plane_scale(&self) -> P2 {
+    pub(in crate::machine) fn plane_scale(&self) -> P2 {
         if self.nose_lathe() {
             [1.0, 0.5]
         } else {
