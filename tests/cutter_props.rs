@@ -63,24 +63,22 @@ fn contour(points: &[(f64, f64)], code: &str) -> String {
     text
 }
 
-/// [`contour`] with `word` (`,C…` or `,R…`) on every block of offset mode
-/// whose next block goes on round the polygon (behaviour 16.19): not the
-/// start-up, not the last edge before G40.
-fn cut_contour(points: &[(f64, f64)], code: &str, word: &str) -> String {
-    let text = contour(points, code);
-    let lines: Vec<&str> = text.lines().collect();
+/// [`contour`] with each edge of offset mode but the last (the blocks
+/// after the start-up whose next block goes on round the polygon) written
+/// by `edge` from the edge's end vertex `k` and its words; the last edge
+/// and the G40 block go back to G01.
+fn edged(points: &[(f64, f64)], code: &str, edge: impl Fn(usize, &str) -> String) -> String {
+    let n = points.len();
+    let mut lines: Vec<String> = contour(points, code).lines().map(String::from).collect();
     let last = lines.len() - 3;
-    lines
-        .iter()
-        .enumerate()
-        .map(|(i, l)| {
-            if (2..last).contains(&i) {
-                format!("{l} {word}\n")
-            } else {
-                format!("{l}\n")
-            }
-        })
-        .collect()
+    for (i, line) in lines.iter_mut().enumerate().take(last + 2).skip(2) {
+        *line = if i >= last {
+            format!("G01 {line}")
+        } else {
+            edge((i - 1) % n, line)
+        };
+    }
+    lines.join("\n") + "\n"
 }
 
 /// The signed distance of `p` from the line through `a` and `b`,
@@ -89,6 +87,25 @@ fn side_distance(p: [f64; 3], a: [f64; 3], b: [f64; 3]) -> f64 {
     let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
     let l = dx.hypot(dy);
     (dx * (p[1] - a[1]) - dy * (p[0] - a[0])) / l
+}
+
+/// How far a move's ends lie from the offset of its programmed path by
+/// `o` (positive left): a line's parallel, an arc's concentric circle (the
+/// left of a counter-clockwise arc nearer its centre); 0 for a move with
+/// no path in the plane.
+fn off_path(m: &Move, o: f64) -> f64 {
+    let off = |p: [f64; 3]| match m.arc {
+        Some(a) => {
+            let c = a.programmed_center;
+            let s = if a.programmed_sweep > 0.0 { 1.0 } else { -1.0 };
+            ((p[0] - c[0]).hypot(p[1] - c[1]) - (a.programmed_radius - o * s)).abs()
+        }
+        None if m.programmed_from != m.programmed_to => {
+            (side_distance(p, m.programmed_from, m.programmed_to) - o).abs()
+        }
+        None => 0.0,
+    };
+    off(m.from).max(off(m.to))
 }
 
 /// The moves of the blocks in offset mode, but the last one's (it ends by
@@ -168,7 +185,7 @@ proptest! {
         // Cuts the tool fits inside: a round larger than it, a chamfer long
         // enough that its offset does not run backwards (16.12).
         let word = if round { ",R2." } else { ",C3." };
-        let text = cut_contour(&points, code, word);
+        let text = edged(&points, code, |_, line| format!("{line} {word}"));
         let r = ok(&text, &setup(radius));
         let moves = offset_moves(&r);
         let arcs = moves.iter().filter(|m| m.arc.is_some()).count();
@@ -177,16 +194,9 @@ proptest! {
             if let Some(a) = m.arc {
                 let want = 2.0 - o;
                 prop_assert!((a.radius - want).abs() < 2e-3, "{} vs {want}\n{text}", a.radius);
-                for p in [m.from, m.to] {
-                    let d = (p[0] - a.programmed_center[0]).hypot(p[1] - a.programmed_center[1]);
-                    prop_assert!((d - want).abs() < 2e-3, "{d} vs {want}\n{text}");
-                }
-            } else if m.programmed_from != m.programmed_to {
-                for p in [m.from, m.to] {
-                    let d = side_distance(p, m.programmed_from, m.programmed_to);
-                    prop_assert!((d - o).abs() < 2e-3, "{d} vs {o}\n{text}\n{m:?}");
-                }
             }
+            let off = off_path(m, o);
+            prop_assert!(off < 2e-3, "{off} off the offset path\n{text}\n{m:?}");
         }
     }
 
@@ -205,47 +215,25 @@ proptest! {
     ) {
         let code = if left { "G41" } else { "G42" };
         let o = if left { radius } else { -radius };
-        // The contour with an arc for each edge `bulges` says and a round
-        // on every block of offset mode but the start-up and the last edge;
-        // every edge names its motion, and G40 goes back in G01.
+        // An arc for each edge `bulges` says, a round at every vertex.
         let n = points.len();
-        let mut lines: Vec<String> = contour(&points, code).lines().map(String::from).collect();
-        let last = lines.len() - 3;
-        for (i, line) in lines.iter_mut().enumerate().take(last + 2).skip(2) {
-            if i >= last {
-                *line = format!("G01 {line}");
-                continue;
-            }
-            let k = (i - 1) % n;
+        let text = edged(&points, code, |k, line| {
             let (a, b) = (points[(k + n - 1) % n], points[k]);
-            let chord = (b.0 - a.0).hypot(b.1 - a.1);
-            *line = if bulges[k] {
+            if bulges[k] {
+                let chord = (b.0 - a.0).hypot(b.1 - a.1);
                 format!("G03 {line} R{} ,R2.", mm(2.0 * chord))
             } else {
                 format!("G01 {line} ,R2.")
-            };
-        }
-        let text = lines.join("\n") + "\n";
+            }
+        });
         let r = ok(&text, &setup(radius));
         let moves = offset_moves(&r);
         let bulged = (1..=n).filter(|k| bulges[k % n]).count();
         let arcs = moves.iter().filter(|m| m.arc.is_some()).count();
         prop_assert_eq!(arcs, n + bulged, "a round at each vertex and every bulge\n{}", text);
         for m in &moves {
-            if let Some(a) = m.arc {
-                let c = a.programmed_center;
-                let s = if a.programmed_sweep > 0.0 { 1.0 } else { -1.0 };
-                let want = a.programmed_radius - o * s;
-                for p in [m.from, m.to] {
-                    let d = (p[0] - c[0]).hypot(p[1] - c[1]);
-                    prop_assert!((d - want).abs() < 2e-3, "{d} vs {want}\n{text}\n{m:?}");
-                }
-            } else if m.programmed_from != m.programmed_to {
-                for p in [m.from, m.to] {
-                    let d = side_distance(p, m.programmed_from, m.programmed_to);
-                    prop_assert!((d - o).abs() < 2e-3, "{d} vs {o}\n{text}\n{m:?}");
-                }
-            }
+            let off = off_path(m, o);
+            prop_assert!(off < 2e-3, "{off} off the offset path\n{text}\n{m:?}");
         }
     }
 
