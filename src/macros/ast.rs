@@ -21,8 +21,13 @@ pub enum ExprKind {
     Var(Box<Expr>),
     /// `-e`.
     Neg(Box<Expr>),
-    /// `a op b` of the arithmetic and logic operators.
-    Binary(BinOp, Box<Expr>, Box<Expr>),
+    /// `a op b op c …` of one precedence level of the arithmetic and logic
+    /// operators, applied left to right (behaviour 20.3). A chain, not
+    /// nested pairs: a flat expression of any length is one node whose
+    /// operands are walked in a loop, so only brackets (at most five levels,
+    /// PS0118) deepen the tree and the recursion that walks it (behaviour
+    /// 20.17).
+    Chain(Box<Expr>, Vec<(BinOp, Expr)>),
     /// `a EQ b` and the other comparisons.
     Compare(CmpOp, Box<Expr>, Box<Expr>),
     /// A function of one argument, `SIN[e]`.

@@ -200,7 +200,7 @@ impl<'v> Evaluator<'v> {
                 let (a, b) = (self.value(a)?, self.value(b)?);
                 return Ok(Val::Bool(compare(*op, a, b)));
             }
-            ExprKind::Binary(op, a, b) => return self.binary(*op, a, b, e.span),
+            ExprKind::Chain(first, rest) => return self.chain(first, rest, e.span),
             ExprKind::Call(f, a) => {
                 let x = self.number(a)?;
                 self.call(*f, x, a.span, e.span)?
@@ -225,8 +225,39 @@ impl<'v> Evaluator<'v> {
         checked(v, e.span).map(|v| Val::Num(Value::Number(v)))
     }
 
-    fn binary(&mut self, op: BinOp, a: &Expr, b: &Expr, span: Span) -> Result<Val, Diagnostic> {
-        let (x, y) = (self.eval(a)?, self.eval(b)?);
+    /// A level's operators left to right (`1-2-3` is `[1-2]-3`): each
+    /// result is the left operand of the next, its span from the chain's
+    /// start to the operand's end.
+    fn chain(
+        &mut self,
+        first: &Expr,
+        rest: &[(BinOp, Expr)],
+        span: Span,
+    ) -> Result<Val, Diagnostic> {
+        let mut acc = self.eval(first)?;
+        let mut left = first.span;
+        for (op, b) in rest {
+            let y = self.eval(b)?;
+            let joined = Span {
+                end: b.span.end,
+                ..left
+            };
+            acc = self.binary(*op, acc, left, y, b.span, joined)?;
+            left = joined;
+        }
+        debug_assert_eq!(left.end, span.end);
+        Ok(acc)
+    }
+
+    fn binary(
+        &mut self,
+        op: BinOp,
+        x: Val,
+        a: Span,
+        y: Val,
+        b: Span,
+        span: Span,
+    ) -> Result<Val, Diagnostic> {
         if let (BinOp::And | BinOp::Or | BinOp::Xor, Val::Bool(p), Val::Bool(q)) = (op, x, y) {
             return Ok(Val::Bool(match op {
                 BinOp::And => p && q,
@@ -241,10 +272,8 @@ impl<'v> Evaluator<'v> {
             BinOp::Sub => x - y,
             BinOp::Mul => x * y,
             BinOp::Div | BinOp::Mod if y == 0.0 => {
-                return Err(alarm::ZERO_DIVIDE.at(
-                    b.span,
-                    format!("the divisor of {} is 0 (or vacant)", op.text()),
-                ));
+                return Err(alarm::ZERO_DIVIDE
+                    .at(b, format!("the divisor of {} is 0 (or vacant)", op.text())));
             }
             BinOp::Div => x / y,
             BinOp::Mod => x % y,
@@ -256,12 +285,12 @@ impl<'v> Evaluator<'v> {
         checked(v, span).map(|v| Val::Num(Value::Number(v)))
     }
 
-    fn as_number(&self, v: Val, e: &Expr) -> Result<f64, Diagnostic> {
+    fn as_number(&self, v: Val, at: Span) -> Result<f64, Diagnostic> {
         match v {
             Val::Num(v) => Ok(v.number()),
             Val::Bool(b) if self.options.numeric_conditions => Ok(f64::from(b)),
             Val::Bool(_) => Err(alarm::FORMAT.at(
-                e.span,
+                at,
                 "a comparison is true or false: only AND, OR and XOR join it to another",
             )),
         }

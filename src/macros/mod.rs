@@ -19,8 +19,34 @@ pub use parse::{MAX_NESTING, expression, opens_statement, opens_value, statement
 pub use store::{Kind, Store, kind, no_variable, system_variable};
 pub use value::Value;
 
+use std::borrow::Cow;
+
 /// The text of an expression as written (for the report's sentence).
 pub fn text_of<'t>(text: &'t str, e: &Expr) -> &'t str {
     text.get(e.span.start as usize..e.span.end as usize)
         .unwrap_or("")
 }
+
+/// Text quoted in a block's sentence: as written up to [`EXCERPT`]
+/// characters, else its start and end around `…`, so that a sentence stays
+/// a sentence and a report's size does not grow with a block's length
+/// (behaviour 20.17).
+pub fn excerpt(text: &str) -> Cow<'_, str> {
+    if text.chars().count() <= EXCERPT {
+        return Cow::Borrowed(text);
+    }
+    let head: String = text.chars().take(EXCERPT * 2 / 3).collect();
+    let tail_len = EXCERPT / 3 - 1;
+    let tail: String = text
+        .chars()
+        .rev()
+        .take(tail_len)
+        .collect::<Vec<_>>()
+        .into_iter()
+        .rev()
+        .collect();
+    Cow::Owned(format!("{head}…{tail}"))
+}
+
+/// The most characters of a program's text a sentence quotes.
+pub const EXCERPT: usize = 60;

@@ -253,7 +253,7 @@ impl<'a> Parser<'a> {
             _ => {
                 return Err(alarm::STATEMENT.at(
                     self.span(start, kw_end.max(start + 1)),
-                    format!("`{kw}` is not a macro statement"),
+                    format!("`{}` is not a macro statement", super::excerpt(&kw)),
                 ));
             }
         };
@@ -395,27 +395,23 @@ impl<'a> Parser<'a> {
 
     /// `+ - OR XOR` level.
     fn sum(&mut self) -> Result<Expr, Diagnostic> {
-        let mut left = self.product()?;
+        let first = self.product()?;
+        let mut rest = Vec::new();
         // Each pass reads an operand: bounded by the text.
-        loop {
-            let Some(op) = self.operator(false) else {
-                return Ok(left);
-            };
-            let right = self.product()?;
-            left = binary(op, left, right, self.line, self.pos);
+        while let Some(op) = self.operator(false) {
+            rest.push((op, self.product()?));
         }
+        Ok(chain(first, rest, self.line, self.pos))
     }
 
     /// `* / AND MOD` level.
     fn product(&mut self) -> Result<Expr, Diagnostic> {
-        let mut left = self.unary(false)?;
-        loop {
-            let Some(op) = self.operator(true) else {
-                return Ok(left);
-            };
-            let right = self.unary(false)?;
-            left = binary(op, left, right, self.line, self.pos);
+        let first = self.unary(false)?;
+        let mut rest = Vec::new();
+        while let Some(op) = self.operator(true) {
+            rest.push((op, self.unary(false)?));
         }
+        Ok(chain(first, rest, self.line, self.pos))
     }
 
     /// The operator of the level at the parser's place, consumed; None
@@ -526,7 +522,10 @@ impl<'a> Parser<'a> {
         let Some(func) = Func::of(&name) else {
             return Err(alarm::FORMAT.at(
                 self.span(start, name_end),
-                format!("`{name}` is not a macro function or operator"),
+                format!(
+                    "`{}` is not a macro function or operator",
+                    super::excerpt(&name)
+                ),
             ));
         };
         self.open()?;
@@ -560,9 +559,13 @@ fn atan2(a: Expr, b: Expr, span: Span) -> Expr {
     }
 }
 
-fn binary(op: BinOp, left: Expr, right: Expr, line: u32, end: usize) -> Expr {
+/// One operand alone, or the chain of a level's operators.
+fn chain(first: Expr, rest: Vec<(BinOp, Expr)>, line: u32, end: usize) -> Expr {
+    if rest.is_empty() {
+        return first;
+    }
     Expr {
-        span: Span::new(left.span.start as usize, end, line),
-        kind: ExprKind::Binary(op, Box::new(left), Box::new(right)),
+        span: Span::new(first.span.start as usize, end, line),
+        kind: ExprKind::Chain(Box::new(first), rest),
     }
 }

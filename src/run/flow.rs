@@ -348,7 +348,7 @@ impl<'t> Runner<'t> {
                 }
                 let c = match &statement.kind {
                     StatementKind::While(c, _) => m.text_of(c),
-                    _ => "",
+                    _ => "".into(),
                 };
                 let note = format!("WHILE {c} false: on after END {label} (line {end_line})");
                 (note, Some(after))

@@ -9,6 +9,7 @@
 
 use super::*;
 use crate::macros::{self, Expr, Statement};
+use std::borrow::Cow;
 
 /// What a block holds of Custom Macro B.
 #[derive(Clone, Debug, PartialEq)]
@@ -50,11 +51,12 @@ impl MacroBlock {
         }
     }
 
-    /// The text of a statement of the block, as written.
-    pub fn text_of_statement(&self, st: &Statement) -> &str {
+    /// The text of a statement of the block, as written (an excerpt when
+    /// long, [`macros::excerpt`]).
+    pub fn text_of_statement(&self, st: &Statement) -> Cow<'_, str> {
         let s = (st.span.start as usize).saturating_sub(self.start);
         let t = (st.span.end as usize).saturating_sub(self.start);
-        self.source.get(s..t).unwrap_or("")
+        macros::excerpt(self.source.get(s..t).unwrap_or(""))
     }
 
     /// The block's first comment, without its parentheses (the message of
@@ -65,11 +67,12 @@ impl MacroBlock {
         Some(rest[..rest.find(')').unwrap_or(rest.len())].trim())
     }
 
-    /// The text of an expression of the block, as written.
-    pub fn text_of(&self, e: &Expr) -> &str {
+    /// The text of an expression of the block, as written (an excerpt
+    /// when long, [`macros::excerpt`]).
+    pub fn text_of(&self, e: &Expr) -> Cow<'_, str> {
         let s = (e.span.start as usize).saturating_sub(self.start);
         let t = (e.span.end as usize).saturating_sub(self.start);
-        self.source.get(s..t).unwrap_or("")
+        macros::excerpt(self.source.get(s..t).unwrap_or(""))
     }
 }
 
