@@ -312,16 +312,40 @@ pub fn text_of<'a>(
 /// line's start each time: quadratic on a long line of `;`-separated
 /// blocks).
 pub fn block_views<'a>(run: &'a Run, text: &'a str) -> impl Iterator<Item = BlockView<'a>> + 'a {
-    let mut columns = crate::diag::Columns::new(text);
-    run.blocks.iter().map(
-        move |b| match b.place.as_deref().is_some_and(|p| p.library) {
+    let mut viewer = BlockViewer::new(text, &run.library);
+    run.blocks.iter().map(move |b| viewer.view(b))
+}
+
+/// Makes the reports of a run's blocks one at a time, in run order, as
+/// [`block_views`] does: for a run whose reports are taken as they are made
+/// ([`crate::Observer::takes_reports`]), where the run keeps none.
+pub struct BlockViewer<'a> {
+    text: &'a str,
+    library: &'a std::collections::BTreeMap<u32, String>,
+    columns: crate::diag::Columns<'a>,
+}
+
+impl<'a> BlockViewer<'a> {
+    /// For the blocks of `text` and of the `library` programs it calls
+    /// (the setup's programs, behaviour 19.10).
+    pub fn new(text: &'a str, library: &'a std::collections::BTreeMap<u32, String>) -> Self {
+        BlockViewer {
+            text,
+            library,
+            columns: crate::diag::Columns::new(text),
+        }
+    }
+
+    /// The report of the next block.
+    pub fn view(&mut self, b: &BlockReport) -> BlockView<'a> {
+        match b.place.as_deref().is_some_and(|p| p.library) {
             true => {
-                let own = text_of(b, text, &run.library);
+                let own = text_of(b, self.text, self.library);
                 block_view_at(b, own, b.span.columns(own))
             }
-            false => block_view_at(b, text, columns.of(b.span)),
-        },
-    )
+            false => block_view_at(b, self.text, self.columns.of(b.span)),
+        }
+    }
 }
 
 /// [`block_view`] with the block's columns already known.

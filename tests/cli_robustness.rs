@@ -338,9 +338,11 @@ fn unreadable_input_and_bad_usage_exit_2_with_a_message() {
 
 #[test]
 fn a_huge_single_line_and_many_errors_are_reported_within_the_caps() {
-    // One megabyte on one line, every character an error: the diagnostics
-    // stop at 1000 and one warning says how many more there were.
-    let line = "G01 X1.2.3 ".repeat(100_000);
+    // One megabyte on one line, 100 000 `;`-separated blocks (each within
+    // the longest block, behaviour 1.25), every one in error: the
+    // diagnostics stop at 1000 and one warning says how many more there
+    // were.
+    let line = "G01 X1.2.3;".repeat(100_000);
     let out = offsetlab(&["check", "-"], line.as_bytes());
     assert_eq!(code(&out), 1);
     let report = stdout(&out);

@@ -7,7 +7,9 @@
 mod fuzz_common;
 
 use offsetlab::report::End;
-use offsetlab::syntax::{MAX_DIAGNOSTICS, MAX_PROGRAM_BYTES, MAX_REPEATS, check_size};
+use offsetlab::syntax::{
+    MAX_BLOCK_BYTES, MAX_DIAGNOSTICS, MAX_PROGRAM_BYTES, MAX_REPEATS, check_size,
+};
 use offsetlab::{MAX_BLOCKS, MAX_MOVES, ParseOptions, RunOptions, Setup, Units, parse, run_with};
 
 fn codes(r: &offsetlab::Run) -> Vec<&'static str> {
@@ -56,6 +58,7 @@ fn too_many_blocks_stop_the_run_at_the_block_that_passes_the_limit() {
 #[test]
 fn the_limits_are_the_documented_values() {
     assert_eq!(MAX_PROGRAM_BYTES, 256 * 1024 * 1024);
+    assert_eq!(MAX_BLOCK_BYTES, 256 * 1024);
     assert_eq!(MAX_BLOCKS, 5_000_000);
     assert_eq!(MAX_MOVES, 5_000_000);
     assert_eq!(MAX_DIAGNOSTICS, 1000);
@@ -70,6 +73,7 @@ fn the_limits_are_the_documented_values() {
     let table = &table[..table[3..].find("\n## ").unwrap()];
     for row in [
         "| program size | 256 MiB",
+        "| block length | 256 KiB",
         "| blocks per run | 5,000,000",
         "| moves per run | 5,000,000",
         "| diagnostics reported | 1000",
@@ -170,11 +174,14 @@ fn lathe_extremes_never_reach_the_report_as_nan_or_infinity() {
 /// (minutes for a megabyte). Now one pass (`diag::Columns`).
 #[test]
 fn long_lines_are_located_in_linear_time() {
-    let text = format!("({}) {}", "A".repeat(20_000_000), "X1.2.3 ".repeat(1000));
+    // 100 blocks of a 200 000-character comment (each within 1.25's block
+    // length) on one line, then 1000 malformed words.
+    let chunk = format!("({});", "A".repeat(200_000));
+    let text = format!("{}{}", chunk.repeat(100), "X1.2.3 ".repeat(1000));
     let start = std::time::Instant::now();
     let r = offsetlab::run(&text, &Setup::default());
     assert_eq!(r.diagnostics.len(), 1000);
-    assert_eq!(r.diagnostics[999].column, 20_000_003 + 7 * 999 + 1);
+    assert_eq!(r.diagnostics[999].column, 100 * 200_003 + 7 * 999 + 1);
     let one_line = "X1.;Y1.;".repeat(25_000);
     let r = offsetlab::run(&one_line, &Setup::default());
     assert_eq!(r.blocks.len(), 50_000);
@@ -225,4 +232,44 @@ fn run_warnings_share_the_diagnostics_cap() {
             .iter()
             .any(|d| d.code == "arc-radius" && d.line == 1501)
     );
+}
+
+#[test]
+fn behaviour1_25_a_block_past_256_kib_is_refused_whole_and_one_within_is_read() {
+    // Line 2 holds X1. X2. … : 70 000 words of 4–8 bytes, over 256 KiB
+    // — refused at its first column, its words not read one by one (one
+    // error, not 1000 of 1.10's `X` twice).
+    let words: String = (0..70_000).map(|i| format!("X{}.", i % 100)).collect();
+    assert!(words.len() > MAX_BLOCK_BYTES);
+    let text = format!("G90 G00 X0 Y0\nG01{words} F100.\nM30\n");
+    let r = run_with(&text, &Setup::default(), RunOptions::default());
+    assert_eq!(codes(&r), ["block-too-long"]);
+    let d = &r.diagnostics[0];
+    assert_eq!((d.line, d.column), (2, 1));
+    assert!(
+        d.message
+            .contains(&format!("{} bytes long", words.len() + 9)),
+        "{}",
+        d.message
+    );
+    assert_eq!(r.end, End::Error { line: 2 });
+    // A comment's `;` does not end the block early: `(A;B…)` is one block.
+    let comment = format!("G00 X1. (A;{})\nM30\n", "B".repeat(MAX_BLOCK_BYTES));
+    let r = run_with(&comment, &Setup::default(), RunOptions::default());
+    assert_eq!(codes(&r), ["block-too-long"]);
+    // Just within: a 200 000-byte comment after a move is read, the move made.
+    let within = format!("G00 X1. ({})\nM30\n", "C".repeat(200_000));
+    let r = run_with(&within, &Setup::default(), RunOptions::default());
+    assert!(r.diagnostics.is_empty(), "{:?}", codes(&r));
+    assert_eq!(r.move_count, 1);
+}
+
+#[test]
+fn behaviour1_25_a_clean_block_past_the_limit_is_refused_too() {
+    // A block the one-pass reading would read (blanks, one word) is refused
+    // the same way: the limit does not depend on what is wrong with it.
+    let text = format!("G00{}X1.\nM30\n", " ".repeat(MAX_BLOCK_BYTES));
+    let r = run_with(&text, &Setup::default(), RunOptions::default());
+    assert_eq!(codes(&r), ["block-too-long"]);
+    assert_eq!(r.move_count, 0);
 }

@@ -1,6 +1,7 @@
 //! Command-line parsing (clap) and the subcommands' output: `run`, `check`
 //! and `link`.
 
+mod stream;
 mod table;
 
 use std::io::{self, BufWriter, Read, Write};
@@ -11,8 +12,8 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 use offsetlab::document::{ViewPlane, ViewState};
 use offsetlab::setup::Control;
 use offsetlab::share::{self, DEFAULT_BASE, LONG_LINK};
-use offsetlab::view::{RunView, summary};
-use offsetlab::{Document, MachineKind, RunOptions, run_pipelined, run_with};
+use offsetlab::view::{BlockViewer, summary};
+use offsetlab::{Document, MachineKind, RunOptions, run_observed, run_pipelined, run_with};
 
 #[derive(Parser)]
 #[command(
@@ -158,6 +159,11 @@ fn written(r: io::Result<()>) -> Result<(), Fatal> {
     }
 }
 
+/// A temporary file for the JSON's moves or events.
+fn spill() -> Result<stream::Spill, Fatal> {
+    stream::Spill::new().map_err(|e| Fatal(format!("cannot make a temporary file: {e}")))
+}
+
 fn exit(errors: bool) -> ExitCode {
     if errors {
         ExitCode::from(1)
@@ -172,21 +178,20 @@ fn execute(cli: Cli, out: &mut impl Write) -> Result<ExitCode, Fatal> {
             let (_, doc) = load(&common)?;
             let options = RunOptions {
                 keep_blocks: true,
+                keep_moves: false,
                 ..RunOptions::default()
             };
-            let run = run_program(&doc.program, &doc.setup, options);
-            written(match format {
-                Format::Json => serde_json::to_writer(
-                    &mut *out,
-                    &RunView {
-                        run: &run,
-                        text: &doc.program,
-                    },
-                )
-                .map_err(io::Error::from)
-                .and_then(|_| writeln!(out)),
-                Format::Table => table::write(out, &run, &doc.program),
-            })?;
+            let output = match format {
+                Format::Table => stream::Output::Table,
+                Format::Json => stream::Output::Json {
+                    moves: spill()?,
+                    events: spill()?,
+                },
+            };
+            let viewer = BlockViewer::new(&doc.program, &doc.setup.programs);
+            let mut streamer = stream::Streamer::new(out, viewer, output, doc.setup.machine);
+            let (mut run, _) = run_observed(&doc.program, &doc.setup, options, &mut streamer);
+            written(streamer.finish(&mut run, &doc.program))?;
             Ok(exit(run.has_errors()))
         }
         Command::Check { common } => {

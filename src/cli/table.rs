@@ -3,8 +3,9 @@
 
 use std::io::{self, Write};
 
-use offsetlab::Run;
-use offsetlab::view::{Pos, block_views};
+use offsetlab::report::BlockReport;
+use offsetlab::view::{BlockView, Pos};
+use offsetlab::{MachineKind, Run};
 
 const TEXT_WIDTH: usize = 34;
 
@@ -26,29 +27,42 @@ fn clip(text: &str, width: usize) -> String {
     }
 }
 
-pub fn write(out: &mut impl Write, run: &Run, text: &str) -> io::Result<()> {
-    let pos_width = if run.machine == offsetlab::MachineKind::Mill {
-        32
-    } else {
-        22
-    };
+fn pos_width(machine: MachineKind) -> usize {
+    match machine {
+        MachineKind::Mill => 32,
+        MachineKind::Lathe => 22,
+    }
+}
+
+pub fn header(out: &mut impl Write, machine: MachineKind) -> io::Result<()> {
+    let pos_width = pos_width(machine);
     writeln!(
         out,
         "{:>5}  {:TEXT_WIDTH$}  {:pos_width$}  {:pos_width$}  OFFSETS",
         "LINE", "BLOCK", "PROGRAMMED", "ACTUAL"
-    )?;
-    for (b, v) in run.blocks.iter().zip(block_views(run, text)) {
-        let d = b.state.modal.units.decimals();
-        writeln!(
-            out,
-            "{:>5}  {}  {:pos_width$}  {:pos_width$}  {}",
-            v.line,
-            clip(v.text, TEXT_WIDTH),
-            position(&v.programmed, d),
-            position(&v.actual, d),
-            v.explanation
-        )?;
-    }
+    )
+}
+
+pub fn row(
+    out: &mut impl Write,
+    b: &BlockReport,
+    v: &BlockView<'_>,
+    machine: MachineKind,
+) -> io::Result<()> {
+    let pos_width = pos_width(machine);
+    let d = b.state.modal.units.decimals();
+    writeln!(
+        out,
+        "{:>5}  {}  {:pos_width$}  {:pos_width$}  {}",
+        v.line,
+        clip(v.text, TEXT_WIDTH),
+        position(&v.programmed, d),
+        position(&v.actual, d),
+        v.explanation
+    )
+}
+
+pub fn diagnostics(out: &mut impl Write, run: &Run) -> io::Result<()> {
     if !run.diagnostics.is_empty() {
         writeln!(out)?;
     }

@@ -266,4 +266,20 @@ impl<O: super::Observer> super::Observer for Lines<'_, O> {
     fn on_resume(&mut self, prefix_moves: usize) {
         self.inner.on_resume(prefix_moves);
     }
+
+    fn takes_reports(&self) -> bool {
+        self.inner.takes_reports()
+    }
+
+    fn on_block(&mut self, b: &BlockReport) {
+        let mut b = b.clone();
+        self.joined.block(&mut b);
+        self.inner.on_block(&b);
+    }
+
+    fn on_event(&mut self, e: &crate::report::Event) {
+        let mut e = e.clone();
+        e.line = self.joined.line(e.line);
+        self.inner.on_event(&e);
+    }
 }

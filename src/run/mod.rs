@@ -404,6 +404,23 @@ pub trait Observer {
     /// A run made again ([`crate::rerun_observed`]) starts after the earlier run's
     /// first `prefix_moves` moves, before any other call.
     fn on_resume(&mut self, _prefix_moves: usize) {}
+
+    /// True when the observer takes the run's reports as they are made
+    /// ([`Observer::on_block`], [`Observer::on_event`]) instead of the run
+    /// keeping them: the run's `blocks` then holds only the last report
+    /// and its `events` none, so a run that reports every block needs
+    /// memory for one block, not for every block it executes (`run` of the
+    /// CLI writes its table and JSON as it goes, behaviour 8.15).
+    fn takes_reports(&self) -> bool {
+        false
+    }
+
+    /// Every block's report as it is made, when [`Observer::takes_reports`]
+    /// and the run makes reports ([`RunOptions::keep_blocks`]).
+    fn on_block(&mut self, _b: &BlockReport) {}
+
+    /// Every event as it happens, when [`Observer::takes_reports`].
+    fn on_event(&mut self, _e: &Event) {}
 }
 
 /// Nothing to watch.
@@ -741,11 +758,25 @@ fn account(
                 variables.push(*set);
             }
         }
-        result.events.extend(out.events.drain(..).map(|kind| Event {
+        let events = out.events.drain(..).map(|kind| Event {
             block: index,
             line: block.span.line,
             kind,
-        }));
+        });
+        if observer.takes_reports() {
+            events.for_each(|e| observer.on_event(&e));
+        } else if options.keep_blocks {
+            result.events.extend(events);
+        } else {
+            // A run without reports (`check`, the page) keeps what the
+            // summary and the drawing read of its events — G10's settings,
+            // tool changes, M codes — but not each macro assignment: a
+            // block's report made again from a checkpoint has its own
+            // (8.15), and a macro loop would otherwise keep one per pass.
+            result
+                .events
+                .extend(events.filter(|e| !matches!(e.kind, EventKind::VariableSet(_))));
+        }
     }
     if !out.warnings.is_empty() {
         for w in out.warnings.drain(..) {
@@ -754,6 +785,9 @@ fn account(
     }
     if options.keep_blocks {
         let before = position_before(&result.blocks, machine);
+        if observer.takes_reports() {
+            result.blocks.clear();
+        }
         result.blocks.push(BlockReport {
             index,
             span: block.span,
@@ -767,6 +801,11 @@ fn account(
             watch: machine.watched(),
             place: place.take(),
         });
+        if observer.takes_reports()
+            && let Some(b) = result.blocks.last()
+        {
+            observer.on_block(b);
+        }
     }
     let offset_words = match kind {
         MachineKind::Mill => block.holds(Address::D) || block.holds(Address::H),

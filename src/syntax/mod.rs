@@ -47,6 +47,14 @@ pub const MAX_DIAGNOSTICS: usize = 1000;
 /// text is refused whole with `program-too-large` before parsing.
 pub const MAX_PROGRAM_BYTES: usize = 256 * 1024 * 1024;
 
+/// Longest block read, in bytes (256 KiB), from its first character to its
+/// end of block. No manual at hand gives the Fanuc, Haas or YASNAC figure
+/// (a real block is a line of a few dozen characters; LinuxCNC reads 256
+/// characters a line); a longer block is `block-too-long` and not read, so
+/// the memory a block's reading takes stays small whatever one line holds
+/// (behaviour 1.25).
+pub const MAX_BLOCK_BYTES: usize = 256 * 1024;
+
 /// The `program-too-large` error for a text over [`MAX_PROGRAM_BYTES`]
 /// (line 0: it belongs to the program as a whole).
 pub fn check_size(text: &str) -> Option<Diagnostic> {

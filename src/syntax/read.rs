@@ -42,6 +42,7 @@ impl Blocks<'_> {
     ) -> Option<(usize, usize)> {
         let bytes = self.text.as_bytes();
         let n = bytes.len();
+        let from = i;
         let mut last = i;
         let mut checks = Checks::default();
         // A G20/G21 after a dimension word, or a cycle code changing the
@@ -94,6 +95,10 @@ impl Blocks<'_> {
             last = word_end;
             i = next;
         }
+        // The two-pass reading refuses a block past the limit (1.25).
+        if i - from > MAX_BLOCK_BYTES {
+            return None;
+        }
         Some((i, last))
     }
 
@@ -127,6 +132,20 @@ impl Blocks<'_> {
         self.whole_q = false;
         i = lexer::skip_blanks(bytes, i);
         let mut last = i;
+
+        // A block past the limit is refused whole before it is lexed, so
+        // no word, expression or diagnostic of it is kept (1.25).
+        let extent = block_end(bytes, i);
+        if extent - start > MAX_BLOCK_BYTES {
+            let message = format!(
+                "this block is {} bytes long: a block is read up to {} bytes (256 KiB); \
+                 write it as several blocks",
+                extent - start,
+                MAX_BLOCK_BYTES
+            );
+            self.error_at(block, "block-too-long", start, extent, line, &message);
+            return (extent, extent);
+        }
 
         // What a block may start with besides words: a program header, or
         // a line of another dialect (behaviour 1.4, 1.21, 1.22).
@@ -270,4 +289,27 @@ impl Blocks<'_> {
         }
         (end, last)
     }
+}
+
+/// Where the block from `i` ends, as the two-pass lexing finds it: at the
+/// first end of block outside a comment (a comment runs to `)` or to the
+/// end of its line), or at the end of the text.
+fn block_end(bytes: &[u8], mut i: usize) -> usize {
+    let n = bytes.len();
+    while i < n {
+        match bytes[i] {
+            b'\n' | b'\r' | b';' => return i,
+            b'(' => {
+                i += 1;
+                while i < n && !matches!(bytes[i], b')' | b'\n' | b'\r') {
+                    i += 1;
+                }
+                if i < n && bytes[i] == b')' {
+                    i += 1;
+                }
+            }
+            _ => i += 1,
+        }
+    }
+    n
 }
