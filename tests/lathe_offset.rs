@@ -246,9 +246,12 @@ fn behaviour5_cycles_carry_the_t_offset() {
 #[test]
 fn behaviour5_g28_clears_the_vector_until_the_axis_moves_again() {
     let text = "G50 X100. Z50.\nT0108\nG28 U0 W0\nG00 Z10.\nX30.";
-    let r = ok(text, &lathe(&[(8, 0.4, -0.2)]));
+    let mut setup = lathe(&[(8, 0.4, -0.2)]);
+    setup.settings.machine_positions = Some(offsetlab::setup::MachinePositions::WorkZero);
+    let r = ok(text, &setup);
     same(r.blocks[2].state.lathe.vector, [0.0; 3]);
-    // The reference position is machine zero, where G50 named X100. Z50.
+    // With the reference position at machine zero (setting 7.49
+    // `work_zero`), where the tool started and G50 named X100. Z50.
     same(actual(&r, 2), [100.0, 0.0, 50.0]);
     same(actual(&r, 3), [100.0, 0.0, 9.8]);
     same(actual(&r, 4), [30.4, 0.0, 9.8]);

@@ -54,25 +54,39 @@ fn behaviour13_15_the_lathe_starts_at_the_turret_home() {
     same(programmed(&r, 1), [406.4, 0.0, 355.6]);
 }
 
-/// YASNAC keeps the seeds' convention: the tool starts at the work zero and
-/// G28 returns to machine zero, here the work zero (`G91 G28 Z0.` goes down
-/// from Z5 to Z0).
+/// YASNAC keeps the seeds' start — the tool at the work zero — under a
+/// typical machine's reference position, so a return to it goes up and
+/// never into the part: `G91 G28 Z0.` from Z5 rises to Z508 (issue 32).
 #[test]
-fn behaviour13_15_yasnac_starts_at_the_work_zero() {
+fn behaviour13_15_yasnac_starts_at_the_work_zero_and_g28_goes_up() {
     let s = mill(&[]);
-    assert_eq!(s.settings.machine_positions(), MachinePositions::WorkZero);
+    assert_eq!(
+        s.settings.machine_positions(),
+        MachinePositions::WorkZeroStart
+    );
     let r = ok("G90 G00 X10. Y20. Z5.\nG91 G28 Z0.\n", &s);
     same(r.moves[0].from, [0.0, 0.0, 0.0]);
-    same(programmed(&r, 1), [10.0, 20.0, 0.0]);
-    // The setting wins over the profile both ways.
+    same(programmed(&r, 1), [10.0, 20.0, 508.0]);
+    // Its rapid goes straight up from Z5 to Z508: X and Y stay.
+    let up = r.moves.last().unwrap();
+    same(up.from, [10.0, 20.0, 5.0]);
+    same(up.to, [10.0, 20.0, 508.0]);
+    // The lathe: the tool starts on the centre line at the face, and
+    // `G28 U0. W0.` goes to the turret home, X406.4 Z355.6 (Haas ST-10).
+    let r = ok("G00 X20. Z2.\nG28 U0. W0.\n", &lathe(&[]));
+    same(r.moves[0].from, [0.0, 0.0, 0.0]);
+    same(programmed(&r, 1), [406.4, 0.0, 355.6]);
+    // The setting wins over the profile every way.
     let mut typical = mill(&[]);
     typical.settings.machine_positions = Some(MachinePositions::Typical);
     let r = ok("G91 G28 Z0.\n", &typical);
     same(programmed(&r, 0), [0.0, 0.0, 508.0]);
     let mut zero = with(mill(&[]), Control::Haas);
     zero.settings.machine_positions = Some(MachinePositions::WorkZero);
-    let r = ok("G00 X1.\n", &zero);
+    let r = ok("G00 Z5.\nG91 G28 Z0.\n", &zero);
     same(r.moves[0].from, [0.0, 0.0, 0.0]);
+    // `work_zero`: the reference is machine zero, the work zero: down.
+    same(programmed(&r, 1), [0.0, 0.0, 0.0]);
 }
 
 /// `start` and `reference` set in the setup win; an inch setup's typical

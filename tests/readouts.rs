@@ -112,7 +112,8 @@ fn behaviour6_12_the_page_shows_the_distance_of_the_whole_run() {
 
 /// The summary reports the start and reference positions the run used, in
 /// the setup's units: the typical machine's on Fanuc and Haas (13.15),
-/// the origin on YASNAC, and whatever the setup sets.
+/// on YASNAC the tool at the origin under the typical reference, and
+/// whatever the setup sets.
 #[test]
 fn behaviour6_13_the_summary_has_the_positions_in_effect() {
     let summary = |s: &Setup| {
@@ -128,10 +129,11 @@ fn behaviour6_13_the_summary_has_the_positions_in_effect() {
     // The lathe: the turret home, X 16 in = 406.4 mm, Z 14 in = 355.6 mm.
     let p = summary(&with(lathe(&[]), Control::Haas));
     assert_eq!(p["start"], json!({"x": 406.4, "y": 0.0, "z": 355.6}));
-    // YASNAC: the work zero.
+    // YASNAC: the tool starts at the work zero, the reference is above it.
     let p = summary(&mill(&[]));
-    assert_eq!(p["machine_positions"], "work_zero");
+    assert_eq!(p["machine_positions"], "work_zero_start");
     assert_eq!(p["start"], json!({"x": 0.0, "y": 0.0, "z": 0.0}));
+    assert_eq!(p["reference"], json!({"x": 0.0, "y": 0.0, "z": 508.0}));
     // An inch setup: 20 in.
     let mut inch = with(mill(&[]), Control::Haas);
     inch.units = Units::Inch;

@@ -220,7 +220,8 @@ const MILL: &[Kind] = &[
     },
     Kind {
         name: "G27 reference position check",
-        before: "G00 X10. Y5.\n",
+        // At the reference position's Z (behaviour 13.15), so the check holds.
+        before: "G00 X10. Y5. Z508.\n",
         block: "G91 G27 Z0",
         after: "",
         refused: "I J K L P Q R",

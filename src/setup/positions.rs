@@ -1,7 +1,7 @@
 //! Where the machine starts and where its reference position is when the
 //! setup leaves them out (behaviour 13.15, setting 7.49): at the work zero,
 //! the seeds' drawings' convention, or where a typical machine of each kind
-//! has them, so that `G91 G28 Z0.` rises to the top of the travel and a
+//! has them, or the tool at the work zero under a typical reference, so that `G91 G28 Z0.` rises to the top of the travel and a
 //! lathe starts at the turret's home rather than on the centre line.
 
 use serde::{Deserialize, Serialize};
@@ -20,6 +20,11 @@ pub enum MachinePositions {
     /// the travel (where machine zero is on a Haas or Fanuc machine) and the
     /// tool starting there, homed.
     Typical,
+    /// The tool starts at the G54 zero, as the seeds' drawings do, and the
+    /// reference position is a typical machine's, above the work: a return
+    /// to it (`G91 G28 Z0.`) goes up, as on every machine, never into the
+    /// part (YASNAC's default).
+    WorkZeroStart,
 }
 
 /// A typical vertical machining centre's reference position above the work
@@ -33,11 +38,13 @@ const MILL_HOME_INCH: [f64; 3] = [0.0, 0.0, 20.0];
 const LATHE_HOME_INCH: [f64; 3] = [16.0, 0.0, 14.0];
 
 impl Settings {
-    /// `start` and `reference` left out: at the work zero on YASNAC (the
-    /// seeds' drawings start there), a typical machine's on Fanuc and Haas.
+    /// `start` and `reference` left out: on YASNAC the tool starts at the
+    /// work zero (the seeds' drawings start there) under a typical
+    /// machine's reference position, a typical machine's both on Fanuc and
+    /// Haas.
     pub fn machine_positions(&self) -> MachinePositions {
         self.machine_positions.unwrap_or(match self.control {
-            Control::Yasnac => MachinePositions::WorkZero,
+            Control::Yasnac => MachinePositions::WorkZeroStart,
             Control::Fanuc | Control::Haas => MachinePositions::Typical,
         })
     }
@@ -67,7 +74,7 @@ impl Setup {
     /// in machine coordinates: less G54's zero and the external offset.
     pub fn start_position(&self) -> Position {
         if self.start != Position::default()
-            || self.settings.machine_positions() == MachinePositions::WorkZero
+            || self.settings.machine_positions() != MachinePositions::Typical
         {
             return self.start;
         }

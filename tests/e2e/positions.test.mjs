@@ -19,8 +19,10 @@ describe('a machine that starts where machines start', () => {
     await withPage(async (page, { context }) => {
       await typeProgram(page, PROGRAM);
       // YASNAC (the default): the tool starts at the work zero and G28 goes
-      // down to it: extents X0…10 Y0…20 Z0…5.
-      assert.match(await page.locator('#summary').textContent(), / · X0…10 Y0…20 Z0…5$/);
+      // up to the typical reference, Z508 (issue 32): extents X0…10 Y0…20
+      // Z0…508, and the panel's line says so.
+      assert.match(await page.locator('#summary').textContent(), / · X0…10 Y0…20 Z0…508$/);
+      assert.match(await page.locator('#positions-effect').textContent(), /reference X0\.000 Y0\.000 Z508\.000 \(machine\)/);
       await page.getByLabel('Control').selectOption('haas');
       await waitForRun(page);
       // Haas: start at X0 Y0 Z508 (a VF-2's Z travel above the work zero),

@@ -21,6 +21,7 @@ function point(p, units, lathe) {
 const WHY = {
   typical: 'a typical machine’s, homed at the positive end of its travel',
   work_zero: 'at the work zero',
+  work_zero_start: 'the start at the work zero, the reference a typical machine’s, above the work',
 };
 
 /** Shows the summary's `positions` (absent: the line is emptied). */

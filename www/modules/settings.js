@@ -87,8 +87,8 @@ const CHOICES = [
   },
   {
     id: 'machine_positions', label: 'Start and reference', controlDefault: true,
-    options: [['work_zero', 'the work zero'], ['typical', 'a typical machine']],
-    help: 'Start and reference left at 0 0 0: the tool starts at the work zero and G28 returns there (YASNAC, the seeds), or as on a typical machine, homed at the top of the travel: mill X0 Y0 Z508 mm (Haas VF-2), lathe turret home X406.4 Z355.6 mm (Haas ST-10) (Fanuc, Haas).',
+    options: [['work_zero_start', 'start at the work zero, reference above'], ['typical', 'a typical machine'], ['work_zero', 'the work zero']],
+    help: 'Start and reference left at 0 0 0: the tool starts at the work zero and G28 goes up to a typical machine’s reference (YASNAC, the seeds); or as on a typical machine, homed there (Fanuc, Haas); or both at the work zero, so G28 returns to it. The typical reference: mill X0 Y0 Z508 mm (Haas VF-2), lathe turret home X406.4 Z355.6 mm (Haas ST-10).',
   },
   {
     id: 'decimal_input', label: 'Decimal input', options: [['increment', 'increment'], ['calculator', 'calculator']],
