@@ -3,7 +3,7 @@
 # (default 60) on one core, and prints each target's last libFuzzer status
 # line (executions, cov, ft, corpus). Not part of `make test`.
 #
-#   scripts/fuzz.sh                 # parse, run and link, 60 s each
+#   scripts/fuzz.sh                 # parse, run, macros and link, 60 s each
 #   scripts/fuzz.sh 600 run         # the run target for ten minutes
 #
 # Needs the nightly toolchain and cargo-fuzz (`cargo install cargo-fuzz`).
@@ -18,7 +18,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(parse run link)
+[ ${#targets[@]} -gt 0 ] || targets=(parse run macros link)
 
 command -v cargo-fuzz >/dev/null || { echo "fuzz.sh: cargo-fuzz is missing (cargo install cargo-fuzz)" >&2; exit 2; }
 # Safe Rust: no sanitizer (twice the speed), but debug assertions and

@@ -144,6 +144,26 @@ fn behaviour20_2_brackets_nest_five_levels_deep() {
 }
 
 #[test]
+fn behaviour20_3_an_operator_written_against_a_function_name_is_read_first() {
+    // 5 AND ABS[-3] = 5 AND 3 = 1 (bits 101 and 011); 2 OR POW[2,2] =
+    // 2 OR 4 = 6; 7 MOD ROUND[2.6] = 7 MOD 3 = 1; 1 - 1 XOR ABS[2] = 0 XOR 2 = 2.
+    close(value("5ANDABS[-3]"), 1.0);
+    close(value("2ORPOW[2,2]"), 6.0);
+    close(value("7MODROUND[2.6]"), 1.0);
+    close(value("1-1XORABS[2]"), 2.0);
+    // A comparison too: IF[1GTABS[-2]] is false, IF[3GEADP[#0]]… reads GE.
+    let mut store = Store::default();
+    let s = macros::statement("IF[1GTABS[-2]]GOTO5", 0, 19, 1).unwrap();
+    assert_eq!(
+        Evaluator::new(&mut store, FANUC).execute(&s).unwrap(),
+        Outcome::NotTaken
+    );
+    // Letters that are no keyword and function stay an error (PS0114).
+    let (code, _) = alarm("#1 = 2ANDX[3]");
+    assert_eq!(code, "macro-expression");
+}
+
+#[test]
 fn behaviour20_3_multiplication_binds_tighter_than_addition() {
     // 2 + 3 * 4 = 2 + 12 = 14; [2 + 3] * 4 = 20.
     close(value("2 + 3 * 4"), 14.0);

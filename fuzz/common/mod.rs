@@ -8,6 +8,8 @@
 //! as the program. Inputs shorter than the header are padded with zeros.
 #![allow(dead_code)]
 
+pub mod macro_gen;
+
 use offsetlab::Move;
 use offsetlab::document::{ViewPlane, ViewState};
 use offsetlab::geometry::Xyz;
@@ -171,14 +173,39 @@ pub fn check_run(data: &[u8]) {
     check_run_with(&setup, &program, FUZZ_MAX_MOVES);
 }
 
+/// Blocks one `macros` run may execute: a loop that never ends stops here
+/// with `too-many-blocks`, as at the default limit, in a fraction of it.
+pub const FUZZ_MAX_BLOCKS: usize = 20_000;
+
+/// `macros` target: setup from the header, the rest read as choices of the
+/// macro grammar ([`macro_gen::program_from`]).
+pub fn check_macros(data: &[u8]) {
+    check_macros_bounded(data, FUZZ_MAX_BLOCKS);
+}
+
+/// [`check_macros`] with a block limit of its own (the property test's is
+/// smaller: it runs unoptimised).
+pub fn check_macros_bounded(data: &[u8], max_blocks: usize) {
+    let (h, rest) = data.split_at(data.len().min(HEADER));
+    let program = macro_gen::program_from(rest);
+    check_run_bounded(&setup_from(h), &program, FUZZ_MAX_MOVES, max_blocks);
+}
+
 /// Runs `program` with and without per-block reports and checks what a
 /// page relies on.
 pub fn check_run_with(setup: &Setup, program: &str, max_moves: usize) {
+    check_run_bounded(setup, program, max_moves, offsetlab::MAX_BLOCKS);
+}
+
+/// [`check_run_with`] with a block limit too (a macro loop that does not
+/// end stops at it: `macros` target).
+pub fn check_run_bounded(setup: &Setup, program: &str, max_moves: usize, max_blocks: usize) {
     let full = run_with(
         program,
         setup,
         RunOptions {
             max_moves,
+            max_blocks,
             ..RunOptions::default()
         },
     );
@@ -277,6 +304,7 @@ pub fn check_run_with(setup: &Setup, program: &str, max_moves: usize) {
                 keep_blocks: false,
                 checkpoint_every: 7,
                 max_moves,
+                max_blocks,
                 ..RunOptions::default()
             },
             &mut (),
@@ -286,7 +314,7 @@ pub fn check_run_with(setup: &Setup, program: &str, max_moves: usize) {
             let again = offsetlab::report_at(program, setup, &checkpoints, b.index);
             assert_eq!(again.as_ref(), Some(b), "block {} made again", b.index);
         }
-        check_runs_made_again(setup, program, max_moves);
+        check_runs_made_again(setup, program, max_moves, max_blocks);
     }
 
     // The JSON the CLI prints (and the page's block view) is valid JSON.
@@ -306,6 +334,7 @@ pub fn check_run_with(setup: &Setup, program: &str, max_moves: usize) {
             keep_blocks: false,
             keep_moves: false,
             max_moves,
+            max_blocks,
             ..RunOptions::default()
         },
     );
@@ -322,6 +351,7 @@ pub fn check_run_with(setup: &Setup, program: &str, max_moves: usize) {
             &full,
             RunOptions {
                 max_moves,
+                max_blocks,
                 ..RunOptions::default()
             },
         ),
@@ -331,6 +361,7 @@ pub fn check_run_with(setup: &Setup, program: &str, max_moves: usize) {
                 keep_blocks: false,
                 keep_moves: false,
                 max_moves,
+                max_blocks,
                 ..RunOptions::default()
             },
         ),
@@ -343,7 +374,15 @@ pub fn check_run_with(setup: &Setup, program: &str, max_moves: usize) {
             assert!(
                 one.diagnostics.len() >= offsetlab::syntax::MAX_DIAGNOSTICS
                     || one.end == offsetlab::End::Error { line: 0 }
-                    || jumps(program, setup, max_moves)
+                    || jumps(program, setup, max_moves, max_blocks)
+                    // A jump asked for and refused (END without DO, GOTO
+                    // to no block): the one thread finds the alarm.
+                    || one.diagnostics.iter().any(|d| {
+                        matches!(
+                            d.code,
+                            "macro-loop-number" | "macro-sequence-number" | "macro-missing-end"
+                        )
+                    })
             );
         }
     }
@@ -478,13 +517,13 @@ pub fn round_trip(data: &[u8]) {
 /// with a line taken out (and the other way round) equals a whole run of
 /// it — diagnostics, totals, lines, events and toolpath
 /// (`offsetlab::rerun_observed`).
-fn check_runs_made_again(setup: &Setup, program: &str, max_moves: usize) {
+fn check_runs_made_again(setup: &Setup, program: &str, max_moves: usize, max_blocks: usize) {
     let options = RunOptions {
         keep_blocks: false,
         keep_moves: false,
         checkpoint_every: 3,
         max_moves,
-        ..RunOptions::default()
+        max_blocks,
     };
     type PageRun = (offsetlab::Run, offsetlab::Checkpoints, Toolpath);
     let page_run = |text: &str, earlier: Option<(&str, &PageRun)>| {
@@ -534,13 +573,13 @@ fn check_runs_made_again(setup: &Setup, program: &str, max_moves: usize) {
 
 /// True when the run of `program` jumps: it calls a subprogram or makes a
 /// macro statement's jump or loop (its checkpoints say so).
-fn jumps(program: &str, setup: &Setup, max_moves: usize) -> bool {
+fn jumps(program: &str, setup: &Setup, max_moves: usize, max_blocks: usize) -> bool {
     let options = RunOptions {
         keep_blocks: false,
         keep_moves: false,
         max_moves,
+        max_blocks,
         checkpoint_every: 1_000_000,
-        ..RunOptions::default()
     };
     offsetlab::run_observed(program, setup, options, &mut ())
         .1

@@ -50,6 +50,18 @@ pub fn opens_value(bytes: &[u8], i: usize) -> bool {
     }
 }
 
+/// True when the letters `run` after an operand are the operator `keyword`
+/// alone or written against a function's name (`ANDABS` of
+/// `#1ANDABS[#2]`, `GTABS` of `IF[#1GTABS[#2]]`): the control reads its
+/// keywords one after the other, blanks or none (behaviour 20.3).
+fn glued(run: &str, keyword: &str) -> bool {
+    match run.strip_prefix(keyword) {
+        Some("") => true,
+        Some(rest) => rest == "POW" || Func::of(rest).is_some(),
+        None => false,
+    }
+}
+
 fn letters(bytes: &[u8], i: usize) -> usize {
     bytes[i..]
         .iter()
@@ -373,17 +385,18 @@ impl<'a> Parser<'a> {
     fn expr(&mut self) -> Result<Expr, Diagnostic> {
         let left = self.sum()?;
         let save = self.pos;
-        let op = match self.word().as_str() {
-            "EQ" => CmpOp::Eq,
-            "NE" => CmpOp::Ne,
-            "GT" => CmpOp::Gt,
-            "LT" => CmpOp::Lt,
-            "GE" => CmpOp::Ge,
-            "LE" => CmpOp::Le,
-            _ => {
-                self.pos = save;
-                return Ok(left);
-            }
+        let run = self.word();
+        const WORDS: [(&str, CmpOp); 6] = [
+            ("EQ", CmpOp::Eq),
+            ("NE", CmpOp::Ne),
+            ("GT", CmpOp::Gt),
+            ("LT", CmpOp::Lt),
+            ("GE", CmpOp::Ge),
+            ("LE", CmpOp::Le),
+        ];
+        let Some(&(_, op)) = WORDS.iter().find(|(k, _)| glued(&run, k)) else {
+            self.pos = save;
+            return Ok(left);
         };
         self.pos += 2;
         let right = self.sum()?;
@@ -423,16 +436,22 @@ impl<'a> Parser<'a> {
             b'-' => (BinOp::Sub, 1),
             b'*' => (BinOp::Mul, 1),
             b'/' => (BinOp::Div, 1),
-            c if c.is_ascii_alphabetic() => match self.word().as_str() {
-                "OR" => (BinOp::Or, 2),
-                "XOR" => (BinOp::Xor, 3),
-                "AND" => (BinOp::And, 3),
-                "MOD" => (BinOp::Mod, 3),
-                _ => {
-                    self.pos = save;
-                    return None;
+            c if c.is_ascii_alphabetic() => {
+                let run = self.word();
+                const WORDS: [(&str, BinOp); 4] = [
+                    ("XOR", BinOp::Xor),
+                    ("AND", BinOp::And),
+                    ("MOD", BinOp::Mod),
+                    ("OR", BinOp::Or),
+                ];
+                match WORDS.iter().find(|(k, _)| glued(&run, k)) {
+                    Some(&(k, op)) => (op, k.len()),
+                    None => {
+                        self.pos = save;
+                        return None;
+                    }
                 }
-            },
+            }
             _ => {
                 self.pos = save;
                 return None;
