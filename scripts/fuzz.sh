@@ -34,7 +34,7 @@ for t in "${targets[@]}"; do
     link) dict=fuzz/link.dict; max_len=16384 ;;
     *) dict=fuzz/gcode.dict; max_len=4096 ;;
   esac
-  mkdir -p "fuzz/corpus/$t" "fuzz/artifacts/$t"
+  mkdir -p "fuzz/corpus/$t" "fuzz/artifacts/$t" "fuzz/target/seeds/$t"
   log="fuzz/logs/$t.log"
   echo "== $t: ${seconds}s (log $log)"
   # One process, one core (no -jobs/-workers: libFuzzer then runs in this
