@@ -99,8 +99,8 @@ describe('readouts', () => {
     await withPage(async (page) => {
       await typeProgram(page, 'G00 X10.\n');
       const line = page.locator('#positions-effect');
-      // YASNAC: the work zero.
-      assert.match(await line.textContent(), /^In effect: start X0\.000 Y0\.000 Z0\.000 \(G54\), reference X0\.000 Y0\.000 Z0\.000 \(machine\) mm — a field at 0 0 0 is at the work zero\.$/);
+      // YASNAC: the start at the work zero, the reference above it (13.15).
+      assert.match(await line.textContent(), /^In effect: start X0\.000 Y0\.000 Z0\.000 \(G54\), reference X0\.000 Y0\.000 Z508\.000 \(machine\) mm — a field at 0 0 0 is the start at the work zero, the reference a typical machine’s, above the work\.$/);
       // Fanuc: a typical machine's, Z508 (13.15).
       await page.getByLabel('Control').selectOption('fanuc');
       await waitForRun(page);
