@@ -236,9 +236,7 @@ impl Run {
             let EventKind::DataSet(set) = &e.kind else {
                 continue;
             };
-            let same = |s: &SetByProgram| {
-                (s.set.table, &s.set.key, s.set.field) == (set.table, &set.key, set.field)
-            };
+            let same = |s: &SetByProgram| s.set.same_entry(set);
             let entry = SetByProgram {
                 line: e.line,
                 set: set.clone(),

@@ -64,7 +64,8 @@ pub struct Streamer<'a, W: Write> {
     viewer: BlockViewer<'a>,
     output: Output,
     machine: MachineKind,
-    blocks: u64,
+    /// A block has been written (the JSON's blocks are parted by commas).
+    wrote_block: bool,
     /// The last G10 of each register and field, for the summary's
     /// `set_by_program` (a list as long as the registers set, not as the
     /// blocks run).
@@ -84,7 +85,7 @@ impl<'a, W: Write> Streamer<'a, W> {
             viewer,
             output,
             machine,
-            blocks: 0,
+            wrote_block: false,
             data_sets: Vec::new(),
             error: None,
         };
@@ -136,8 +137,7 @@ impl<W: Write> Observer for Streamer<'_, W> {
     fn on_block(&mut self, b: &BlockReport) {
         self.attempt(|s| {
             let view = s.viewer.view(b);
-            let first = s.blocks == 0;
-            s.blocks += 1;
+            let first = !std::mem::replace(&mut s.wrote_block, true);
             match &s.output {
                 Output::Table => table::row(s.out, b, &view, s.machine),
                 Output::Json { .. } => {
@@ -161,9 +161,7 @@ impl<W: Write> Observer for Streamer<'_, W> {
     fn on_event(&mut self, e: &Event) {
         if let offsetlab::machine::EventKind::DataSet(set) = &e.kind {
             let same = |k: &Event| match &k.kind {
-                offsetlab::machine::EventKind::DataSet(s) => {
-                    (s.table, &s.key, s.field) == (set.table, &set.key, set.field)
-                }
+                offsetlab::machine::EventKind::DataSet(s) => s.same_entry(set),
                 _ => false,
             };
             match self.data_sets.iter_mut().find(|k| same(k)) {

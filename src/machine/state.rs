@@ -249,6 +249,14 @@ pub struct DataSet {
     pub was: f64,
 }
 
+impl DataSet {
+    /// True when `other` sets the same entry and field (a later one
+    /// replaces it in what the program set, the summary's `set_by_program`).
+    pub fn same_entry(&self, other: &DataSet) -> bool {
+        (self.table, &self.key, self.field) == (other.table, &other.key, other.field)
+    }
+}
+
 /// The state of the machine after a block.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BlockState {

@@ -35,17 +35,17 @@ pub fn excerpt(text: &str) -> Cow<'_, str> {
     if text.chars().count() <= EXCERPT {
         return Cow::Borrowed(text);
     }
-    let head: String = text.chars().take(EXCERPT * 2 / 3).collect();
-    let tail_len = EXCERPT / 3 - 1;
-    let tail: String = text
-        .chars()
+    // The first 40 characters and the last 19, cut at character bounds.
+    let head = text
+        .char_indices()
+        .nth(EXCERPT * 2 / 3)
+        .map_or(text.len(), |(i, _)| i);
+    let tail = text
+        .char_indices()
         .rev()
-        .take(tail_len)
-        .collect::<Vec<_>>()
-        .into_iter()
-        .rev()
-        .collect();
-    Cow::Owned(format!("{head}…{tail}"))
+        .nth(EXCERPT / 3 - 2)
+        .map_or(0, |(i, _)| i);
+    Cow::Owned(format!("{}…{}", &text[..head], &text[tail..]))
 }
 
 /// The most characters of a program's text a sentence quotes.
