@@ -742,10 +742,7 @@ fn account(
     }
     if options.keep_blocks {
         let before = position_before(&result.blocks, machine);
-        if observer.takes_reports() {
-            result.blocks.clear();
-        }
-        result.blocks.push(BlockReport {
+        let report = BlockReport {
             index,
             span: block.span,
             state: *machine.state(),
@@ -757,12 +754,14 @@ fn account(
             variables,
             watch: machine.watched(),
             place: place.take(),
-        });
-        if observer.takes_reports()
-            && let Some(b) = result.blocks.last()
-        {
-            observer.on_block(b);
+        };
+        // An observer that takes the reports gets each; the run keeps only
+        // the last (the next block's position before, 6.12).
+        if observer.takes_reports() {
+            observer.on_block(&report);
+            result.blocks.clear();
         }
+        result.blocks.push(report);
     }
     let offset_words = match kind {
         MachineKind::Mill => block.holds(Address::D) || block.holds(Address::H),

@@ -1,7 +1,8 @@
 //! Where the machine starts and where its reference position is when the
 //! setup leaves them out (behaviour 13.15, setting 7.49): at the work zero,
 //! the seeds' drawings' convention, or where a typical machine of each kind
-//! has them, or the tool at the work zero under a typical reference, so that `G91 G28 Z0.` rises to the top of the travel and a
+//! has them, or the tool at the work zero under a typical reference, so
+//! that `G91 G28 Z0.` rises to the top of the travel and a
 //! lathe starts at the turret's home rather than on the centre line.
 
 use serde::{Deserialize, Serialize};

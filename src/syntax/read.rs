@@ -300,13 +300,8 @@ fn block_end(bytes: &[u8], mut i: usize) -> usize {
         match bytes[i] {
             b'\n' | b'\r' | b';' => return i,
             b'(' => {
-                i += 1;
-                while i < n && !matches!(bytes[i], b')' | b'\n' | b'\r') {
-                    i += 1;
-                }
-                if i < n && bytes[i] == b')' {
-                    i += 1;
-                }
+                let (after, _) = lexer::comment(&bytes[i..]).unwrap_or((&[], false));
+                i = n - after.len();
             }
             _ => i += 1,
         }
