@@ -1,6 +1,7 @@
 //! Command-line parsing (clap) and the subcommands' output: `run`, `check`
 //! and `link`.
 
+mod library;
 mod stream;
 mod table;
 
@@ -99,10 +100,11 @@ struct Common {
     /// program (as `link --decode` prints) may stand in for PROGRAM.
     #[arg(long, value_name = "FILE")]
     setup: Option<PathBuf>,
-    /// A file of programs for the setup's library (behaviour 9.10, 19.10):
-    /// each program in it, by its O/: header, is there for M98/G65 to
-    /// call. Repeatable; a file without a header is refused.
-    #[arg(long = "program", value_name = "FILE")]
+    /// A file of programs, or a folder of such files, for the setup's
+    /// library (behaviour 9.10, 19.10): each program in it, by its O/:
+    /// header, is there for M98/G65 to call. Repeatable; a file without a
+    /// header is refused (in a folder: left out, and said).
+    #[arg(long = "program", value_name = "FILE|DIR")]
     programs: Vec<PathBuf>,
     /// Program file, or - for standard input.
     #[arg(value_name = "PROGRAM")]
@@ -175,7 +177,8 @@ fn exit(errors: bool) -> ExitCode {
 fn execute(cli: Cli, out: &mut impl Write) -> Result<ExitCode, Fatal> {
     match cli.command {
         Command::Run { common, format } => {
-            let (_, doc) = load(&common)?;
+            let (_, mut doc) = load(&common)?;
+            folder_library(&common, &mut doc);
             let options = RunOptions {
                 keep_blocks: true,
                 keep_moves: false,
@@ -210,7 +213,13 @@ fn execute(cli: Cli, out: &mut impl Write) -> Result<ExitCode, Fatal> {
                 keep_moves: false,
                 ..RunOptions::default()
             };
-            let run = run_program(program, &doc.setup, options);
+            let run = match &common.program {
+                Some(path) => library::from_folder(path, program, &mut doc.setup, |t, s| {
+                    run_program(t, s, options)
+                }),
+                None => None,
+            }
+            .unwrap_or_else(|| run_program(program, &doc.setup, options));
             written(check(out, &name, &run, program))?;
             Ok(exit(run.has_errors()))
         }
@@ -232,6 +241,7 @@ fn execute(cli: Cli, out: &mut impl Write) -> Result<ExitCode, Fatal> {
                 return Ok(ExitCode::SUCCESS);
             }
             let (_, mut doc) = load(&common)?;
+            folder_library(&common, &mut doc);
             if let Some(p) = plane {
                 let plane = ViewPlane::parse(&p).ok_or_else(|| {
                     Fatal(format!(
@@ -323,7 +333,7 @@ fn load_setup(common: &Common) -> Result<(String, Document), Fatal> {
         doc.setup.set_tool(spec).map_err(Fatal)?;
     }
     for path in &common.programs {
-        library_into(path, &mut doc.setup.programs)?;
+        library::library_into(path, &mut doc.setup.programs)?;
     }
     let doc = doc.validated().map_err(|e| Fatal(e.to_string()))?;
     let name = match &common.program {
@@ -342,41 +352,35 @@ fn load_setup(common: &Common) -> Result<(String, Document), Fatal> {
     Ok((name, doc))
 }
 
-/// Adds the programs of the file at `path` to the library, each from its
-/// header to the next (behaviour 19.10); a number the library holds
-/// already keeps its first program (19.1). A file without a header, or
-/// with blocks before its first, is refused: the library keeps programs
-/// by their number, and a program's lines are counted from its header.
-fn library_into(
-    path: &std::path::Path,
-    library: &mut std::collections::BTreeMap<u32, String>,
-) -> Result<(), Fatal> {
-    let name = format!("--program {}", path.display());
-    let file = std::fs::File::open(path).map_err(|e| Fatal(format!("cannot read {name}: {e}")))?;
-    let text = read_text(&name, file, offsetlab::syntax::MAX_PROGRAM_BYTES)?;
-    let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
-    let headers = offsetlab::syntax::program_headers(text);
-    let Some(first) = headers.first() else {
-        return Err(Fatal(format!(
-            "{name}: no program header; the library keeps programs by number, so each opens with its O or : line (O1002)"
-        )));
+/// The programs PROGRAM calls that sit in other files of its folder, into
+/// the library (behaviour 19.13), found by a run without block reports:
+/// made only for a program that calls one (M98, G65, G66).
+fn folder_library(common: &Common, doc: &mut Document) {
+    let Some(path) = &common.program else {
+        return;
     };
-    if !text[..first.pos]
-        .trim_matches(|c: char| c.is_whitespace() || c == '%')
-        .is_empty()
-    {
-        return Err(Fatal(format!(
-            "{name}: blocks before the first program header (line {}); the library keeps whole programs, each from its O or : line",
-            first.line
-        )));
+    if !calls_a_program(&doc.program) {
+        return;
     }
-    for (i, h) in headers.iter().enumerate() {
-        let end = headers.get(i + 1).map_or(text.len(), |next| next.pos);
-        library
-            .entry(h.number)
-            .or_insert_with(|| text[h.pos..end].to_string());
-    }
-    Ok(())
+    let options = RunOptions {
+        keep_blocks: false,
+        keep_moves: false,
+        ..RunOptions::default()
+    };
+    library::from_folder(path, &doc.program, &mut doc.setup, |t, s| {
+        run_program(t, s, options)
+    });
+}
+
+/// True if `text` holds M98, G65 or G66 (any case): a program that may
+/// call another.
+fn calls_a_program(text: &str) -> bool {
+    text.as_bytes().windows(3).any(|w| {
+        matches!(
+            [w[0].to_ascii_uppercase(), w[1], w[2]],
+            [b'M', b'9', b'8'] | [b'G', b'6', b'5'] | [b'G', b'6', b'6']
+        )
+    })
 }
 
 /// The run of `run` and `check`: a large program's parser on a thread of
