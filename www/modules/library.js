@@ -1,8 +1,9 @@
 // The setup's library of programs (behaviour 9.10, 19.10): programs kept
 // by number with the document and its link, for M98 and G65 to call. The
 // settings panel lists them (number and first line after the header) with
-// a remove button each, and adds the programs pasted in its box, each by
-// its O or : header, as `offsetlab --program FILE` does.
+// a remove button each, and adds the programs pasted in its box, or in
+// files opened or dropped on it (several at once, or a whole folder), each
+// by its O or : header, as `offsetlab --program FILE|DIR` does.
 
 const HEADER = /^[ \t]*[O:](\d{1,8})(?![A-MO-Za-mo-z])/i;
 
@@ -26,7 +27,41 @@ export function programsIn(text) {
   return found.length ? found : null;
 }
 
-/** The library section: a list and a box to paste programs in. */
+/** The largest file read into the library (a link carries every program). */
+const MAX_FILE_BYTES = 1 << 20;
+
+/** What files give the library: the programs, and a sentence for each file
+ * left out and each number held already (never passed over in silence). */
+export async function programsOfFiles(files, held) {
+  const add = [];
+  const said = [];
+  const numbers = new Set(Object.keys(held || {}).map(Number));
+  for (const file of files) {
+    const name = file.webkitRelativePath || file.name;
+    if (file.size > MAX_FILE_BYTES) {
+      said.push(`${name}: left out, larger than 1 MiB`);
+      continue;
+    }
+    const programs = programsIn(await file.text());
+    if (!programs) {
+      said.push(`${name}: left out, no program header (O1002) before its first block`);
+      continue;
+    }
+    for (const [n, text] of programs) {
+      const label = `O${String(n).padStart(4, '0')}`;
+      if (numbers.has(n)) {
+        said.push(`${name}: ${label} is in the library already; the first kept`);
+      } else {
+        numbers.add(n);
+        add.push([n, text]);
+      }
+    }
+  }
+  return { add, said };
+}
+
+/** The library section: a list, a box to paste programs in, and files or a
+ * folder opened or dropped. */
 export function librarySection({ getSetup, change }) {
   const box = document.createElement('details');
   box.className = 'library';
@@ -35,7 +70,7 @@ export function librarySection({ getSetup, change }) {
   summary.textContent = 'Library programs';
   const help = document.createElement('p');
   help.className = 'help';
-  help.textContent = 'Programs kept with the document and its link, for M98 and G65 to call by number. A program of the same number in the editor wins.';
+  help.textContent = 'Programs kept with the document and its link, for M98 and G65 to call by number. Paste them, open files or a folder, or drop files here. A program of the same number in the editor wins.';
   const list = document.createElement('ul');
   list.id = 'library-list';
   const paste = document.createElement('textarea');
@@ -63,7 +98,50 @@ export function librarySection({ getSetup, change }) {
     }, 'settings');
     paste.value = '';
   });
-  box.append(summary, help, list, paste, add, reason);
+  const fromFiles = async (files) => {
+    const { add: programs, said } = await programsOfFiles([...files], getSetup()?.programs);
+    const n = programs.length;
+    const added = n ? [`${n} program${n === 1 ? '' : 's'} added`] : ['No program added'];
+    reason.textContent = [...added, ...said].join('. ') + '.';
+    if (n) {
+      change((s) => {
+        s.programs = { ...(s.programs || {}) };
+        for (const [k, text] of programs) if (!(k in s.programs)) s.programs[k] = text;
+      }, 'settings');
+    }
+  };
+  const picker = (id, label, folder) => {
+    const input = document.createElement('input');
+    input.type = 'file';
+    input.id = id;
+    input.multiple = true;
+    if (folder) input.webkitdirectory = true;
+    input.setAttribute('aria-label', label);
+    input.addEventListener('change', () => {
+      fromFiles(input.files).finally(() => { input.value = ''; });
+    });
+    const wrap = document.createElement('label');
+    wrap.className = 'library-pick';
+    wrap.append(label, ' ', input);
+    return wrap;
+  };
+  const files = picker('library-files', 'Open files', false);
+  const dir = picker('library-folder', 'Open a folder', true);
+  box.addEventListener('dragover', (e) => {
+    if (e.dataTransfer?.types?.includes('Files')) {
+      e.preventDefault();
+      box.classList.add('dropping');
+    }
+  });
+  box.addEventListener('dragleave', () => box.classList.remove('dropping'));
+  box.addEventListener('drop', (e) => {
+    if (!e.dataTransfer?.files?.length) return;
+    e.preventDefault();
+    box.classList.remove('dropping');
+    box.open = true;
+    fromFiles(e.dataTransfer.files);
+  });
+  box.append(summary, help, list, paste, add, files, dir, reason);
   const render = () => {
     const programs = getSetup()?.programs || {};
     const rows = Object.keys(programs).map((n) => {
