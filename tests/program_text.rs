@@ -1,14 +1,14 @@
 //! Behaviour 1.4, 1.9, 1.21–1.23 and the rules of sections 2 and 5 they
 //! touch (`docs/behaviour.md`): program text as a run sees it — program
 //! headers and the programs of a file, other dialects refused once, a
-//! dwell's P with a decimal point per control, subprogram and macro calls
+//! dwell's P and S with a decimal point per control, subprogram and macro calls
 //! refused, the words of a G04/G50/G28 block.
 #![cfg(not(target_arch = "wasm32"))]
 
 mod common;
 use common::*;
 use offsetlab::machine::EventKind;
-use offsetlab::setup::{Control, DwellPDecimalPoint, Settings};
+use offsetlab::setup::{Control, DwellPDecimalPoint, MachineKind, SDecimalPoint, Settings};
 use offsetlab::{End, Setup, run};
 
 fn with_control(mut s: Setup, control: Control) -> Setup {
@@ -133,6 +133,45 @@ fn behaviour1_23_haas_reads_p_with_a_point_as_seconds_fanuc_and_yasnac_refuse_it
     let mut s = Setup::default();
     s.settings.dwell_p_decimal_point = Some(DwellPDecimalPoint::Seconds);
     assert_eq!(dwells(&ok("G04 P1.5", &s)), vec![1.5]);
+}
+
+#[test]
+fn behaviour7_57_haas_reads_s_with_a_point_as_its_value_fanuc_and_yasnac_refuse_it() {
+    let mut lathe = Setup::default();
+    lathe.machine = MachineKind::Lathe;
+    let haas = with_control(lathe.clone(), Control::Haas);
+    // G50 S3000. limits the spindle to 3000 rpm; G97 S1600. turns it at
+    // 1600 rpm, as S1600 would.
+    let text = "G50 S3000.\nG97 S1600. M03\nG97 S1600 M03\nM30\n";
+    let r = ok(text, &haas);
+    assert_eq!(r.blocks[0].state.spindle_limit, Some(3000.0));
+    assert!(
+        r.blocks[0].notes[0].starts_with("G50 S3000: the spindle speed limit"),
+        "{:?}",
+        r.blocks[0].notes
+    );
+    assert_eq!(r.blocks[1].state.spindle, Some(1600.0));
+    assert_eq!(r.blocks[2].state.spindle, Some(1600.0));
+    // A negative speed is out of range with a point too.
+    assert_eq!(errors("G97 S-1600. M03", &haas), vec!["out-of-range"]);
+    for control in [Control::Fanuc, Control::Yasnac] {
+        let s = with_control(lathe.clone(), control);
+        let r = run("G97 S1600. M03\n", &s);
+        let d = r.diagnostics.iter().find(|d| d.is_error()).unwrap();
+        assert_eq!((d.code, d.line, d.column), ("decimal-point", 1, 5));
+        assert!(d.message.contains("s_decimal_point"), "{}", d.message);
+    }
+    // The setting wins over the profile; T keeps refusing a point on Haas.
+    let mut s = with_control(Setup::default(), Control::Fanuc);
+    s.settings.s_decimal_point = Some(SDecimalPoint::Value);
+    assert_eq!(
+        ok("S5000. M03\nM30", &s).blocks[0].state.spindle,
+        Some(5000.0)
+    );
+    assert_eq!(errors("T1. M06", &haas), vec!["decimal-point"]);
+    let setup = Setup::from_json(r#"{"settings":{"s_decimal_point":"value"}}"#).unwrap();
+    assert_eq!(setup.settings.s_decimal_point(), SDecimalPoint::Value);
+    assert_eq!(Settings::default().s_decimal_point(), SDecimalPoint::Error);
 }
 
 #[test]

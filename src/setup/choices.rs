@@ -147,6 +147,16 @@ pub enum DwellPDecimalPoint {
     Seconds,
 }
 
+/// A decimal point in S, the spindle speed (behaviour 1.13, 7.57).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SDecimalPoint {
+    /// S is a whole number; `S5000.` is an error (Fanuc: PS0007).
+    Error,
+    /// `S5000.` is 5000, as `S5000` (the Haas programs' habit).
+    Value,
+}
+
 /// The range of the angles ATAN and ASIN give (behaviour 7.39, 20.6).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]

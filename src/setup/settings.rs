@@ -60,6 +60,10 @@ pub struct Settings {
     /// [`Settings::dwell_p_decimal_point`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub dwell_p_decimal_point: Option<DwellPDecimalPoint>,
+    /// A decimal point in S (behaviour 7.57); read it with
+    /// [`Settings::s_decimal_point`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub s_decimal_point: Option<SDecimalPoint>,
     /// G12/G13 on the mill (behaviour 7.20); read it with
     /// [`Settings::circle_pocket`].
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -182,6 +186,17 @@ impl Settings {
     pub fn gcode_system(&self) -> GCodeSystem {
         self.gcode_system.unwrap_or(match self.control {
             Control::Yasnac | Control::Fanuc | Control::Haas => GCodeSystem::A,
+        })
+    }
+
+    /// A decimal point in S: Fanuc allows none (PS0007 ILLEGAL USE OF
+    /// DECIMAL POINT, an address that takes no point), nor do the YASNAC
+    /// tables, which give S as an integer; Haas programs write `S5000.`
+    /// and run (behaviour 7.57 says what is and is not known).
+    pub fn s_decimal_point(&self) -> SDecimalPoint {
+        self.s_decimal_point.unwrap_or(match self.control {
+            Control::Yasnac | Control::Fanuc => SDecimalPoint::Error,
+            Control::Haas => SDecimalPoint::Value,
         })
     }
 

@@ -67,6 +67,12 @@ impl Blocks<'_> {
                     "{text}: P takes a whole number, written without a decimal point (a dwell in milliseconds: P3000 for 3 s; setting dwell_p_decimal_point: seconds, the Haas rule, reads {text} as seconds)"
                 ),
             ),
+            Refusal::DecimalPoint if w.letter == b'S' => (
+                "decimal-point",
+                format!(
+                    "{text}: S takes a whole number, written without a decimal point (setting s_decimal_point: value, the Haas rule, reads {text} as its value)"
+                ),
+            ),
             Refusal::DecimalPoint => (
                 "decimal-point",
                 format!("{text}: {letter} takes a whole number, written without a decimal point"),

@@ -33,8 +33,8 @@ pub use macro_words::{MacroBlock, MacroWord, resolve};
 
 use crate::diag::{Diagnostic, Span};
 use crate::setup::{
-    DecimalInput, DepthWord, DwellPDecimalPoint, GCodeSystem, MachineKind, SameGroupCodes, Setup,
-    Units,
+    DecimalInput, DepthWord, DwellPDecimalPoint, GCodeSystem, MachineKind, SDecimalPoint,
+    SameGroupCodes, Setup, Units,
 };
 use codes::{Code, CodeTable, GCode, Group, MCode, NonModal, Repetitive, g_group};
 use lexer::{Number, NumberError};
@@ -96,6 +96,8 @@ pub struct ParseOptions {
     pub same_group: SameGroupCodes,
     /// A decimal point in a dwell's P (behaviour 1.23, 7.26).
     pub dwell_p: DwellPDecimalPoint,
+    /// A decimal point in S (behaviour 1.13, 7.57).
+    pub s_point: SDecimalPoint,
     /// How D reads in a lathe G71/G72/G74–G76 block (behaviour 15.2).
     pub depth_word: DepthWord,
 }
@@ -125,6 +127,7 @@ impl From<&Setup> for ParseOptions {
             system: s.settings.gcode_system(),
             same_group: s.settings.same_group_codes(),
             dwell_p: s.settings.dwell_p_decimal_point(),
+            s_point: s.settings.s_decimal_point(),
             depth_word: s.settings.depth_word(),
         }
     }

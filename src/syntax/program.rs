@@ -12,7 +12,7 @@
 use super::lexer::{self, Number, NumberError};
 use super::{Address, Block, Blocks, Refusal, Tape, Word, WordKind, count_lines, is_end};
 use crate::diag::{Diagnostic, Span};
-use crate::setup::DwellPDecimalPoint;
+use crate::setup::{DwellPDecimalPoint, SDecimalPoint};
 
 /// Where the parser stands among the programs of a file.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -365,18 +365,25 @@ impl Blocks<'_> {
 
     /// A P word written with a decimal point: with setting
     /// `dwell_p_decimal_point = seconds` (Haas) a dwell in seconds, the
-    /// word keeping its point (the machine reads it); otherwise refused
-    /// (behaviour 1.23). Called by the reading of a word only for a whole-
+    /// word keeping its point (the machine reads it); an S word with one,
+    /// with `s_decimal_point = value` (Haas), its value; otherwise refused
+    /// (behaviour 1.23, 7.57). Called by the reading of a word only for a whole-
     /// number word with a point.
     #[cold]
     #[inline(never)]
-    pub(super) fn dwell_seconds(
+    pub(super) fn decimal_allowed(
         &self,
         address: Address,
         n: Number,
         span: Span,
     ) -> Result<(Word, WordKind), Refusal> {
-        if address != Address::P || self.options.dwell_p != DwellPDecimalPoint::Seconds {
+        let allowed = match address {
+            Address::P => self.options.dwell_p == DwellPDecimalPoint::Seconds,
+            // Haas: `S5000.` is the speed 5000 (behaviour 7.57).
+            Address::S => self.options.s_point == SDecimalPoint::Value,
+            _ => false,
+        };
+        if !allowed {
             return Err(Refusal::DecimalPoint);
         }
         let value = n.value();

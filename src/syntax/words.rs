@@ -209,8 +209,8 @@ impl Blocks<'_> {
             .and_then(|a| Ok((a, w.number.map_err(Refusal::Number)?)))
             .and_then(|(a, n)| {
                 self.read_word(a, n, span).or_else(|refusal| match refusal {
-                    // Haas: a dwell's P with a point is seconds (behaviour 1.23).
-                    Refusal::DecimalPoint => self.dwell_seconds(a, n, span),
+                    // Haas: a dwell's P with a point is seconds, S5000. is 5000 (behaviour 1.23, 7.57).
+                    Refusal::DecimalPoint => self.decimal_allowed(a, n, span),
                     _ => Err(refusal),
                 })
             });

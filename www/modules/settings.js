@@ -86,6 +86,11 @@ const CHOICES = [
     help: 'G04 P3. (and a canned cycle’s dwell P): YASNAC and Fanuc take P in milliseconds without a point and refuse P3.; Haas reads P3. as 3 seconds and P3 as 3 milliseconds.',
   },
   {
+    id: 's_decimal_point', label: 'Decimal point in S', controlDefault: true,
+    options: [['error', 'an error'], ['value', 'its value']],
+    help: 'S5000. with a decimal point: YASNAC and Fanuc take S as a whole number and refuse it (Fanuc PS0007); Haas programs write it, and it reads as S5000.',
+  },
+  {
     id: 'machine_positions', label: 'Start and reference', controlDefault: true,
     options: [['work_zero_start', 'start at the work zero, reference above'], ['typical', 'a typical machine'], ['work_zero', 'the work zero']],
     help: 'Start and reference left at 0 0 0: the tool starts at the work zero and G28 goes up to a typical machine’s reference (YASNAC, the seeds); or as on a typical machine, homed there (Fanuc, Haas); or both at the work zero, so G28 returns to it. The typical reference: mill X0 Y0 Z508 mm (Haas VF-2), lathe turret home X406.4 Z355.6 mm (Haas ST-10).',
