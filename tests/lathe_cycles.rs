@@ -166,6 +166,48 @@ fn behaviour15_11_g70_runs_the_contour_as_programmed_with_its_feeds() {
 }
 
 #[test]
+fn behaviour15_15_g70_with_the_roughing_words_warns_on_haas_and_is_ps0066_on_fanuc() {
+    // The G71 line's U W copied onto the G70: Haas finishes the contour as
+    // programmed (A X50 Z2 → X30 rapid → Z-20, X50 feed → A), the words
+    // named in one warning; Fanuc and YASNAC stop at U (PS0066).
+    let text = "G00 X50. Z2. F0.3\nG70 P10 Q20 U0.4 W0.1\nN10 G00 X30.\nG01 Z-20. F0.1\nN20 X50.\nG00 X60.\n";
+    let r = ok(text, &with_control(lathe(&[]), Control::Haas));
+    same_path(
+        &path(&r, 1),
+        &[
+            (Rapid, 30.0, 2.0),
+            (Feed, 30.0, -20.0),
+            (Feed, 50.0, -20.0),
+            (Rapid, 50.0, 2.0),
+        ],
+    );
+    let w: Vec<_> = r
+        .diagnostics
+        .iter()
+        .filter(|d| d.code == "mrc-ignored-word")
+        .collect();
+    assert_eq!(w.len(), 1);
+    assert_eq!((w[0].line, w[0].column), (2, 13));
+    assert!(
+        w[0].message
+            .starts_with("G70: U W are the roughing cycle's"),
+        "{}",
+        w[0].message
+    );
+    for control in [Control::Fanuc, Control::Yasnac] {
+        let r = run(text, &with_control(lathe(&[]), control));
+        let d = r.diagnostics.iter().find(|d| d.is_error()).unwrap();
+        assert_eq!((d.code, d.line, d.column), ("mrc-word", 2, 13));
+    }
+    // A word G70 never reads (A, G76's tool angle) stays an error on Haas too.
+    let stray = text.replace("W0.1", "A5");
+    assert_eq!(
+        errors(&stray, &with_control(lathe(&[]), Control::Haas)),
+        vec!["unsupported-word"]
+    );
+}
+
+#[test]
 fn behaviour15_8_g72_type_i_faces_in_z_levels() {
     // Facing from A (X62 Z1) with W1.5 R0.5, allowance U0.2 W0.1: the
     // shifted contour is X62.2 Z-4.9 → X40.2 Z-4.9 → X30.2 Z-1.9 → X30.2

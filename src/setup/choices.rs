@@ -157,6 +157,17 @@ pub enum SDecimalPoint {
     Value,
 }
 
+/// The roughing cycles' words (U, W, D, I, K, R) written on a G70 finishing
+/// block (behaviour 15.22, 7.58).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum FinishingExtraWords {
+    /// An error at the word (Fanuc PS0066: G70 reads P and Q).
+    Error,
+    /// Passed over with a warning that names them (Haas).
+    Warn,
+}
+
 /// The range of the angles ATAN and ASIN give (behaviour 7.39, 20.6).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]

@@ -64,6 +64,10 @@ pub struct Settings {
     /// [`Settings::s_decimal_point`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub s_decimal_point: Option<SDecimalPoint>,
+    /// Roughing words on a G70 block (behaviour 7.58); read it with
+    /// [`Settings::finishing_extra_words`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub finishing_extra_words: Option<FinishingExtraWords>,
     /// G12/G13 on the mill (behaviour 7.20); read it with
     /// [`Settings::circle_pocket`].
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -193,6 +197,14 @@ impl Settings {
     /// DECIMAL POINT, an address that takes no point), nor do the YASNAC
     /// tables, which give S as an integer; Haas programs write `S5000.`
     /// and run (behaviour 7.57 says what is and is not known).
+    pub fn finishing_extra_words(&self) -> FinishingExtraWords {
+        self.finishing_extra_words.unwrap_or(match self.control {
+            Control::Yasnac | Control::Fanuc => FinishingExtraWords::Error,
+            Control::Haas => FinishingExtraWords::Warn,
+        })
+    }
+
+    /// A decimal point in S (behaviour 7.57).
     pub fn s_decimal_point(&self) -> SDecimalPoint {
         self.s_decimal_point.unwrap_or(match self.control {
             Control::Yasnac | Control::Fanuc => SDecimalPoint::Error,

@@ -86,6 +86,11 @@ const CHOICES = [
     help: 'G04 P3. (and a canned cycle’s dwell P): YASNAC and Fanuc take P in milliseconds without a point and refuse P3.; Haas reads P3. as 3 seconds and P3 as 3 milliseconds.',
   },
   {
+    id: 'finishing_extra_words', label: 'U W D on G70', machine: 'lathe', controlDefault: true,
+    options: [['error', 'an error'], ['warn', 'passed over, with a warning']],
+    help: 'G70 P10 Q20 U0.02 W0.005: G70 reads P and Q; YASNAC and Fanuc stop at U (PS0066); Haas programs copy G71’s U W onto it, and the finishing pass runs the contour as programmed.',
+  },
+  {
     id: 's_decimal_point', label: 'Decimal point in S', controlDefault: true,
     options: [['error', 'an error'], ['value', 'its value']],
     help: 'S5000. with a decimal point: YASNAC and Fanuc take S as a whole number and refuse it (Fanuc PS0007); Haas programs write it, and it reads as S5000.',

@@ -20,6 +20,7 @@ use super::program::ProgramText;
 use super::{Machine, MoveKind, Out};
 use crate::diag::Diagnostic;
 use crate::geometry::show;
+use crate::setup::FinishingExtraWords;
 use crate::syntax::codes::{Code, CodeTable, NonModal, Repetitive};
 use crate::syntax::{Address, Block};
 
@@ -120,7 +121,7 @@ impl Machine {
         let pq = b.has(Address::P) || b.has(Address::Q);
         match cycle {
             Repetitive::Finishing => {
-                self.words(b, cycle, &[Address::P, Address::Q])?;
+                self.finishing_words(b, cycle, out)?;
                 let (p, q) = self.sequence_numbers(b, cycle)?;
                 self.t_for_cycle(b, out);
                 self.finishing(b, p, q, out, program)
@@ -265,6 +266,56 @@ impl Machine {
                     ),
                 ));
             }
+        }
+        Ok(())
+    }
+
+    /// The words of a G70 block: P and Q, and the roughing cycle's words
+    /// (U W D I K R, copied from the G71/G72 line above) passed over with a
+    /// warning where the profile says so (behaviour 15.22: Haas).
+    fn finishing_words(
+        &self,
+        b: &Block,
+        cycle: Repetitive,
+        out: &mut Out,
+    ) -> Result<(), Diagnostic> {
+        const ROUGHING: [Address; 6] = [
+            Address::U,
+            Address::W,
+            Address::D,
+            Address::I,
+            Address::K,
+            Address::R,
+        ];
+        if self.setup.settings.finishing_extra_words() == FinishingExtraWords::Error {
+            return self.words(b, cycle, &[Address::P, Address::Q]);
+        }
+        let mut allowed = vec![Address::P, Address::Q];
+        allowed.extend(ROUGHING);
+        self.words(b, cycle, &allowed)?;
+        let extra: Vec<&crate::syntax::Word> = b
+            .words
+            .iter()
+            .filter(|w| ROUGHING.contains(&w.address))
+            .collect();
+        if let (Some(first), Some(last)) = (extra.first(), extra.last()) {
+            let letters: Vec<String> = extra
+                .iter()
+                .map(|w| w.address.letter().to_string())
+                .collect();
+            let mut span = first.span;
+            span.end = last.span.end;
+            out.warnings.push(Diagnostic::warning(
+                "mrc-ignored-word",
+                span,
+                format!(
+                    "{}: {} {} the roughing cycle's (finishing allowance, depth, rough allowance); the finishing pass cuts the contour itself, so {} passed over (setting finishing_extra_words: warn, the Haas rule)",
+                    self.code_name(cycle),
+                    letters.join(" "),
+                    if extra.len() == 1 { "is" } else { "are" },
+                    if extra.len() == 1 { "it is" } else { "they are" },
+                ),
+            ));
         }
         Ok(())
     }
