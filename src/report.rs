@@ -195,6 +195,9 @@ pub struct Run {
     /// The mill's offset memory type the run read its tables with
     /// (behaviour 17.1).
     pub offset_memory: crate::setup::OffsetMemory,
+    /// The lathe's G-code system the run read its codes with (behaviour
+    /// 7.18).
+    pub gcode_system: crate::setup::GCodeSystem,
     /// Number of moves (also when the moves are not kept).
     pub move_count: usize,
     /// Bounds of both paths (mm), kept as the moves are made.

@@ -571,6 +571,10 @@ pub struct Summary {
     /// `C` (behaviour 17.1); absent on the lathe.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub offset_memory: Option<&'static str>,
+    /// Lathe: the G-code system the codes were read in, `A`, `B` or `C`
+    /// (behaviour 7.18); absent on the mill.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub gcode_system: Option<&'static str>,
     /// The values G10 blocks set, each with the line of the last block that
     /// set it (behaviour 17.8).
     pub set_by_program: Vec<SetByProgram>,
@@ -643,6 +647,7 @@ pub fn summary(run: &Run) -> Summary {
         }),
         registers: run.registers.clone(),
         offset_memory: (run.machine == MachineKind::Mill).then(|| run.offset_memory.as_str()),
+        gcode_system: (run.machine == MachineKind::Lathe).then(|| run.gcode_system.as_str()),
         set_by_program: run.set_by_program(),
         travel: TravelView {
             rapid: to_units(run.travel.rapid, run.units),

@@ -124,6 +124,16 @@ fn behaviour7_18_system_b_g90_g91_are_distance_modes_and_g77_the_turning_cycle()
     assert_eq!(b.modal.motion, "G77");
     assert_eq!(b.modal.distance, Some("G90"));
     assert_eq!(b.modal.feed_mode, "G95");
+    // The summary names the system (the page's summary line says it).
+    assert_eq!(offsetlab::view::summary(&r).gcode_system, Some("B"));
+    assert_eq!(
+        offsetlab::view::summary(&ok("G00 X1.", &lathe(&[]))).gcode_system,
+        Some("A")
+    );
+    assert_eq!(
+        offsetlab::view::summary(&ok("G00 X1.", &Setup::default())).gcode_system,
+        None
+    );
     // G50 is system A's coordinate setting: refused with the reason.
     let e = run("G50 X100. Z50.", &s);
     assert!(

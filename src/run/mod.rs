@@ -602,6 +602,7 @@ fn fresh(setup: &Setup) -> Run {
         block_count: 0,
         registers: Vec::new(),
         offset_memory: setup.settings.offset_memory(),
+        gcode_system: setup.settings.gcode_system(),
         move_count: 0,
         bounds: None,
         travel: Default::default(),

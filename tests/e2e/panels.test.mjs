@@ -135,6 +135,8 @@ describe('settings', () => {
       await waitForRun(page);
       assert.deepEqual((await setupJson(page)).settings.mirror, ['x']);
       assert.match(await page.locator('#summary').textContent(), /0 errors/);
+      // The summary says the system the program is read in (issue 33 point 4).
+      assert.match(await page.locator('#summary').textContent(), /lathe \(G-code system B\), mm/);
       await page.locator('#step-last').click();
       await waitForView(page, (v) => v.step === 7);
       assert.match(await stateText(page, 'actual'), /^X30\.000 Y-20\.000/);
