@@ -433,3 +433,42 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn behaviour20_19_fanuc_reads_the_abbreviations_of_the_macro_words() {
+    // WH … DO1 / EN1 loops while #1 <= 3: #1 = 0, 1, 2, 3, four passes of
+    // X+1 (X4); #1 = 4 > 3, so GO20 passes over the G00 X50.; #3 = SQRT 16
+    // + ABS -2 = 6; TH sets #4 = ROUND 2.6 = 3; #5 = 3 XOR 3 = 0, so the
+    // last block ends at X4 Y3 Z0.
+    let text = "#1=0\n#2=3\nWH[[#1LT#2]OR[#1EQ#2]]DO1\nG91 G01 X1. F100\n#1=#1+1\nEN1\n\
+                IF[#1GT3]GO20\nG00 X50.\nN20 #3=SQ[16]+AB[-2]\nIF[#3EQ6]TH#4=RO[2.6]\n\
+                #5=[#4XO3]\nG90 G00 Y#4 Z#5\nM30\n";
+    let mut fanuc = Setup::default();
+    fanuc.settings.control = offsetlab::setup::Control::Fanuc;
+    let r = ok(text, &fanuc);
+    assert_eq!(on_line(&r, 4).len(), 4);
+    assert!(on_line(&r, 8).is_empty());
+    same(r.moves.last().unwrap().to, [4.0, 3.0, 0.0]);
+    // Haas and YASNAC write the words in full: the first abbreviation
+    // stops the run, its message naming the word it stands for.
+    for control in [
+        offsetlab::setup::Control::Haas,
+        offsetlab::setup::Control::Yasnac,
+    ] {
+        let mut s = Setup::default();
+        s.settings.control = control;
+        let r = run(text, &s);
+        let d = r.diagnostics.iter().find(|d| d.is_error()).unwrap();
+        assert_eq!((d.code, d.line, d.column), ("macro-expression", 3, 1));
+        assert!(
+            d.message.contains("`WH` is Fanuc's abbreviation of WHILE"),
+            "{}",
+            d.message
+        );
+        assert_eq!(r.moves.len(), 0);
+    }
+    // The setting wins over the profile.
+    let mut s = Setup::default();
+    s.settings.macro_abbreviations = Some(offsetlab::setup::MacroAbbreviations::Fanuc);
+    same(ok(text, &s).moves.last().unwrap().to, [4.0, 3.0, 0.0]);
+}

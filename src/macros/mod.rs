@@ -15,7 +15,10 @@ mod value;
 
 pub use ast::{BinOp, CmpOp, Expr, ExprKind, Func, Statement, StatementKind};
 pub use eval::{Evaluator, MAX_MAGNITUDE, Options, Outcome, Variables, compare};
-pub use parse::{MAX_NESTING, expression, opens_statement, opens_value, statement, value};
+pub use parse::{
+    MAX_NESTING, abbreviated, expression, opens_statement, opens_value, statement, statement_with,
+    value, value_with,
+};
 pub use store::{Kind, Store, kind, no_variable, system_variable};
 pub use value::Value;
 

@@ -32,8 +32,11 @@ pub fn opens_statement(bytes: &[u8], i: usize) -> bool {
                 .take_while(|c| c.is_ascii_alphabetic())
                 .count();
             let word = &bytes[i..i + n];
+            // Fanuc's WH, GO, EN too (behaviour 20.19): a profile that
+            // reads them in full refuses them with the word they stand for.
             KEYWORDS
                 .iter()
+                .chain(&["WH", "GO", "EN"])
                 .any(|k| word.eq_ignore_ascii_case(k.as_bytes()))
         }
         _ => false,
@@ -69,9 +72,60 @@ fn letters(bytes: &[u8], i: usize) -> usize {
         .count()
 }
 
-/// Parses the statement at `start` of `text`, up to `end` (the block's end).
+/// Fanuc's two-letter abbreviations of the macro words a program may be
+/// written with (behaviour 20.19): the statements' and functions' words
+/// whose first two letters name no other word. POW and POPEN share theirs,
+/// so neither has one here.
+const ABBREVIATIONS: [(&str, &str); 21] = [
+    ("WH", "WHILE"),
+    ("GO", "GOTO"),
+    ("EN", "END"),
+    ("TH", "THEN"),
+    ("AB", "ABS"),
+    ("AC", "ACOS"),
+    ("AD", "ADP"),
+    ("AN", "AND"),
+    ("AS", "ASIN"),
+    ("AT", "ATAN"),
+    ("BC", "BCD"),
+    ("BI", "BIN"),
+    ("CO", "COS"),
+    ("EX", "EXP"),
+    ("FI", "FIX"),
+    ("FU", "FUP"),
+    ("RO", "ROUND"),
+    ("SI", "SIN"),
+    ("SQ", "SQRT"),
+    ("TA", "TAN"),
+    ("XO", "XOR"),
+];
+
+/// The macro word an abbreviation stands for.
+pub fn abbreviated(word: &str) -> Option<&'static str> {
+    ABBREVIATIONS
+        .iter()
+        .find(|(a, _)| a.eq_ignore_ascii_case(word))
+        .map(|&(_, w)| w)
+}
+
+/// Parses the statement at `start` of `text`, up to `end` (the block's end),
+/// its words written in full.
 pub fn statement(text: &str, start: usize, end: usize, line: u32) -> Result<Statement, Diagnostic> {
+    statement_with(text, start, end, line, false)
+}
+
+/// [`statement`], with Fanuc's abbreviations of the macro words read as
+/// the words when `abbreviations` (behaviour 20.19), else refused with the
+/// word they stand for.
+pub fn statement_with(
+    text: &str,
+    start: usize,
+    end: usize,
+    line: u32,
+    abbreviations: bool,
+) -> Result<Statement, Diagnostic> {
     let mut p = Parser::new(text, start, end, line);
+    p.abbreviations = abbreviations;
     let s = p.statement()?;
     p.blanks();
     if p.pos < p.end {
@@ -86,7 +140,19 @@ pub fn statement(text: &str, start: usize, end: usize, line: u32) -> Result<Stat
 /// Parses a word's value at `start` (`#1`, `-#1`, `[#1+2]`, `-[…]`);
 /// returns the expression and the byte after it.
 pub fn value(text: &str, start: usize, end: usize, line: u32) -> Result<(Expr, usize), Diagnostic> {
+    value_with(text, start, end, line, false)
+}
+
+/// [`value`], with the abbreviations of [`statement_with`].
+pub fn value_with(
+    text: &str,
+    start: usize,
+    end: usize,
+    line: u32,
+    abbreviations: bool,
+) -> Result<(Expr, usize), Diagnostic> {
     let mut p = Parser::new(text, start, end, line);
+    p.abbreviations = abbreviations;
     let e = p.unary(true)?;
     Ok((e, p.pos))
 }
@@ -109,6 +175,8 @@ struct Parser<'a> {
     end: usize,
     line: u32,
     depth: u32,
+    /// Fanuc's abbreviations read as their words (behaviour 20.19).
+    abbreviations: bool,
 }
 
 impl<'a> Parser<'a> {
@@ -121,6 +189,7 @@ impl<'a> Parser<'a> {
             end,
             line,
             depth: 0,
+            abbreviations: false,
         }
     }
 
@@ -184,6 +253,30 @@ impl<'a> Parser<'a> {
         self.text[self.pos..self.pos + n].to_ascii_uppercase()
     }
 
+    /// The letters at the parser's place as [`Parser::word`] reads them,
+    /// an abbreviation as the word it stands for when the profile reads
+    /// them; and how many bytes they take.
+    fn keyword(&mut self) -> (String, usize) {
+        let raw = self.word();
+        let len = raw.len();
+        match abbreviated(&raw) {
+            Some(full) if self.abbreviations => (full.to_string(), len),
+            _ => (raw, len),
+        }
+    }
+
+    /// The refusal of an abbreviation the profile does not read.
+    fn not_abbreviated(&self, word: &str, start: usize) -> Option<Diagnostic> {
+        let full = abbreviated(word)?;
+        Some(alarm::FORMAT.at(
+            self.span(start, start + word.len()),
+            format!(
+                "`{}` is Fanuc's abbreviation of {full}; this profile reads the macro words in full (setting macro_abbreviations: fanuc reads it)",
+                super::excerpt(word)
+            ),
+        ))
+    }
+
     fn expect(&mut self, c: u8, what: &str) -> Result<(), Diagnostic> {
         if self.eat(c) {
             Ok(())
@@ -220,20 +313,26 @@ impl<'a> Parser<'a> {
         if self.peek() == Some(b'#') {
             return self.assignment();
         }
-        let kw = self.word();
-        let kw_end = self.pos + kw.len();
+        let (kw, kw_len) = self.keyword();
+        let kw_end = self.pos + kw_len;
         self.pos = kw_end;
         let kind = match kw.as_str() {
             "GOTO" => StatementKind::Goto(self.expr()?),
             "IF" => {
                 let cond = self.bracketed()?;
-                match self.word().as_str() {
+                let (then, len) = self.keyword();
+                if let (false, Some(d)) =
+                    (self.abbreviations, self.not_abbreviated(&then, self.pos))
+                {
+                    return Err(d);
+                }
+                match then.as_str() {
                     "GOTO" => {
-                        self.pos += 4;
+                        self.pos += len;
                         StatementKind::IfGoto(cond, self.expr()?)
                     }
                     "THEN" => {
-                        self.pos += 4;
+                        self.pos += len;
                         self.blanks();
                         if self.peek() != Some(b'#') {
                             return Err(self.alarm_here(
@@ -263,6 +362,9 @@ impl<'a> Parser<'a> {
             "DO" => StatementKind::Do(self.loop_number()?),
             "END" => StatementKind::End(self.loop_number()?),
             _ => {
+                if let Some(d) = self.not_abbreviated(&kw, start) {
+                    return Err(d);
+                }
                 return Err(alarm::STATEMENT.at(
                     self.span(start, kw_end.max(start + 1)),
                     format!("`{}` is not a macro statement", super::excerpt(&kw)),
@@ -444,8 +546,14 @@ impl<'a> Parser<'a> {
                     ("MOD", BinOp::Mod),
                     ("OR", BinOp::Or),
                 ];
+                let short = match abbreviated(&run) {
+                    Some("XOR") if self.abbreviations => Some((BinOp::Xor, 2)),
+                    Some("AND") if self.abbreviations => Some((BinOp::And, 2)),
+                    _ => None,
+                };
                 match WORDS.iter().find(|(k, _)| glued(&run, k)) {
                     Some(&(k, op)) => (op, k.len()),
+                    None if short.is_some() => short?,
                     None => {
                         self.pos = save;
                         return None;
@@ -524,8 +632,8 @@ impl<'a> Parser<'a> {
 
     fn function(&mut self) -> Result<Expr, Diagnostic> {
         let start = self.pos;
-        let name = self.word();
-        let name_end = start + name.len();
+        let (name, len) = self.keyword();
+        let name_end = start + len;
         self.pos = name_end;
         if name == "POW" {
             self.open()?;
@@ -539,6 +647,9 @@ impl<'a> Parser<'a> {
             });
         }
         let Some(func) = Func::of(&name) else {
+            if let Some(d) = self.not_abbreviated(&name, start) {
+                return Err(d);
+            }
             return Err(alarm::FORMAT.at(
                 self.span(start, name_end),
                 format!(

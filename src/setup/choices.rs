@@ -168,6 +168,16 @@ pub enum FinishingExtraWords {
     Warn,
 }
 
+/// The macro words' two-letter abbreviations (behaviour 20.19, 7.59).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum MacroAbbreviations {
+    /// Read as the words they stand for (`WH` for WHILE), as Fanuc does.
+    Fanuc,
+    /// Words in full only; an abbreviation is refused with its word.
+    Off,
+}
+
 /// The range of the angles ATAN and ASIN give (behaviour 7.39, 20.6).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]

@@ -64,6 +64,10 @@ pub struct Settings {
     /// [`Settings::s_decimal_point`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub s_decimal_point: Option<SDecimalPoint>,
+    /// The macro words' abbreviations (behaviour 7.59); read it with
+    /// [`Settings::macro_abbreviations`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub macro_abbreviations: Option<MacroAbbreviations>,
     /// Roughing words on a G70 block (behaviour 7.58); read it with
     /// [`Settings::finishing_extra_words`].
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -201,6 +205,15 @@ impl Settings {
         self.finishing_extra_words.unwrap_or(match self.control {
             Control::Yasnac | Control::Fanuc => FinishingExtraWords::Error,
             Control::Haas => FinishingExtraWords::Warn,
+        })
+    }
+
+    /// Fanuc programs abbreviate the macro words (`WH[…]DO1`); Haas's and
+    /// YASNAC's macro chapters write them in full (behaviour 7.59).
+    pub fn macro_abbreviations(&self) -> MacroAbbreviations {
+        self.macro_abbreviations.unwrap_or(match self.control {
+            Control::Fanuc => MacroAbbreviations::Fanuc,
+            Control::Yasnac | Control::Haas => MacroAbbreviations::Off,
         })
     }
 

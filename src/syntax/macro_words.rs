@@ -138,7 +138,7 @@ impl Blocks<'_> {
         block: &mut Block,
     ) -> usize {
         let end = block_end(self.text.as_bytes(), i);
-        match macros::statement(self.text, i, end, line) {
+        match macros::statement_with(self.text, i, end, line, self.options.macro_abbreviations) {
             Ok(s) => self.macro_part(block, block_start).statement = Some(s),
             Err(d) => {
                 block.error = true;
@@ -165,7 +165,13 @@ impl Blocks<'_> {
             false => Address::from_letter(letter).filter(|a| !matches!(a, Address::O | Address::N)),
         };
         let written_as = &self.text[i..i + 1 + usize::from(comma)];
-        match macros::value(self.text, value, end, line) {
+        match macros::value_with(
+            self.text,
+            value,
+            end,
+            line,
+            self.options.macro_abbreviations,
+        ) {
             Ok((_, after))
                 if matches!(
                     self.text

@@ -98,6 +98,8 @@ pub struct ParseOptions {
     pub dwell_p: DwellPDecimalPoint,
     /// A decimal point in S (behaviour 1.13, 7.57).
     pub s_point: SDecimalPoint,
+    /// Fanuc's abbreviations of the macro words read (behaviour 20.19).
+    pub macro_abbreviations: bool,
     /// How D reads in a lathe G71/G72/G74–G76 block (behaviour 15.2).
     pub depth_word: DepthWord,
 }
@@ -128,6 +130,8 @@ impl From<&Setup> for ParseOptions {
             same_group: s.settings.same_group_codes(),
             dwell_p: s.settings.dwell_p_decimal_point(),
             s_point: s.settings.s_decimal_point(),
+            macro_abbreviations: s.settings.macro_abbreviations()
+                == crate::setup::MacroAbbreviations::Fanuc,
             depth_word: s.settings.depth_word(),
         }
     }

@@ -91,6 +91,11 @@ const CHOICES = [
     help: 'G70 P10 Q20 U0.02 W0.005: G70 reads P and Q; YASNAC and Fanuc stop at U (PS0066); Haas programs copy G71’s U W onto it, and the finishing pass runs the contour as programmed.',
   },
   {
+    id: 'macro_abbreviations', label: 'Macro words abbreviated', controlDefault: true,
+    options: [['fanuc', 'read (WH = WHILE)'], ['off', 'refused']],
+    help: 'WH[…]DO1, EN1, GO20, SQ[…]: Fanuc reads the macro words by their first two letters; the Haas and YASNAC macro chapters write them in full, and an abbreviation is refused with the word it stands for.',
+  },
+  {
     id: 's_decimal_point', label: 'Decimal point in S', controlDefault: true,
     options: [['error', 'an error'], ['value', 'its value']],
     help: 'S5000. with a decimal point: YASNAC and Fanuc take S as a whole number and refuse it (Fanuc PS0007); Haas programs write it, and it reads as S5000.',
