@@ -137,8 +137,10 @@ fn behaviour1_23_haas_reads_p_with_a_point_as_seconds_fanuc_and_yasnac_refuse_it
 
 #[test]
 fn behaviour7_57_haas_reads_s_with_a_point_as_its_value_fanuc_and_yasnac_refuse_it() {
-    let mut lathe = Setup::default();
-    lathe.machine = MachineKind::Lathe;
+    let lathe = Setup {
+        machine: MachineKind::Lathe,
+        ..Setup::default()
+    };
     let haas = with_control(lathe.clone(), Control::Haas);
     // G50 S3000. limits the spindle to 3000 rpm; G97 S1600. turns it at
     // 1600 rpm, as S1600 would.

@@ -79,12 +79,13 @@ fn note(msg: &str) {
 /// first program (19.1), said with the file that lost.
 fn add(library: &mut BTreeMap<u32, String>, programs: Vec<(u32, String)>, name: &str) {
     for (number, text) in programs {
-        if library.contains_key(&number) {
-            note(&format!(
+        match library.entry(number) {
+            std::collections::btree_map::Entry::Occupied(_) => note(&format!(
                 "{name}: O{number:04} is in the library already; the first one read is kept (a control's memory holds one program per number)"
-            ));
-        } else {
-            library.insert(number, text);
+            )),
+            std::collections::btree_map::Entry::Vacant(v) => {
+                v.insert(text);
+            }
         }
     }
 }
