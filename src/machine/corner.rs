@@ -381,6 +381,7 @@ impl Machine {
                 | NonModal::DataSetting => "the block makes no G01 move of its own",
                 NonModal::Skip => "a skip signal may end G31's move anywhere (behaviour 14.7)",
                 NonModal::CirclePocket(_) => "G12/G13 cut a pocket of their own (behaviour 14.12)",
+                NonModal::Engraving => "G47 engraves text of its own (behaviour 14.20)",
                 NonModal::AiContour
                 | NonModal::LookAhead
                 | NonModal::Smoothness

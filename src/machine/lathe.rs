@@ -176,6 +176,7 @@ impl Machine {
                 | NonModal::Smoothness
                 | NonModal::Cylindrical
                 | NonModal::CirclePocket(_)
+                | NonModal::Engraving
                 // G39 is not in the lathe's table.
                 | NonModal::CornerArc,
             )

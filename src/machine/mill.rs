@@ -28,11 +28,26 @@ impl Machine {
         b: &Block,
         out: &mut Out,
         ahead: &mut dyn Ahead,
+        program: &mut dyn super::program::ProgramText,
     ) -> Result<(), Diagnostic> {
         // While cutter compensation is engaged `special` is set: every
         // block goes through the compensation below.
         if !self.special && b.holds_only(&MOTION_WORDS, &[Group::Motion]) {
             return self.motion_block(b, out);
+        }
+        if b.codes().non_modal() == Some(NonModal::Engraving) {
+            // Haas G47 reads the text of its block's comment (behaviour 14.20).
+            if self.state.cutter.engaged() {
+                return Err(self.error(
+                    "g47-words",
+                    b.code_span(Group::NonModal),
+                    "G47 engraves with the tool's centre on the letters' strokes: cancel cutter compensation with G40 first (our convention; Tormach PathPilot's G47 refuses it too)",
+                ));
+            }
+            self.engraving_text = program
+                .block_text(b.span)
+                .and_then(super::engrave::first_comment)
+                .map(str::to_string);
         }
         if self.state.cutter.engaged() && !self.cutter_after_cancel(b) || super::cutter::concerns(b)
         {
@@ -150,6 +165,7 @@ impl Machine {
             Some(NonModal::CirclePocket(direction)) => {
                 return self.circle_pocket(b, direction, out);
             }
+            Some(NonModal::Engraving) => return self.engrave(b, out),
             // Their words and sentences were taken by `mode_codes`; the
             // block moves as any other (behaviour 14).
             Some(

@@ -17,6 +17,7 @@ mod corner_geometry;
 mod cutter;
 mod cycles;
 mod data;
+mod engrave;
 pub mod frame;
 mod lathe;
 pub(crate) mod macro_state;
@@ -172,8 +173,7 @@ pub struct Machine {
     line: u32,
     span: Span,
     /// Moves this run may still record; a block that would make more stops
-    /// with an error instead of filling memory (one G83 block with a tiny Q
-    /// and K9999 could otherwise make hundreds of millions).
+    /// with an error instead of filling memory (behaviour 8.3).
     pub(crate) moves_left: usize,
     /// Set when a block ran out of `moves_left`.
     overflow: bool,
@@ -182,6 +182,8 @@ pub struct Machine {
     /// the next block tests, and the corner beside it (the `check`
     /// instruction count in docs/performance.md).
     pub(super) corner_cut: bool,
+    /// The comment of the G47 block being run (Haas engraving's text).
+    pub(super) engraving_text: Option<String>,
     /// The corner the last block's chamfer or rounding cut.
     pub(super) corner: Xyz,
     /// While a block after a corner runs from the corner: where the tool
@@ -261,6 +263,7 @@ impl Machine {
             macro_calls: None,
             watch: None,
             corner_cut: false,
+            engraving_text: None,
             corner: [0.0; 3],
             corner_end: None,
             reading_ahead: false,
@@ -407,7 +410,7 @@ impl Machine {
         self.overflow = false;
         let after_corner = self.corner_cut.then(|| self.run_from_corner());
         let ran = match self.setup.machine {
-            MachineKind::Mill => self.mill_block(block, out, ahead),
+            MachineKind::Mill => self.mill_block(block, out, ahead, program),
             MachineKind::Lathe => self.lathe_block(block, out, ahead, program),
         };
         if let Some(end) = after_corner {
@@ -484,7 +487,7 @@ impl Machine {
         let why = match w.address {
             Address::C if lathe => "the C axis and the chamfer word C are not modelled yet",
             Address::A | Address::B | Address::C => "rotary axes are not modelled yet",
-            Address::E => "thread lead (and Haas G187's corner tolerance) is not modelled yet",
+            Address::E => "thread lead is not modelled yet (Haas G187 and G47 read E)",
             _ => {
                 "a chamfer or corner rounding here (a G70–G73 contour, a cycle, tool nose radius compensation) is not modelled yet: the lathe cuts it between two feed moves (behaviour 2.35)"
             }
@@ -499,7 +502,7 @@ impl Machine {
         use crate::syntax::codes::NonModal;
         let code = b.codes().non_modal();
         match a {
-            Address::E => code == Some(NonModal::Smoothness),
+            Address::E => matches!(code, Some(NonModal::Smoothness | NonModal::Engraving)),
             // The lathe G10's C adds to the nose radius (behaviour 17.6).
             Address::C
                 if code == Some(NonModal::DataSetting)

@@ -89,6 +89,7 @@ impl Machine {
                 NonModal::Dwell
                 | NonModal::Skip
                 | NonModal::CirclePocket(_)
+                | NonModal::Engraving
                 | NonModal::ReferenceReturn
                 | NonModal::PositionOffset(_)
                 | NonModal::SetCoordinates
@@ -334,7 +335,12 @@ impl Machine {
             .any(|a| b.has(*a));
         let feed = match c.non_modal() {
             // G39's corner arc is cut at the feed (behaviour 16.14).
-            Some(NonModal::Skip | NonModal::CirclePocket(_) | NonModal::CornerArc) => true,
+            Some(
+                NonModal::Skip
+                | NonModal::CirclePocket(_)
+                | NonModal::Engraving
+                | NonModal::CornerArc,
+            ) => true,
             Some(
                 NonModal::Dwell
                 | NonModal::ReferenceReturn

@@ -36,6 +36,12 @@ pub trait ProgramText {
         false
     }
 
+    /// The text of the block at `span` as written (a comment a code reads:
+    /// Haas G47's text, behaviour 14.20); None when the text is not kept.
+    fn block_text(&self, _span: crate::diag::Span) -> Option<&str> {
+        None
+    }
+
     /// How many subprogram calls are open (0 in the main program).
     fn depth(&self) -> usize {
         0

@@ -162,6 +162,7 @@ impl Machine {
             Some(
                 code @ (NonModal::Skip
                 | NonModal::CirclePocket(_)
+                | NonModal::Engraving
                 | NonModal::AiContour
                 | NonModal::LookAhead
                 | NonModal::Smoothness
@@ -215,6 +216,7 @@ impl Machine {
                 | NonModal::Smoothness
                 | NonModal::Cylindrical
                 | NonModal::CirclePocket(_)
+                | NonModal::Engraving
                 | NonModal::CornerArc,
             )
             | None => {}

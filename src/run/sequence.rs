@@ -171,6 +171,10 @@ impl ProgramText for Sequences<'_> {
         start
     }
 
+    fn block_text(&self, span: crate::diag::Span) -> Option<&str> {
+        self.text.get(span.start as usize..span.end as usize)
+    }
+
     fn has_program(&mut self, n: u32) -> bool {
         self.program(n).is_some()
     }

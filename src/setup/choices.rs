@@ -209,6 +209,16 @@ pub enum CirclePocket {
     Alarm,
 }
 
+/// What G47 is on the mill (behaviour 7.60, 14.20).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum G47Code {
+    /// Fanuc's and YASNAC's tool position offset, double extension (G45–G48).
+    PositionOffset,
+    /// Haas text engraving: P, X, Y, Z, R, I, J, E, F and the text.
+    Engraving,
+}
+
 /// The lathe's G-code system (behaviour 7.18): which numbers the single
 /// cycles, coordinate setting, feed modes and inch/metric have.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]

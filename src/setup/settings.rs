@@ -72,6 +72,9 @@ pub struct Settings {
     /// [`Settings::finishing_extra_words`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub finishing_extra_words: Option<FinishingExtraWords>,
+    /// G47 on the mill (behaviour 7.60); read it with [`Settings::g47`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub g47: Option<G47Code>,
     /// G12/G13 on the mill (behaviour 7.20); read it with
     /// [`Settings::circle_pocket`].
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -177,6 +180,16 @@ impl Settings {
         })
     }
 
+    /// What G47 is on the mill (behaviour 7.60): Haas engraves text with
+    /// it (Haas mill operator's manual, "G47 Text Engraving"); Fanuc and
+    /// YASNAC offset the tool position (seeds 000 and 003).
+    pub fn g47(&self) -> G47Code {
+        self.g47.unwrap_or(match self.control {
+            Control::Haas => G47Code::Engraving,
+            Control::Yasnac | Control::Fanuc => G47Code::PositionOffset,
+        })
+    }
+
     /// G12/G13 on the mill: Haas mills cut a circular pocket (Haas mill
     /// operator's manual, "G12 Circular Pocket Milling CW / G13 … CCW");
     /// neither the Fanuc 0i-MF G-code list nor the YASNAC seeds' manual has
@@ -197,10 +210,8 @@ impl Settings {
         })
     }
 
-    /// A decimal point in S: Fanuc allows none (PS0007 ILLEGAL USE OF
-    /// DECIMAL POINT, an address that takes no point), nor do the YASNAC
-    /// tables, which give S as an integer; Haas programs write `S5000.`
-    /// and run (behaviour 7.57 says what is and is not known).
+    /// G71's words on a G70 block (behaviour 7.58): Fanuc alarms (PS0066),
+    /// Haas programs copy them there and run.
     pub fn finishing_extra_words(&self) -> FinishingExtraWords {
         self.finishing_extra_words.unwrap_or(match self.control {
             Control::Yasnac | Control::Fanuc => FinishingExtraWords::Error,
@@ -217,7 +228,10 @@ impl Settings {
         })
     }
 
-    /// A decimal point in S (behaviour 7.57).
+    /// A decimal point in S: Fanuc allows none (PS0007 ILLEGAL USE OF
+    /// DECIMAL POINT, an address that takes no point), nor do the YASNAC
+    /// tables, which give S as an integer; Haas programs write `S5000.`
+    /// and run (behaviour 7.57 says what is and is not known).
     pub fn s_decimal_point(&self) -> SDecimalPoint {
         self.s_decimal_point.unwrap_or(match self.control {
             Control::Yasnac | Control::Fanuc => SDecimalPoint::Error,

@@ -102,13 +102,18 @@ pub struct ParseOptions {
     pub macro_abbreviations: bool,
     /// How D reads in a lathe G71/G72/G74–G76 block (behaviour 15.2).
     pub depth_word: DepthWord,
+    /// G47 on the mill is Haas text engraving (behaviour 7.60).
+    pub g47_engraving: bool,
 }
 
 impl ParseOptions {
     /// The table G numbers are read with.
     #[inline(always)]
     pub fn table(&self) -> CodeTable {
-        CodeTable::new(self.machine, self.system)
+        match CodeTable::new(self.machine, self.system) {
+            CodeTable::Mill if self.g47_engraving => CodeTable::MillEngraving,
+            table => table,
+        }
     }
 }
 
@@ -133,6 +138,7 @@ impl From<&Setup> for ParseOptions {
             macro_abbreviations: s.settings.macro_abbreviations()
                 == crate::setup::MacroAbbreviations::Fanuc,
             depth_word: s.settings.depth_word(),
+            g47_engraving: s.settings.g47() == crate::setup::G47Code::Engraving,
         }
     }
 }

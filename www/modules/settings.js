@@ -36,6 +36,11 @@ const CHOICES = [
     help: 'Lathe G-code table. A on every control (Fanuc B and C by parameter): G90/G92/G94 cycles, G50 coordinates. B: G77/G78/G79 cycles, G92 coordinates, G94/G95 feed. C: as B with G20/G21/G24 cycles.',
   },
   {
+    id: 'g47', label: 'G47 (mill)', machine: 'mill', controlDefault: true,
+    options: [['engraving', 'text engraving (Haas)'], ['position_offset', 'position offset, double extension']],
+    help: 'G47 on the mill: Haas engraves text (G47 P0 (TEXT) X Y I angle J height R Z F E; P1 a serial number from #599) in offsetlab’s single-stroke font; Fanuc and YASNAC extend the move by twice the D register.',
+  },
+  {
     id: 'circle_pocket', label: 'G12/G13 (mill)', machine: 'mill', controlDefault: true,
     options: [['haas', 'a circular pocket (Haas)'], ['alarm', 'an alarm']],
     help: 'G12/G13 on the mill: Haas cuts a circular pocket (I, K, Q, L, D, Z); Fanuc and YASNAC mills have no such code and alarm.',

@@ -54,6 +54,7 @@ fn returns(code: NonModal) -> bool {
         | NonModal::Smoothness
         | NonModal::Cylindrical
         | NonModal::CirclePocket(_)
+        | NonModal::Engraving
         | NonModal::PositionOffset(_)
         | NonModal::SetCoordinates
         | NonModal::LocalCoordinates

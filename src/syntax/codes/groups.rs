@@ -621,6 +621,8 @@ pub enum NonModal {
     /// G12 (clockwise) / G13 (counter-clockwise) on the mill: Haas circular
     /// pocket milling.
     CirclePocket(ArcDirection),
+    /// G47 on a Haas mill: text engraving (behaviour 14.20).
+    Engraving,
     /// G28: return to the reference position.
     ReferenceReturn,
     /// G45–G48 (mill): tool position offset (seeds 000 and 003).
@@ -723,6 +725,7 @@ impl NonModal {
             (NonModal::Cylindrical, _) => "G07.1",
             (NonModal::CirclePocket(ArcDirection::Cw), _) => "G12",
             (NonModal::CirclePocket(ArcDirection::Ccw), _) => "G13",
+            (NonModal::Engraving, _) => "G47",
             (NonModal::ReferenceReturn, _) => "G28",
             (NonModal::PositionOffset(p), _) => p.gcode(),
             (NonModal::SetCoordinates, MachineKind::Mill) => "G92",

@@ -17,7 +17,7 @@ pub use groups::{
 };
 pub use mcodes::MCode;
 
-use crate::setup::{GCodeSystem, MachineKind, Setup, Units};
+use crate::setup::{G47Code, GCodeSystem, MachineKind, Setup, Units};
 
 /// A G-code modal group. Two codes of one group in a block is an error
 /// (behaviour 1). Numbers follow the Fanuc/YASNAC M tables where they exist.
@@ -149,8 +149,10 @@ impl std::fmt::Display for GCode {
 /// its G-code system (behaviour 7.18). One byte, compared once per G word.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum CodeTable {
-    /// The mill (one table).
+    /// The mill, G47 the tool position offset (Fanuc, YASNAC).
     Mill,
+    /// The mill, G47 text engraving (Haas; setting g47, behaviour 7.60).
+    MillEngraving,
     /// The lathe, G-code system A.
     LatheA,
     /// The lathe, G-code system B.
@@ -167,7 +169,12 @@ impl CodeTable {
 
     /// The table a setup reads programs with.
     pub fn of(setup: &Setup) -> CodeTable {
-        CodeTable::new(setup.machine, setup.settings.gcode_system())
+        match CodeTable::new(setup.machine, setup.settings.gcode_system()) {
+            CodeTable::Mill if setup.settings.g47() == G47Code::Engraving => {
+                CodeTable::MillEngraving
+            }
+            table => table,
+        }
     }
 
     /// The table of `machine`; `system` counts on the lathe only.
@@ -184,7 +191,7 @@ impl CodeTable {
     #[inline]
     pub fn machine(self) -> MachineKind {
         match self {
-            CodeTable::Mill => MachineKind::Mill,
+            CodeTable::Mill | CodeTable::MillEngraving => MachineKind::Mill,
             CodeTable::LatheA | CodeTable::LatheB | CodeTable::LatheC => MachineKind::Lathe,
         }
     }
@@ -193,7 +200,7 @@ impl CodeTable {
     #[inline]
     pub fn system(self) -> GCodeSystem {
         match self {
-            CodeTable::Mill | CodeTable::LatheA => GCodeSystem::A,
+            CodeTable::Mill | CodeTable::MillEngraving | CodeTable::LatheA => GCodeSystem::A,
             CodeTable::LatheB => GCodeSystem::B,
             CodeTable::LatheC => GCodeSystem::C,
         }
@@ -288,6 +295,8 @@ impl Code {
                 44 => C::Length(LengthOffset::Subtract),
                 45 => C::NonModal(NonModal::PositionOffset(PositionOffset::Extension)),
                 46 => C::NonModal(NonModal::PositionOffset(PositionOffset::Reduction)),
+                // Haas has no G45–G48: its G47 engraves text (behaviour 7.60).
+                47 if table == CodeTable::MillEngraving => C::NonModal(NonModal::Engraving),
                 47 => C::NonModal(NonModal::PositionOffset(PositionOffset::DoubleExtension)),
                 48 => C::NonModal(NonModal::PositionOffset(PositionOffset::DoubleReduction)),
                 49 => C::Length(LengthOffset::Cancel),
