@@ -107,7 +107,7 @@ describe('view', () => {
       // The lathe's views: ZX, the face of polar interpolation, XC, and its 3D view (10.18).
       const shown = await page.locator('#plane option:not([hidden])').evaluateAll((os) => os.map((o) => o.value));
       assert.deepEqual(shown, ['ZX', 'XC', '3D']);
-      assert.match(await page.locator('#summary').textContent(), /0 errors · 0 warnings · lathe, mm/);
+      await page.waitForFunction(() => /0 errors · 0 warnings · lathe \(G-code system A\), mm/.test(document.querySelector('#summary').textContent));
       // The offset table's four lathe columns fit the panel (the Z wear inputs ran past its right edge).
       const overflow = await page.evaluate(() => {
         const panel = document.getElementById('offsets-panel').getBoundingClientRect();

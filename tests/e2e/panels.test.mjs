@@ -163,7 +163,12 @@ describe('settings', () => {
       await waitForRun(page);
       assert.equal(await page.getByLabel('Lathe X offsets').isVisible(), true);
       assert.equal(await page.getByLabel('Mirror X').isVisible(), false);
-      assert.match(await page.locator('#summary').textContent(), /lathe, mm/);
+      // The lathe's summary names the G-code system it reads the program in (7.18).
+      await page.waitForFunction(() => /lathe \(G-code system A\), mm/.test(document.querySelector('#summary').textContent));
+      await page.getByLabel('G-code system', { exact: true }).selectOption('B');
+      await page.waitForFunction(() => /lathe \(G-code system B\), mm/.test(document.querySelector('#summary').textContent));
+      await page.getByLabel('G-code system', { exact: true }).selectOption('A');
+      await waitForRun(page);
       assert.equal((await setupJson(page)).settings.mirror, undefined, 'mirror is for the mill only');
       await waitForView(page, (v) => v.plane === 'ZX');
       await page.getByLabel('Units').selectOption('inch');
@@ -199,7 +204,7 @@ describe('settings', () => {
       // The lathe's G-code system: B makes G90/G91 the distance codes.
       assert.equal(await page.getByLabel('G-code system').isVisible(), false);
       await page.getByLabel('Machine').selectOption('lathe');
-      await page.getByLabel('G-code system').selectOption('B');
+      await page.getByLabel('G-code system', { exact: true }).selectOption('B');
       await typeProgram(page, 'G92 X100. Z50.\nG00 G91 X-20. W-5.');
       assert.match(await page.locator('#summary').textContent(), /0 errors/);
       await page.locator('#step-last').click();

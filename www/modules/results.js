@@ -94,7 +94,7 @@ export function showResult({ summary, diagnostics }) {
     plural(summary.blocks, 'block'), plural(summary.moves, 'move'), plural(summary.errors, 'error'),
     plural(summary.warnings, 'warning'),
     // Behaviour 2.24: the blocks a run that continued past errors passed over.
-    ...(summary.skipped > 0 ? [`${plural(summary.skipped, 'block')} skipped`] : []), `${summary.machine}, ${summary.units}`, endText(summary.end),
+    ...(summary.skipped > 0 ? [`${plural(summary.skipped, 'block')} skipped`] : []), `${summary.machine}${summary.gcode_system ? ` (G-code system ${summary.gcode_system})` : ''}, ${summary.units}`, endText(summary.end),
     ...travelText(summary), ...extentsText(summary),
   ].join(' · ');
   summaryLine.classList.toggle('has-errors', summary.errors > 0);
