@@ -146,3 +146,44 @@ fn behaviour19_13_a_called_program_in_the_programs_folder_joins_the_library() {
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(text.contains(":4:5: error[program-not-found]"), "{text}");
 }
+
+#[test]
+fn behaviour19_13_the_folder_adds_no_program_past_the_librarys_1000() {
+    // A library folder of 1000 programs (O1–O1000) fills the library; the
+    // O3001 the program calls, in the program's own folder, is named as not
+    // read (behaviour 9.10's bound) and the run stops at the call.
+    let files: Vec<(String, String)> = (1..=1000)
+        .map(|n| (format!("p{n:04}.nc"), format!("O{n}\nM99\n")))
+        .collect();
+    let refs: Vec<(&str, &str)> = files
+        .iter()
+        .map(|(a, b)| (a.as_str(), b.as_str()))
+        .collect();
+    let lib = folder("full", &refs);
+    let main = folder(
+        "full-main",
+        &[
+            ("main.nc", "O2000\nG65 P3001 A3.\nM30\n"),
+            ("macro.nc", MACRO),
+        ],
+    );
+    let out = offsetlab(&[
+        "check",
+        "--program",
+        lib.to_str().unwrap(),
+        &path(&main, "main.nc"),
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        stderr.contains("O3001 in")
+            && stderr.contains("is not read")
+            && stderr.contains("at most 1000"),
+        "{stderr}"
+    );
+    assert!(
+        stdout.contains("program-not-found") || stderr.contains("program-not-found"),
+        "{stdout}{stderr}"
+    );
+    assert_ne!(out.status.code(), Some(0));
+}

@@ -170,6 +170,21 @@ pub(super) fn from_folder(
             file.display()
         ));
         setup.programs.insert(number, program);
+        // The library's own checks (behaviour 9.10: at most 1000 programs,
+        // each opening with its header) hold for what the folder adds too.
+        if let Some(e) = setup
+            .validate()
+            .into_iter()
+            .find(|d| d.code == "setup-program")
+        {
+            setup.programs.remove(&number);
+            note(&format!(
+                "O{number:04} in {} is not read: {}",
+                file.display(),
+                e.message
+            ));
+            break;
+        }
         run = quiet(text, setup);
     }
     Some(run)
