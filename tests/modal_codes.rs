@@ -329,3 +329,23 @@ fn behaviour14_14_g09_may_share_a_corner_block_and_g31_may_not() {
         vec!["corner-words"]
     );
 }
+
+#[test]
+fn behaviour14_22_haas_g103_limits_the_look_ahead_and_changes_no_path() {
+    // G103 P1, G103 P0 and G103 alone between two moves: the moves end
+    // where they would without them, each block saying what it does.
+    let text = "G01 X5. F100.\nG103 P1\nG01 X10.\nG103 P0\nG103\nG01 Y3.";
+    let r = ok(text, &mill(&[]));
+    assert!(r.diagnostics.is_empty(), "{:?}", r.diagnostics);
+    assert_eq!(r.moves.len(), 3);
+    same(r.moves[2].to, [10.0, 3.0, 0.0]);
+    assert!(explain(&r, 1).starts_with("G103 P1: the control looks at most one block ahead"));
+    assert!(explain(&r, 3).starts_with("G103 P0: the control's look-ahead is no longer limited"));
+    assert!(explain(&r, 4).starts_with("G103 without P"));
+    // P outside 0–15 and a word not its own are refused; P with a point is
+    // the parser's (P takes none, behaviour 1.13).
+    for text in ["G103 P16", "G103 P2 X1."] {
+        assert_eq!(errors(text, &mill(&[])), vec!["mode-words"], "{text}");
+    }
+    assert_eq!(errors("G103 P1.5", &mill(&[])), vec!["decimal-point"]);
+}

@@ -385,6 +385,7 @@ impl Machine {
                 NonModal::AiContour
                 | NonModal::LookAhead
                 | NonModal::Smoothness
+                | NonModal::BlockLimit
                 | NonModal::Cylindrical => {
                     "the mode code stands alone in its block (behaviour 14.3)"
                 }

@@ -174,6 +174,7 @@ impl Machine {
                 | NonModal::AiContour
                 | NonModal::LookAhead
                 | NonModal::Smoothness
+                | NonModal::BlockLimit
                 | NonModal::Cylindrical
                 | NonModal::CirclePocket(_)
                 | NonModal::Engraving

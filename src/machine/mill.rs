@@ -173,6 +173,7 @@ impl Machine {
                 | NonModal::AiContour
                 | NonModal::LookAhead
                 | NonModal::Smoothness
+                | NonModal::BlockLimit
                 | NonModal::Cylindrical,
             )
             | None => {}

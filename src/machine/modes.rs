@@ -84,6 +84,7 @@ impl Machine {
             Some(NonModal::AiContour) => self.ai_contour(b, out)?,
             Some(NonModal::LookAhead) => self.look_ahead(b, out)?,
             Some(NonModal::Smoothness) => self.smoothness(b, out)?,
+            Some(NonModal::BlockLimit) => self.block_limit(b, out)?,
             Some(NonModal::Cylindrical) => self.cylindrical(b, out)?,
             Some(
                 NonModal::Dwell
@@ -236,6 +237,31 @@ impl Machine {
         Ok(())
     }
 
+    /// Haas G103 P0–P15: the blocks the control looks ahead (behaviour
+    /// 14.22). offsetlab runs every block in order, macro statements when
+    /// their block is reached, so the path and the values are unchanged.
+    fn block_limit(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+        self.mode_word(b, &[Address::P], "G103", "P0–P15")?;
+        let note = match b.get(Address::P) {
+            Some(w) if w.value.fract() == 0.0 && (1.0..=15.0).contains(&w.value) => format!(
+                "G103 P{}: the control looks at most {} ahead while it moves, so macro statements are read that close to the block being cut (Haas); offsetlab reads every block in order, the path is unchanged",
+                w.int(),
+                if w.int() == 1 { "one block".to_string() } else { format!("{} blocks", w.int()) }
+            ),
+            Some(w) if w.value == 0.0 => "G103 P0: the control's look-ahead is no longer limited (Haas); the path is unchanged".to_string(),
+            None => "G103 without P: the control's look-ahead is no longer limited (Haas); the path is unchanged".to_string(),
+            Some(w) => {
+                return Err(self.error(
+                    "mode-words",
+                    w.span,
+                    "G103 takes P0 to P15, the most blocks the control looks ahead (Haas)",
+                ));
+            }
+        };
+        out.notes.push(note);
+        Ok(())
+    }
+
     /// G187's E word: how far a corner may be rounded (mm), not negative.
     fn smoothness_corner(&self, b: &Block) -> Result<Option<f64>, Diagnostic> {
         match b.get(Address::E) {
@@ -349,6 +375,7 @@ impl Machine {
                 | NonModal::AiContour
                 | NonModal::LookAhead
                 | NonModal::Smoothness
+                | NonModal::BlockLimit
                 | NonModal::Cylindrical
                 // The reference returns, G53 and the coordinate codes move at
                 // rapid or not at all (behaviour 13).

@@ -166,6 +166,7 @@ impl Machine {
                 | NonModal::AiContour
                 | NonModal::LookAhead
                 | NonModal::Smoothness
+                | NonModal::BlockLimit
                 | NonModal::Cylindrical
                 | NonModal::Repetitive(_)
                 | NonModal::DataSetting),
@@ -214,6 +215,7 @@ impl Machine {
                 | NonModal::AiContour
                 | NonModal::LookAhead
                 | NonModal::Smoothness
+                | NonModal::BlockLimit
                 | NonModal::Cylindrical
                 | NonModal::CirclePocket(_)
                 | NonModal::Engraving

@@ -52,6 +52,7 @@ fn returns(code: NonModal) -> bool {
         | NonModal::AiContour
         | NonModal::LookAhead
         | NonModal::Smoothness
+        | NonModal::BlockLimit
         | NonModal::Cylindrical
         | NonModal::CirclePocket(_)
         | NonModal::Engraving

@@ -616,6 +616,8 @@ pub enum NonModal {
     LookAhead,
     /// G187 (mill): smoothness level P1–P3 and corner tolerance E, Haas.
     Smoothness,
+    /// G103 (mill): the blocks the control looks ahead limited to P, Haas.
+    BlockLimit,
     /// G07.1: cylindrical interpolation, the rotary word the cylinder's radius.
     Cylindrical,
     /// G12 (clockwise) / G13 (counter-clockwise) on the mill: Haas circular
@@ -722,6 +724,7 @@ impl NonModal {
             (NonModal::AiContour, _) => "G05.1",
             (NonModal::LookAhead, _) => "G08",
             (NonModal::Smoothness, _) => "G187",
+            (NonModal::BlockLimit, _) => "G103",
             (NonModal::Cylindrical, _) => "G07.1",
             (NonModal::CirclePocket(ArcDirection::Cw), _) => "G12",
             (NonModal::CirclePocket(ArcDirection::Ccw), _) => "G13",

@@ -334,6 +334,7 @@ impl Code {
                 97 => C::SurfaceSpeed(SurfaceSpeed::Cancel),
                 98 => C::Return(ReturnLevel::Initial),
                 99 => C::Return(ReturnLevel::R),
+                103 => C::NonModal(NonModal::BlockLimit),
                 154 => C::Work(WorkCode::Haas),
                 187 => C::NonModal(NonModal::Smoothness),
                 _ => return None,
