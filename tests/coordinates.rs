@@ -253,6 +253,28 @@ fn behaviour13_3_g54_1_and_g54_p_on_fanuc() {
 }
 
 #[test]
+fn behaviour13_3_haas_g110_to_g129_are_g154_p1_to_p20() {
+    // G110 is G154 P1 (zero at machine X5 Y7), G129 is G154 P20:
+    // X1. after each lands at machine X6, then X-2.
+    let mut s = with_control(mill(&[]), Control::Haas);
+    s.extended_work_offsets.insert(1, pos(5.0, 7.0, 0.0));
+    s.extended_work_offsets.insert(20, pos(-3.0, 0.0, 0.0));
+    let text = "G110 G00 X1. Y0\nG129 X1.";
+    let r = ok(text, &s);
+    let b = at_line(&r, text, 1);
+    assert_eq!(
+        (b.machine.x, b.machine.y, b.modal.work),
+        (6.0, Some(7.0), "G154 P1")
+    );
+    let b = at_line(&r, text, 2);
+    assert_eq!((b.machine.x, b.modal.work), (-2.0, "G154 P20"));
+    assert_eq!(errors("G110 P3", &s), vec!["work-offset-number"]);
+    // Fanuc and YASNAC number their systems G54.1 Pn: G110 is refused there.
+    let f = with_control(mill(&[]), Control::Fanuc);
+    assert_eq!(errors("G110", &f), vec!["work-offset-code"]);
+}
+
+#[test]
 fn behaviour13_3_g154_p_on_haas() {
     let mut s = with_control(mill(&[]), Control::Haas);
     s.extended_work_offsets.insert(12, pos(5.0, 5.0, 0.0));

@@ -133,6 +133,18 @@ impl Machine {
             (WorkCode::Haas, ExtendedWork::G154) => {
                 WorkSystem::Haas(numbered(MAX_HAAS_WORK, "G154")?)
             }
+            // Haas: G110–G129 are G154 P1–P20 (behaviour 13.3).
+            (WorkCode::HaasNamed(n), ExtendedWork::G154) if p.is_none() => WorkSystem::Haas(n),
+            (WorkCode::HaasNamed(n), ExtendedWork::G154) => {
+                return Err(self.error(
+                    "work-offset-number",
+                    p.map_or(span, |p| p.span),
+                    format!("{} is G154 P{n} and takes no P", code.gcode()),
+                ));
+            }
+            (WorkCode::HaasNamed(n), ExtendedWork::G54_1) => {
+                return Err(foreign(code.gcode(), &format!("G54.1 P{n}")));
+            }
             (WorkCode::Additional, ExtendedWork::G154) => return Err(foreign("G54.1", "G154 Pn")),
             (WorkCode::Haas, ExtendedWork::G54_1) => return Err(foreign("G154", "G54.1 Pn")),
         };

@@ -411,7 +411,15 @@ pub enum WorkCode {
     Additional,
     /// G154: Haas's additional work offsets, numbered by P.
     Haas,
+    /// G110–G129: Haas's names of G154 P1–P20 (the number, 1–20).
+    HaasNamed(u8),
 }
+
+/// G110 … G129, the Haas names of G154 P1 … P20.
+const HAAS_NAMED: [&str; 20] = [
+    "G110", "G111", "G112", "G113", "G114", "G115", "G116", "G117", "G118", "G119", "G120", "G121",
+    "G122", "G123", "G124", "G125", "G126", "G127", "G128", "G129",
+];
 
 impl WorkCode {
     /// The G code as written.
@@ -420,6 +428,7 @@ impl WorkCode {
             WorkCode::Standard(w) => w.gcode(),
             WorkCode::Additional => "G54.1",
             WorkCode::Haas => "G154",
+            WorkCode::HaasNamed(n) => HAAS_NAMED[usize::from(n.clamp(1, 20) - 1)],
         }
     }
 }

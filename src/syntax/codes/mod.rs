@@ -335,6 +335,7 @@ impl Code {
                 98 => C::Return(ReturnLevel::Initial),
                 99 => C::Return(ReturnLevel::R),
                 103 => C::NonModal(NonModal::BlockLimit),
+                110..=129 => C::Work(WorkCode::HaasNamed((g.major - 109) as u8)),
                 154 => C::Work(WorkCode::Haas),
                 187 => C::NonModal(NonModal::Smoothness),
                 _ => return None,
