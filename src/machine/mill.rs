@@ -46,7 +46,7 @@ impl Machine {
             }
             self.engraving_text = program
                 .block_text(b.span)
-                .and_then(super::engrave::first_comment)
+                .and_then(crate::syntax::first_comment)
                 .map(str::to_string);
         }
         if self.state.cutter.engaged() && !self.cutter_after_cancel(b) || super::cutter::concerns(b)

@@ -62,9 +62,7 @@ impl MacroBlock {
     /// The block's first comment, without its parentheses (the message of
     /// `#3000 = 1 (TOOL NOT FOUND)`, behaviour 20.16).
     pub fn comment(&self) -> Option<&str> {
-        let open = self.source.find('(')?;
-        let rest = &self.source[open + 1..];
-        Some(rest[..rest.find(')').unwrap_or(rest.len())].trim())
+        first_comment(&self.source).map(str::trim)
     }
 
     /// The text of an expression of the block, as written (an excerpt
@@ -74,6 +72,15 @@ impl MacroBlock {
         let t = (e.span.end as usize).saturating_sub(self.start);
         macros::excerpt(self.source.get(s..t).unwrap_or(""))
     }
+}
+
+/// The first comment of a block's text, without its parentheses (to the
+/// text's end when it is not closed): the text a code reads from its
+/// block (`#3000`'s message, Haas G47's text).
+pub fn first_comment(text: &str) -> Option<&str> {
+    let open = text.find('(')?;
+    let rest = &text[open + 1..];
+    Some(&rest[..rest.find(')').unwrap_or(rest.len())])
 }
 
 /// The end of the block that starts at `i`: its end-of-block character

@@ -29,7 +29,7 @@ pub(crate) use resume::shift;
 
 pub use block::{Address, Block, Word, WordKind};
 pub use macro_call::{Argument, CallCode, MacroCall, is_argument};
-pub use macro_words::{MacroBlock, MacroWord, resolve};
+pub use macro_words::{MacroBlock, MacroWord, first_comment, resolve};
 
 use crate::diag::{Diagnostic, Span};
 use crate::setup::{
@@ -110,10 +110,7 @@ impl ParseOptions {
     /// The table G numbers are read with.
     #[inline(always)]
     pub fn table(&self) -> CodeTable {
-        match CodeTable::new(self.machine, self.system) {
-            CodeTable::Mill if self.g47_engraving => CodeTable::MillEngraving,
-            table => table,
-        }
+        CodeTable::new(self.machine, self.system).with_engraving(self.g47_engraving)
     }
 }
 

@@ -9,7 +9,7 @@
 mod font;
 
 use super::modal::{Distance, Plane};
-use super::{Machine, Mark, MoveKind, Out};
+use super::{Machine, MoveKind, Out};
 use crate::diag::{Diagnostic, Span};
 use crate::geometry::to_units;
 use crate::macros::Value;
@@ -24,13 +24,6 @@ const DEFAULT_HEIGHT: f64 = 25.4;
 const LEAST_HEIGHT: f64 = 0.0254;
 /// Most characters one G47 engraves (a bound of ours, behaviour 8).
 const MOST_CHARACTERS: usize = 256;
-
-/// The first comment of a block's text, without its parentheses.
-pub(crate) fn first_comment(text: &str) -> Option<&str> {
-    let open = text.find('(')?;
-    let rest = &text[open + 1..];
-    Some(&rest[..rest.find(')').unwrap_or(rest.len())])
-}
 
 impl Machine {
     /// A G47 block with setting g47 = engraving (behaviour 14.20).
@@ -245,7 +238,7 @@ impl Machine {
             self.state.programmed[1] = y;
         }
         self.state.programmed[2] = z;
-        let to: Mark = self.mark();
+        let to = self.mark();
         self.push_move(out, kind, from, to, None);
     }
 

@@ -169,10 +169,16 @@ impl CodeTable {
 
     /// The table a setup reads programs with.
     pub fn of(setup: &Setup) -> CodeTable {
-        match CodeTable::new(setup.machine, setup.settings.gcode_system()) {
-            CodeTable::Mill if setup.settings.g47() == G47Code::Engraving => {
-                CodeTable::MillEngraving
-            }
+        CodeTable::new(setup.machine, setup.settings.gcode_system())
+            .with_engraving(setup.settings.g47() == G47Code::Engraving)
+    }
+
+    /// The table with G47 as Haas text engraving when `engraving` (the
+    /// mill's only; setting g47, behaviour 7.60).
+    #[inline(always)]
+    pub fn with_engraving(self, engraving: bool) -> CodeTable {
+        match self {
+            CodeTable::Mill if engraving => CodeTable::MillEngraving,
             table => table,
         }
     }
