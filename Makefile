@@ -13,7 +13,7 @@ PORT ?= 8000
 CHROMEDRIVER ?= /usr/bin/chromedriver
 TIMED := scripts/timed.sh
 
-.PHONY: help setup wasm page cli serve test reset-logs lint test-native test-wasm test-e2e clean
+.PHONY: help setup wasm page cli serve test reset-logs lint test-native test-oracle test-wasm test-e2e clean
 
 help:
 	@echo "make serve   install what is missing, build, serve http://127.0.0.1:$(PORT)/"
@@ -42,7 +42,7 @@ cli: setup
 serve: wasm page
 	node scripts/serve.mjs --port $(PORT)
 
-test: reset-logs setup lint test-native test-wasm wasm page test-e2e
+test: reset-logs setup lint test-native test-oracle test-wasm wasm page test-e2e
 	@bash scripts/summary.sh
 
 reset-logs:
@@ -56,6 +56,13 @@ lint: setup
 # Parser, machine, renderer and CLI contract, natively.
 test-native: setup
 	@$(TIMED) native cargo test
+
+# The linuxcnc profile against LinuxCNC's own interpreter, rs274 (behaviour
+# 22): every program of tests/linuxcnc moves as rs274 moves it, and each of
+# tests/linuxcnc/refused is refused by both. Fails, never skips, without rs274.
+test-oracle: setup cli
+	@$(TIMED) oracle-setup bash scripts/setup.sh --oracle
+	@$(TIMED) oracle python3 scripts/oracle-linuxcnc.py --offsetlab target/debug/offsetlab --ignore-zero-length tests/linuxcnc tests/linuxcnc/refused
 
 # The wasm contract: the same core in headless Chromium, JS shape pinned.
 test-wasm: setup

@@ -39,6 +39,19 @@ apt_install() {
   as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "$@"
 }
 
+# --- LinuxCNC's rs274 (`setup.sh --oracle`, for `make test` only) ----------
+# The linuxcnc profile is compared with LinuxCNC's own interpreter
+# (scripts/oracle-linuxcnc.py, behaviour 22): Debian's linuxcnc-uspace.
+if [ "${1:-}" = "--oracle" ]; then
+  if command -v rs274 >/dev/null 2>&1; then
+    say "rs274 (LinuxCNC): present"
+  else
+    apt_install linuxcnc-uspace
+    command -v rs274 >/dev/null 2>&1 || die "linuxcnc-uspace installed no rs274"
+  fi
+  exit 0
+fi
+
 # --- Rust ------------------------------------------------------------------
 command -v cargo >/dev/null 2>&1 || die "cargo not found: install the Rust toolchain (rustup) first"
 if command -v rustup >/dev/null 2>&1; then

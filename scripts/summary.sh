@@ -12,10 +12,14 @@ node_counts() { # TAP ("# pass N", Node 20 when piped) or spec ("ℹ pass N", No
   awk '/^(# |ℹ )pass [0-9]+$/ { p += $3 } /^(# |ℹ )fail [0-9]+$/ { f += $3 } END { printf "%d %d\n", p, f }' "$1"
 }
 
+oracle_counts() { # scripts/oracle-linuxcnc.py: one "ok NAME" or "FAIL NAME" line per program
+  awk '/^ok / { p++ } /^FAIL / { f++ } END { printf "%d %d\n", p, f }' "$1"
+}
+
 total_passed=0
 total_failed=0
 printf '\n== offsetlab test summary\n'
-for layer in native:cargo wasm-contract:cargo e2e:node; do
+for layer in native:cargo oracle:oracle wasm-contract:cargo e2e:node; do
   name=${layer%%:*}
   kind=${layer##*:}
   log="$logs/$name.log"

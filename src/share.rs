@@ -202,14 +202,20 @@ pub fn encode_plain(doc: &Document, embed: bool) -> String {
     }
     parts.extend(s.tool_specs().into_iter().map(|t| format!("tool={t}")));
     let st = &s.settings;
-    if st.decimal_input != d.decimal_input {
-        parts.push("decimal_input=calculator".into());
+    if let Some(input) = st.decimal_input {
+        parts.push(match input {
+            DecimalInput::Increment => "decimal_input=increment".into(),
+            DecimalInput::Calculator => "decimal_input=calculator".into(),
+        });
     }
     if st.block_skip {
         parts.push("block_skip=1".into());
     }
-    if st.length_offset_without_z != d.length_offset_without_z {
-        parts.push("length_offset_without_z=next_z".into());
+    if let Some(z) = st.length_offset_without_z {
+        parts.push(match z {
+            LengthOffsetWithoutZ::Move => "length_offset_without_z=move".into(),
+            LengthOffsetWithoutZ::NextZ => "length_offset_without_z=next_z".into(),
+        });
     }
     if st.lathe_x_offset != d.lathe_x_offset {
         parts.push("lathe_x_offset=radius".into());
@@ -461,8 +467,8 @@ fn decode_plain(fragment: &str) -> Result<Link, LinkError> {
             "tool" => tools.push(v.to_string()),
             "decimal_input" => {
                 s.settings.decimal_input = match v {
-                    "increment" => DecimalInput::Increment,
-                    "calculator" => DecimalInput::Calculator,
+                    "increment" => Some(DecimalInput::Increment),
+                    "calculator" => Some(DecimalInput::Calculator),
                     _ => return Err(bad(key, v, "increment or calculator")),
                 }
             }
@@ -475,8 +481,8 @@ fn decode_plain(fragment: &str) -> Result<Link, LinkError> {
             }
             "length_offset_without_z" => {
                 s.settings.length_offset_without_z = match v {
-                    "move" => LengthOffsetWithoutZ::Move,
-                    "next_z" => LengthOffsetWithoutZ::NextZ,
+                    "move" => Some(LengthOffsetWithoutZ::Move),
+                    "next_z" => Some(LengthOffsetWithoutZ::NextZ),
                     _ => return Err(bad(key, v, "move or next_z")),
                 }
             }

@@ -236,7 +236,7 @@ fn behaviour7_27_to_7_30_the_profiles_give_the_cutter_settings() {
         assert_eq!(s.cutter_interference_check, CutterInterference::Alarm);
         let want = match control {
             Control::Haas => CutterCancelWithoutMotion::NextMove,
-            Control::Yasnac | Control::Fanuc => CutterCancelWithoutMotion::Move,
+            Control::Yasnac | Control::Fanuc | Control::Linuxcnc => CutterCancelWithoutMotion::Move,
         };
         assert_eq!(s.cutter_cancel_without_motion(), want);
     }

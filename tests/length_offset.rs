@@ -116,7 +116,7 @@ fn behaviour3_3_offset_motion_in_g01_mode_is_at_feed() {
 #[test]
 fn behaviour3_3_setting_next_z_waits_for_the_next_z_move() {
     let mut s = mill(&[(2, 15.0)]);
-    s.settings.length_offset_without_z = LengthOffsetWithoutZ::NextZ;
+    s.settings.length_offset_without_z = Some(LengthOffsetWithoutZ::NextZ);
     let text = "G90 G00 Z50.\nG43 H02\nX10.\nZ20.";
     let r = ok(text, &s);
     same(actual(&r, 1), [0.0, 0.0, 50.0]);
@@ -249,7 +249,7 @@ fn behaviour3_g43_with_h00_warns() {
 #[test]
 fn behaviour3_3_with_next_z_a_z_less_h_change_or_cancel_waits_too() {
     let mut s = mill(&[(2, 15.0), (3, 10.0)]);
-    s.settings.length_offset_without_z = LengthOffsetWithoutZ::NextZ;
+    s.settings.length_offset_without_z = Some(LengthOffsetWithoutZ::NextZ);
     let r = ok("G90 G00 G43 Z50. H02\nH03\nZ20.", &s);
     assert_eq!(r.blocks[1].move_count, 0);
     same(actual(&r, 1), [0.0, 0.0, 65.0]);

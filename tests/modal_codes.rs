@@ -125,7 +125,7 @@ fn behaviour14_4_g05_1_switches_ai_contour_control_with_q1_or_q0() {
     let r = ok("G05.1 Q1.", &mill(&[]));
     assert_eq!(modal(&r, 0, MachineKind::Mill).ai_contour, Some("G05.1 Q1"));
     let mut s = mill(&[]);
-    s.settings.decimal_input = offsetlab::setup::DecimalInput::Calculator;
+    s.settings.decimal_input = Some(offsetlab::setup::DecimalInput::Calculator);
     let r = ok("G05.1 Q1", &s);
     assert_eq!(modal(&r, 0, MachineKind::Mill).ai_contour, Some("G05.1 Q1"));
     let r = ok("G83 X0 Z-5. R1. Q2500 F100.", &mill(&[]));

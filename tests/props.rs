@@ -107,7 +107,7 @@ proptest! {
         let mut s = setup_d01(d);
         s.set_register(&format!("02={}", mm(h))).unwrap();
         if next_z {
-            s.settings.length_offset_without_z = LengthOffsetWithoutZ::NextZ;
+            s.settings.length_offset_without_z = Some(LengthOffsetWithoutZ::NextZ);
         }
         let r = run(&text, &s);
         for b in &r.blocks {
@@ -165,7 +165,7 @@ proptest! {
             s.machine = MachineKind::Lathe;
         }
         if calculator {
-            s.settings.decimal_input = DecimalInput::Calculator;
+            s.settings.decimal_input = Some(DecimalInput::Calculator);
         }
         s.settings.block_skip = skip;
         let r = run(&text, &s);

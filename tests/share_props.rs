@@ -61,11 +61,11 @@ fn document() -> impl Strategy<Value = Document> {
                     r.h_part().value().abs() <= 999.999 && r.d_part().value().abs() <= 999.999
                 });
                 if calc {
-                    s.settings.decimal_input = DecimalInput::Calculator;
+                    s.settings.decimal_input = Some(DecimalInput::Calculator);
                 }
                 s.settings.block_skip = skip;
                 if next_z {
-                    s.settings.length_offset_without_z = LengthOffsetWithoutZ::NextZ;
+                    s.settings.length_offset_without_z = Some(LengthOffsetWithoutZ::NextZ);
                 }
                 if !lathe {
                     s.settings.mirror = Mirror { x: mx, y: my };

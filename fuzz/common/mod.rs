@@ -63,15 +63,15 @@ pub fn setup_from(h: &[u8]) -> Setup {
         ..Setup::default()
     };
     s.settings.decimal_input = if flags & 4 == 0 {
-        DecimalInput::Increment
+        Some(DecimalInput::Increment)
     } else {
-        DecimalInput::Calculator
+        Some(DecimalInput::Calculator)
     };
     s.settings.block_skip = flags & 8 != 0;
     s.settings.length_offset_without_z = if flags & 16 == 0 {
-        LengthOffsetWithoutZ::Move
+        Some(LengthOffsetWithoutZ::Move)
     } else {
-        LengthOffsetWithoutZ::NextZ
+        Some(LengthOffsetWithoutZ::NextZ)
     };
     s.settings.lathe_x_offset = if flags & 32 == 0 {
         LatheXOffset::Diameter

@@ -122,6 +122,7 @@ enum ControlArg {
     Yasnac,
     Fanuc,
     Haas,
+    Linuxcnc,
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -321,6 +322,7 @@ fn load_setup(common: &Common) -> Result<(String, Document), Fatal> {
             ControlArg::Yasnac => Control::Yasnac,
             ControlArg::Fanuc => Control::Fanuc,
             ControlArg::Haas => Control::Haas,
+            ControlArg::Linuxcnc => Control::Linuxcnc,
         };
     }
     if common.keep_going {

@@ -348,7 +348,7 @@ impl Machine {
             self.state.length.vector = if named[2] {
                 0.0
             } else {
-                let setting = self.setup.settings.length_offset_without_z;
+                let setting = self.setup.settings.length_offset_without_z();
                 self.state.length.vector_after(false, changed, setting)
             };
         }

@@ -58,7 +58,7 @@ impl Machine {
                     "G04 takes the dwell time once: P in milliseconds or X in seconds",
                 ));
             }
-            (Some(p), None) => milliseconds(p) / 1000.0,
+            (Some(p), None) => self.milliseconds(p) / 1000.0,
             (None, Some(t)) => {
                 if t.value < 0.0 {
                     return Err(self.error("dwell-words", t.span, "a dwell time is not negative"));
@@ -126,7 +126,7 @@ impl Machine {
             self.cycle.q = Some(v.abs());
         }
         if let Some(p) = b.get(Address::P) {
-            self.cycle.p = milliseconds(p);
+            self.cycle.p = self.milliseconds(p);
         }
         let drills = [ia, ib, n].iter().any(|&i| b.has(AXES[i].0)) || b.has(Address::R);
         if !drills {
@@ -134,7 +134,7 @@ impl Machine {
                 // An offset change without a hole: made as offset motion at rapid,
                 // the cycles' positioning rate.
                 let start = self.mark();
-                let setting = self.setup.settings.length_offset_without_z;
+                let setting = self.setup.settings.length_offset_without_z();
                 self.state.length.vector = self.state.length.vector_after(false, true, setting);
                 self.length_note(old_length, None, out);
                 self.emit(out, start, MoveKind::Offset, false, None);
@@ -384,6 +384,13 @@ fn pecks(cycle: Cycle) -> bool {
 /// A dwell's P in milliseconds: as written, or, written with a decimal
 /// point (the parser takes one only with setting `dwell_p_decimal_point =
 /// seconds`, Haas), in seconds (behaviour 1.23).
-fn milliseconds(p: &crate::syntax::Word) -> f64 {
-    if p.point { p.value * 1000.0 } else { p.value }
+impl Machine {
+    /// A dwell's P in milliseconds: a point makes it seconds (Haas), and
+    /// on LinuxCNC P is always seconds (behaviour 1.23, 7.26).
+    fn milliseconds(&self, p: &crate::syntax::Word) -> f64 {
+        let seconds = p.point
+            || self.setup.settings.dwell_p_decimal_point()
+                == crate::setup::DwellPDecimalPoint::Always;
+        if seconds { p.value * 1000.0 } else { p.value }
+    }
 }

@@ -522,7 +522,7 @@ impl Machine {
     /// point in least increments, so `Q3` is taken back to 3, as G05.1's Q
     /// is (behaviour 14.4).
     fn tip_of(&self, q: &Word) -> Option<u8> {
-        let increments = self.setup.settings.decimal_input == DecimalInput::Increment && !q.point;
+        let increments = self.setup.settings.decimal_input() == DecimalInput::Increment && !q.point;
         let v = if increments {
             q.value * 10f64.powi(self.units().decimals() as i32)
         } else {

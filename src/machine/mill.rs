@@ -12,6 +12,7 @@ use crate::diag::Diagnostic;
 use crate::geometry::Xyz;
 use crate::offsets::length::{LengthState, LengthWords, ZAfter};
 use crate::offsets::position::{self, PositionChange};
+use crate::setup::LengthOffsetWithoutZ;
 use crate::syntax::Address;
 use crate::syntax::Block;
 use crate::syntax::codes::{CannedCycle, Group, NonModal, PositionOffset};
@@ -272,7 +273,6 @@ impl Machine {
             && [Address::I, Address::J, Address::K, Address::R]
                 .iter()
                 .any(|a| b.has(*a));
-        let setting = self.setup.settings.length_offset_without_z;
 
         if !any_axis && !arc_words {
             return self.length_only_motion(out, old_length);
@@ -319,10 +319,20 @@ impl Machine {
             change
         });
 
-        let new_length =
-            self.state
-                .length
-                .vector_after(words[2].is_some(), length_changed, setting);
+        // The setting is read only where it decides (the `check`
+        // instruction count in docs/performance.md).
+        let new_length = match words[2].is_some() || !length_changed {
+            true => {
+                let z = words[2].is_some();
+                self.state
+                    .length
+                    .vector_after(z, length_changed, LengthOffsetWithoutZ::Move)
+            }
+            false => {
+                let setting = self.setup.settings.length_offset_without_z();
+                self.state.length.vector_after(false, true, setting)
+            }
+        };
 
         let kind = match motion {
             Motion::Arc(direction) => {
@@ -363,7 +373,7 @@ impl Machine {
         if !self.state.length.changed_since(&old_length) {
             return Ok(());
         }
-        let setting = self.setup.settings.length_offset_without_z;
+        let setting = self.setup.settings.length_offset_without_z();
         let start = self.mark();
         self.state.length.vector = self.state.length.vector_after(false, true, setting);
         self.length_note(old_length, None, out);

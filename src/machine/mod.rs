@@ -218,7 +218,7 @@ impl Machine {
             system: setup.settings.gcode_system(),
             programmed: start,
             actual: start,
-            modal: Modal::start(setup.machine, setup.units),
+            modal: Modal::start(&setup),
             feed: None,
             spindle: None,
             spindle_limit: None,

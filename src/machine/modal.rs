@@ -82,7 +82,8 @@ impl Smoothness {
 
 impl Modal {
     /// The start state (behaviour 2.3).
-    pub fn start(machine: MachineKind, units: Units) -> Modal {
+    pub fn start(setup: &crate::setup::Setup) -> Modal {
+        let (machine, units) = (setup.machine, setup.units);
         Modal {
             motion: Motion::Rapid,
             plane: match machine {
@@ -97,7 +98,12 @@ impl Modal {
             },
             length: LengthOffset::Cancel,
             cycle: None,
-            return_level: ReturnLevel::Initial,
+            // LinuxCNC starts in G99 (`rs274 -g`: a cycle without G98/G99
+            // returns to R, behaviour 22.3); the Fanuc family in G98.
+            return_level: match setup.settings.control {
+                crate::setup::Control::Linuxcnc => ReturnLevel::R,
+                _ => ReturnLevel::Initial,
+            },
             work: WorkSystem::G54,
             surface_speed: SurfaceSpeed::Cancel,
             cutting_mode: CuttingMode::Cutting,

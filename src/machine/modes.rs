@@ -144,7 +144,7 @@ impl Machine {
     /// (behaviour 14.4).
     fn switch(&self, b: &Block, a: Address, code: &str) -> Result<bool, Diagnostic> {
         let increments = a == Address::Q
-            && self.setup.settings.decimal_input == crate::setup::DecimalInput::Increment;
+            && self.setup.settings.decimal_input() == crate::setup::DecimalInput::Increment;
         let scale = 10f64.powi(self.units().decimals() as i32);
         let on_off = |w: &Word| {
             let v = if increments && !w.point {

@@ -57,3 +57,38 @@ impl ProgramText for NoText {
         None
     }
 }
+
+impl super::Machine {
+    /// LinuxCNC's comments that speak (behaviour 22.2): `(MSG,text)` shows
+    /// its text to the operator, `(DEBUG,text)` and `(PRINT,text)` print it;
+    /// each is a note of its block. Other comments say nothing.
+    #[cold]
+    #[inline(never)]
+    pub(crate) fn comment_messages(b: &Block, out: &mut super::Out, program: &dyn ProgramText) {
+        let Some(text) = program.block_text(b.span) else {
+            return;
+        };
+        let mut rest = text;
+        while let Some(open) = rest.find('(') {
+            let inner = &rest[open + 1..];
+            let close = inner.find(')').unwrap_or(inner.len());
+            let comment = &inner[..close];
+            rest = &inner[close..];
+            let Some((head, said)) = comment.split_once(',') else {
+                continue;
+            };
+            let head = head.trim();
+            let what = ["MSG", "DEBUG", "PRINT"]
+                .into_iter()
+                .find(|k| head.eq_ignore_ascii_case(k));
+            if let Some(kind) = what {
+                let caveat = if kind != "MSG" && said.contains('#') {
+                    " (offsetlab shows it as written, without the parameters' values)"
+                } else {
+                    ""
+                };
+                out.note(|| format!("({kind}) {}{caveat}", said.trim()));
+            }
+        }
+    }
+}

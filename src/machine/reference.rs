@@ -256,7 +256,7 @@ impl Machine {
                 }
             }
             let changed = self.state.length.changed_since(&old_length);
-            let setting = self.setup.settings.length_offset_without_z;
+            let setting = self.setup.settings.length_offset_without_z();
             self.state.length.vector = self.state.length.vector_after(named[2], changed, setting);
         }
         if !named.iter().any(|n| *n) {

@@ -342,7 +342,7 @@ impl Machine {
 
     /// An angle or a magnification word (behaviour 13.9–13.11).
     pub(super) fn unitless(&self, w: &Word) -> f64 {
-        frame::unitless(w, self.units(), self.setup.settings.decimal_input)
+        frame::unitless(w, self.units(), self.setup.settings.decimal_input())
     }
 
     /// The group 11, 16, 17, 22 codes and G90.1/G91.1 of a mill block

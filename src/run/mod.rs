@@ -375,6 +375,9 @@ fn execute(
     machine.moves_left = options.max_moves.saturating_sub(*move_count);
     match machine.execute(block, *index, out, ahead, program) {
         Ok(flow) => {
+            if block.speaks {
+                Machine::comment_messages(block, out, program);
+            }
             *index += 1;
             *move_count += out.moves.len();
             *stopped = flow == Flow::End;

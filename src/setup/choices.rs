@@ -99,18 +99,27 @@ pub enum Control {
     Fanuc,
     /// Haas mills and lathes (the NGC operator's manuals).
     Haas,
+    /// LinuxCNC 2.9 (the RS274/NGC dialect; its `rs274` interpreter is the
+    /// oracle, behaviour 22).
+    Linuxcnc,
 }
 
 impl Control {
     /// Every control, in the order the page lists them.
-    pub const ALL: [Control; 3] = [Control::Yasnac, Control::Fanuc, Control::Haas];
+    pub const ALL: [Control; 4] = [
+        Control::Yasnac,
+        Control::Fanuc,
+        Control::Haas,
+        Control::Linuxcnc,
+    ];
 
-    /// "yasnac", "fanuc" or "haas".
+    /// "yasnac", "fanuc", "haas" or "linuxcnc".
     pub fn as_str(self) -> &'static str {
         match self {
             Control::Yasnac => "yasnac",
             Control::Fanuc => "fanuc",
             Control::Haas => "haas",
+            Control::Linuxcnc => "linuxcnc",
         }
     }
 
@@ -120,6 +129,7 @@ impl Control {
             Control::Yasnac => "YASNAC",
             Control::Fanuc => "Fanuc",
             Control::Haas => "Haas",
+            Control::Linuxcnc => "LinuxCNC",
         }
     }
 }
@@ -145,6 +155,19 @@ pub enum DwellPDecimalPoint {
     Error,
     /// `P3.` is 3 seconds and `P3` 3 milliseconds (Haas G04).
     Seconds,
+    /// P is seconds, with a point or without: `P3` is 3 seconds (LinuxCNC
+    /// G4 and the canned cycles' dwell, RS274/NGC "G4 Dwell").
+    Always,
+}
+
+/// What `;` is in the program text (behaviour 1.22, 7.61).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Semicolon {
+    /// The end of a block (EOB in ISO code: Fanuc, Haas, YASNAC).
+    EndOfBlock,
+    /// A comment to the end of the line (LinuxCNC, Mach3).
+    Comment,
 }
 
 /// A decimal point in S, the spindle speed (behaviour 1.13, 7.57).

@@ -618,6 +618,9 @@ impl Setup {
     pub fn peck_retract_mm(&self) -> f64 {
         match self.settings.peck_retract {
             Some(d) => d * self.units.mm(),
+            // LinuxCNC's G73/G83 back off 0.010 in whatever the units
+            // (`rs274 -g`, behaviour 22.3).
+            None if self.settings.control == Control::Linuxcnc => 0.254,
             None => match self.units {
                 Units::Mm => 1.0,
                 Units::Inch => 0.04 * 25.4,

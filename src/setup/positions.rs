@@ -47,6 +47,9 @@ impl Settings {
         self.machine_positions.unwrap_or(match self.control {
             Control::Yasnac => MachinePositions::WorkZeroStart,
             Control::Fanuc | Control::Haas => MachinePositions::Typical,
+            // LinuxCNC's interpreter starts at the origin with every stored
+            // position (#5161…, #5181…) 0 until the parameter file says.
+            Control::Linuxcnc => MachinePositions::WorkZero,
         })
     }
 }

@@ -18,9 +18,10 @@ pub struct Settings {
     /// that are left out.
     #[serde(skip_serializing_if = "is_default")]
     pub control: Control,
-    /// Dimension words without a decimal point (behaviour 1.15).
-    #[serde(skip_serializing_if = "is_default")]
-    pub decimal_input: DecimalInput,
+    /// Dimension words without a decimal point (behaviour 1.15); read it
+    /// with [`Settings::decimal_input`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub decimal_input: Option<DecimalInput>,
     /// Optional block skip switch: when on, blocks starting with `/` are skipped.
     #[serde(skip_serializing_if = "is_default")]
     pub block_skip: bool,
@@ -30,9 +31,10 @@ pub struct Settings {
     /// `start`, `reference` left out (7.49, 13.15): `machine_positions()`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub machine_positions: Option<super::MachinePositions>,
-    /// `G43 H…` with no Z word (behaviour 3.3).
-    #[serde(skip_serializing_if = "is_default")]
-    pub length_offset_without_z: LengthOffsetWithoutZ,
+    /// `G43 H…` with no Z word (behaviour 3.3); read it with
+    /// [`Settings::length_offset_without_z`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub length_offset_without_z: Option<LengthOffsetWithoutZ>,
     /// Lathe table X values: diameter or radius (behaviour 5).
     #[serde(skip_serializing_if = "is_default")]
     pub lathe_x_offset: LatheXOffset,
@@ -72,6 +74,9 @@ pub struct Settings {
     /// [`Settings::finishing_extra_words`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub finishing_extra_words: Option<FinishingExtraWords>,
+    /// What `;` is (behaviour 7.61); read it with [`Settings::semicolon`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub semicolon: Option<Semicolon>,
     /// G47 on the mill (behaviour 7.60); read it with [`Settings::g47`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub g47: Option<G47Code>,
@@ -168,6 +173,28 @@ pub struct Settings {
 }
 
 impl Settings {
+    /// `G43 H…` with no Z word (behaviour 3.3): Z moves by the offset in
+    /// that block on YASNAC (seed 001), and so the Fanuc and Haas profiles;
+    /// LinuxCNC moves nothing and the next Z move carries the offset
+    /// (`rs274 -g`: no motion at a G43 without Z, behaviour 22.3).
+    pub fn length_offset_without_z(&self) -> LengthOffsetWithoutZ {
+        self.length_offset_without_z.unwrap_or(match self.control {
+            Control::Yasnac | Control::Fanuc | Control::Haas => LengthOffsetWithoutZ::Move,
+            Control::Linuxcnc => LengthOffsetWithoutZ::NextZ,
+        })
+    }
+
+    /// Dimension words without a decimal point (behaviour 1.15): the
+    /// least input increment on the Fanuc family (`X1` is 0.001 mm);
+    /// LinuxCNC reads every number as a value in units (RS274/NGC
+    /// language, "Numbers": `X1` is 1 mm).
+    pub fn decimal_input(&self) -> DecimalInput {
+        self.decimal_input.unwrap_or(match self.control {
+            Control::Yasnac | Control::Fanuc | Control::Haas => DecimalInput::Increment,
+            Control::Linuxcnc => DecimalInput::Calculator,
+        })
+    }
+
     /// Two G codes of one group in a block: YASNAC refuses the block (an
     /// input error, as it refuses two of G45–G48, seed 003); Fanuc documents
     /// that the last one specified is valid (0i-MF/TF operator's manuals,
@@ -175,8 +202,20 @@ impl Settings {
     /// the Fanuc rule its manuals are written against.
     pub fn same_group_codes(&self) -> SameGroupCodes {
         self.same_group_codes.unwrap_or(match self.control {
-            Control::Yasnac => SameGroupCodes::Error,
+            // LinuxCNC: "two G-codes from the same modal group" is an error
+            // (RS274/NGC language, "Modal groups").
+            Control::Yasnac | Control::Linuxcnc => SameGroupCodes::Error,
             Control::Fanuc | Control::Haas => SameGroupCodes::LastWins,
+        })
+    }
+
+    /// What `;` is (behaviour 7.61): the end of a block in ISO code, as
+    /// the Fanuc, Haas and YASNAC manuals write EOB; a comment to the end
+    /// of the line on LinuxCNC (RS274/NGC language, "Comments").
+    pub fn semicolon(&self) -> Semicolon {
+        self.semicolon.unwrap_or(match self.control {
+            Control::Yasnac | Control::Fanuc | Control::Haas => Semicolon::EndOfBlock,
+            Control::Linuxcnc => Semicolon::Comment,
         })
     }
 
@@ -186,7 +225,7 @@ impl Settings {
     pub fn g47(&self) -> G47Code {
         self.g47.unwrap_or(match self.control {
             Control::Haas => G47Code::Engraving,
-            Control::Yasnac | Control::Fanuc => G47Code::PositionOffset,
+            Control::Yasnac | Control::Fanuc | Control::Linuxcnc => G47Code::PositionOffset,
         })
     }
 
@@ -197,7 +236,7 @@ impl Settings {
     pub fn circle_pocket(&self) -> CirclePocket {
         self.circle_pocket.unwrap_or(match self.control {
             Control::Haas => CirclePocket::Haas,
-            Control::Yasnac | Control::Fanuc => CirclePocket::Alarm,
+            Control::Yasnac | Control::Fanuc | Control::Linuxcnc => CirclePocket::Alarm,
         })
     }
 
@@ -206,7 +245,7 @@ impl Settings {
     /// seed 004 manual write system A).
     pub fn gcode_system(&self) -> GCodeSystem {
         self.gcode_system.unwrap_or(match self.control {
-            Control::Yasnac | Control::Fanuc | Control::Haas => GCodeSystem::A,
+            Control::Yasnac | Control::Fanuc | Control::Haas | Control::Linuxcnc => GCodeSystem::A,
         })
     }
 
@@ -214,7 +253,7 @@ impl Settings {
     /// Haas programs copy them there and run.
     pub fn finishing_extra_words(&self) -> FinishingExtraWords {
         self.finishing_extra_words.unwrap_or(match self.control {
-            Control::Yasnac | Control::Fanuc => FinishingExtraWords::Error,
+            Control::Yasnac | Control::Fanuc | Control::Linuxcnc => FinishingExtraWords::Error,
             Control::Haas => FinishingExtraWords::Warn,
         })
     }
@@ -224,7 +263,7 @@ impl Settings {
     pub fn macro_abbreviations(&self) -> MacroAbbreviations {
         self.macro_abbreviations.unwrap_or(match self.control {
             Control::Fanuc => MacroAbbreviations::Fanuc,
-            Control::Yasnac | Control::Haas => MacroAbbreviations::Off,
+            Control::Yasnac | Control::Haas | Control::Linuxcnc => MacroAbbreviations::Off,
         })
     }
 
@@ -235,7 +274,8 @@ impl Settings {
     pub fn s_decimal_point(&self) -> SDecimalPoint {
         self.s_decimal_point.unwrap_or(match self.control {
             Control::Yasnac | Control::Fanuc => SDecimalPoint::Error,
-            Control::Haas => SDecimalPoint::Value,
+            // LinuxCNC: every word's value is a real number.
+            Control::Haas | Control::Linuxcnc => SDecimalPoint::Value,
         })
     }
 
@@ -249,6 +289,7 @@ impl Settings {
         self.dwell_p_decimal_point.unwrap_or(match self.control {
             Control::Yasnac | Control::Fanuc => DwellPDecimalPoint::Error,
             Control::Haas => DwellPDecimalPoint::Seconds,
+            Control::Linuxcnc => DwellPDecimalPoint::Always,
         })
     }
 
@@ -260,7 +301,8 @@ impl Settings {
     pub fn reference_return_without_axes(&self) -> ReturnWithoutAxes {
         self.reference_return_without_axes
             .unwrap_or(match self.control {
-                Control::Haas => ReturnWithoutAxes::AllAxes,
+                // LinuxCNC: G28 alone goes to the G28 position (#5161…).
+                Control::Haas | Control::Linuxcnc => ReturnWithoutAxes::AllAxes,
                 Control::Yasnac | Control::Fanuc => ReturnWithoutAxes::NoAxis,
             })
     }
@@ -272,7 +314,7 @@ impl Settings {
     pub fn extended_work_offsets(&self) -> ExtendedWork {
         self.extended_work_offsets.unwrap_or(match self.control {
             Control::Haas => ExtendedWork::G154,
-            Control::Yasnac | Control::Fanuc => ExtendedWork::G54_1,
+            Control::Yasnac | Control::Fanuc | Control::Linuxcnc => ExtendedWork::G54_1,
         })
     }
 
@@ -282,7 +324,9 @@ impl Settings {
     /// manuals at hand do not say, and follow (our convention).
     pub fn macro_angles(&self) -> MacroAngles {
         self.macro_angles.unwrap_or(match self.control {
-            Control::Yasnac | Control::Fanuc | Control::Haas => MacroAngles::Positive,
+            Control::Yasnac | Control::Fanuc | Control::Haas | Control::Linuxcnc => {
+                MacroAngles::Positive
+            }
         })
     }
 
@@ -294,7 +338,8 @@ impl Settings {
     pub fn macro_conditions(&self) -> MacroConditions {
         self.macro_conditions.unwrap_or(match self.control {
             Control::Yasnac | Control::Fanuc => MacroConditions::Boolean,
-            Control::Haas => MacroConditions::Numeric,
+            // LinuxCNC: a condition is true when not 0 (O-codes, "if").
+            Control::Haas | Control::Linuxcnc => MacroConditions::Numeric,
         })
     }
 
@@ -306,7 +351,7 @@ impl Settings {
     pub fn subprogram_p(&self) -> SubprogramP {
         self.subprogram_p.unwrap_or(match self.control {
             Control::Haas => SubprogramP::Number,
-            Control::Yasnac | Control::Fanuc => SubprogramP::RepeatAndNumber,
+            Control::Yasnac | Control::Fanuc | Control::Linuxcnc => SubprogramP::RepeatAndNumber,
         })
     }
 
@@ -329,7 +374,7 @@ impl Settings {
             Some(n) => u32::from(n.max(1)),
             None => match self.control {
                 Control::Fanuc => 10,
-                Control::Yasnac | Control::Haas => 4,
+                Control::Yasnac | Control::Haas | Control::Linuxcnc => 4,
             },
         }
     }
@@ -357,7 +402,7 @@ impl Settings {
         // profile takes those rapids as the exit.
         self.trailing_rapids.unwrap_or(match self.control {
             Control::Haas => TrailingRapids::Exit,
-            Control::Yasnac | Control::Fanuc => TrailingRapids::Shape,
+            Control::Yasnac | Control::Fanuc | Control::Linuxcnc => TrailingRapids::Shape,
         })
     }
 
@@ -369,7 +414,7 @@ impl Settings {
     pub fn nose_in_contour(&self) -> NoseInContour {
         self.nose_in_contour.unwrap_or(match self.control {
             Control::Haas | Control::Yasnac => NoseInContour::Contour,
-            Control::Fanuc => NoseInContour::BeforeCycle,
+            Control::Fanuc | Control::Linuxcnc => NoseInContour::BeforeCycle,
         })
     }
 
@@ -379,7 +424,9 @@ impl Settings {
     /// convention); `off` runs them as programmed with a warning.
     pub fn nose_single_cycles(&self) -> NoseSingleCycles {
         self.nose_single_cycles.unwrap_or(match self.control {
-            Control::Haas | Control::Yasnac | Control::Fanuc => NoseSingleCycles::Tip,
+            Control::Haas | Control::Yasnac | Control::Fanuc | Control::Linuxcnc => {
+                NoseSingleCycles::Tip
+            }
         })
     }
 
@@ -389,7 +436,9 @@ impl Settings {
     /// type B (our convention).
     pub fn cutter_start_up(&self) -> CutterStartUp {
         self.cutter_start_up.unwrap_or(match self.control {
-            Control::Yasnac | Control::Fanuc | Control::Haas => CutterStartUp::A,
+            Control::Yasnac | Control::Fanuc | Control::Haas | Control::Linuxcnc => {
+                CutterStartUp::A
+            }
         })
     }
 
@@ -403,6 +452,9 @@ impl Settings {
     pub fn cutter_outside_corner(&self) -> CutterOutsideCorner {
         self.cutter_outside_corner.unwrap_or(match self.control {
             Control::Yasnac | Control::Fanuc | Control::Haas => CutterOutsideCorner::Vectors,
+            // LinuxCNC goes round an outside corner on an arc of the tool
+            // radius (RS274/NGC language, "Cutter compensation").
+            Control::Linuxcnc => CutterOutsideCorner::Arc,
         })
     }
 
@@ -413,7 +465,9 @@ impl Settings {
     pub fn cutter_cancel_without_motion(&self) -> CutterCancelWithoutMotion {
         self.cutter_cancel_without_motion
             .unwrap_or(match self.control {
-                Control::Yasnac | Control::Fanuc => CutterCancelWithoutMotion::Move,
+                Control::Yasnac | Control::Fanuc | Control::Linuxcnc => {
+                    CutterCancelWithoutMotion::Move
+                }
                 Control::Haas => CutterCancelWithoutMotion::NextMove,
             })
     }
@@ -427,7 +481,7 @@ impl Settings {
     pub fn cutter_blocks_without_motion(&self) -> u8 {
         self.cutter_blocks_without_motion
             .unwrap_or(match self.control {
-                Control::Yasnac | Control::Fanuc | Control::Haas => 2,
+                Control::Yasnac | Control::Fanuc | Control::Haas | Control::Linuxcnc => 2,
             })
     }
 
@@ -445,7 +499,7 @@ impl Settings {
     pub fn offset_memory(&self) -> OffsetMemory {
         self.offset_memory.unwrap_or(match self.control {
             Control::Yasnac => OffsetMemory::A,
-            Control::Fanuc | Control::Haas => OffsetMemory::C,
+            Control::Fanuc | Control::Haas | Control::Linuxcnc => OffsetMemory::C,
         })
     }
 
@@ -461,7 +515,7 @@ impl Settings {
     pub fn polar_interpolation(&self) -> PolarInterpolation {
         self.polar_interpolation.unwrap_or(match self.control {
             Control::Haas => PolarInterpolation::Haas,
-            Control::Yasnac | Control::Fanuc => PolarInterpolation::Fanuc,
+            Control::Yasnac | Control::Fanuc | Control::Linuxcnc => PolarInterpolation::Fanuc,
         })
     }
 
@@ -470,7 +524,7 @@ impl Settings {
     pub fn depth_word(&self) -> DepthWord {
         self.depth_word.unwrap_or(match self.control {
             Control::Fanuc => DepthWord::Increments,
-            Control::Yasnac | Control::Haas => DepthWord::Dimension,
+            Control::Yasnac | Control::Haas | Control::Linuxcnc => DepthWord::Dimension,
         })
     }
 }

@@ -258,6 +258,9 @@ pub struct Block {
     pub words: Vec<Word>,
     /// A parse error was reported in this block: execution stops here.
     pub error: bool,
+    /// A LinuxCNC comment that speaks, `(MSG,…)`, `(DEBUG,…)` or
+    /// `(PRINT,…)`, is in the block (behaviour 22.2): the run says it.
+    pub speaks: bool,
     /// Per address, 1 + the index of its (first) word, or 0: the machine
     /// looks words up by address many times per block.
     slots: [u8; Address::COUNT],

@@ -104,6 +104,12 @@ pub struct ParseOptions {
     pub depth_word: DepthWord,
     /// G47 on the mill is Haas text engraving (behaviour 7.60).
     pub g47_engraving: bool,
+    /// `;` starts a comment to the end of the line instead of ending the
+    /// block (behaviour 1.22, 7.61: LinuxCNC).
+    pub semicolon_comments: bool,
+    /// The LinuxCNC dialect: a line of only a `(MSG,…)` comment is a block,
+    /// which says its message when it runs (behaviour 22.2).
+    pub linuxcnc: bool,
 }
 
 impl ParseOptions {
@@ -125,7 +131,7 @@ impl From<&Setup> for ParseOptions {
         ParseOptions {
             machine: s.machine,
             units: s.units,
-            decimal_input: s.settings.decimal_input,
+            decimal_input: s.settings.decimal_input(),
             table_size: s.table_size,
             block_skip: s.settings.block_skip,
             system: s.settings.gcode_system(),
@@ -136,6 +142,8 @@ impl From<&Setup> for ParseOptions {
                 == crate::setup::MacroAbbreviations::Fanuc,
             depth_word: s.settings.depth_word(),
             g47_engraving: s.settings.g47() == crate::setup::G47Code::Engraving,
+            semicolon_comments: s.settings.semicolon() == crate::setup::Semicolon::Comment,
+            linuxcnc: s.settings.control == crate::setup::Control::Linuxcnc,
         }
     }
 }
@@ -201,6 +209,15 @@ struct RawWord {
 /// True for the characters that end a block (behaviour 1.1).
 fn is_end(c: u8) -> bool {
     c == b'\n' || c == b'\r' || c == b';'
+}
+
+impl Blocks<'_> {
+    /// [`is_end`], but `;` begins a comment with setting `semicolon =
+    /// comment` (behaviour 7.61).
+    #[inline(always)]
+    fn ends_block(&self, c: u8) -> bool {
+        c == b'\n' || c == b'\r' || (c == b';' && !self.options.semicolon_comments)
+    }
 }
 
 /// Why a word is refused (behaviour 1); [`Blocks::refusal_message`] says it.
@@ -561,7 +578,7 @@ impl<'a> Blocks<'a> {
         let bytes = self.text.as_bytes();
         let n = bytes.len();
         let mut i = lexer::skip_blanks(bytes, start);
-        if i >= n || is_end(bytes[i]) {
+        if i >= n || (is_end(bytes[i]) && !(bytes[i] == b';' && self.options.semicolon_comments)) {
             return (i, false);
         }
         if bytes[i] == b'%' {
@@ -584,6 +601,7 @@ impl<'a> Blocks<'a> {
         block.skip = false;
         block.clear();
         block.error = false;
+        block.speaks = false;
         block.table = self.table;
 
         if bytes[i] == b'/' {
@@ -627,9 +645,23 @@ impl<'a> Blocks<'a> {
         }
         (
             end,
-            !block.words.is_empty() || block.error || block.macros.is_some(),
+            !block.words.is_empty() || block.error || block.macros.is_some() || block.speaks,
         )
     }
+}
+
+/// True when a line holds a LinuxCNC comment that speaks: `(MSG,`,
+/// `(DEBUG,` or `(PRINT,` (behaviour 22.2).
+pub(super) fn speaks(line: &[u8]) -> bool {
+    line.split(|&c| c == b'(').skip(1).any(|c| {
+        let head: Vec<u8> = c
+            .iter()
+            .take_while(|&&c| c != b',' && c != b')')
+            .filter(|c| !c.is_ascii_whitespace())
+            .map(u8::to_ascii_uppercase)
+            .collect();
+        matches!(&head[..], b"MSG" | b"DEBUG" | b"PRINT") && c.contains(&b',')
+    })
 }
 
 fn count_lines(bytes: &[u8]) -> u32 {

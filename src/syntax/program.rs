@@ -278,6 +278,7 @@ impl Blocks<'_> {
                     p += 1;
                 }
                 b' ' | b'\t' => p += 1,
+                b';' if self.options.semicolon_comments => p = line_end(bytes, p),
                 b'(' | b'%' => {
                     p = match bytes[p] {
                         b'(' => lexer::comment(&bytes[p..])
@@ -378,7 +379,7 @@ impl Blocks<'_> {
         span: Span,
     ) -> Result<(Word, WordKind), Refusal> {
         let allowed = match address {
-            Address::P => self.options.dwell_p == DwellPDecimalPoint::Seconds,
+            Address::P => self.options.dwell_p != DwellPDecimalPoint::Error,
             // Haas: `S5000.` is the speed 5000 (behaviour 7.57).
             Address::S => self.options.s_point == SDecimalPoint::Value,
             _ => false,
@@ -411,7 +412,7 @@ pub(super) struct Mark {
 
 /// The position of the end of the line holding `i` (its line feed or
 /// carriage return, or the end of the text).
-fn line_end(bytes: &[u8], i: usize) -> usize {
+pub(super) fn line_end(bytes: &[u8], i: usize) -> usize {
     let mut j = i;
     while j < bytes.len() && bytes[j] != b'\n' && bytes[j] != b'\r' {
         j += 1;

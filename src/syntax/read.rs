@@ -4,7 +4,7 @@
 //! and diagnostics ([`super::Blocks::next_into`] chooses).
 
 use super::messages::unexpected_message;
-use super::program::Lead;
+use super::program::{Lead, line_end};
 use super::*;
 
 /// The addresses whose reading a G code later in the block can change: K
@@ -53,11 +53,18 @@ impl Blocks<'_> {
             let Some(&c) = bytes.get(i) else { break };
             let Some(address) = Address::from_byte(c) else {
                 match c {
-                    b'\n' | b'\r' | b';' => break,
+                    b'\n' | b'\r' => break,
+                    // A `;` comment (setting `semicolon`) is read in two
+                    // passes: one arm here, as before.
+                    b';' if self.options.semicolon_comments => return None,
+                    b';' => break,
                     b'(' => {
                         let (after, closed) = lexer::comment(&bytes[i..])?;
                         if !closed {
                             return None;
+                        }
+                        if self.options.linuxcnc && speaks(&bytes[i..n - after.len()]) {
+                            block.speaks = true;
                         }
                         i = n - after.len();
                         last = i;
@@ -135,7 +142,7 @@ impl Blocks<'_> {
 
         // A block past the limit is refused whole before it is lexed, so
         // no word, expression or diagnostic of it is kept (1.25).
-        let extent = block_end(bytes, i);
+        let extent = block_end(bytes, i, self.options.semicolon_comments);
         if extent - start > MAX_BLOCK_BYTES {
             let message = format!(
                 "this block is {} bytes long: a block is read up to {} bytes (256 KiB); \
@@ -163,11 +170,14 @@ impl Blocks<'_> {
         // those G codes are noted as they are lexed.
         loop {
             i = lexer::skip_blanks(bytes, i);
-            if i >= n || is_end(bytes[i]) {
+            if i >= n || self.ends_block(bytes[i]) {
                 break;
             }
             let c = bytes[i];
-            if super::macro_words::opens(bytes, i) {
+            if c == b';' {
+                // Only a comment reaches here (`ends_block`).
+                i = line_end(bytes, i);
+            } else if super::macro_words::opens(bytes, i) {
                 i = self.read_macro(start, i, line, block);
             } else if c.is_ascii_alphabetic() || c == b':' {
                 let (word_end, _, number) = lexer::number(bytes, i + 1);
@@ -206,6 +216,9 @@ impl Blocks<'_> {
             } else if c == b'(' {
                 let (after, closed) = lexer::comment(&bytes[i..]).unwrap_or((&[], false));
                 let comment_end = n - after.len();
+                if self.options.linuxcnc && speaks(&bytes[i..comment_end]) {
+                    block.speaks = true;
+                }
                 if !closed {
                     self.error_at(
                         block,
@@ -222,7 +235,7 @@ impl Blocks<'_> {
                 let mut j = i + 1;
                 while j < n
                     && !bytes[j].is_ascii_alphabetic()
-                    && !matches!(bytes[j], b'(' | b':')
+                    && !matches!(bytes[j], b'(' | b':' | b';')
                     && !is_end(bytes[j])
                 {
                     j += 1;
@@ -294,10 +307,11 @@ impl Blocks<'_> {
 /// Where the block from `i` ends, as the two-pass lexing finds it: at the
 /// first end of block outside a comment (a comment runs to `)` or to the
 /// end of its line), or at the end of the text.
-fn block_end(bytes: &[u8], mut i: usize) -> usize {
+fn block_end(bytes: &[u8], mut i: usize, semicolon_comments: bool) -> usize {
     let n = bytes.len();
     while i < n {
         match bytes[i] {
+            b';' if semicolon_comments => return line_end(bytes, i),
             b'\n' | b'\r' | b';' => return i,
             b'(' => {
                 let (after, _) = lexer::comment(&bytes[i..]).unwrap_or((&[], false));

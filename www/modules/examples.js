@@ -212,6 +212,32 @@ N75 M30
 `,
   },
   {
+    id: 'linuxcnc',
+    title: 'LinuxCNC program: ; comments, MSG, G83 (control LinuxCNC)',
+    note: 'An RS274/NGC program as LinuxCNC tutorials write it: `;` comments, numbers without decimal points (X40 is 40 mm), a (MSG,…) line that shows as a note at its block, and a G83 peck cycle that starts in G99 and backs off 0.254 mm between pecks, as LinuxCNC’s own interpreter does. Choose the Fanuc control to see the same text stop at its first `;` comment.',
+    setup: { machine: 'mill', settings: { control: 'linuxcnc' } },
+    program: `%
+; plate with a slot and two holes, LinuxCNC 2.9
+G21 G17 G90 G40 G49 G80 ; mm, XY plane, absolute, nothing active
+(MSG, T1 6 mm end mill: slot)
+G0 X0 Y0 Z5
+G0 X10 Y20
+G1 Z-2 F150        ; plunge
+G1 X40 F400
+G3 X40 Y40 R10     ; round end of the slot
+G1 X10
+G3 X10 Y20 R10
+G0 Z5
+(MSG, T2 5 mm drill: holes)
+G83 X60 Y20 Z-8 R2 Q3 F120
+X60 Y40
+G80
+G0 Z20
+M2
+%
+`,
+  },
+  {
     id: 'cam',
     title: 'CAM-style pocket and drilling (G43, G83)',
     note: 'A post-processor style program: G28 returns, tool changes with G43 H01 (120.5) and H02 (95.3 − 0.05 wear), a pocket loop with an arc, then G83 peck drilling. See the length offsets in the XZ plane and the wear in the offset table (offset memory B: a geometry and a wear per number).',

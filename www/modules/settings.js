@@ -22,8 +22,8 @@ const CHOICES = [
     help: 'Units at program start, and of the offsets, start position and work offsets below.',
   },
   {
-    id: 'control', label: 'Control', options: [['yasnac', 'YASNAC'], ['fanuc', 'Fanuc 0i/30i'], ['haas', 'Haas']],
-    help: 'The control the program is written for: it chooses each setting left “as the control”. YASNAC: the seeds’ manuals (PC NC, J50). Fanuc: 0i-MF/TF and 30i. Haas: NGC mills and lathes.',
+    id: 'control', label: 'Control', options: [['yasnac', 'YASNAC'], ['fanuc', 'Fanuc 0i/30i'], ['haas', 'Haas'], ['linuxcnc', 'LinuxCNC 2.9']],
+    help: 'The control the program is written for: it chooses each setting left “as the control”. YASNAC: the seeds’ manuals (PC NC, J50). Fanuc: 0i-MF/TF and 30i. Haas: NGC mills and lathes. LinuxCNC: the RS274/NGC dialect, checked against LinuxCNC’s own interpreter.',
   },
   {
     id: 'same_group_codes', label: 'Two G codes of a group', controlDefault: true,
@@ -87,8 +87,8 @@ const CHOICES = [
   },
   {
     id: 'dwell_p_decimal_point', label: 'Decimal point in P', controlDefault: true,
-    options: [['error', 'an error'], ['seconds', 'seconds']],
-    help: 'G04 P3. (and a canned cycle’s dwell P): YASNAC and Fanuc take P in milliseconds without a point and refuse P3.; Haas reads P3. as 3 seconds and P3 as 3 milliseconds.',
+    options: [['error', 'an error'], ['seconds', 'seconds'], ['always', 'seconds, point or not']],
+    help: 'G04 P3. (and a canned cycle’s dwell P): YASNAC and Fanuc take P in milliseconds without a point and refuse P3.; Haas reads P3. as 3 seconds and P3 as 3 milliseconds; LinuxCNC reads P3 and P3. as 3 seconds.',
   },
   {
     id: 'finishing_extra_words', label: 'U W D on G70', machine: 'lathe', controlDefault: true,
@@ -111,11 +111,11 @@ const CHOICES = [
     help: 'Start and reference left at 0 0 0: the tool starts at the work zero and G28 goes up to a typical machine’s reference (YASNAC, the seeds); or as on a typical machine, homed there (Fanuc, Haas); or both at the work zero, so G28 returns to it. The typical reference: mill X0 Y0 Z508 mm (Haas VF-2), lathe turret home X406.4 Z355.6 mm (Haas ST-10).',
   },
   {
-    id: 'decimal_input', label: 'Decimal input', options: [['increment', 'increment'], ['calculator', 'calculator']],
-    help: 'A dimension without a point: X12345 is 12.345 mm (increment, Fanuc/YASNAC) or 12345 mm (calculator).',
+    id: 'decimal_input', label: 'Decimal input', controlDefault: true, options: [['increment', 'increment'], ['calculator', 'calculator']],
+    help: 'A dimension without a point: X12345 is 12.345 mm (increment, Fanuc/YASNAC/Haas) or 12345 mm (calculator, LinuxCNC).',
   },
   {
-    id: 'length_offset_without_z', label: 'G43 H without Z', machine: 'mill',
+    id: 'length_offset_without_z', label: 'G43 H without Z', machine: 'mill', controlDefault: true,
     options: [['move', 'Z moves now'], ['next_z', 'at the next Z move']],
     help: 'G43/G44 H… in a block with no Z word: Z moves by the offset in that block (seed 001, YASNAC) or only at the next Z move (Fanuc TOS, LinuxCNC).',
   },

@@ -44,6 +44,8 @@ const WORD = /^[A-Za-z][ \t]*[+-]?[ \t]*[0-9.]*/;
 // and a number, so none of these is one).
 const KEYWORD = /^(WHILE|GOTO|THEN|END|DO|IF|EQ|NE|GT|LT|GE|LE|AND|OR|XOR|MOD|SIN|COS|TAN|ASIN|ACOS|ATAN|SQRT|ABS|ROUND|FIX|FUP|LN|EXP|POW|BIN|BCD|ADP)(?![A-Za-z])/i;
 
+const KEYWORDS = new RegExp(KEYWORD.source.slice(1), 'gi');
+
 export const gcodeLanguage = StreamLanguage.define({
   name: 'gcode',
   // `begins`: nothing but blanks read yet in this block, where a `/` is
@@ -63,6 +65,14 @@ export const gcodeLanguage = StreamLanguage.define({
       return 'comment';
     }
     if (ch === ';') {
+      // Text after `;` that is no G-code (two letters in a row that are no
+      // macro word) is a comment: LinuxCNC's `;` comment, or the text the
+      // Fanuc-family profiles refuse as one (behaviour 1.22, 7.61).
+      const rest = stream.string.slice(stream.pos + 1).replace(/\([^)]*\)?/g, '');
+      if (/[A-Za-z]{2}/.test(rest.replace(KEYWORDS, ''))) {
+        stream.skipToEnd();
+        return 'comment';
+      }
       stream.next();
       state.begins = true;
       return 'end';

@@ -1,0 +1,63 @@
+// Browser end-to-end test of the linuxcnc profile's program text (issue 34,
+// behaviour 22): with the LinuxCNC control chosen, `;` comments are
+// comments, `X10` is 10 mm, and a (MSG,…) line is a note at its place; the
+// Fanuc profile stops at the first `;` comment. Screenshot: linuxcnc.png.
+
+import assert from 'node:assert/strict';
+import { describe, test } from 'node:test';
+import { loadExample, shoot, stateText, typeProgram, useBrowser, waitForRun, waitForView } from './harness.mjs';
+
+const { withPage } = useBrowser();
+
+const PROGRAM = [
+  '; a LinuxCNC square, numbers without points',
+  'G21 G90 G17',
+  '(MSG, square of 30 mm)',
+  'G0 X0 Y0 Z5 ; above the corner',
+  'G1 Z-1 F100',
+  'G1 X30',
+  'G1 Y30',
+  'G3 X0 Y30 R15 ; half circle over the top',
+  'G1 Y0',
+  'G0 Z5',
+  'M2',
+].join('\n');
+
+describe('linuxcnc', () => {
+  test('the LinuxCNC profile reads ; comments, whole numbers and MSG', async () => {
+    await withPage(async (page) => {
+      await page.getByLabel('Control').selectOption('linuxcnc');
+      await waitForRun(page);
+      await typeProgram(page, PROGRAM);
+      await page.waitForFunction(() => /0 errors/.test(document.querySelector('#summary').textContent));
+      // Blocks: G21 (0), MSG (1), G0 (2), G1 Z-1 (3), G1 X30 (4).
+      for (let i = 0; i <= 1; i += 1) await page.locator('#step-next').click();
+      await waitForView(page, (v) => v.step === 1);
+      assert.match(await page.locator('#state-panel .explanation').textContent(), /\(MSG\) square of 30 mm/);
+      for (let i = 0; i < 3; i += 1) await page.locator('#step-next').click();
+      await waitForView(page, (v) => v.step === 4);
+      assert.match(await stateText(page, 'block'), /G1 X30/);
+      assert.match(await page.locator('#state-panel').textContent(), /X30\.000/);
+      // The editor shows the `;` comments as comments.
+      const comments = await page.locator('.cm-content .tok-comment').allTextContents();
+      assert.ok(comments.includes('; above the corner'), JSON.stringify(comments));
+      assert.ok(comments.includes('(MSG, square of 30 mm)'), JSON.stringify(comments));
+      await page.locator('#step-last').click();
+      await shoot(page, 'linuxcnc');
+      // Fanuc: `;` ends a block, and the comment after it is no G-code.
+      await page.getByLabel('Control').selectOption('fanuc');
+      await page.waitForFunction(() => /[1-9]\d* errors?/.test(document.querySelector('#summary').textContent));
+    });
+  });
+
+  test('the LinuxCNC example runs to its end under its own control', async () => {
+    await withPage(async (page) => {
+      await loadExample(page, 'linuxcnc');
+      assert.equal(await page.getByLabel('Control').inputValue(), 'linuxcnc');
+      const summary = await page.locator('#summary').textContent();
+      assert.match(summary, /0 errors/);
+      assert.match(summary, /program end at line 18/);
+      await shoot(page, 'linuxcnc-example');
+    });
+  });
+});
