@@ -165,3 +165,87 @@ fn behaviour22_3_linuxcnc_offsets_at_the_next_z_pecks_back_0_254_mm_and_starts_i
         assert!((got - want).abs() < 1e-9, "{z:?}");
     }
 }
+
+#[test]
+fn behaviour22_4_linuxcnc_refuses_g53_in_g91_a_second_g41_and_g41_in_g19_and_reads_g64_p() {
+    use offsetlab::setup::MacroAngles;
+    let s = Settings {
+        control: Control::Linuxcnc,
+        ..Settings::default()
+    };
+    assert_eq!(s.macro_angles(), MacroAngles::Signed);
+    let mut setup = linuxcnc();
+    setup.set_register("D01=3.").unwrap();
+    let cases = [
+        ("G21 G91\nG53 G0 X1\nM2\n", "g53-incremental", 2),
+        (
+            "G21\nG41 D1 G1 X10 F100\nG42 D1 X20\nM2\n",
+            "cutter-already-on",
+            3,
+        ),
+        ("G21 G19\nG41 D1 G1 Y10 F100\nM2\n", "cutter-plane", 2),
+        ("G21\nG0 X1\nG1 X2\nM2\n", "missing-feed", 3),
+    ];
+    for (text, code, line) in cases {
+        let r = run(text, &setup);
+        let d = r.diagnostics.iter().find(|d| d.is_error()).expect(text);
+        assert_eq!((d.code, d.line), (code, line), "{text}");
+    }
+    // The Fanuc profile ignores the G53 in G91 with a warning and moves X1.
+    let mut fanuc = Setup::default();
+    fanuc.settings.control = Control::Fanuc;
+    let r = run("G21 G91\nG53 G0 X1.\nM30\n", &fanuc);
+    assert!(!r.has_errors(), "{:?}", r.diagnostics);
+    // G64 P0.01 Q0.02 is read, said, and leaves the path as programmed;
+    // the Fanuc family refuses P on G64.
+    let r = ok("G21\nG64 P0.01 Q0.02\nG1 X5 F100\nM2\n", &linuxcnc());
+    assert!(
+        r.blocks[1].notes[0]
+            .starts_with("G64 blending tolerance P0.01, naive CAM tolerance Q0.02: "),
+        "{:?}",
+        r.blocks[1].notes
+    );
+    same(r.moves[0].to, [5.0, 0.0, 0.0]);
+    assert!(errors("G64 P1\nM30\n", &fanuc).contains(&"mode-words"));
+    // ATAN[-1]/[-1] is −135° under LinuxCNC: X = 10·cos, Y = 10·sin.
+    let r = ok(
+        "G21\n#1 = ATAN[-1]/[-1]\nG1 X[10*COS[#1]] Y[#1] F100\nM2\n",
+        &linuxcnc(),
+    );
+    let to = r.moves[0].to;
+    assert!((to[1] + 135.0).abs() < 1e-9, "{to:?}");
+    assert!(
+        (to[0] + 10.0 * std::f64::consts::FRAC_1_SQRT_2).abs() < 1e-3,
+        "{to:?}"
+    );
+}
+
+#[test]
+fn behaviour22_5_linuxcnc_fix_fup_round_mod_and_unrounded_words() {
+    // Each value worked by hand: FIX[-2.7] = −3, FUP[-2.2] = −2,
+    // ROUND[2.5] = 3, -7 MOD 3 = 2, 1/3 kept to 10 decimals.
+    let text =
+        "G21 G90\nG1 X[FIX[-2.7]] Y[FUP[-2.2]] F100\nG1 X[ROUND[2.5]] Y[-7 MOD 3]\nG1 X[1/3]\nM2\n";
+    let r = ok(text, &linuxcnc());
+    same(r.moves[0].to, [-3.0, -2.0, 0.0]);
+    same(r.moves[1].to, [3.0, 2.0, 0.0]);
+    assert!(
+        (r.moves[2].to[0] - 1.0 / 3.0).abs() < 1e-9,
+        "{:?}",
+        r.moves[2].to
+    );
+    // The Fanuc profile: FIX −2, FUP −3, X[1/3] read as X0.333.
+    let mut fanuc = Setup::default();
+    fanuc.settings.control = Control::Fanuc;
+    let r = ok(
+        "G21 G90\nG1 X[FIX[-2.7]] Y[FUP[-2.2]] F100.\nG1 X[1/3]\nM30\n",
+        &fanuc,
+    );
+    let to = r.moves[0].to;
+    assert_eq!((to[0], to[1]), (-2.0, -3.0));
+    assert!(
+        (r.moves[1].to[0] - 0.333).abs() < 1e-12,
+        "{:?}",
+        r.moves[1].to
+    );
+}

@@ -14,6 +14,7 @@ use offsetlab::macros::{self, EXCERPT, Evaluator, Options, Store, Value};
 const FANUC: Options = Options {
     signed_angles: false,
     numeric_conditions: false,
+    linuxcnc: false,
 };
 
 fn value(expr: &str) -> Result<f64, (String, String, u32, u32)> {

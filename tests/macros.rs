@@ -11,10 +11,12 @@ use offsetlab::macros::{
 const FANUC: Options = Options {
     signed_angles: false,
     numeric_conditions: false,
+    linuxcnc: false,
 };
 const NAT1_NUMERIC: Options = Options {
     signed_angles: true,
     numeric_conditions: true,
+    linuxcnc: false,
 };
 
 /// Runs each line as a statement (no jumps) on `store`.

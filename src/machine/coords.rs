@@ -292,6 +292,14 @@ impl Machine {
         let span = b.code_span(Group::NonModal);
         let lathe = self.setup.machine == MachineKind::Lathe;
         if self.state.modal.distance == Distance::Incremental && !lathe {
+            if self.setup.settings.control == crate::setup::Control::Linuxcnc {
+                // rs274: "Cannot use g53 incremental" (behaviour 22.4).
+                return Err(self.error(
+                    "g53-incremental",
+                    span,
+                    "G53 in G91: LinuxCNC refuses it (\"Cannot use g53 incremental\"); write G90 first",
+                ));
+            }
             out.warnings.push(Diagnostic::warning(
                 "g53-incremental",
                 span,

@@ -277,6 +277,9 @@ impl Machine {
         if !any_axis && !arc_words {
             return self.length_only_motion(out, old_length);
         }
+        if self.state.feed.is_none() && motion != Motion::Rapid {
+            self.refuse_feed_without_f(b)?;
+        }
 
         let start = self.mark();
         let mut target = self.state.programmed;
@@ -673,4 +676,25 @@ struct Planned {
     change: Option<PositionChange>,
     /// The length vector at the end of the move.
     new_length: f64,
+}
+
+impl Machine {
+    /// A feed move before any F: LinuxCNC refuses it ("Cannot do g1 with
+    /// zero feed rate", behaviour 22.4); the Fanuc-family profiles warn
+    /// (`missing-feed`) and draw it.
+    #[cold]
+    #[inline(never)]
+    fn refuse_feed_without_f(&self, b: &Block) -> Result<(), Diagnostic> {
+        if self.setup.settings.control != crate::setup::Control::Linuxcnc {
+            return Ok(());
+        }
+        Err(self.error(
+            "missing-feed",
+            b.code_span(crate::syntax::codes::Group::Motion),
+            format!(
+                "{} with no feed rate: LinuxCNC refuses a feed move before any F (\"Cannot do g1 with zero feed rate\"); write F on this block or before it",
+                self.state.modal.motion.gcode()
+            ),
+        ))
+    }
 }

@@ -49,15 +49,21 @@ impl Machine {
         if let Some(mode) = c.cutting_mode()
             && let Some(w) = b.get(Address::P).or_else(|| b.get(Address::Q))
         {
-            return Err(self.error(
-                "mode-words",
-                w.span,
-                format!(
-                    "{} takes no {} (a path tolerance G64 P… is LinuxCNC's, not a Fanuc, Haas or YASNAC word)",
-                    mode.gcode(),
-                    w.address.letter()
-                ),
-            ));
+            if mode == CuttingMode::Cutting
+                && self.setup.settings.control == crate::setup::Control::Linuxcnc
+            {
+                self.blending_tolerance(b, out)?;
+            } else {
+                return Err(self.error(
+                    "mode-words",
+                    w.span,
+                    format!(
+                        "{} takes no {} (a path tolerance G64 P… is LinuxCNC's, not a Fanuc, Haas or YASNAC word)",
+                        mode.gcode(),
+                        w.address.letter()
+                    ),
+                ));
+            }
         }
         if let Some(mode) = c.cutting_mode()
             && mode != before.cutting_mode
@@ -513,5 +519,34 @@ fn surface_speed_sentence(css: SurfaceSpeed) -> &'static str {
         SurfaceSpeed::Cancel => {
             "G97 constant surface speed off: S is spindle revolutions per minute"
         }
+    }
+}
+
+impl Machine {
+    /// LinuxCNC's G64 P (path blending tolerance) and Q (naive CAM
+    /// tolerance): kept by the control's trajectory planner, which rounds
+    /// corners within them; the interpreter's path, which `rs274 -g`
+    /// prints and offsetlab draws, keeps its corners (behaviour 22.4).
+    #[cold]
+    #[inline(never)]
+    fn blending_tolerance(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+        let mut said = Vec::new();
+        for (a, what) in [(Address::P, "blending"), (Address::Q, "naive CAM")] {
+            if let Some(w) = b.get(a) {
+                if w.value < 0.0 {
+                    return Err(self.error(
+                        "mode-words",
+                        w.span,
+                        format!("G64 {}: a tolerance is not negative", a.letter()),
+                    ));
+                }
+                said.push(format!("{what} tolerance {}{}", a.letter(), w.value));
+            }
+        }
+        out.notes.push(format!(
+            "G64 {}: LinuxCNC's planner may round each corner within it; the path drawn is the programmed one, as LinuxCNC's interpreter gives it",
+            said.join(", ")
+        ));
+        Ok(())
     }
 }

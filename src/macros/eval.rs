@@ -31,6 +31,10 @@ pub struct Options {
     /// when not 0 (Haas); else a comparison is true or false only, and
     /// storing it is an alarm (Fanuc) (setting 7.40).
     pub numeric_conditions: bool,
+    /// LinuxCNC's functions (behaviour 22.5): FIX is the floor, FUP the
+    /// ceiling, ROUND the nearest whole number even in a word, and MOD's
+    /// result is not negative.
+    pub linuxcnc: bool,
 }
 
 /// What a statement did (the jumps are for the executor to make).
@@ -276,6 +280,9 @@ impl<'v> Evaluator<'v> {
                     .at(b, format!("the divisor of {} is 0 (or vacant)", op.text())));
             }
             BinOp::Div => x / y,
+            // LinuxCNC: fmod, then the divisor's size added to a negative
+            // result (`-7 MOD 3` is 2).
+            BinOp::Mod if self.options.linuxcnc && x % y < 0.0 => x % y + y.abs(),
             BinOp::Mod => x % y,
             // Bit by bit on the whole parts (Haas: the integer portion).
             BinOp::And => (whole(x) & whole(y)) as f64,
@@ -319,11 +326,14 @@ impl<'v> Evaluator<'v> {
             Func::Sqrt if x < 0.0 => return out_of_range("the square root of a negative number"),
             Func::Sqrt => x.sqrt(),
             Func::Abs => x.abs(),
+            Func::Round if self.options.linuxcnc => x.round(),
             Func::Round => match self.round_to {
                 Some(inc) if inc > 0.0 => (x / inc).round() * inc,
                 _ => x.round(),
             },
+            Func::Fix if self.options.linuxcnc => x.floor(),
             Func::Fix => x.trunc(),
+            Func::Fup if self.options.linuxcnc => x.ceil(),
             Func::Fup => x.abs().ceil().copysign(x),
             Func::Ln if x <= 0.0 => return out_of_range("the logarithm of 0 or less"),
             Func::Ln => x.ln(),

@@ -21,6 +21,7 @@ pub(super) fn options(machine: &Machine) -> Options {
     Options {
         signed_angles: s.macro_angles() == MacroAngles::Signed,
         numeric_conditions: s.macro_conditions() == MacroConditions::Numeric,
+        linuxcnc: s.control == crate::setup::Control::Linuxcnc,
     }
 }
 

@@ -324,9 +324,9 @@ impl Settings {
     /// manuals at hand do not say, and follow (our convention).
     pub fn macro_angles(&self) -> MacroAngles {
         self.macro_angles.unwrap_or(match self.control {
-            Control::Yasnac | Control::Fanuc | Control::Haas | Control::Linuxcnc => {
-                MacroAngles::Positive
-            }
+            Control::Yasnac | Control::Fanuc | Control::Haas => MacroAngles::Positive,
+            // LinuxCNC: ATAN[y]/[x] in −180…180, ASIN −90…90 (`rs274 -g`).
+            Control::Linuxcnc => MacroAngles::Signed,
         })
     }
 

@@ -258,14 +258,27 @@ impl Blocks<'_> {
 /// How a value is written for the parser to read it as the word's number:
 /// a dimension rounded to `increment` with its point, a feed with its
 /// point, a G code to one decimal, any other whole word rounded to a whole
-/// number (Fanuc rounds a variable's value to the address's digits).
-fn written(address: Address, v: f64, increment: f64, in_cycle: bool) -> String {
+/// number (Fanuc rounds a variable's value to the address's digits). With
+/// `exact` (LinuxCNC, behaviour 22.5) a dimension keeps every digit.
+fn written(address: Address, v: f64, increment: f64, in_cycle: bool, exact: bool) -> String {
     let kind = match address {
         Address::K if in_cycle => WordKind::Integer,
         a => a.kind(),
     };
     let letter = address.letter();
     match kind {
+        WordKind::Dimension if exact => {
+            // Within the reader's 15 digits: 1e-10 of a unit at most.
+            let whole = v.abs().max(1.0).log10().floor() as usize + 1;
+            let digits = 14usize.saturating_sub(whole).min(10);
+            let t = format!("{v:.digits$}");
+            let t = if t.contains('.') {
+                t.trim_end_matches('0')
+            } else {
+                &t
+            };
+            format!("{letter}{t}")
+        }
         WordKind::Dimension => {
             let digits = if increment < 0.001 { 4 } else { 3 };
             let v = (v / increment).round() * increment;
@@ -310,7 +323,11 @@ pub fn resolve(
     let increment = m.increment();
     for (w, v) in m.words.iter().zip(values) {
         if let Some(v) = v {
-            items.push((w.span, written(w.address, *v, increment, m.in_cycle), true));
+            items.push((
+                w.span,
+                written(w.address, *v, increment, m.in_cycle, options.linuxcnc),
+                true,
+            ));
         }
     }
     items.sort_by_key(|(span, ..)| span.start);

@@ -56,7 +56,7 @@ describe('linuxcnc', () => {
       assert.equal(await page.getByLabel('Control').inputValue(), 'linuxcnc');
       const summary = await page.locator('#summary').textContent();
       assert.match(summary, /0 errors/);
-      assert.match(summary, /program end at line 18/);
+      assert.match(summary, /program end at line 19/);
       await shoot(page, 'linuxcnc-example');
     });
   });

@@ -161,7 +161,7 @@ describe('examples', () => {
       // The first entry is the menu's "Choose an example…", shown once the program is no example.
       assert.equal(values[0], '');
       const ids = values.slice(1);
-      assert.deepEqual(ids, ['square', 'contour', 'zero-moves', 'length', 'lathe-seed', 'lathe-taper', 'lathe-nose', 'cutter-contour', 'cutter-pocket', 'cam']);
+      assert.deepEqual(ids, ['square', 'contour', 'zero-moves', 'length', 'lathe-seed', 'lathe-taper', 'lathe-nose', 'cutter-contour', 'cutter-pocket', 'linuxcnc', 'cam']);
       await typeProgram(page, 'G00 X5. Y5.;\n');
       const notes = new Set();
       for (const id of ids.slice(1)) {

@@ -214,12 +214,13 @@ N75 M30
   {
     id: 'linuxcnc',
     title: 'LinuxCNC program: ; comments, MSG, G83 (control LinuxCNC)',
-    note: 'An RS274/NGC program as LinuxCNC tutorials write it: `;` comments, numbers without decimal points (X40 is 40 mm), a (MSG,…) line that shows as a note at its block, and a G83 peck cycle that starts in G99 and backs off 0.254 mm between pecks, as LinuxCNC’s own interpreter does. Choose the Fanuc control to see the same text stop at its first `;` comment.',
-    setup: { machine: 'mill', settings: { control: 'linuxcnc' } },
+    note: 'An RS274/NGC program as LinuxCNC tutorials write it: `;` comments, numbers without decimal points (X40 is 40 mm), a (MSG,…) line that shows as a note at its block, G43 H1 (H01 = 50) that moves nothing until the next Z move carries it, and a G83 peck cycle that starts in G99 and backs off 0.254 mm between pecks, as LinuxCNC’s own interpreter does. Choose the Fanuc control to see the same text stop at its first `;` comment.',
+    setup: { machine: 'mill', settings: { control: 'linuxcnc' }, offsets: { '01': { h: 50.0 } } },
     program: `%
 ; plate with a slot and two holes, LinuxCNC 2.9
 G21 G17 G90 G40 G49 G80 ; mm, XY plane, absolute, nothing active
 (MSG, T1 6 mm end mill: slot)
+G43 H1             ; length offset 50, taken at the next Z move
 G0 X0 Y0 Z5
 G0 X10 Y20
 G1 Z-2 F150        ; plunge

@@ -18,6 +18,12 @@ impl Machine {
         let vector_on = matches!(now.phase, Phase::StartUp | Phase::Offset);
         let engaged = now.mode != CutterCompensation::Cancel || vector_on;
         let codes = b.codes();
+        if self.setup.settings.control == crate::setup::Control::Linuxcnc
+            && let Some(c) = codes.cutter()
+            && c != CutterCompensation::Cancel
+        {
+            self.linuxcnc_cutter_start(b, now.mode)?;
+        }
         if engaged
             && let Some(plane) = codes.plane()
             && plane != self.state.modal.plane
@@ -145,5 +151,36 @@ impl Machine {
                 w.map_or(",C", |w| w.address.letter())
             ),
         )
+    }
+}
+
+impl Machine {
+    /// LinuxCNC's refusals of a G41/G42 (`rs274 -g`, behaviour 22.4): while
+    /// compensation is on ("Cannot turn cutter radius comp on when on"), and
+    /// in G19 ("Cutter radius compensation allowed only in XY, XZ planes").
+    #[cold]
+    #[inline(never)]
+    fn linuxcnc_cutter_start(&self, b: &Block, mode: CutterCompensation) -> Result<(), Diagnostic> {
+        let span = b.code_span(crate::syntax::codes::Group::Cutter);
+        if mode != CutterCompensation::Cancel {
+            return Err(self.error(
+                "cutter-already-on",
+                span,
+                format!(
+                    "{} while {} is on: LinuxCNC refuses it (\"Cannot turn cutter radius comp on when on\"); cancel with G40 first",
+                    b.codes().cutter().map_or("G41", |c| c.gcode()),
+                    mode.gcode()
+                ),
+            ));
+        }
+        let plane = b.codes().plane().unwrap_or(self.state.modal.plane);
+        if plane == crate::syntax::codes::Plane::YZ {
+            return Err(self.error(
+                "cutter-plane",
+                span,
+                "G41/G42 in G19: LinuxCNC compensates in G17 and G18 only (\"Cutter radius compensation allowed only in XY, XZ planes\")",
+            ));
+        }
+        Ok(())
     }
 }
