@@ -7,7 +7,6 @@
 
 mod common;
 use common::*;
-use offsetlab::machine::EventKind;
 use offsetlab::setup::{Control, DecimalInput, DwellPDecimalPoint, Semicolon, Settings};
 use offsetlab::{Setup, run};
 
@@ -15,16 +14,6 @@ fn linuxcnc() -> Setup {
     let mut s = Setup::default();
     s.settings.control = Control::Linuxcnc;
     s
-}
-
-fn dwells(r: &offsetlab::Run) -> Vec<f64> {
-    r.events
-        .iter()
-        .filter_map(|e| match e.kind {
-            EventKind::Dwell { seconds } => Some(seconds),
-            _ => None,
-        })
-        .collect()
 }
 
 #[test]

@@ -16,16 +16,6 @@ fn with_control(mut s: Setup, control: Control) -> Setup {
     s
 }
 
-fn dwells(r: &offsetlab::Run) -> Vec<f64> {
-    r.events
-        .iter()
-        .filter_map(|e| match e.kind {
-            EventKind::Dwell { seconds } => Some(seconds),
-            _ => None,
-        })
-        .collect()
-}
-
 #[test]
 fn behaviour1_21_the_first_program_runs_and_the_others_are_named_and_not_run() {
     // O1000 moves to X10.; O2000 (a subprogram) would move to X50.

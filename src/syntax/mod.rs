@@ -653,14 +653,17 @@ impl<'a> Blocks<'a> {
 /// True when a line holds a LinuxCNC comment that speaks: `(MSG,`,
 /// `(DEBUG,` or `(PRINT,` (behaviour 22.2).
 pub(super) fn speaks(line: &[u8]) -> bool {
+    // The head as the machine reads it (`Machine::comment_messages`): the
+    // text before the comment's first comma, blanks trimmed.
     line.split(|&c| c == b'(').skip(1).any(|c| {
-        let head: Vec<u8> = c
-            .iter()
-            .take_while(|&&c| c != b',' && c != b')')
-            .filter(|c| !c.is_ascii_whitespace())
-            .map(u8::to_ascii_uppercase)
-            .collect();
-        matches!(&head[..], b"MSG" | b"DEBUG" | b"PRINT") && c.contains(&b',')
+        let Some(end) = c.iter().position(|&b| b == b',' || b == b')') else {
+            return false;
+        };
+        let head = c[..end].trim_ascii();
+        c[end] == b','
+            && [&b"MSG"[..], b"DEBUG", b"PRINT"]
+                .iter()
+                .any(|k| head.eq_ignore_ascii_case(k))
     })
 }
 

@@ -113,3 +113,14 @@ pub fn first_error(r: &Run) -> (&'static str, u32, u32) {
         .expect("an error");
     (d.code, d.line, d.column)
 }
+
+/// The seconds of every dwell the run made, in order.
+pub fn dwells(r: &Run) -> Vec<f64> {
+    r.events
+        .iter()
+        .filter_map(|e| match e.kind {
+            offsetlab::machine::EventKind::Dwell { seconds } => Some(seconds),
+            _ => None,
+        })
+        .collect()
+}
