@@ -122,7 +122,9 @@ Errors: rs274 prints "executing" on stderr, and at an error the message and
 then the text of the offending line, and exits 1 (stdout keeps the
 canonical commands before the error).  It does not print the line number,
 so the script finds the line(s) with that text (when several lines have
-it, offsetlab's may be any of them).  When rs274 refuses a program,
+it, offsetlab's may be any of them); a call to a sub found nowhere is the
+exception, whose message names the call's line ("seeking o-word: o<x>
+from line: 4") while the text is the file's last line.  When rs274 refuses a program,
 offsetlab must report an error diagnostic (severity error), the moves
 before it must agree, and it must be at that line: `ok NAME (N moves, both
 refuse line L: ...)`; otherwise the FAIL line says where each stopped.  Programs in a folder named
@@ -304,7 +306,12 @@ def rs274_error(stderr, rc, prog_lines):
     message = rest[0].strip() if rest else "rs274 exit status %d" % rc
     text = rest[1] if len(rest) > 1 else None
     lines = []
-    if text is not None:
+    # "EOF in file:… seeking o-word: o<x> from line: 4": rs274 prints the
+    # last line read, and names the call's line in its message.
+    named = re.search(r"seeking o-word: .* from line: (\d+)", message)
+    if named:
+        lines = [int(named.group(1))]
+    elif text is not None:
         lines = [i + 1 for i, l in enumerate(prog_lines) if l == text]
         if not lines:
             lines = [i + 1 for i, l in enumerate(prog_lines) if l.strip() == text.strip()]

@@ -238,3 +238,119 @@ fn behaviour22_5_linuxcnc_fix_fup_round_mod_and_unrounded_words() {
         r.moves[1].to
     );
 }
+
+/// The first error's code and line.
+fn first_error(text: &str) -> (&'static str, u32) {
+    let r = run(text, &linuxcnc());
+    let d = r
+        .diagnostics
+        .iter()
+        .find(|d| d.is_error())
+        .unwrap_or_else(|| panic!("no error in {:#?}", r.diagnostics));
+    (d.code, d.span.line)
+}
+
+#[test]
+fn behaviour22_5_linuxcnc_power_chained_comparisons_and_logic_on_values() {
+    // 2**3**2 is [2**3]**2 = 64, /8 = 8; -2**2 is 4 (the sign binds
+    // tighter); [#1 GT 2 AND #1 LT 5] with #1 = 3 is 1; [2 AND 3] is 1;
+    // [3 GT 2 EQ 1] is [1 EQ 1] = 1, ×4 = 4; 1.00001 EQ 1 holds within
+    // rs274's 0.0001.
+    let text = "G21 G90\nG0 X[2 ** 3 ** 2 / 8] Y[-2 ** 2]\n#1 = 3\nG0 X[#1 GT 2 AND #1 LT 5] Y[2 AND 3]\nG0 X[[3 GT 2 EQ 1] * 4] Y[1.00001 EQ 1]\nM2\n";
+    let r = ok(text, &linuxcnc());
+    same(r.moves[0].to, [8.0, 4.0, 0.0]);
+    same(r.moves[1].to, [1.0, 1.0, 0.0]);
+    same(r.moves[2].to, [4.0, 1.0, 0.0]);
+}
+
+#[test]
+fn behaviour22_6_named_parameters_local_to_their_level_global_with_an_underscore() {
+    // #<Side Len> is #<sidelen> (case and blanks left out). The sub's
+    // #<side> is 2 × 3 = 6; the global depth −2 is read inside the sub;
+    // #<_x> is then 6 and #<_metric> 1, so Y is 7.
+    let text = "#<_depth> = -2\no1 sub\n  #<side> = [#1 * 2]\n  G1 X#<side> Z#<_depth> F100\no1 endsub\nG21 G90\n#<Side Len> = 3\no1 call [#<sidelen>]\nG0 X#<_x> Y[#<_metric> * 7] Z[EXISTS[#<side>]]\nM2\n";
+    let r = ok(text, &linuxcnc());
+    assert_eq!(r.moves.len(), 2);
+    same(r.moves[0].to, [6.0, 0.0, -2.0]);
+    // The sub's local is gone after it: EXISTS gives 0.
+    same(r.moves[1].to, [6.0, 7.0, 0.0]);
+    // Reading a name never set is LinuxCNC's error, at its line.
+    assert_eq!(
+        first_error("G21\n#<depth> = 1\nG0 Z#<dpeth>\nM2\n"),
+        ("named-parameter", 3)
+    );
+    // A main program's local is not the sub's.
+    assert_eq!(
+        first_error("o2 sub\n  G0 X#<a>\no2 endsub\n#<a> = 1\no2 call\nM2\n"),
+        ("named-parameter", 2)
+    );
+    // A predefined parameter is read, never set.
+    assert_eq!(first_error("#<_x> = 1\nM2\n"), ("named-parameter", 1));
+}
+
+#[test]
+fn behaviour22_7_owords_branch_loop_and_call_as_rs274_runs_them() {
+    // Three passes of the while: #1 = 1 takes the else (X1), #1 = 2 the
+    // if (Y2), #1 = 3 the else (X3); repeat [2.5] runs twice (half to
+    // even), each pass Z−1 in G91.
+    let text = "G21 G90 F100\n#1 = 0\no10 while [#1 LT 3]\n  #1 = [#1 + 1]\n  o20 if [#1 EQ 2]\n    G1 Y#1\n  o20 else\n    G1 X#1\n  o20 endif\no10 endwhile\no30 repeat [2.5]\n  G91 G1 Z-1\no30 endrepeat\nG90\nM2\n";
+    let r = ok(text, &linuxcnc());
+    let to: Vec<[f64; 3]> = r.moves.iter().map(|m| m.to).collect();
+    assert_eq!(to.len(), 5, "{to:?}");
+    same(to[0], [1.0, 0.0, 0.0]);
+    same(to[1], [1.0, 2.0, 0.0]);
+    same(to[2], [3.0, 2.0, 0.0]);
+    same(to[3], [3.0, 2.0, -1.0]);
+    same(to[4], [3.0, 2.0, -2.0]);
+    // A call: #1 #2 are the arguments, the caller's #1 (7) comes back,
+    // and return [#2 * 2] leaves 8 in #<_value>. The sub defined after
+    // the M2 is found ahead of the call.
+    let text = "G21 G90\n#1 = 7\no100 call [1] [4]\nG0 X#<_value> Y#1 Z#<_value_returned>\nM2\no100 sub\n  #1 = 50\n  o100 return [#2 * 2]\n  G0 Z99\no100 endsub\nM2\n";
+    let r = ok(text, &linuxcnc());
+    assert_eq!(r.moves.len(), 1);
+    same(r.moves[0].to, [8.0, 7.0, 1.0]);
+    // do … while runs once with a false condition; break leaves a while.
+    let text = "G21 G90 F100\n#1 = 0\no1 do\n  G1 X5\no1 while [0]\no2 while [1]\n  #1 = [#1 + 1]\n  o3 if [#1 GT 2]\n    o2 break\n  o3 endif\n  G1 Y#1\no2 endwhile\nM2\n";
+    let r = ok(text, &linuxcnc());
+    let to: Vec<[f64; 3]> = r.moves.iter().map(|m| m.to).collect();
+    assert_eq!(to, vec![[5.0, 0.0, 0.0], [5.0, 1.0, 0.0], [5.0, 2.0, 0.0]]);
+    // rs274's refusals: break in a repeat, a sub defined twice, a call to
+    // no sub, a false if with no endif (reported at the file's end).
+    assert_eq!(
+        first_error("o1 repeat [2]\n  o1 break\no1 endrepeat\nM2\n"),
+        ("oword", 2)
+    );
+    assert_eq!(
+        first_error("o1 sub\no1 endsub\no1 call\no1 sub\no1 endsub\nM2\n"),
+        ("oword", 4)
+    );
+    assert_eq!(first_error("G21\no<nosuch> call\nM2\n"), ("oword", 2));
+    // `O1000 (NAME)` with no keyword is the program's number, as rs274
+    // reads it; an unknown keyword is an error.
+    let r = ok("%\nO1000 (NAME)\nG21\nG0 X1\nM2\n%\n", &linuxcnc());
+    same(r.moves[0].to, [1.0, 0.0, 0.0]);
+    assert_eq!(first_error("o1 loop\nM2\n"), ("oword", 1));
+    assert_eq!(first_error("G21\no5 if [0]\nG0 X1\nM2\n"), ("oword", 4));
+}
+
+#[test]
+fn behaviour22_7_a_runaway_oword_loop_stops_at_the_block_limit() {
+    // Each pass reads two blocks: with a limit of 1,000 the run stops
+    // after 1,000, with the limit's error; a sub calling itself stops at
+    // LinuxCNC's 10 levels.
+    let options = offsetlab::RunOptions {
+        max_blocks: 1000,
+        ..offsetlab::RunOptions::default()
+    };
+    let r = offsetlab::run_with("o1 while [1]\no1 endwhile\nM2\n", &linuxcnc(), options);
+    assert_eq!(r.block_count, 1000);
+    assert!(
+        r.diagnostics.iter().any(|d| d.code == "too-many-blocks"),
+        "{:#?}",
+        r.diagnostics
+    );
+    assert_eq!(
+        first_error("o1 sub\n  o1 call\no1 endsub\no1 call\nM2\n"),
+        ("oword", 2)
+    );
+}

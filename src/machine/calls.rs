@@ -49,6 +49,8 @@ pub(crate) enum MacroJump {
     Do(u8),
     /// END m.
     End(u8),
+    /// A LinuxCNC o-word (behaviour 22.7): the run reads its statement.
+    OWord,
 }
 
 /// The biggest program number the repeat-and-number form of P writes in

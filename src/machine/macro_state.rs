@@ -43,6 +43,17 @@ pub(crate) struct MacroCalls {
     /// #3001 (ms) and #3002 (hours) as a program set them (behaviour
     /// 21.9: the run has no clock, they stand still).
     pub(crate) clocks: [f64; 2],
+    /// LinuxCNC's named parameters (behaviour 22.6).
+    pub(crate) named: Named,
+}
+
+/// LinuxCNC's named parameters: the globals (`#<_name>`), and the locals
+/// of the level running (the main program's or an o-word call's; a call
+/// keeps its caller's on its frame).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub(crate) struct Named {
+    pub(crate) globals: std::collections::BTreeMap<Box<str>, f64>,
+    pub(crate) locals: std::collections::BTreeMap<Box<str>, f64>,
 }
 
 impl Machine {

@@ -39,6 +39,11 @@ pub enum ExprKind {
     /// `[e]`: kept so that ROUND in a word's address can tell its own
     /// bracket, and the report can write the expression as written.
     Bracket(Box<Expr>),
+    /// LinuxCNC's named parameter `#<name>` (behaviour 22.6): the name as
+    /// the control keys it, lower case and without blanks.
+    Named(Box<str>),
+    /// LinuxCNC's `EXISTS[#<name>]`: 1 when the named parameter is set.
+    Exists(Box<str>),
 }
 
 /// Binary operators, in two precedence levels (behaviour 20.3): `* / AND
@@ -54,6 +59,11 @@ pub enum BinOp {
     Div,
     And,
     Mod,
+    /// LinuxCNC's `**`, which binds tighter than `*` (behaviour 22.5).
+    Pow,
+    /// A comparison in a LinuxCNC chain (`3 GT 2 EQ 1`: left to right,
+    /// each result 1 or 0).
+    Cmp(CmpOp),
 }
 
 impl BinOp {
@@ -73,6 +83,8 @@ impl BinOp {
             BinOp::Div => "/",
             BinOp::And => "AND",
             BinOp::Mod => "MOD",
+            BinOp::Pow => "**",
+            BinOp::Cmp(c) => c.text(),
         }
     }
 }
@@ -205,6 +217,93 @@ pub enum StatementKind {
     Do(u8),
     /// `END m`.
     End(u8),
+    /// LinuxCNC's `#<name> = e` (behaviour 22.6).
+    AssignNamed {
+        /// The name as keyed (lower case, no blanks).
+        name: Box<str>,
+        /// Where `#<name>` is written.
+        target_span: Span,
+        /// The value.
+        value: Expr,
+    },
+    /// A LinuxCNC o-word (behaviour 22.7): `o100 if [c]`, `o<name> call`.
+    OWord(Box<OWord>),
+}
+
+/// A LinuxCNC o-word line: its label and what it does.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OWord {
+    /// `o100` or `o<name>`.
+    pub label: OLabel,
+    /// What the line does, with its expressions.
+    pub op: OOp,
+}
+
+/// An o-word's label: a number or a name (lower case, no blanks), as
+/// LinuxCNC matches them.
+#[derive(Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum OLabel {
+    /// `o100`.
+    Number(u32),
+    /// `o<name>`.
+    Name(Box<str>),
+}
+
+impl std::fmt::Display for OLabel {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            OLabel::Number(n) => write!(f, "o{n}"),
+            OLabel::Name(s) => write!(f, "o<{s}>"),
+        }
+    }
+}
+
+/// The o-word keywords with their expressions.
+#[derive(Clone, Debug, PartialEq)]
+#[allow(missing_docs)]
+pub enum OOp {
+    Sub,
+    /// `endsub`, with the value it returns if written.
+    EndSub(Option<Expr>),
+    /// `call`, with its arguments `[a] [b] …` (#1, #2, … of the sub).
+    Call(Vec<Expr>),
+    /// `return`, with the value it returns if written.
+    Return(Option<Expr>),
+    If(Expr),
+    ElseIf(Expr),
+    Else,
+    EndIf,
+    /// `while [c]`: opens a loop, or closes the `do` of its label.
+    While(Expr),
+    EndWhile,
+    Do,
+    Repeat(Expr),
+    EndRepeat,
+    Break,
+    Continue,
+}
+
+impl OOp {
+    /// The keyword as written.
+    pub fn keyword(&self) -> &'static str {
+        match self {
+            OOp::Sub => "sub",
+            OOp::EndSub(_) => "endsub",
+            OOp::Call(_) => "call",
+            OOp::Return(_) => "return",
+            OOp::If(_) => "if",
+            OOp::ElseIf(_) => "elseif",
+            OOp::Else => "else",
+            OOp::EndIf => "endif",
+            OOp::While(_) => "while",
+            OOp::EndWhile => "endwhile",
+            OOp::Do => "do",
+            OOp::Repeat(_) => "repeat",
+            OOp::EndRepeat => "endrepeat",
+            OOp::Break => "break",
+            OOp::Continue => "continue",
+        }
+    }
 }
 
 impl StatementKind {
@@ -218,6 +317,8 @@ impl StatementKind {
             StatementKind::While(..) => "WHILE … DO",
             StatementKind::Do(_) => "DO",
             StatementKind::End(_) => "END",
+            StatementKind::AssignNamed { .. } => "#<name> = …",
+            StatementKind::OWord(o) => o.op.keyword(),
         }
     }
 }

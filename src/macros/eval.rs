@@ -9,6 +9,9 @@ use crate::diag::{Diagnostic, Span};
 /// Largest magnitude a variable holds (Fanuc 0i-F: ±10^308; PS0111 past it).
 pub const MAX_MAGNITUDE: f64 = 1e308;
 
+/// How near two values are equal for LinuxCNC's EQ and NE.
+const LINUXCNC_EQUAL: f64 = 0.0001;
+
 /// Largest sequence number a jump names.
 pub const MAX_SEQUENCE: f64 = 99_999_999.0;
 
@@ -19,6 +22,25 @@ pub trait Variables {
     fn read(&mut self, number: u32, span: Span) -> Result<Value, Diagnostic>;
     /// Sets `#number`.
     fn write(&mut self, number: u32, value: Value, span: Span) -> Result<(), Diagnostic>;
+    /// The value of LinuxCNC's `#<name>` (behaviour 22.6); None when it
+    /// is not set.
+    fn read_named(&mut self, name: &str, span: Span) -> Result<Option<f64>, Diagnostic> {
+        let _ = name;
+        Err(named_unknown(span))
+    }
+    /// Sets LinuxCNC's `#<name>`.
+    fn write_named(&mut self, name: &str, value: f64, span: Span) -> Result<(), Diagnostic> {
+        let _ = (name, value);
+        Err(named_unknown(span))
+    }
+}
+
+/// A named parameter where the profile has none.
+fn named_unknown(span: Span) -> Diagnostic {
+    alarm::FORMAT.at(
+        span,
+        "`#<name>` is LinuxCNC's named parameter: this profile numbers its variables",
+    )
 }
 
 /// The points on which controls differ (behaviour 7.39, 7.40).
@@ -64,6 +86,16 @@ pub enum Outcome {
     Do(u8),
     /// END m.
     End(u8),
+    /// `#<name> = value` (behaviour 22.6).
+    AssignedNamed {
+        /// The value set.
+        value: f64,
+        /// Its value before, if it was set.
+        was: Option<f64>,
+    },
+    /// An o-word: the run evaluates what it needs as it goes (behaviour
+    /// 22.7).
+    OWord,
 }
 
 /// A value while evaluating: a number, or the truth of a comparison.
@@ -124,6 +156,17 @@ impl<'v> Evaluator<'v> {
             },
             StatementKind::Do(label) => Outcome::Do(*label),
             StatementKind::End(label) => Outcome::End(*label),
+            StatementKind::AssignNamed {
+                name,
+                target_span,
+                value,
+            } => {
+                let v = self.number(value)?;
+                let was = self.vars.read_named(name, *target_span).ok().flatten();
+                self.vars.write_named(name, v, *target_span)?;
+                Outcome::AssignedNamed { value: v, was }
+            }
+            StatementKind::OWord(_) => Outcome::OWord,
         })
     }
 
@@ -195,6 +238,21 @@ impl<'v> Evaluator<'v> {
         let v = match &e.kind {
             ExprKind::Number(v) => *v,
             ExprKind::Bracket(inner) => return self.eval(inner),
+            ExprKind::Named(name) => match self.vars.read_named(name, e.span)? {
+                Some(v) => v,
+                None => {
+                    return Err(Diagnostic::error(
+                        "named-parameter",
+                        e.span,
+                        format!(
+                            "#<{name}> is not set: LinuxCNC refuses to read a named parameter before it is set (\"Named parameter #<{name}> not defined\")"
+                        ),
+                    ));
+                }
+            },
+            ExprKind::Exists(name) => f64::from(u8::from(
+                self.vars.read_named(name, e.span).ok().flatten().is_some(),
+            )),
             ExprKind::Var(index) => {
                 let n = self.index(index)?;
                 return Ok(Val::Num(self.vars.read(n, e.span)?));
@@ -202,7 +260,7 @@ impl<'v> Evaluator<'v> {
             ExprKind::Neg(inner) => 0.0 - self.number(inner)?,
             ExprKind::Compare(op, a, b) => {
                 let (a, b) = (self.value(a)?, self.value(b)?);
-                return Ok(Val::Bool(compare(*op, a, b)));
+                return Ok(Val::Bool(self.compare(*op, a, b)));
             }
             ExprKind::Chain(first, rest) => return self.chain(first, rest, e.span),
             ExprKind::Call(f, a) => {
@@ -262,6 +320,20 @@ impl<'v> Evaluator<'v> {
         b: Span,
         span: Span,
     ) -> Result<Val, Diagnostic> {
+        if self.options.linuxcnc
+            && let BinOp::And | BinOp::Or | BinOp::Xor = op
+        {
+            // LinuxCNC: logic on any values, 0 false and any other true,
+            // the result 1 or 0 (behaviour 22.5).
+            let p = self.as_number(x, a)? != 0.0;
+            let q = self.as_number(y, b)? != 0.0;
+            let r = match op {
+                BinOp::And => p && q,
+                BinOp::Or => p || q,
+                _ => p != q,
+            };
+            return Ok(Val::Num(Value::Number(f64::from(u8::from(r)))));
+        }
         if let (BinOp::And | BinOp::Or | BinOp::Xor, Val::Bool(p), Val::Bool(q)) = (op, x, y) {
             return Ok(Val::Bool(match op {
                 BinOp::And => p && q,
@@ -284,12 +356,34 @@ impl<'v> Evaluator<'v> {
             // result (`-7 MOD 3` is 2).
             BinOp::Mod if self.options.linuxcnc && x % y < 0.0 => x % y + y.abs(),
             BinOp::Mod => x % y,
+            BinOp::Cmp(c) => f64::from(u8::from(self.compare(
+                c,
+                Value::Number(x),
+                Value::Number(y),
+            ))),
+            BinOp::Pow => {
+                if (x < 0.0 && y.fract() != 0.0) || (x == 0.0 && y < 0.0) {
+                    return Err(alarm::ARGUMENT.at(span, format!("{x} ** {y} has no real value")));
+                }
+                x.powf(y)
+            }
             // Bit by bit on the whole parts (Haas: the integer portion).
             BinOp::And => (whole(x) & whole(y)) as f64,
             BinOp::Or => (whole(x) | whole(y)) as f64,
             BinOp::Xor => (whole(x) ^ whole(y)) as f64,
         };
         checked(v, span).map(|v| Val::Num(Value::Number(v)))
+    }
+
+    /// A comparison: Fanuc's ([`compare`]), or LinuxCNC's, whose EQ and
+    /// NE hold within 0.0001 (rs274's TOLERANCE_EQUAL; behaviour 22.5).
+    fn compare(&self, op: CmpOp, a: Value, b: Value) -> bool {
+        match op {
+            CmpOp::Eq | CmpOp::Ne if self.options.linuxcnc => {
+                ((a.number() - b.number()).abs() < LINUXCNC_EQUAL) == (op == CmpOp::Eq)
+            }
+            _ => compare(op, a, b),
+        }
     }
 
     fn as_number(&self, v: Val, at: Span) -> Result<f64, Diagnostic> {

@@ -13,11 +13,11 @@ mod parse;
 mod store;
 mod value;
 
-pub use ast::{BinOp, CmpOp, Expr, ExprKind, Func, Statement, StatementKind};
+pub use ast::{BinOp, CmpOp, Expr, ExprKind, Func, OLabel, OOp, OWord, Statement, StatementKind};
 pub use eval::{Evaluator, MAX_MAGNITUDE, Options, Outcome, Variables, compare};
 pub use parse::{
-    MAX_NESTING, abbreviated, expression, opens_statement, opens_value, statement, statement_with,
-    value, value_with,
+    Dialect, MAX_NESTING, abbreviated, expression, expression_with, opens_statement, opens_value,
+    oword, statement, statement_with, value, value_with,
 };
 pub use store::{Kind, Store, kind, no_variable, system_variable};
 pub use value::Value;

@@ -7,6 +7,8 @@ use super::alarm::{self, Alarm};
 use super::ast::{BinOp, CmpOp, Expr, ExprKind, Func, Statement, StatementKind};
 use crate::diag::{Diagnostic, Span};
 
+mod linuxcnc;
+
 /// Deepest bracket nesting, function brackets included (Fanuc: five
 /// levels, alarm PS0118 past them).
 pub const MAX_NESTING: u32 = 5;
@@ -108,24 +110,35 @@ pub fn abbreviated(word: &str) -> Option<&'static str> {
         .map(|&(_, w)| w)
 }
 
+/// How a profile writes its macro language.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Dialect {
+    /// Fanuc's abbreviations of the macro words read as the words
+    /// (behaviour 20.19), else refused with the word they stand for.
+    pub abbreviations: bool,
+    /// LinuxCNC's expressions (behaviour 22.5, 22.6): `#<name>`, `**`,
+    /// EXISTS, and its precedence (`**`; `* / MOD`; `+ -`; the
+    /// comparisons; `AND OR XOR`).
+    pub linuxcnc: bool,
+}
+
 /// Parses the statement at `start` of `text`, up to `end` (the block's end),
 /// its words written in full.
 pub fn statement(text: &str, start: usize, end: usize, line: u32) -> Result<Statement, Diagnostic> {
-    statement_with(text, start, end, line, false)
+    statement_with(text, start, end, line, Dialect::default())
 }
 
-/// [`statement`], with Fanuc's abbreviations of the macro words read as
-/// the words when `abbreviations` (behaviour 20.19), else refused with the
-/// word they stand for.
+/// [`statement`] in a profile's [`Dialect`].
 pub fn statement_with(
     text: &str,
     start: usize,
     end: usize,
     line: u32,
-    abbreviations: bool,
+    dialect: Dialect,
 ) -> Result<Statement, Diagnostic> {
     let mut p = Parser::new(text, start, end, line);
-    p.abbreviations = abbreviations;
+    p.abbreviations = dialect.abbreviations;
+    p.linuxcnc = dialect.linuxcnc;
     let s = p.statement()?;
     p.blanks();
     if p.pos < p.end {
@@ -140,26 +153,49 @@ pub fn statement_with(
 /// Parses a word's value at `start` (`#1`, `-#1`, `[#1+2]`, `-[…]`);
 /// returns the expression and the byte after it.
 pub fn value(text: &str, start: usize, end: usize, line: u32) -> Result<(Expr, usize), Diagnostic> {
-    value_with(text, start, end, line, false)
+    value_with(text, start, end, line, Dialect::default())
 }
 
-/// [`value`], with the abbreviations of [`statement_with`].
+/// [`value`] in a profile's [`Dialect`].
 pub fn value_with(
     text: &str,
     start: usize,
     end: usize,
     line: u32,
-    abbreviations: bool,
+    dialect: Dialect,
 ) -> Result<(Expr, usize), Diagnostic> {
     let mut p = Parser::new(text, start, end, line);
-    p.abbreviations = abbreviations;
+    p.abbreviations = dialect.abbreviations;
+    p.linuxcnc = dialect.linuxcnc;
     let e = p.unary(true)?;
     Ok((e, p.pos))
 }
 
+/// Parses a LinuxCNC o-word line at `start` (its `o`), up to `end`
+/// (behaviour 22.7): the label, the keyword and its expressions; the
+/// statement and the byte after it (only comments may follow).
+pub fn oword(
+    text: &str,
+    start: usize,
+    end: usize,
+    line: u32,
+) -> Result<(Statement, usize), Diagnostic> {
+    let mut p = Parser::new(text, start, end, line);
+    p.linuxcnc = true;
+    let s = p.oword()?;
+    Ok((s, p.pos))
+}
+
 /// Parses an expression that fills `start..end` (tests and tools).
 pub fn expression(text: &str, line: u32) -> Result<Expr, Diagnostic> {
+    expression_with(text, line, Dialect::default())
+}
+
+/// [`expression`] in a profile's [`Dialect`].
+pub fn expression_with(text: &str, line: u32, dialect: Dialect) -> Result<Expr, Diagnostic> {
     let mut p = Parser::new(text, 0, text.len(), line);
+    p.abbreviations = dialect.abbreviations;
+    p.linuxcnc = dialect.linuxcnc;
     let e = p.expr()?;
     p.blanks();
     if p.pos < p.end {
@@ -177,6 +213,8 @@ struct Parser<'a> {
     depth: u32,
     /// Fanuc's abbreviations read as their words (behaviour 20.19).
     abbreviations: bool,
+    /// LinuxCNC's expressions ([`Dialect::linuxcnc`]).
+    linuxcnc: bool,
 }
 
 impl<'a> Parser<'a> {
@@ -190,6 +228,7 @@ impl<'a> Parser<'a> {
             line,
             depth: 0,
             abbreviations: false,
+            linuxcnc: false,
         }
     }
 
@@ -383,6 +422,18 @@ impl<'a> Parser<'a> {
         let start = self.pos;
         let target = self.variable()?;
         let target_span = target.span;
+        if let ExprKind::Named(name) = target.kind {
+            self.expect(b'=', "is where `=` must follow the parameter")?;
+            let value = self.expr()?;
+            return Ok(Statement {
+                span: self.span(start, self.pos),
+                kind: StatementKind::AssignNamed {
+                    name,
+                    target_span,
+                    value,
+                },
+            });
+        }
         let ExprKind::Var(index) = target.kind else {
             return Err(alarm::FORMAT.at(target_span, "a variable must open the assignment"));
         };
@@ -455,6 +506,13 @@ impl<'a> Parser<'a> {
         self.blanks();
         let start = self.pos;
         self.expect(b'#', "is where `#` must open a variable")?;
+        if self.linuxcnc && self.bytes.get(self.pos) == Some(&b'<') {
+            let name = self.name()?;
+            return Ok(Expr {
+                span: self.span(start, self.pos),
+                kind: ExprKind::Named(name),
+            });
+        }
         let index = if self.bytes.get(self.pos) == Some(&b'[') {
             self.bracketed()?
         } else {
@@ -485,6 +543,9 @@ impl<'a> Parser<'a> {
 
     /// Comparison level (lowest).
     fn expr(&mut self) -> Result<Expr, Diagnostic> {
+        if self.linuxcnc {
+            return self.logic();
+        }
         let left = self.sum()?;
         let save = self.pos;
         let run = self.word();
@@ -635,6 +696,24 @@ impl<'a> Parser<'a> {
         let (name, len) = self.keyword();
         let name_end = start + len;
         self.pos = name_end;
+        if self.linuxcnc && name == "EXISTS" {
+            self.open()?;
+            self.blanks();
+            let at = self.pos;
+            if !(self.eat(b'#') && self.bytes.get(self.pos) == Some(&b'<')) {
+                self.pos = at;
+                return Err(self.alarm_here(
+                    alarm::FORMAT,
+                    "is where EXISTS takes a named parameter, `EXISTS[#<name>]`",
+                ));
+            }
+            let name = self.name()?;
+            self.close()?;
+            return Ok(Expr {
+                kind: ExprKind::Exists(name),
+                span: self.span(start, self.pos),
+            });
+        }
         if name == "POW" {
             self.open()?;
             let a = self.expr()?;

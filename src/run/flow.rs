@@ -39,6 +39,10 @@ pub(crate) struct Loops {
     back_span: Option<Span>,
     /// Per program (by the byte offset of its start), its structure.
     programs: HashMap<usize, Structure>,
+    /// LinuxCNC's o-words running (behaviour 22.7).
+    pub(super) o: super::oword::State,
+    /// Per program, where its o-words stand.
+    pub(super) owords: HashMap<usize, super::oword::Structure>,
 }
 
 /// What a checkpoint keeps of the loops (the structures aside).
@@ -47,6 +51,7 @@ pub(crate) struct Saved {
     open: Vec<Open>,
     back: u32,
     back_span: Option<Span>,
+    o: super::oword::State,
 }
 
 /// A loop running.
@@ -173,6 +178,7 @@ impl Loops {
             open: self.open.clone(),
             back: self.back,
             back_span: self.back_span,
+            o: self.o.clone(),
         }
     }
 }
@@ -184,6 +190,8 @@ impl Saved {
             back: self.back,
             back_span: self.back_span,
             programs: HashMap::new(),
+            o: self.o.clone(),
+            owords: HashMap::new(),
         })
     }
 }
@@ -204,7 +212,11 @@ impl<'t> Runner<'t> {
     #[inline(never)]
     pub(super) fn macro_flow(&mut self, step: MacroJump) -> Step {
         self.note_place();
-        match self.flow_step(step) {
+        let result = match step {
+            MacroJump::OWord => self.oword_step(),
+            step => self.flow_step(step),
+        };
+        match result {
             Ok(()) => Step::Ran(Flow::Jump),
             Err(d) => {
                 self.index = self.index.saturating_sub(1);
@@ -353,6 +365,7 @@ impl<'t> Runner<'t> {
                 let note = format!("WHILE {c} false: on after END {label} (line {end_line})");
                 (note, Some(after))
             }
+            MacroJump::OWord => return Ok(()),
             MacroJump::End(label) => match loops.open.last() {
                 Some(o) if ours(o) && o.label == label => {
                     let what = match o.condition {

@@ -66,6 +66,43 @@ impl Variables for Vars<'_> {
         self.machine.watch(n, span, true);
         Ok(())
     }
+
+    fn read_named(&mut self, name: &str, span: Span) -> Result<Option<f64>, Diagnostic> {
+        if let Some(v) = super::named::predefined(self.machine, name, span)? {
+            return Ok(Some(v));
+        }
+        let named = &self.machine.macro_calls_mut().named;
+        let v = match name.starts_with('_') {
+            true => named.globals.get(name).copied(),
+            false => named.locals.get(name).copied(),
+        };
+        // A call's value is 0 until a sub returns one (behaviour 22.7).
+        Ok(v.or(match name {
+            "_value" | "_value_returned" => Some(0.0),
+            _ => None,
+        }))
+    }
+
+    fn write_named(&mut self, name: &str, v: f64, span: Span) -> Result<(), Diagnostic> {
+        if super::named::is_predefined(self.machine, name) {
+            return Err(Diagnostic::error(
+                "named-parameter",
+                span,
+                format!(
+                    "#<{name}> is one of LinuxCNC's predefined parameters, which a program reads and never sets"
+                ),
+            ));
+        }
+        let named = &mut self.machine.macro_calls_mut().named;
+        let map = match name.starts_with('_') {
+            true => &mut named.globals,
+            false => &mut named.locals,
+        };
+        // Bounded: one entry per name the program writes, and a name is
+        // written in the program's text.
+        map.insert(name.into(), v);
+        Ok(())
+    }
 }
 
 /// Runs the block's statement and evaluates its macro words; the block the
@@ -124,6 +161,27 @@ pub(super) fn resolve(
                     m.text_of_statement(s)
                 ));
             }
+            Outcome::AssignedNamed { value, was } => {
+                let (name, written) = match &s.kind {
+                    StatementKind::AssignNamed { name, value, .. } => (name, m.text_of(value)),
+                    _ => {
+                        return Err(Diagnostic::error(
+                            "internal",
+                            s.span,
+                            "not a named assignment",
+                        ));
+                    }
+                };
+                let before = match was {
+                    None => "was not set".to_string(),
+                    Some(v) => format!("was {}", Value::Number(v)),
+                };
+                out.notes.push(format!(
+                    "#<{name}> = {} ({written}), {before}",
+                    Value::Number(value)
+                ));
+            }
+            Outcome::OWord => machine.jump = Some(Jump::Flow(MacroJump::OWord)),
             // The run finds where these lead (behaviour 20.11–20.14).
             Outcome::Goto(n) => machine.jump = Some(Jump::Flow(MacroJump::Goto(n))),
             Outcome::While { holds, label } => {

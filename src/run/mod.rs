@@ -20,7 +20,9 @@ mod flow;
 mod library;
 mod macrocall;
 mod macros;
+mod named;
 mod observer;
+mod oword;
 #[cfg(not(target_arch = "wasm32"))]
 pub(crate) mod pipeline;
 mod sequence;

@@ -135,6 +135,37 @@ impl Blocks<'_> {
         }
     }
 
+    /// How the profile writes its macro language.
+    pub(super) fn dialect(&self) -> macros::Dialect {
+        macros::Dialect {
+            abbreviations: self.options.macro_abbreviations,
+            linuxcnc: self.options.linuxcnc,
+        }
+    }
+
+    /// Reads the LinuxCNC o-word at `i` into the block (behaviour 22.7);
+    /// where the reading goes on (after it, or at the line's end when it
+    /// is refused).
+    pub(super) fn read_oword(
+        &mut self,
+        i: usize,
+        line: u32,
+        block: &mut Block,
+    ) -> Result<usize, ()> {
+        let end = block_end(self.text.as_bytes(), i);
+        match macros::oword(self.text, i, end, line) {
+            Ok((s, after)) => {
+                self.macro_part(block, i).statement = Some(s);
+                Ok(after)
+            }
+            Err(d) => {
+                block.error = true;
+                self.report(d);
+                Err(())
+            }
+        }
+    }
+
     /// Reads the statement at `i` (to the block's end) into the block;
     /// returns where the reading goes on.
     pub(super) fn read_statement(
@@ -145,7 +176,7 @@ impl Blocks<'_> {
         block: &mut Block,
     ) -> usize {
         let end = block_end(self.text.as_bytes(), i);
-        match macros::statement_with(self.text, i, end, line, self.options.macro_abbreviations) {
+        match macros::statement_with(self.text, i, end, line, self.dialect()) {
             Ok(s) => self.macro_part(block, block_start).statement = Some(s),
             Err(d) => {
                 block.error = true;
@@ -172,13 +203,7 @@ impl Blocks<'_> {
             false => Address::from_letter(letter).filter(|a| !matches!(a, Address::O | Address::N)),
         };
         let written_as = &self.text[i..i + 1 + usize::from(comma)];
-        match macros::value_with(
-            self.text,
-            value,
-            end,
-            line,
-            self.options.macro_abbreviations,
-        ) {
+        match macros::value_with(self.text, value, end, line, self.dialect()) {
             Ok((_, after))
                 if matches!(
                     self.text

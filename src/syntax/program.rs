@@ -49,6 +49,25 @@ pub(super) enum Lead {
     Refused(usize),
 }
 
+/// True when the `o` at `i` is a label alone on its line, or before a
+/// comment (`O1000 (NAME)`): rs274 reads it as the program's number and
+/// runs on, as the Fanuc family reads a header (behaviour 22.7).
+fn bare_label(bytes: &[u8], i: usize, line_end: usize) -> bool {
+    let mut j = lexer::skip_blanks(bytes, i + 1);
+    if bytes.get(j) == Some(&b'<') {
+        match bytes[j..line_end].iter().position(|&c| c == b'>') {
+            Some(k) => j += k + 1,
+            None => return false,
+        }
+    } else {
+        while j < line_end && bytes[j].is_ascii_digit() {
+            j += 1;
+        }
+    }
+    let j = lexer::skip_blanks(bytes, j);
+    j >= line_end || matches!(bytes[j], b'(' | b';')
+}
+
 /// LinuxCNC o-word keywords (RS274NGC subroutines and control flow).
 const O_WORD_KEYWORDS: [&str; 15] = [
     "sub",
@@ -114,6 +133,13 @@ impl Blocks<'_> {
         block: &mut Block,
     ) -> Lead {
         let bytes = self.text.as_bytes();
+        if self.options.linuxcnc && bytes[i] != b':' && !bare_label(bytes, i, line_end) {
+            // LinuxCNC: `o100 sub`, `o<name> call [1]` (behaviour 22.7).
+            return match self.read_oword(i, line, block) {
+                Ok(after) => Lead::Name(after),
+                Err(()) => Lead::Refused(line_end),
+            };
+        }
         let (end, next, number) = lexer::number(bytes, i + 1);
         let (keyword_at, name) = match number {
             Ok(_) => {
@@ -139,7 +165,7 @@ impl Blocks<'_> {
                 _ => "control flow",
             };
             let msg = format!(
-                "`{}` is a LinuxCNC o-word ({kind}): the program is written in LinuxCNC's RS274NGC dialect, not for a Fanuc-family control, which calls subprograms with M98 and loops with macro B; offsetlab runs neither yet",
+                "`{}` is a LinuxCNC o-word ({kind}): the program is written in LinuxCNC's RS274NGC dialect, not for a Fanuc-family control, which calls subprograms with M98 and loops with macro B; choose the LinuxCNC control (`--control linuxcnc`, the page's Control menu) to run it",
                 quote(&self.text[i..line_end])
             );
             return self.refuse_line(block, "other-dialect", i, line_end, line, &msg);

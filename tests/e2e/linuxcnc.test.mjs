@@ -1,7 +1,9 @@
 // Browser end-to-end test of the linuxcnc profile's program text (issue 34,
 // behaviour 22): with the LinuxCNC control chosen, `;` comments are
 // comments, `X10` is 10 mm, and a (MSG,…) line is a note at its place; the
-// Fanuc profile stops at the first `;` comment. Screenshot: linuxcnc.png.
+// Fanuc profile stops at the first `;` comment; a program opened with
+// o-words chooses the control (behaviour 22.8). Screenshots: linuxcnc.png,
+// linuxcnc-owords.png.
 
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
@@ -47,6 +49,44 @@ describe('linuxcnc', () => {
       // Fanuc: `;` ends a block, and the comment after it is no G-code.
       await page.getByLabel('Control').selectOption('fanuc');
       await page.waitForFunction(() => /[1-9]\d* errors?/.test(document.querySelector('#summary').textContent));
+    });
+  });
+
+  test('a program opened with o-words runs under the LinuxCNC control, said in the banner', async () => {
+    await withPage(async (page) => {
+      assert.notEqual(await page.getByLabel('Control').inputValue(), 'linuxcnc');
+      // Four holes by a while loop and a sub: X 0, 10, 20, 30.
+      const program = [
+        '(four holes from a LinuxCNC sub)',
+        'o<hole> sub',
+        '  G0 X#1 Y0 Z2',
+        '  G1 Z-1 F100',
+        '  G0 Z2',
+        'o<hole> endsub',
+        'G21 G90',
+        '#<k> = 0',
+        'o10 while [#<k> LT 4]',
+        '  o<hole> call [#<k> * 10]',
+        '  #<k> = [#<k> + 1]',
+        'o10 endwhile',
+        'M2',
+        '',
+      ].join('\n');
+      await page.locator('#open-file').setInputFiles({
+        name: 'holes.ngc', mimeType: 'text/plain', buffer: Buffer.from(program),
+      });
+      await page.waitForFunction(() => document.body.dataset.opened === 'holes.ngc');
+      await waitForRun(page);
+      assert.equal(await page.getByLabel('Control').inputValue(), 'linuxcnc');
+      assert.match(await page.locator('#banner .text').textContent(), /control is set to LinuxCNC 2\.9: its o-word “o<hole> sub”/);
+      const summary = await page.locator('#summary').textContent();
+      assert.match(summary, /0 errors/);
+      assert.match(summary, /12 moves/);
+      // The editor reads the o-words and named parameters as LinuxCNC's.
+      assert.equal(await page.locator('.cm-content .tok-invalid').count(), 0);
+      const variables = await page.locator('.cm-content .tok-variable').allTextContents();
+      assert.ok(variables.includes('#<k>'), JSON.stringify(variables));
+      await shoot(page, 'linuxcnc-owords');
     });
   });
 

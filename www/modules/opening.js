@@ -8,6 +8,7 @@ import { EMBED, base } from './page.js';
 import {
   call, fileRead, requestFileRun, requestRun, workerDone,
 } from './runner.js';
+import { dialectOf } from './dialect.js';
 import { cloneSetup } from './setup.js';
 import { work } from './work.js';
 
@@ -33,6 +34,15 @@ function documentOrLink(head, whole) {
     && /^(?:https?:\/\/[^\s#]*)?#?(?:v\d+\.|program=)/.test(trimmed);
 }
 
+/** A copy of `setup` under the control `dialect` names, if it names one. */
+function named(setup, dialect) {
+  const copy = cloneSetup(setup);
+  if (dialect && copy.settings?.control !== dialect.control) {
+    copy.settings = { ...(copy.settings ?? {}), control: dialect.control };
+  }
+  return copy;
+}
+
 async function openFile(file) {
   if (!file) return;
   const what = `The file “${file.name}”`;
@@ -41,16 +51,21 @@ async function openFile(file) {
     return;
   }
   let ran = 0;
+  // The control the program's text names (behaviour 22.8), from its start.
+  let dialect = null;
   if (file.size >= WORKER_READS_FROM) {
     let head;
     try {
-      head = await file.slice(0, 4096).text();
+      head = await file.slice(0, 256 * 1024).text();
     } catch (error) {
       showLinkError({ code: 'file-unreadable', message: error.message }, what);
       return;
     }
     // A program: the worker runs it from the file now, with the setup shown.
-    if (!documentOrLink(head, false)) ran = requestFileRun(file, viewOf({ setup: work.setup }));
+    if (!documentOrLink(head, false)) {
+      dialect = dialectOf(head);
+      ran = requestFileRun(file, viewOf({ setup: named(work.setup, dialect) }));
+    }
   }
   let text;
   // Once the worker has read the file: the two reads at once stalled this
@@ -70,10 +85,17 @@ async function openFile(file) {
   }
   const trimmed = text.trim();
   let answer;
+  let said = '';
   if (ran || !documentOrLink(text, true)) {
-    // A program: it runs with the setup shown.
-    answer = { document: { ...cloneSetup(work.setup), program: text } };
-    if (work.setupText !== null) answer.setupText = work.setupText;
+    // A program: it runs with the setup shown, under the control its text
+    // names (behaviour 22.8), said in the banner.
+    if (!ran) dialect = dialectOf(text);
+    const setup = named(work.setup, dialect);
+    if (setup.settings?.control !== work.setup.settings?.control) {
+      said = ` The control is set to LinuxCNC 2.9: ${dialect.why} is LinuxCNC’s.`;
+    }
+    answer = { document: { ...setup, program: text } };
+    if (work.setupText !== null && !said) answer.setupText = work.setupText;
   } else if (trimmed.startsWith('{')) {
     answer = await call('read', { text });
   } else {
@@ -85,7 +107,7 @@ async function openFile(file) {
   }
   const w = workOf(answer.document);
   if (answer.setupText !== undefined) w.setupText = answer.setupText;
-  openWork(w, `Opened “${file.name}”.`, { ran });
+  openWork(w, `Opened “${file.name}”.${said}`, { ran });
   document.body.dataset.opened = file.name;
 }
 

@@ -39,10 +39,11 @@ const BY_LETTER = {
 // `bracket`, `operator`, which it would map to its own tags.)
 const WORD = /^[A-Za-z][ \t]*[+-]?[ \t]*[0-9.]*/;
 
-// Custom Macro B's keywords, operators and functions (behaviour 20): two
+// Custom Macro B's keywords, operators and functions (behaviour 20), and
+// LinuxCNC's o-word keywords and EXISTS (behaviour 22.7): two
 // letters or more, never followed by a letter (G-code words are one letter
 // and a number, so none of these is one).
-const KEYWORD = /^(WHILE|GOTO|THEN|END|DO|IF|EQ|NE|GT|LT|GE|LE|AND|OR|XOR|MOD|SIN|COS|TAN|ASIN|ACOS|ATAN|SQRT|ABS|ROUND|FIX|FUP|LN|EXP|POW|BIN|BCD|ADP)(?![A-Za-z])/i;
+const KEYWORD = /^(ENDSUB|ENDWHILE|ENDREPEAT|ENDIF|ELSEIF|ELSE|SUB|CALL|RETURN|REPEAT|BREAK|CONTINUE|EXISTS|WHILE|GOTO|THEN|END|DO|IF|EQ|NE|GT|LT|GE|LE|AND|OR|XOR|MOD|SIN|COS|TAN|ASIN|ACOS|ATAN|SQRT|ABS|ROUND|FIX|FUP|LN|EXP|POW|BIN|BCD|ADP)(?![A-Za-z])/i;
 
 const KEYWORDS = new RegExp(KEYWORD.source.slice(1), 'gi');
 
@@ -88,8 +89,11 @@ export const gcodeLanguage = StreamLanguage.define({
       return 'skip';
     }
     if (ch === ':' && begins && stream.match(/^:[0-9]+/)) return 'program'; // `:1000`, a program header (behaviour 19.1)
+    // LinuxCNC's `o<name>` label (behaviour 22.7); `o100` reads as an O word.
+    if (begins && stream.match(/^[oO][ \t]*<[^>\r\n]*>/)) return 'program';
     if (stream.match(KEYWORD)) return 'macro';
-    if (stream.match(/^#[0-9]*/)) return 'macroVariable';
+    // LinuxCNC's named parameter `#<name>` (behaviour 22.6), then `#1`.
+    if (stream.match(/^#<[^>\r\n]*>/) || stream.match(/^#[0-9]*/)) return 'macroVariable';
     if (ch === '[' || ch === ']') {
       stream.next();
       return 'macroBracket';
