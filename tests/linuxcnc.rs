@@ -314,6 +314,23 @@ fn behaviour22_7_owords_branch_loop_and_call_as_rs274_runs_them() {
     let r = ok(text, &linuxcnc());
     let to: Vec<[f64; 3]> = r.moves.iter().map(|m| m.to).collect();
     assert_eq!(to, vec![[5.0, 0.0, 0.0], [5.0, 1.0, 0.0], [5.0, 2.0, 0.0]]);
+    // rs274's repeat counts its passes at its own block: a `continue` of
+    // the while around it leaves the count running, so the second while
+    // pass runs the repeat's second pass (X2) and the third none; then a
+    // plain repeat [3] moves Y by 2 three times.
+    let text = "G21 G90 F100\n#1 = 0\no1 while [#1 LT 3]\n  #1 = [#1 + 1]\n  o2 repeat [2]\n    G91 G1 X1\n    o1 continue\n  o2 endrepeat\no1 endwhile\nG90\no3 repeat [3]\n  G91 G1 Y2\no3 endrepeat\nM2\n";
+    let r = ok(text, &linuxcnc());
+    let to: Vec<[f64; 3]> = r.moves.iter().map(|m| m.to).collect();
+    assert_eq!(
+        to,
+        vec![
+            [1.0, 0.0, 0.0],
+            [2.0, 0.0, 0.0],
+            [2.0, 2.0, 0.0],
+            [2.0, 4.0, 0.0],
+            [2.0, 6.0, 0.0]
+        ]
+    );
     // rs274's refusals: break in a repeat, a sub defined twice, a call to
     // no sub, a false if with no endif (reported at the file's end).
     assert_eq!(

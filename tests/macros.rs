@@ -626,5 +626,21 @@ mod props {
             let _ = macros::statement(&s, 0, s.len(), 1);
             let _ = macros::expression(&s, 1);
         }
+
+        /// LinuxCNC's grammar too (behaviour 22.5–22.7): `<>`, `**`,
+        /// o-words and chained comparisons, each parsed and evaluated
+        /// without a panic (the chain's span checks run in debug builds).
+        #[test]
+        fn any_linuxcnc_text_parses_and_evaluates_without_a_panic(
+            s in "(o[0-9]{1,3} |o<[a-z ]{1,4}> )?[#<>\\[\\]0-9A-Z+*/.= -]{0,40}",
+        ) {
+            let dialect = macros::Dialect { abbreviations: false, linuxcnc: true };
+            let _ = macros::statement_with(&s, 0, s.len(), 1, dialect);
+            let _ = macros::oword(&s, 0, s.len(), 1);
+            if let Ok(e) = macros::expression_with(&s, 1, dialect) {
+                let options = macros::Options { linuxcnc: true, numeric_conditions: true, signed_angles: true };
+                let _ = Evaluator::new(&mut Table([0.0; 10]), options).value(&e);
+            }
+        }
     }
 }

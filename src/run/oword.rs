@@ -222,7 +222,6 @@ impl Structure {
 /// An o-word call open: where it returns and what it keeps of its caller.
 #[derive(Clone, Debug)]
 struct Frame {
-    label: OLabel,
     /// The place after the `call` block.
     back: Resume,
     /// The caller's #1–#30 and named locals, given back at the return.
@@ -236,7 +235,8 @@ struct Frame {
 #[derive(Clone, Debug, Default)]
 pub(crate) struct State {
     calls: Vec<Frame>,
-    /// The repeats counting: the call depth, the `repeat` block, passes left.
+    /// The repeats counting: the call depth, the `repeat` block, passes
+    /// left with the one running (one entry per block and depth).
     repeats: Vec<(usize, u32, u64)>,
     /// The branch a condition that did not hold jumped to: it is tested,
     /// not fallen into.
@@ -389,7 +389,7 @@ impl<'t> Runner<'t> {
                 for (v, a) in values.iter_mut().zip(args) {
                     *v = Value::Number(self.number(a)?);
                 }
-                let frame = self.enter_call(label, &values);
+                let frame = self.enter_call(&values);
                 let said: Vec<String> = values[..args.len()]
                     .iter()
                     .enumerate()
@@ -506,54 +506,75 @@ impl<'t> Runner<'t> {
                 )
             }
             (OOp::Do, _) => (format!("{label} do"), To::On),
+            // rs274's repeat: its endrepeat reads the repeat block again,
+            // which counts a pass while the count it stored runs; so a
+            // `continue` of a loop around it goes on counting (the
+            // oracle's l30_repeat_in_while_continue).
             (OOp::Repeat(n), _) => {
                 let end = link.ok_or_else(|| no_end(statement, label, "endrepeat", last))?;
-                // rs274 rounds the count half to even (2.5 runs twice).
-                let times = self.number(n)?.round_ties_even();
-                match times >= 1.0 {
-                    true => {
-                        state
-                            .repeats
-                            .push((depth, start, times.min(u64::MAX as f64) as u64));
+                let running = state
+                    .repeats
+                    .iter()
+                    .position(|r| r.0 == depth && r.1 == start);
+                match running {
+                    Some(i) if state.repeats[i].2 > 1 => {
+                        state.repeats[i].2 -= 1;
+                        let left = state.repeats[i].2;
                         (
-                            format!(
-                                "{label} repeat {}: {} passes",
-                                text(n),
-                                Value::Number(times)
-                            ),
+                            format!("{label} repeat: another pass, {left} left with this one"),
                             To::On,
                         )
                     }
-                    false => (
-                        format!(
-                            "{label} repeat {}: no pass; on after {label} endrepeat (line {})",
-                            text(n),
-                            end.line
-                        ),
-                        To::At(end.after),
-                    ),
+                    Some(i) => {
+                        state.repeats.remove(i);
+                        (
+                            format!(
+                                "{label} repeat: the passes are done; on after {label} endrepeat (line {})",
+                                end.line
+                            ),
+                            To::At(end.after),
+                        )
+                    }
+                    None => {
+                        // rs274 rounds the count half to even (2.5 runs twice).
+                        let times = self.number(n)?.round_ties_even();
+                        match times >= 1.0 {
+                            true => {
+                                state.repeats.push((
+                                    depth,
+                                    start,
+                                    times.min(u64::MAX as f64) as u64,
+                                ));
+                                (
+                                    format!(
+                                        "{label} repeat {}: {} passes",
+                                        text(n),
+                                        Value::Number(times)
+                                    ),
+                                    To::On,
+                                )
+                            }
+                            false => (
+                                format!(
+                                    "{label} repeat {}: no pass; on after {label} endrepeat (line {})",
+                                    text(n),
+                                    end.line
+                                ),
+                                To::At(end.after),
+                            ),
+                        }
+                    }
                 }
             }
             (OOp::EndRepeat, _) => {
                 let head = link.ok_or_else(|| no_opener(statement, label, "repeat"))?;
-                match state.repeats.last_mut() {
-                    Some(r) if r.0 == depth && Some(r.1) == e.link && r.2 > 1 => {
-                        r.2 -= 1;
-                        (
-                            format!(
-                                "{label} endrepeat: back to {label} repeat (line {}), {} passes left",
-                                head.line, r.2
-                            ),
-                            To::At(head.after),
-                        )
-                    }
-                    _ => {
-                        state
-                            .repeats
-                            .retain(|r| !(r.0 == depth && Some(r.1) == e.link));
-                        (format!("{label} endrepeat: the last pass ends"), To::On)
-                    }
-                }
+                (
+                    format!(
+                        "{label} endrepeat: back to {label} repeat (line {})",
+                        head.line
+                    ),
+                    To::At(head.at),
+                )
             }
             (OOp::Break | OOp::Continue, _) => {
                 let Some(head) = link else {
@@ -626,7 +647,7 @@ impl<'t> Runner<'t> {
 
     /// A call: the caller's #1–#30 and named locals kept, the sub's set
     /// (its arguments, 0 for the others), one level deeper.
-    fn enter_call(&mut self, label: &OLabel, values: &[Value; PARAMS]) -> Frame {
+    fn enter_call(&mut self, values: &[Value; PARAMS]) -> Frame {
         let mut saved = Box::new([Value::Vacant; PARAMS]);
         for (k, v) in saved.iter_mut().enumerate() {
             *v = self.machine.variables.get(k as u32 + 1).unwrap_or_default();
@@ -636,7 +657,6 @@ impl<'t> Runner<'t> {
         let named = std::mem::take(&mut m.named.locals);
         m.level = m.level.saturating_add(1);
         Frame {
-            label: label.clone(),
             back: self.parser.resume_point(),
             saved,
             named,
@@ -660,7 +680,6 @@ impl<'t> Runner<'t> {
             f64::from(u8::from(value.is_some())),
         );
         globals.insert("_value".into(), value.unwrap_or(0.0));
-        let _ = &frame.label;
     }
 }
 

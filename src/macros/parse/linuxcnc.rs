@@ -145,10 +145,16 @@ impl Parser<'_> {
         let first = self.l_product()?;
         let mut rest = Vec::new();
         loop {
+            // Blanks before no operator stay unread: a chain ends at its
+            // last operand.
+            let save = self.pos;
             let op = match self.peek() {
                 Some(b'+') => BinOp::Add,
                 Some(b'-') => BinOp::Sub,
-                _ => break,
+                _ => {
+                    self.pos = save;
+                    break;
+                }
             };
             self.pos += 1;
             rest.push((op, self.l_product()?));
@@ -161,11 +167,15 @@ impl Parser<'_> {
         let first = self.l_power()?;
         let mut rest = Vec::new();
         loop {
+            let save = self.pos;
             let op = match self.peek() {
                 Some(b'*') if self.bytes.get(self.pos + 1) != Some(&b'*') => (BinOp::Mul, 1),
                 Some(b'/') => (BinOp::Div, 1),
                 Some(c) if c.is_ascii_alphabetic() && self.word() == "MOD" => (BinOp::Mod, 3),
-                _ => break,
+                _ => {
+                    self.pos = save;
+                    break;
+                }
             };
             self.pos += op.1;
             rest.push((op.0, self.l_power()?));
@@ -178,7 +188,12 @@ impl Parser<'_> {
     fn l_power(&mut self) -> Result<Expr, Diagnostic> {
         let first = self.unary(false)?;
         let mut rest = Vec::new();
-        while self.peek() == Some(b'*') && self.bytes.get(self.pos + 1) == Some(&b'*') {
+        loop {
+            let save = self.pos;
+            if !(self.peek() == Some(b'*') && self.bytes.get(self.pos + 1) == Some(&b'*')) {
+                self.pos = save;
+                break;
+            }
             self.pos += 2;
             rest.push((BinOp::Pow, self.unary(false)?));
         }
@@ -188,7 +203,7 @@ impl Parser<'_> {
     /// A LinuxCNC o-word line (behaviour 22.7).
     pub(super) fn oword(&mut self) -> Result<Statement, Diagnostic> {
         let start = self.pos;
-        self.pos += 1; // the `o`
+        self.pos = (self.pos + 1).min(self.end); // the `o`
         self.blanks();
         let label = if self.bytes.get(self.pos) == Some(&b'<') {
             OLabel::Name(self.name()?)
