@@ -13,6 +13,16 @@ mod linuxcnc;
 /// levels, alarm PS0118 past them).
 pub const MAX_NESTING: u32 = 5;
 
+/// The comparison operators (behaviour 20.5; LinuxCNC's the same words).
+const COMPARISONS: [(&str, CmpOp); 6] = [
+    ("EQ", CmpOp::Eq),
+    ("NE", CmpOp::Ne),
+    ("GT", CmpOp::Gt),
+    ("LT", CmpOp::Lt),
+    ("GE", CmpOp::Ge),
+    ("LE", CmpOp::Le),
+];
+
 /// Longest constant read, in characters (a control reads a fixed number of
 /// digits; this only keeps a constant a number).
 const MAX_CONSTANT: usize = 40;
@@ -549,15 +559,7 @@ impl<'a> Parser<'a> {
         let left = self.sum()?;
         let save = self.pos;
         let run = self.word();
-        const WORDS: [(&str, CmpOp); 6] = [
-            ("EQ", CmpOp::Eq),
-            ("NE", CmpOp::Ne),
-            ("GT", CmpOp::Gt),
-            ("LT", CmpOp::Lt),
-            ("GE", CmpOp::Ge),
-            ("LE", CmpOp::Le),
-        ];
-        let Some(&(_, op)) = WORDS.iter().find(|(k, _)| glued(&run, k)) else {
+        let Some(&(_, op)) = COMPARISONS.iter().find(|(k, _)| glued(&run, k)) else {
             self.pos = save;
             return Ok(left);
         };

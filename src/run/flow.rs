@@ -205,6 +205,14 @@ fn keyword(condition: bool, label: u8) -> String {
 }
 
 impl<'t> Runner<'t> {
+    /// Where the program being read starts (the text's start for the main
+    /// program): the key of its structures.
+    pub(super) fn program_start(&self) -> Resume {
+        self.sequences
+            .current
+            .unwrap_or_else(|| self.sequences.main_start())
+    }
+
     /// The block just run is a macro statement that jumps or loops: the
     /// run reads on where it leads, or stops at its alarm (the block then
     /// counts as not run, as a block whose alarm comes before it runs).
@@ -236,10 +244,7 @@ impl<'t> Runner<'t> {
         };
         let (start, line) = (self.block.span.start, self.block.span.line);
         let depth = self.sequences.depth;
-        let program = self
-            .sequences
-            .current
-            .unwrap_or_else(|| self.sequences.main_start());
+        let program = self.program_start();
         let key = program.offset();
         let loops = self.loops.get_or_insert_with(Box::default);
         // The loops of programs returned from are over (behaviour 20.15).

@@ -268,10 +268,7 @@ impl<'t> Runner<'t> {
         };
         let text = |e: &Expr| m.text_of(e).into_owned();
         let start = self.block.span.start;
-        let program = self
-            .sequences
-            .current
-            .unwrap_or_else(|| self.sequences.main_start());
+        let program = self.program_start();
         let key = program.offset();
         let loops = self.loops.get_or_insert_with(Box::default);
         let sequences = &self.sequences;
@@ -495,11 +492,18 @@ impl<'t> Runner<'t> {
                     ),
                 }
             }
-            (OOp::EndWhile, _) => {
-                let head = link.ok_or_else(|| no_opener(statement, label, "while"))?;
+            (OOp::EndWhile | OOp::EndRepeat, _) => {
+                // Back to the opening block, read again: a while tests
+                // its condition there, a repeat counts its pass.
+                let opener = match o.op {
+                    OOp::EndWhile => "while",
+                    _ => "repeat",
+                };
+                let head = link.ok_or_else(|| no_opener(statement, label, opener))?;
                 (
                     format!(
-                        "{label} endwhile: back to {label} while (line {})",
+                        "{label} {}: back to {label} {opener} (line {})",
+                        o.op.keyword(),
                         head.line
                     ),
                     To::At(head.at),
@@ -565,16 +569,6 @@ impl<'t> Runner<'t> {
                         }
                     }
                 }
-            }
-            (OOp::EndRepeat, _) => {
-                let head = link.ok_or_else(|| no_opener(statement, label, "repeat"))?;
-                (
-                    format!(
-                        "{label} endrepeat: back to {label} repeat (line {})",
-                        head.line
-                    ),
-                    To::At(head.at),
-                )
             }
             (OOp::Break | OOp::Continue, _) => {
                 let Some(head) = link else {

@@ -2,21 +2,11 @@
 //! parameters, its operators' precedence with `**` and chained
 //! comparisons, and the o-word lines.
 
-use super::{Parser, alarm, chain, letters};
+use super::{COMPARISONS, Parser, alarm, chain, letters};
 use crate::diag::Diagnostic;
 use crate::macros::ast::{
     BinOp, CmpOp, Expr, ExprKind, OLabel, OOp, OWord, Statement, StatementKind,
 };
-
-/// LinuxCNC's comparison operators.
-const COMPARISONS: [(&str, CmpOp); 6] = [
-    ("EQ", CmpOp::Eq),
-    ("NE", CmpOp::Ne),
-    ("GT", CmpOp::Gt),
-    ("LT", CmpOp::Lt),
-    ("GE", CmpOp::Ge),
-    ("LE", CmpOp::Le),
-];
 
 /// LinuxCNC's o-word keywords.
 const O_KEYWORDS: [&str; 15] = [
