@@ -19,6 +19,13 @@ const { withPage } = useBrowser();
 const MAIN = ['O1000', 'G90 G00 X0 Y0 Z0', 'M98 P1002 L2', 'M30'].join('\n');
 const STEP = ['O1002', 'G91 G01 X10. F100', 'M99'].join('\n');
 
+// Files are read asynchronously: wait for the library's count of finished
+// readings, then for the run their programs started.
+async function filesRead(page, n) {
+  await page.waitForFunction((k) => Number(document.getElementById('library')?.dataset.reads) >= k, n);
+  await waitForRun(page);
+}
+
 describe('library', () => {
   test('a program pasted into the library is called, stepped into and kept', async () => {
     await withPage(async (page) => {
@@ -59,7 +66,7 @@ describe('library', () => {
         { name: 'o1002.nc', mimeType: 'text/plain', buffer: Buffer.from(`%\n${STEP}\n%\n`) },
         { name: 'notes.txt', mimeType: 'text/plain', buffer: Buffer.from('cut it twice\n') },
       ]);
-      await waitForRun(page);
+      await filesRead(page, 1);
       assert.equal(await page.locator('#library-list li').count(), 1);
       const said = await page.locator('#library-reason').textContent();
       assert.match(said, /1 program added/);
@@ -69,7 +76,7 @@ describe('library', () => {
       writeFileSync(join(dir, 'macro.nc'), MACRO);
       writeFileSync(join(dir, 'step.nc'), STEP);
       await page.locator('#library-folder').setInputFiles(dir);
-      await waitForRun(page);
+      await filesRead(page, 2);
       assert.equal(await page.locator('#library-list li').count(), 2);
       assert.match(await page.locator('#library-reason').textContent(), /O1002 is in the library already/);
       // O1002 twice (X 0 + 10 + 10 = 20), then O3001 with A3.: Y 0 + 3 = 3;
@@ -85,7 +92,7 @@ describe('library', () => {
         return t;
       }, MACRO);
       await page.dispatchEvent('#library', 'drop', { dataTransfer: drop });
-      await waitForRun(page);
+      await filesRead(page, 3);
       assert.equal(await page.locator('#library-list li').count(), 2);
       assert.match(await page.locator('#library-list').textContent(), /O3001 — G91 G01 Y#1/);
       const saved = JSON.stringify(await savedWork(page));

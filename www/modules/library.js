@@ -98,6 +98,9 @@ export function librarySection({ getSetup, change }) {
     }, 'settings');
     paste.value = '';
   });
+  // Reading files is asynchronous: each finished reading is counted on the
+  // section, so a test (or a script) can tell when its files were read.
+  let reads = 0;
   const fromFiles = async (files) => {
     const { add: programs, said } = await programsOfFiles([...files], getSetup()?.programs);
     const n = programs.length;
@@ -109,6 +112,8 @@ export function librarySection({ getSetup, change }) {
         for (const [k, text] of programs) if (!(k in s.programs)) s.programs[k] = text;
       }, 'settings');
     }
+    reads += 1;
+    box.dataset.reads = String(reads);
   };
   const picker = (id, label, folder) => {
     const input = document.createElement('input');
