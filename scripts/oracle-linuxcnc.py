@@ -52,15 +52,11 @@ in inches (its machine units, an INI file does not change them): `Z1.0` in
 the tool table is a 25.4 mm length offset in a G21 program, `5221 10.0` a
 G54 X of 254 mm.  The script converts them for offsetlab (below).
 
-For offsetlab the script writes a setup document (units mm) when there is a
-tool table or a var file: each tool `Tn` becomes register n in offset
-memory C, `h` = its Z (G43 Hn) and `d` = half its D (G41 Dn reads the
-diameter's radius), and the tool list entry (its diameter, and its length
-when not negative).  offsetlab reads register values in the unit in effect,
-without converting them (behaviour 2.6), where LinuxCNC converts the tool
-table from machine units; so the registers are written in the units the
-program is in when rs274 first applies an offset (G20: inches, else mm),
-and a units change under an active length offset is noted with -v.  The
+offsetlab gets the same tool table file rs274 gets (`--tool-table TBL
+--tool-table-units inch`, the empty one too, so that a T it does not hold
+is refused on both sides), and for a var file a setup document (units mm)
+the script writes. The
+The
 var file's G54-G59 origins (#5221.. in steps of 20) become `work_offsets`,
 the G28 position #5161-#5163 `reference`, the G30 position #5181-#5183
 `second_reference`, and `start` is machine zero in G54 coordinates
@@ -208,7 +204,6 @@ def parse_rs274(stdout):
     tlo, g5x, g92 = zero(), zero(), zero()
     machine = zero()  # LinuxCNC starts at machine 0 0 0
     notes = []
-    tool_units = None  # the units when the program first applies a tool offset
 
     def canonical():
         # the interpreter's current point: machine - G5x - G92 - TLO
@@ -226,18 +221,12 @@ def parse_rs274(stdout):
         if name == "USE_LENGTH_UNITS":
             new = "inch" if "INCH" in args else "mm"
             if new != units:
-                if tool_units and any(tlo[a] for a in AXES):
-                    notes.append("units change under a tool length offset: offsetlab reads "
-                                 "registers in the unit in effect, LinuxCNC converts")
                 f = 1 / INCH if new == "inch" else INCH
                 for d in (tlo, g5x, g92, machine):
                     for a in AXES:
                         d[a] *= f
                 units = new
             continue
-        if name in ("USE_TOOL_LENGTH_OFFSET", "START_CUTTER_RADIUS_COMPENSATION",
-                    "SET_CUTTER_RADIUS_COMPENSATION") and tool_units is None:
-            tool_units = units
         if name == "USE_TOOL_LENGTH_OFFSET" and len(n) >= 3:
             tlo = {"x": n[0], "y": n[1], "z": n[2]}
             continue
@@ -283,7 +272,7 @@ def parse_rs274(stdout):
             end = start  # RIGID_TAP goes to its depth (compared) and comes back
         machine = {a: end[a] + g5x[a] + g92[a] + tlo[a] for a in AXES}
         moves.append(mv)
-    return moves, notes, tool_units
+    return moves, notes
 
 
 def sweep(start, end, centre, first, second, rot):
@@ -329,22 +318,6 @@ def where(err):
 # ------------------------------------------------------------- offsetlab side
 
 
-def read_tool_table(path):
-    tools = {}
-    for raw in open(path, encoding="utf-8", errors="replace"):
-        body = raw.split(";", 1)[0].strip()
-        if not body:
-            continue
-        words = {}
-        for w in body.split():
-            m = re.match(r"^([A-Za-z])([-+]?[\d.]+)$", w)
-            if m:
-                words[m.group(1).upper()] = float(m.group(2))
-        if "T" in words:
-            tools[int(words["T"])] = words
-    return tools
-
-
 def read_var(path):
     params = {}
     for raw in open(path, encoding="utf-8", errors="replace"):
@@ -357,38 +330,9 @@ def read_var(path):
     return params
 
 
-def setup_document(tbl, var, tool_units=None):
-    """offsetlab's setup (mm) for rs274's tool table and var file (inches).
-
-    The registers get the tool table in `tool_units`, the units the program
-    is in when it first applies an offset (offsetlab reads register values in
-    the unit in effect, without converting them: behaviour 2.6)."""
+def setup_document(var):
+    """offsetlab's setup (mm) for rs274's var file (inches)."""
     doc = {"version": 1, "machine": "mill", "units": "mm"}
-    if tbl:
-        scale = 1.0 if tool_units == "inch" else INCH
-        tools = read_tool_table(tbl)
-        offsets, listed = {}, {}
-        for n, w in sorted(tools.items()):
-            if n < 1 or n > 99:
-                raise SetupError("tool T%d: only T1-T99 are passed to offsetlab" % n)
-            for a in ("X", "Y", "A", "B", "C", "U", "V", "W"):
-                if w.get(a, 0.0) != 0.0:
-                    raise SetupError("tool T%d: %s offset not passed to offsetlab" % (n, a))
-            z = round(w.get("Z", 0.0) * scale, 6)
-            d = round(w.get("D", 0.0) * scale, 6)
-            offsets["%02d" % n] = {"h": z, "d": round(d / 2, 6)}
-            entry = {}
-            dmm, zmm = w.get("D", 0.0) * INCH, w.get("Z", 0.0) * INCH
-            if 0 < dmm <= 999.999:
-                entry["diameter"] = round(dmm, 6)
-            if 0 <= zmm <= 999.999:
-                entry["length"] = round(zmm, 6)
-            if entry:
-                listed["%02d" % n] = entry
-        doc["settings"] = {"offset_memory": "C"}
-        doc["offsets"] = offsets
-        if listed:
-            doc["tools"] = listed
     if var:
         p = read_var(var)
         for k, v in sorted(p.items()):
@@ -409,10 +353,12 @@ def setup_document(tbl, var, tool_units=None):
     return doc
 
 
-def run_offsetlab(offsetlab, control, prog, setup):
+def run_offsetlab(offsetlab, control, prog, setup, tbl):
     cmd = [offsetlab, "run", "--format", "json", "--control", control]
     if setup:
         cmd += ["--setup", setup]
+    if tbl:
+        cmd += ["--tool-table", tbl, "--tool-table-units", "inch"]
     cmd.append(os.path.abspath(prog))
     try:
         p = subprocess.run(cmd, stdin=subprocess.DEVNULL, capture_output=True,
@@ -555,16 +501,17 @@ def check(prog, args):
     name = os.path.relpath(prog)
     refused = os.path.basename(os.path.dirname(os.path.abspath(prog))) == "refused"
     tbl, var, own_setup = find_support(prog)
+    tbl = tbl or args.tool_table
     with open(prog, encoding="utf-8", errors="replace") as f:
         prog_lines = f.read().splitlines()
     with tempfile.TemporaryDirectory(prefix="oracle-linuxcnc-") as tmp:
         out, err, rc = run_rs274(args.rs274, prog, tbl, var, tmp)
-        rs_moves, notes, tool_units = parse_rs274(out)
+        rs_moves, notes = parse_rs274(out)
         rs_err = rs274_error(err, rc, prog_lines)
         setup = own_setup
-        if setup is None and (tbl or var):
+        if setup is None and var:
             try:
-                doc = setup_document(tbl, var, tool_units)
+                doc = setup_document(var)
             except SetupError as e:
                 return False, "FAIL %s: oracle cannot set up offsetlab: %s" % (name, e)
             setup = os.path.join(tmp, "setup.json")
@@ -572,7 +519,8 @@ def check(prog, args):
                 json.dump(doc, f, indent=1)
             if args.verbose:
                 notes.append("setup written: " + json.dumps(doc))
-        ol_doc, ol_fatal = run_offsetlab(args.offsetlab, args.control, prog, setup)
+        ol_doc, ol_fatal = run_offsetlab(args.offsetlab, args.control, prog, setup,
+                                         os.path.join(tmp, "tool.tbl"))
     if args.verbose:
         print("== %s  (tool table %s, var file %s, setup %s)"
               % (name, tbl, var, own_setup or ("written" if setup else "none")))
@@ -647,6 +595,10 @@ def main():
     ap.add_argument("--ignore-zero-length", action="store_true",
                     help="leave out straight moves to the point they start from, on both "
                          "sides (default: compared, and reported as differences)")
+    ap.add_argument("--tool-table", metavar="TBL",
+                    help="the tool table (inches) for a program with none of its own "
+                         "(default: an empty table); e.g. scripts/realworld-tools.tbl "
+                         "for programs written for a LinuxCNC sim config")
     ap.add_argument("-v", "--verbose", action="store_true",
                     help="print both move lists and the diagnostics")
     ap.add_argument("paths", nargs="+", metavar="PROG_OR_DIR")

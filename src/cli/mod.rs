@@ -4,6 +4,7 @@
 mod library;
 mod stream;
 mod table;
+mod tooltable;
 
 use std::io::{self, BufWriter, Read, Write};
 use std::path::PathBuf;
@@ -96,6 +97,15 @@ struct Common {
     /// the registers.
     #[arg(long = "tool", value_name = "SPEC")]
     tools: Vec<String>,
+    /// LinuxCNC's tool table file (`T1 P1 Z0.5 D0.25 ;note` a line), for
+    /// the linuxcnc profile: T must name one of its tools, G43 reads its
+    /// offsets, G41/G42 half its diameter (behaviour 22.9).
+    #[arg(long = "tool-table", value_name = "FILE")]
+    tool_table: Option<PathBuf>,
+    /// The units of the tool table's lengths, a LinuxCNC machine's
+    /// (its INI's LINEAR_UNITS); left out, the setup's.
+    #[arg(long = "tool-table-units", value_enum, requires = "tool_table")]
+    tool_table_units: Option<UnitsArg>,
     /// Setup document (JSON; see the README). A document that carries a
     /// program (as `link --decode` prints) may stand in for PROGRAM.
     #[arg(long, value_name = "FILE")]
@@ -115,6 +125,12 @@ struct Common {
 enum Machine {
     Mill,
     Lathe,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum UnitsArg {
+    Mm,
+    Inch,
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -336,6 +352,14 @@ fn load_setup(common: &Common) -> Result<(String, Document), Fatal> {
     }
     for path in &common.programs {
         library::library_into(path, &mut doc.setup.programs)?;
+    }
+    if let Some(path) = &common.tool_table {
+        let mut table = tooltable::read_tool_table(path)?;
+        table.units = common.tool_table_units.map(|u| match u {
+            UnitsArg::Mm => offsetlab::Units::Mm,
+            UnitsArg::Inch => offsetlab::Units::Inch,
+        });
+        doc.setup.tool_table = Some(table);
     }
     let doc = doc.validated().map_err(|e| Fatal(e.to_string()))?;
     let name = match &common.program {

@@ -141,6 +141,7 @@ impl Machine {
         match (l.map(Word::int), lathe) {
             (Some(2), _) => self.g10_work(b, false, out),
             (Some(20), _) => self.g10_work(b, true, out),
+            (Some(l @ (1 | 10 | 11)), false) if self.has_tool_table() => self.g10_table(b, l, out),
             (Some(1 | 10..=13), false) => self.g10_mill(b, l.map_or(0, Word::int), out),
             (None, true) => self.g10_lathe(b, None, out),
             (Some(10), true) => self.g10_lathe(b, Some(true), out),

@@ -88,7 +88,10 @@ impl Machine {
         // (Haas "T1 M06", RS274/NGC M6), so it is read before the M codes
         // (behaviour 2.18).
         if let Some(t) = b.get(Address::T) {
-            self.state.next_tool = t.int();
+            self.state.next_tool = match self.has_tool_table() {
+                true => self.table_t_word(t)?,
+                false => t.int(),
+            };
         }
         self.common_words(b, out)?;
         self.mode_codes(b, out, before)?;
@@ -96,7 +99,14 @@ impl Machine {
         if self.state.modal.feed_mode == FeedMode::InverseTime {
             self.check_inverse_time(b)?;
         }
-        if let Some(d) = b.get(Address::D) {
+        let linuxcnc = self.setup.settings.control == crate::setup::Control::Linuxcnc;
+        if linuxcnc {
+            self.linuxcnc_d(b)?;
+        }
+        if let Some(d) = b
+            .get(Address::D)
+            .filter(|_| self.state.table_radius.is_none())
+        {
             let n = d.int() as u16;
             let value = self.mm(self.setup.d_value(n));
             self.state.position.select(n, value);
@@ -183,7 +193,7 @@ impl Machine {
             Some(NonModal::Repetitive(_) | NonModal::DataSetting) => {}
         }
         let old_length = self.length_words(b, out)?;
-        if centre_words {
+        if centre_words || (linuxcnc && self.axes_are_offsets(b)) {
             // The axis words were G51's, G68's or G51.1's: no axis moves
             // by them (behaviour 13.8–13.10).
             return self.length_only_motion(out, old_length);
@@ -234,6 +244,9 @@ impl Machine {
         b: &Block,
         out: &mut Out,
     ) -> Result<LengthState, Diagnostic> {
+        if self.setup.settings.control == crate::setup::Control::Linuxcnc {
+            return self.linuxcnc_length(b);
+        }
         let code = b.codes().length();
         let h = b.get(Address::H);
         let old = self.state.length;
@@ -651,6 +664,12 @@ impl Machine {
 
     #[inline(never)]
     fn write_length_note(&self, old: LengthState, z_amount: Option<f64>, out: &mut Out) {
+        if self.setup.settings.control == crate::setup::Control::Linuxcnc {
+            if self.state.length.changed_since(&old) {
+                self.linuxcnc_length_note(&old, out);
+            }
+            return;
+        }
         let z = ZAfter {
             incremental: self.state.modal.distance == Distance::Incremental,
             programmed: self.state.programmed[2],

@@ -32,7 +32,9 @@ mod reference;
 pub mod state;
 mod sysvars;
 mod sysvars_state;
+mod tool_table;
 mod transform;
+mod unmodelled;
 mod watch;
 mod words;
 
@@ -225,6 +227,7 @@ impl Machine {
             tool: 0,
             next_tool: 0,
             length: LengthState::default(),
+            table_radius: None,
             position: PositionState::default(),
             cutter: CutterState::default(),
             lathe: LatheState::default(),
@@ -440,88 +443,6 @@ impl Machine {
         let end =
             block.holds(Address::M) && block.mcodes(self.setup.machine).any(|m| m.ends_program());
         Ok(if end { Flow::End } else { Flow::Continue })
-    }
-
-    /// Refuses the words the parser reads but no rule of the machine acts on
-    /// yet (behaviour 1.7): rotary axes A/B/C, E, and the chamfer and corner
-    /// words `,C`/`,R` — an error at the word, never a word passed over.
-    /// A code that models one of them takes it out of this list for the
-    /// blocks it handles.
-    fn refuse_unmodelled(&self, b: &Block) -> Result<(), Diagnostic> {
-        const UNMODELLED: [Address; 6] = [
-            Address::A,
-            Address::B,
-            Address::C,
-            Address::E,
-            Address::CommaC,
-            Address::CommaR,
-        ];
-        if !b.holds_any(&UNMODELLED) {
-            return Ok(());
-        }
-        let lathe = self.setup.machine == MachineKind::Lathe;
-        // The mill cuts the corner words (`corner.rs`) and reports its
-        // rotary axes, not drawn (behaviour 13.14); section 14 models G187's
-        // E and the rotary word of G07.1 (`models_word`); G76's A is its tool
-        // angle (behaviour 15.12).
-        let g76 = b.codes().non_modal()
-            == Some(NonModal::Repetitive(
-                crate::syntax::codes::Repetitive::Threading,
-            ));
-        // The lathe's `,C`/`,R` are read where `corner.rs` runs the block
-        // (behaviour 2.35), not in a cycle's contour or its compensation.
-        let modelled = |a: Address| {
-            (g76 && a == Address::A)
-                || (matches!(a, Address::CommaC | Address::CommaR)
-                    && (!lathe || self.corner_words_read))
-                || (!lathe && matches!(a, Address::A | Address::B | Address::C))
-        };
-        let Some(w) = b.words.iter().find(|w| {
-            UNMODELLED.contains(&w.address)
-                && !modelled(w.address)
-                && !self.models_word(b, w.address)
-        }) else {
-            return Ok(());
-        };
-        let letter = w.address.letter();
-        let why = match w.address {
-            Address::C if lathe => "the C axis and the chamfer word C are not modelled yet",
-            Address::A | Address::B | Address::C => "rotary axes are not modelled yet",
-            Address::E => "thread lead is not modelled yet (Haas G187 and G47 read E)",
-            _ => {
-                "a chamfer or corner rounding here (a G70–G73 contour, a cycle, tool nose radius compensation) is not modelled yet: the lathe cuts it between two feed moves (behaviour 2.35)"
-            }
-        };
-        Err(self.error("unsupported-word", w.span, format!("{letter}: {why}")))
-    }
-
-    /// True for a word of [`Machine::refuse_unmodelled`]'s list that this
-    /// block models: G187's E (behaviour 14.6), the rotary word of G07.1 and
-    /// of the blocks in its mode (behaviour 14.10).
-    fn models_word(&self, b: &Block, a: Address) -> bool {
-        use crate::syntax::codes::NonModal;
-        let code = b.codes().non_modal();
-        match a {
-            Address::E => matches!(code, Some(NonModal::Smoothness | NonModal::Engraving)),
-            // The lathe G10's C adds to the nose radius (behaviour 17.6).
-            Address::C
-                if code == Some(NonModal::DataSetting)
-                    && self.setup.machine == MachineKind::Lathe =>
-            {
-                true
-            }
-            Address::A | Address::B | Address::C => {
-                let rotary: &[Address] = match self.setup.machine {
-                    MachineKind::Mill => &[Address::A, Address::B, Address::C],
-                    MachineKind::Lathe => &[Address::C],
-                };
-                (code == Some(NonModal::Cylindrical) && rotary.contains(&a))
-                    || self.state.modal.cylinder.is_some_and(|(axis, _)| axis == a)
-                    // The hypothetical axis of polar interpolation (behaviour 14.15).
-                    || (self.in_polar_mode(b) && a == self.polar_axis())
-            }
-            _ => false,
-        }
     }
 
     // ----- small helpers -------------------------------------------------
@@ -777,6 +698,12 @@ impl Machine {
                 }
                 MCode::CoolantMist | MCode::CoolantFlood => EventKind::CoolantOn { m: m.number() },
                 MCode::CoolantOff => EventKind::CoolantOff,
+                MCode::Other(61)
+                    if self.setup.settings.control == crate::setup::Control::Linuxcnc =>
+                {
+                    self.m61(b, b.span, out)?;
+                    EventKind::Auxiliary { m: 61 }
+                }
                 // The calls never get here: M98/M97/M99 are taken out of
                 // their block (behaviour 19.3), M198 is refused (2.18).
                 MCode::LocalSubprogramCall

@@ -283,6 +283,9 @@ pub struct BlockState {
     pub next_tool: u32,
     /// Tool length offset (mill).
     pub length: LengthState,
+    /// LinuxCNC: the radius (mm) G41/G42 took from the tool table, or
+    /// G41.1/G42.1 from D (behaviour 22.9); None reads register D.
+    pub table_radius: Option<f64>,
     /// Tool position offset (mill).
     pub position: PositionState,
     /// Cutter radius compensation (mill).

@@ -264,6 +264,13 @@ impl Machine {
         if c.work().is_some() {
             add(&[P]);
         }
+        // LinuxCNC's M61 reads Q, the tool now in the spindle (22.9).
+        if b.holds(M)
+            && self.setup.settings.control == crate::setup::Control::Linuxcnc
+            && b.mcodes(self.setup.machine).any(|m| m.number() == 61)
+        {
+            add(&[Q]);
+        }
         if c.scaling() == Some(ScalingMode::Start) {
             add(&[P, I, J, K]);
         }

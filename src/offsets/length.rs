@@ -33,7 +33,7 @@ pub struct LengthState {
 /// G49 0 (behaviour 3.1).
 pub fn sign(code: LengthOffset) -> i8 {
     match code {
-        LengthOffset::Add => 1,
+        LengthOffset::Add | LengthOffset::Dynamic | LengthOffset::AddTool => 1,
         LengthOffset::Subtract => -1,
         LengthOffset::Cancel => 0,
     }

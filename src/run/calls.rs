@@ -421,6 +421,25 @@ impl<'t> Runner<'t> {
         Some(Step::Passed)
     }
 
+    /// The main program's text ended: under linuxcnc a program that stops
+    /// there without M2/M30 or a closing `%` is refused at its last block
+    /// (rs274: "File ended with no percent sign or program end", behaviour
+    /// 22.9); the Fanuc family stops at the end of the text.
+    pub(super) fn text_ends(&mut self) -> Option<Step> {
+        if self.stopped
+            || self.machine.setup().settings.control != crate::setup::Control::Linuxcnc
+            || self.parser.tape_ended()
+        {
+            return None;
+        }
+        self.stopped = true;
+        Some(Step::Stopped(Some(Diagnostic::error(
+            "no-program-end",
+            self.block.span,
+            "the program ends without M2, M30 or a closing %: LinuxCNC refuses it (\"File ended with no percent sign or program end\"); end it with M2",
+        ))))
+    }
+
     /// Where the block just run ran among the calls (its report's): the
     /// place before its jump for a call or return.
     pub(super) fn place_of(&mut self, flow: Flow) -> Option<Box<Place>> {

@@ -278,7 +278,7 @@ impl<'t> Runner<'t> {
     fn step(&mut self) -> Option<Step> {
         if !self.parser.next_into(&mut self.block) {
             // The text's end, or a subprogram's (behaviour 19).
-            return self.program_ends();
+            return self.program_ends().or_else(|| self.text_ends());
         }
         if self.keep_going {
             // Out of line (behaviour 2.24): off, one test per block (the

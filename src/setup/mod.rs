@@ -17,6 +17,7 @@ pub mod programs;
 mod registers;
 mod settings;
 mod specs;
+mod tool_table;
 mod tools;
 
 pub use choices::*;
@@ -24,6 +25,7 @@ pub use positions::{MachinePositions, PositionsInEffect};
 use registers::register_map;
 pub use registers::{LatheRegister, MAX_TIP, MillPart, MillRegister};
 pub use settings::*;
+pub use tool_table::{MAX_TABLE_TOOL, OFFSET_AXES, TableProblem, TableTool, ToolTable};
 pub use tools::{MAX_TOOL, Tool};
 
 /// The only document version this build writes; every version up to it reads.
@@ -293,6 +295,10 @@ pub struct Setup {
     /// it (behaviour 13.16); compensation reads the registers, not this.
     #[serde(with = "register_map", skip_serializing_if = "BTreeMap::is_empty")]
     pub tools: BTreeMap<u16, Tool>,
+    /// LinuxCNC's tool table (behaviour 22.9): under `linuxcnc`, what T,
+    /// G43 and G41/G42 read; left out, they read the registers.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tool_table: Option<ToolTable>,
 }
 
 impl Default for Setup {
@@ -314,6 +320,7 @@ impl Default for Setup {
             lathe_offsets: BTreeMap::new(),
             programs: BTreeMap::new(),
             tools: BTreeMap::new(),
+            tool_table: None,
         }
     }
 }
@@ -458,6 +465,7 @@ impl Setup {
             }
         }
         self.validate_tools(&mut out);
+        self.validate_tool_table(&mut out);
         let max = self.units.max_dimension();
         let mut check_pos = |what: &str, p: Position| {
             for (axis, v) in [("x", p.x), ("y", p.y), ("z", p.z)] {

@@ -116,7 +116,9 @@ impl ParseOptions {
     /// The table G numbers are read with.
     #[inline(always)]
     pub fn table(&self) -> CodeTable {
-        CodeTable::new(self.machine, self.system).with_engraving(self.g47_engraving)
+        CodeTable::new(self.machine, self.system)
+            .with_engraving(self.g47_engraving)
+            .with_linuxcnc(self.linuxcnc)
     }
 }
 
@@ -507,6 +509,11 @@ impl<'a> Blocks<'a> {
     /// Byte offset of the next unread character.
     pub fn offset(&self) -> usize {
         self.pos
+    }
+
+    /// True once a closing `%` ended the tape (behaviour 1.3).
+    pub fn tape_ended(&self) -> bool {
+        self.tape == Tape::Ended
     }
 
     /// Keeps a diagnostic unless [`MAX_DIAGNOSTICS`] are kept already (then

@@ -125,6 +125,9 @@ impl Machine {
         if self.nose_lathe() {
             return self.nose_register().0;
         }
+        if let Some(r) = self.state.table_radius {
+            return r;
+        }
         self.mm(self.setup.mill_value(self.state.position.d))
     }
 

@@ -175,6 +175,10 @@ pub enum LengthOffset {
     Subtract,
     /// G49: cancel.
     Cancel,
+    /// G43.1 (LinuxCNC): the offset the block's Z gives.
+    Dynamic,
+    /// G43.2 (LinuxCNC): another tool's offset, or the Z given, added.
+    AddTool,
 }
 
 impl LengthOffset {
@@ -184,6 +188,8 @@ impl LengthOffset {
             LengthOffset::Add => "G43",
             LengthOffset::Subtract => "G44",
             LengthOffset::Cancel => "G49",
+            LengthOffset::Dynamic => "G43.1",
+            LengthOffset::AddTool => "G43.2",
         }
     }
 }

@@ -153,6 +153,9 @@ pub enum CodeTable {
     Mill,
     /// The mill, G47 text engraving (Haas; setting g47, behaviour 7.60).
     MillEngraving,
+    /// The mill under LinuxCNC: its G41.1/G42.1, G43.1 and G43.2 besides
+    /// the Fanuc family's codes (behaviour 22.9).
+    MillLinuxcnc,
     /// The lathe, G-code system A.
     LatheA,
     /// The lathe, G-code system B.
@@ -171,6 +174,16 @@ impl CodeTable {
     pub fn of(setup: &Setup) -> CodeTable {
         CodeTable::new(setup.machine, setup.settings.gcode_system())
             .with_engraving(setup.settings.g47() == G47Code::Engraving)
+            .with_linuxcnc(setup.settings.control == crate::setup::Control::Linuxcnc)
+    }
+
+    /// The mill's table with LinuxCNC's own codes when `linuxcnc`.
+    #[inline(always)]
+    pub fn with_linuxcnc(self, linuxcnc: bool) -> CodeTable {
+        match self {
+            CodeTable::Mill if linuxcnc => CodeTable::MillLinuxcnc,
+            table => table,
+        }
     }
 
     /// The table with G47 as Haas text engraving when `engraving` (the
@@ -197,7 +210,9 @@ impl CodeTable {
     #[inline]
     pub fn machine(self) -> MachineKind {
         match self {
-            CodeTable::Mill | CodeTable::MillEngraving => MachineKind::Mill,
+            CodeTable::Mill | CodeTable::MillEngraving | CodeTable::MillLinuxcnc => {
+                MachineKind::Mill
+            }
             CodeTable::LatheA | CodeTable::LatheB | CodeTable::LatheC => MachineKind::Lathe,
         }
     }
@@ -206,7 +221,10 @@ impl CodeTable {
     #[inline]
     pub fn system(self) -> GCodeSystem {
         match self {
-            CodeTable::Mill | CodeTable::MillEngraving | CodeTable::LatheA => GCodeSystem::A,
+            CodeTable::Mill
+            | CodeTable::MillEngraving
+            | CodeTable::MillLinuxcnc
+            | CodeTable::LatheA => GCodeSystem::A,
             CodeTable::LatheB => GCodeSystem::B,
             CodeTable::LatheC => GCodeSystem::C,
         }
@@ -268,7 +286,7 @@ impl Code {
         use ArcDirection::{Ccw, Cw};
         use Code as C;
         if g.minor != 0 {
-            return Code::of_decimal(table.machine(), g);
+            return Code::of_decimal(table, g);
         }
         Some(match table.machine() {
             MachineKind::Mill => match g.major {
@@ -353,9 +371,19 @@ impl Code {
     /// [`Code::of`] for a code written with a decimal (`G05.1`): out of line,
     /// as nearly every G code is a whole number (the parser's dispatch).
     #[inline(never)]
-    fn of_decimal(machine: MachineKind, g: GCode) -> Option<Code> {
+    fn of_decimal(table: CodeTable, g: GCode) -> Option<Code> {
         use Code as C;
-        Some(match (machine, g.major, g.minor) {
+        if table == CodeTable::MillLinuxcnc {
+            // LinuxCNC 2.9 documentation, "G41.1, G42.1" and "G43.1", "G43.2".
+            match (g.major, g.minor) {
+                (41, 1) => return Some(C::CutterCompensation(CutterCompensation::Left)),
+                (42, 1) => return Some(C::CutterCompensation(CutterCompensation::Right)),
+                (43, 1) => return Some(C::Length(LengthOffset::Dynamic)),
+                (43, 2) => return Some(C::Length(LengthOffset::AddTool)),
+                _ => {}
+            }
+        }
+        Some(match (table.machine(), g.major, g.minor) {
             (MachineKind::Mill, 5, 1) => C::NonModal(NonModal::AiContour),
             (_, 7, 1) => C::NonModal(NonModal::Cylindrical),
             (MachineKind::Lathe, 12, 1) => C::Polar(Polar::On(PolarSpelling::Fanuc)),
