@@ -44,6 +44,8 @@ pub const PLAIN_KEYS: &[&str] = &[
     "units",
     "offset",
     "tool",
+    "tool_table",
+    "tool_table_units",
     "decimal_input",
     "block_skip",
     "length_offset_without_z",
@@ -201,6 +203,13 @@ pub fn encode_plain(doc: &Document, embed: bool) -> String {
         }
     }
     parts.extend(s.tool_specs().into_iter().map(|t| format!("tool={t}")));
+    // LinuxCNC's tool table as its file's text (behaviour 22.9).
+    if let Some(t) = &s.tool_table {
+        parts.push(format!("tool_table={}", plain_value(&t.to_file())));
+        if let Some(u) = t.units {
+            parts.push(format!("tool_table_units={}", u.as_str()));
+        }
+    }
     let st = &s.settings;
     if let Some(input) = st.decimal_input {
         parts.push(match input {
@@ -465,6 +474,28 @@ fn decode_plain(fragment: &str) -> Result<Link, LinkError> {
             }
             "offset" => offsets.push(v.to_string()),
             "tool" => tools.push(v.to_string()),
+            "tool_table" => {
+                let (table, _) = crate::setup::ToolTable::parse(v).map_err(|e| {
+                    let p = &e[0];
+                    err(
+                        "link-plain",
+                        format!(
+                            "tool_table line {} column {}: {}",
+                            p.line, p.column, p.message
+                        ),
+                    )
+                })?;
+                let units = s.tool_table.as_ref().and_then(|t| t.units);
+                s.tool_table = Some(crate::setup::ToolTable { units, ..table });
+            }
+            "tool_table_units" => {
+                let u = match v {
+                    "mm" => Units::Mm,
+                    "inch" => Units::Inch,
+                    _ => return Err(bad(key, v, "mm or inch")),
+                };
+                s.tool_table.get_or_insert_with(Default::default).units = Some(u);
+            }
             "decimal_input" => {
                 s.settings.decimal_input = match v {
                     "increment" => Some(DecimalInput::Increment),
