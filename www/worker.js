@@ -14,6 +14,7 @@
 //      step {index} · pick {x, y, tolerance} · line {line}
 //      call {id, op, ...}: op document {base, embed, forms} · decode {text, base}
 //        · read {text, base} · canonical {document} · export {format}
+//        · tool-table {text} · tool-table-file {table}
 // Out: ready (the core is loaded) · busy {task: 'run' | a call's op, gen | id}
 //      read {gen} (the file of run gen is read)
 //      result {gen, summary, diagnostics}
@@ -33,7 +34,7 @@
 // broken ("recursive use of an object"), so only a new worker is safe.
 
 import init, {
-  Session, decode_link, document_json, encode_link, encode_plain, link_limits, read_document,
+  Session, decode_link, document_json, encode_link, encode_plain, link_limits, read_document, read_tool_table, tool_table_file,
 } from './pkg/offsetlab.js';
 
 let session = null;
@@ -448,6 +449,11 @@ async function answer(message) {
     }
     case 'read':
       return read_document(message.text);
+    case 'tool-table':
+      // LinuxCNC's tool table file read by the core (behaviour 22.9).
+      return read_tool_table(message.text);
+    case 'tool-table-file':
+      return tool_table_file(message.table);
     case 'canonical':
       // The document as the codec writes it, to tell two documents apart.
       return document_json(message.document);

@@ -25,7 +25,7 @@ pub use positions::{MachinePositions, PositionsInEffect};
 use registers::register_map;
 pub use registers::{LatheRegister, MAX_TIP, MillPart, MillRegister};
 pub use settings::*;
-pub use tool_table::{MAX_TABLE_TOOL, OFFSET_AXES, TableProblem, TableTool, ToolTable};
+pub use tool_table::{MAX_TABLE_TOOL, OFFSET_AXES, TableProblem, TableRead, TableTool, ToolTable};
 pub use tools::{MAX_TOOL, Tool};
 
 /// The only document version this build writes; every version up to it reads.

@@ -78,8 +78,19 @@ pub struct ToolTable {
     pub tools: BTreeMap<u32, TableTool>,
 }
 
+/// What [`ToolTable::read`] found.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct TableRead {
+    /// The table, when the text has no error.
+    pub table: Option<ToolTable>,
+    /// Tools given twice (the first kept).
+    pub warnings: Vec<TableProblem>,
+    /// Every error, at its line and column.
+    pub errors: Vec<TableProblem>,
+}
+
 /// A problem of a tool table file, at its line and column (1-based).
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct TableProblem {
     /// The line.
     pub line: usize,
@@ -131,6 +142,23 @@ impl ToolTable {
             Ok((ToolTable { units: None, tools }, warnings))
         } else {
             Err(errors)
+        }
+    }
+
+    /// [`ToolTable::parse`] as one value for the page: the table (None
+    /// when the text has errors), its warnings and its errors.
+    pub fn read(text: &str) -> TableRead {
+        match ToolTable::parse(text) {
+            Ok((table, warnings)) => TableRead {
+                table: Some(table),
+                warnings,
+                errors: Vec::new(),
+            },
+            Err(errors) => TableRead {
+                table: None,
+                warnings: Vec::new(),
+                errors,
+            },
         }
     }
 

@@ -89,6 +89,23 @@ pub fn document_json(document: JsValue) -> Result<String, JsError> {
     Ok(read_document_value(&document)?.to_json_pretty())
 }
 
+/// Reads a LinuxCNC tool table file's text (behaviour 22.9): `{ table,
+/// warnings, errors }`, each problem `{ line, column, message }`; the
+/// table is null when the text has errors. Never throws for the text.
+#[wasm_bindgen]
+pub fn read_tool_table(text: &str) -> Result<JsValue, JsError> {
+    to_js(&crate::setup::ToolTable::read(text))
+}
+
+/// The tool table `table` (the setup's `tool_table`, an object or its JSON
+/// text) as a LinuxCNC tool table file; throws for a value of another shape.
+#[wasm_bindgen]
+pub fn tool_table_file(table: JsValue) -> Result<String, JsError> {
+    let text = json_text(&table).unwrap_or_default();
+    let table: crate::setup::ToolTable = serde_json::from_str(&text).map_err(thrown)?;
+    Ok(table.to_file())
+}
+
 /// The codec's limits: `{ long, max, default_base }` ([`documents::Limits`]).
 #[wasm_bindgen]
 pub fn link_limits() -> Result<JsValue, JsError> {

@@ -25,6 +25,15 @@ const PROGRAM = [
   'M2',
 ].join('\n');
 
+// Steps to the last block and waits for its actual position to read `want`.
+async function lastActual(page, want) {
+  await page.locator('#step-last').click();
+  await page.waitForFunction((source) => new RegExp(source).test(
+    document.querySelector('#state-panel dd[data-key="actual"]')?.textContent ?? '',
+  ), want.source);
+  assert.match(await stateText(page, 'actual'), want);
+}
+
 describe('linuxcnc', () => {
   test('the LinuxCNC profile reads ; comments, whole numbers and MSG', async () => {
     await withPage(async (page) => {
@@ -96,8 +105,39 @@ describe('linuxcnc', () => {
       assert.equal(await page.getByLabel('Control').inputValue(), 'linuxcnc');
       const summary = await page.locator('#summary').textContent();
       assert.match(summary, /0 errors/);
-      assert.match(summary, /program end at line 19/);
+      assert.match(summary, /program end at line 20/);
       await shoot(page, 'linuxcnc-example');
+    });
+  });
+
+  test('the tool table is edited as a LinuxCNC file; T, G43 read it; an error says its line', async () => {
+    await withPage(async (page) => {
+      await loadExample(page, 'linuxcnc');
+      await page.locator('#tool-table > summary').click();
+      const text = page.locator('#tool-table-text');
+      // The example's table, written out in the file format.
+      await page.waitForFunction(() => /T2 P2 Z42 D5 ;5 mm drill/.test(document.getElementById('tool-table-text')?.value));
+      assert.match(await text.inputValue(), /^T1 P1 Z50 D6 ;6 mm end mill$/m);
+      // The run ends at G0 Z20 with tool 2's 42: Z 62 on the machine.
+      await lastActual(page, /Z62\.000/);
+      // Tool 2 shorter by 2 mm: the same block ends at Z 60.
+      await text.fill('T1 P1 Z50 D6 ;6 mm end mill\nT2 P2 Z40 D5 ;5 mm drill, reground\n');
+      await page.waitForFunction(() => Number(document.getElementById('tool-table')?.dataset.reads) >= 1);
+      await waitForRun(page);
+      await lastActual(page, /Z60\.000/);
+      assert.match(await page.locator('#tool-table-reason').textContent(), /2 tools read/);
+      // Tool 2 left out of the table: T2 is refused at its word.
+      await text.fill('T1 P1 Z50 D6\n');
+      await page.waitForFunction(() => Number(document.getElementById('tool-table')?.dataset.reads) >= 2);
+      await waitForRun(page);
+      assert.match(await page.locator('#diagnostics').textContent(), /tool-not-in-table[\s\S]*tool 2 is not in the tool table/);
+      // A line the format does not read: said at its line and column, the
+      // last table read kept.
+      await text.fill('T1 P1 Z50 D6\nT2 P2 Zq\n');
+      await page.waitForFunction(() => Number(document.getElementById('tool-table')?.dataset.reads) >= 3);
+      assert.match(await page.locator('#tool-table-reason').textContent(), /line 2, column 7: Zq: Z needs a number/);
+      assert.equal(await text.getAttribute('aria-invalid'), 'true');
+      await shoot(page, 'linuxcnc-tool-table');
     });
   });
 });

@@ -213,14 +213,23 @@ N75 M30
   },
   {
     id: 'linuxcnc',
-    title: 'LinuxCNC program: ; comments, MSG, G83 (control LinuxCNC)',
-    note: 'An RS274/NGC program as LinuxCNC tutorials write it: `;` comments, numbers without decimal points (X40 is 40 mm), a (MSG,…) line that shows as a note at its block, G43 H1 (H01 = 50) that moves nothing until the next Z move carries it, and a G83 peck cycle that starts in G99 and backs off 0.254 mm between pecks, as LinuxCNC’s own interpreter does. Choose the Fanuc control to see the same text stop at its first `;` comment.',
-    setup: { machine: 'mill', settings: { control: 'linuxcnc' }, offsets: { '01': { h: 50.0 } } },
+    title: 'LinuxCNC program: ; comments, MSG, a tool table, G83 (control LinuxCNC)',
+    note: 'An RS274/NGC program as LinuxCNC tutorials write it: `;` comments, numbers without decimal points (X40 is 40 mm), (MSG,…) lines that show as notes at their blocks, T1 M6 G43 reading tool 1 from the tool table (Z 50, D 6; see “Tool table (LinuxCNC)” in the settings), which moves nothing: the position reads from the new tool tip and the next Z move lands offset, and a G83 peck cycle with tool 2 that starts in G99 and backs off 0.254 mm between pecks, as LinuxCNC’s own interpreter does. Choose the Fanuc control to see the same text stop at its first `;` comment.',
+    setup: {
+      machine: 'mill',
+      settings: { control: 'linuxcnc' },
+      tool_table: {
+        tools: {
+          1: { pocket: 1, offsets: [0, 0, 50, 0, 0, 0, 0, 0, 0], diameter: 6, comment: '6 mm end mill' },
+          2: { pocket: 2, offsets: [0, 0, 42, 0, 0, 0, 0, 0, 0], diameter: 5, comment: '5 mm drill' },
+        },
+      },
+    },
     program: `%
 ; plate with a slot and two holes, LinuxCNC 2.9
 G21 G17 G90 G40 G49 G80 ; mm, XY plane, absolute, nothing active
 (MSG, T1 6 mm end mill: slot)
-G43 H1             ; length offset 50, taken at the next Z move
+T1 M6 G43          ; tool 1 of the tool table: length offset 50
 G0 X0 Y0 Z5
 G0 X10 Y20
 G1 Z-2 F150        ; plunge
@@ -230,6 +239,7 @@ G1 X10
 G3 X10 Y20 R10
 G0 Z5
 (MSG, T2 5 mm drill: holes)
+T2 M6 G43          ; tool 2: length offset 42
 G83 X60 Y20 Z-8 R2 Q3 F120
 X60 Y40
 G80

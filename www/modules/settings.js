@@ -4,6 +4,7 @@
 // with the form both ways.
 
 import { librarySection } from './library.js';
+import { toolTableSection } from './tooltable.js';
 import {
   MAX_POSITION, WORK_SYSTEMS, checkNumber, decimalsFor, machineOf, pointOf, setPoint, setSetting,
   setWorkOffset, settingOf, setupText, unitName, unitsOf, workOffset,
@@ -305,6 +306,8 @@ export function initSettings({ getSetup, change, replace }) {
   parts.push(works);
   ctx.library = librarySection({ getSetup, change });
   parts.push(ctx.library.element);
+  ctx.toolTable = toolTableSection({ getSetup, change });
+  parts.push(ctx.toolTable.element);
   ctx.form.replaceChildren(...parts);
   ctx.form.addEventListener('submit', (e) => e.preventDefault());
 
@@ -347,6 +350,7 @@ export function renderSettings({ json = true } = {}) {
   for (const el of ctx.form.querySelectorAll('[data-machine]')) el.hidden = el.dataset.machine !== machine;
   ctx.form.classList.toggle('lathe', machine === 'lathe');
   ctx.library?.render();
+  ctx.toolTable?.render();
   if (json && document.activeElement !== ctx.json) ctx.json.value = setupText(setup);
 }
 
