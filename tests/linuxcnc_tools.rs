@@ -188,3 +188,44 @@ fn behaviour22_9_links_keep_the_tool_table() {
     let r = ok(&back.program, &back.setup);
     same(r.moves[0].to, [0.0, 0.0, 30.4]);
 }
+
+#[test]
+fn behaviour22_9_linuxcnc_entry_is_a_corner_and_g40_alone_moves_nothing() {
+    use offsetlab::setup::{CutterCancelWithoutMotion, CutterStartUp, Settings};
+    let s = Settings {
+        control: Control::Linuxcnc,
+        ..Settings::default()
+    };
+    assert_eq!(s.cutter_start_up(), CutterStartUp::Corner);
+    assert_eq!(
+        s.cutter_cancel_without_motion(),
+        CutterCancelWithoutMotion::NextMove
+    );
+    // G42 D1 (r = 3.175) from (−5, −5) to (0, 0): the entry ends r to the
+    // right of its own direction (1, 1)/√2, at (r/√2, −r/√2); an arc round
+    // (0, 0) then brings the tool to (r, 0), r right of the +Y block.
+    let r = ok(
+        "G21 G17 G90 F100\nG0 X-5 Y-5 Z5\nG42 D1 G1 X0 Y0\nG1 Y25\nG40 G1 X10 Y30\nM2\n",
+        &with_table(),
+    );
+    let k = 3.175 / 2f64.sqrt();
+    same(r.moves[1].to, [k, -k, 5.0]);
+    same(r.moves[2].to, [3.175, 0.0, 5.0]);
+    same(r.moves[3].to, [3.175, 25.0, 5.0]);
+    // G40 alone moves nothing: the next G0 leaves the offset path from
+    // (10, 6.35) left of +X (tool 2, r = 6.35) straight to (30, 30).
+    let r = ok(
+        "G21 G17 G90 F100\nG0 X-20 Y0 Z5\nG41 D2 G1 X-10\nG1 X10\nG40\nG0 X30 Y30\nM2\n",
+        &with_table(),
+    );
+    same(r.moves[2].to, [10.0, 6.35, 5.0]);
+    assert_eq!(r.moves.len(), 4);
+    same(r.moves[3].from, [10.0, 6.35, 5.0]);
+    same(r.moves[3].to, [30.0, 30.0, 5.0]);
+    // The plane may change between that G40 and the move.
+    let r = ok(
+        "G21 G17 G90 F100\nG0 X-20 Y0 Z5\nG41 D3 G1 X-10\nG1 X10\nG40\nG18\nG0 X20 Z10\nM2\n",
+        &with_table(),
+    );
+    same(r.moves.last().unwrap().to, [20.0, 0.0, 10.0]);
+}

@@ -323,6 +323,11 @@ pub enum CutterStartUp {
     /// Type B: the start-up block's end is compensated as a corner too (the
     /// intersection, or a vector perpendicular to each block).
     B,
+    /// LinuxCNC: the start-up block's end is a corner as in offset mode
+    /// (inside the intersection, outside per `cutter_outside_corner`); a
+    /// cancel starts perpendicular to the block before, as type A.
+    #[serde(rename = "corner")]
+    Corner,
 }
 
 /// How cutter compensation goes round an outside corner in offset mode

@@ -436,9 +436,10 @@ impl Settings {
     /// type B (our convention).
     pub fn cutter_start_up(&self) -> CutterStartUp {
         self.cutter_start_up.unwrap_or(match self.control {
-            Control::Yasnac | Control::Fanuc | Control::Haas | Control::Linuxcnc => {
-                CutterStartUp::A
-            }
+            Control::Yasnac | Control::Fanuc | Control::Haas => CutterStartUp::A,
+            // rs274 -g: the entry move ends offset perpendicular to itself,
+            // an outside corner to the next block is an arc (behaviour 22.9).
+            Control::Linuxcnc => CutterStartUp::Corner,
         })
     }
 
@@ -465,10 +466,10 @@ impl Settings {
     pub fn cutter_cancel_without_motion(&self) -> CutterCancelWithoutMotion {
         self.cutter_cancel_without_motion
             .unwrap_or(match self.control {
-                Control::Yasnac | Control::Fanuc | Control::Linuxcnc => {
-                    CutterCancelWithoutMotion::Move
-                }
-                Control::Haas => CutterCancelWithoutMotion::NextMove,
+                Control::Yasnac | Control::Fanuc => CutterCancelWithoutMotion::Move,
+                // rs274 -g: a G40 line without motion moves nothing; the
+                // next move leaves the offset path (behaviour 22.9).
+                Control::Haas | Control::Linuxcnc => CutterCancelWithoutMotion::NextMove,
             })
     }
 

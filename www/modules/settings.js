@@ -127,7 +127,7 @@ const CHOICES = [
   },
   {
     id: 'cutter_start_up', label: 'G41/G42 start-up and cancel', controlDefault: true,
-    options: [['A', 'type A'], ['B', 'type B']],
+    options: [['A', 'type A'], ['B', 'type B'], ['corner', 'LinuxCNC: the entry as a corner']],
     help: 'Type A (every profile: Fanuc SUP = 0, Haas setting 43 = A): the start-up ends perpendicular to the next block. Type B: the corner is compensated too (intersection, or a vector on each side).',
   },
   {

@@ -24,7 +24,13 @@ impl Machine {
         {
             self.linuxcnc_cutter_start(b, now.mode)?;
         }
+        // LinuxCNC turns compensation off at G40 itself: the plane may
+        // change before the move that leaves the offset path (rs274 -g,
+        // behaviour 22.9).
+        let linuxcnc_off = now.mode == CutterCompensation::Cancel
+            && self.setup.settings.control == crate::setup::Control::Linuxcnc;
         if engaged
+            && !linuxcnc_off
             && let Some(plane) = codes.plane()
             && plane != self.state.modal.plane
         {

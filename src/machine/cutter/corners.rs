@@ -53,13 +53,23 @@ impl Machine {
         words: Words,
     ) -> Result<(), Diagnostic> {
         self.state.cutter.phase = Phase::StartUp;
-        let t = match self.setup.settings.cutter_start_up() {
-            CutterStartUp::A => Type::A,
+        let start_up = self.setup.settings.cutter_start_up();
+        let t = match start_up {
+            CutterStartUp::A | CutterStartUp::Corner => Type::A,
             CutterStartUp::B => Type::B,
         };
         let o = words.offset;
         let next = self.cutter_next_with(ahead, out, o);
         let (rule, next_path) = match next {
+            // LinuxCNC's entry: the block's end is the corner offset mode
+            // would make (behaviour 22.9).
+            Next::Move { path: n, .. } if start_up == CutterStartUp::Corner => {
+                let outside = match self.setup.settings.cutter_outside_corner() {
+                    CutterOutsideCorner::Vectors => Outside::Vectors,
+                    CutterOutsideCorner::Arc => Outside::Arc,
+                };
+                (Rule::Offset(outside), Some(n))
+            }
             Next::Move { path: n, .. } => (Rule::StartUp(t), Some(n)),
             Next::Unknown(why) => {
                 self.look_ahead_note(b, out, why);
@@ -88,7 +98,7 @@ impl Machine {
     ) -> Result<(), Diagnostic> {
         let o = words.offset;
         let t = match self.setup.settings.cutter_start_up() {
-            CutterStartUp::A => Type::A,
+            CutterStartUp::A | CutterStartUp::Corner => Type::A,
             CutterStartUp::B => Type::B,
         };
         let outside = match self.setup.settings.cutter_outside_corner() {

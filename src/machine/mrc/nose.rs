@@ -119,7 +119,7 @@ impl Machine {
             at = to;
         }
         let kind = match self.setup.settings.cutter_start_up() {
-            CutterStartUp::A => Type::A,
+            CutterStartUp::A | CutterStartUp::Corner => Type::A,
             CutterStartUp::B => Type::B,
         };
         let outside = match self.setup.settings.cutter_outside_corner() {
