@@ -19,6 +19,11 @@ use crate::syntax::codes::{CannedCycle, Group, NonModal, PositionOffset};
 
 use super::words::MOTION_WORDS;
 
+// A module of the machine's, declared here where its one call is (the
+// machine's module list is at its file's line limit).
+#[path = "linuxcnc_polar.rs"]
+mod linuxcnc_polar;
+
 impl Machine {
     /// A mill block. `ahead` gives the blocks after it to the rules that need
     /// the next move: the chamfer and corner words `,C`/`,R` (`corner.rs`)
@@ -31,6 +36,11 @@ impl Machine {
         ahead: &mut dyn Ahead,
         program: &mut dyn super::program::ProgramText,
     ) -> Result<(), Diagnostic> {
+        // LinuxCNC's `@` `^` become the block's X and Y (behaviour 22.12);
+        // only its profile reads them.
+        if b.holds_any(&[Address::PolarRadius, Address::PolarAngle]) {
+            return self.polar_block(b, out, ahead, program);
+        }
         // While cutter compensation is engaged `special` is set: every
         // block goes through the compensation below.
         if !self.special && b.holds_only(&MOTION_WORDS, &[Group::Motion]) {
