@@ -19,8 +19,10 @@ use crate::syntax::codes::{CannedCycle, Group, NonModal, PositionOffset};
 
 use super::words::MOTION_WORDS;
 
-// A module of the machine's, declared here where its one call is (the
+// Modules of the machine's, declared here where their one call is (the
 // machine's module list is at its file's line limit).
+#[path = "linuxcnc_dwell.rs"]
+mod linuxcnc_dwell;
 #[path = "linuxcnc_polar.rs"]
 mod linuxcnc_polar;
 
@@ -36,15 +38,19 @@ impl Machine {
         ahead: &mut dyn Ahead,
         program: &mut dyn super::program::ProgramText,
     ) -> Result<(), Diagnostic> {
-        // LinuxCNC's `@` `^` become the block's X and Y (behaviour 22.12);
-        // only its profile reads them.
-        if b.holds_any(&[Address::PolarRadius, Address::PolarAngle]) {
-            return self.polar_block(b, out, ahead, program);
-        }
         // While cutter compensation is engaged `special` is set: every
         // block goes through the compensation below.
         if !self.special && b.holds_only(&MOTION_WORDS, &[Group::Motion]) {
             return self.motion_block(b, out);
+        }
+        // LinuxCNC's `@` `^` become the block's X and Y (behaviour 22.12);
+        // only its profile reads them. Its G4 dwells, then moves by the
+        // block's axis words (22.13).
+        if b.holds_any(&[Address::PolarRadius, Address::PolarAngle]) {
+            return self.polar_block(b, out, ahead, program);
+        }
+        if self.dwell_moves(b) {
+            return self.dwell_then_move(b, out, ahead, program);
         }
         if b.codes().non_modal() == Some(NonModal::Engraving) {
             // Haas G47 reads the text of its block's comment (behaviour 14.20).
