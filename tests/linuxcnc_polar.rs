@@ -161,6 +161,11 @@ fn behaviour22_13_linuxcnc_g4_dwells_then_moves_by_its_axis_words() {
     assert_eq!(r.moves[1].kind, MoveKind::Rapid);
     same(r.moves[2].to, [6.0, 1.0, 0.0]);
     assert_eq!(r.moves[2].kind, MoveKind::Feed);
+    // A LinuxCNC G4 needs P (rs274: "Dwell time missing with g4"), at G4.
+    assert_eq!(
+        first_error_of("G21\nG0 X1\nG4\nM2\n"),
+        ("dwell-words", 3, 1)
+    );
     // The Fanuc family's G4 X is the dwell time: X and P together refused.
     assert_eq!(
         errors("G21\nG4 P1 X5\nM30\n", &Setup::default()),

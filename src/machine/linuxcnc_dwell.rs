@@ -3,7 +3,8 @@
 //! block are the motion mode's, as in any block with a non-modal code that
 //! uses no axes, so the block dwells and then moves (`G4 P1 X5` in G0 waits
 //! a second and goes to X5). A Fanuc-family control reads G4 X as seconds
-//! (behaviour 2.9), so this is the LinuxCNC profile's reading only.
+//! (behaviour 2.9), so this is the LinuxCNC profile's reading only; and a
+//! LinuxCNC G4 needs its P.
 
 use crate::diag::Diagnostic;
 use crate::machine::Machine;
@@ -29,11 +30,22 @@ const MOTION: [Address; 11] = [
 ];
 
 impl Machine {
-    /// True for a LinuxCNC G4 block with an axis word.
-    pub(super) fn dwell_moves(&self, b: &Block) -> bool {
-        b.codes().non_modal() == Some(NonModal::Dwell)
-            && self.setup.settings.control == crate::setup::Control::Linuxcnc
-            && b.holds_any(&MOTION[..6])
+    /// True for a LinuxCNC G4 block with an axis word; a LinuxCNC G4
+    /// without P is an error (rs274: "Dwell time missing with g4").
+    pub(super) fn dwell_moves(&self, b: &Block) -> Result<bool, Diagnostic> {
+        if b.codes().non_modal() != Some(NonModal::Dwell)
+            || self.setup.settings.control != crate::setup::Control::Linuxcnc
+        {
+            return Ok(false);
+        }
+        if !b.has(Address::P) {
+            return Err(self.error(
+                "dwell-words",
+                b.code_span(crate::syntax::codes::Group::NonModal),
+                "LinuxCNC's G4 takes its time in seconds from P, and this G4 has none (rs274: \"Dwell time missing with g4\")",
+            ));
+        }
+        Ok(b.holds_any(&MOTION[..6]))
     }
 
     /// The G4 block without its motion words (the dwell, with the block's

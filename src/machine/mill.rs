@@ -49,7 +49,7 @@ impl Machine {
         if b.holds_any(&[Address::PolarRadius, Address::PolarAngle]) {
             return self.polar_block(b, out, ahead, program);
         }
-        if self.dwell_moves(b) {
+        if self.dwell_moves(b)? {
             return self.dwell_then_move(b, out, ahead, program);
         }
         if b.codes().non_modal() == Some(NonModal::Engraving) {
