@@ -140,6 +140,12 @@ fn behaviour22_12_linuxcnc_polar_words_are_refused_where_rs274_refuses_them() {
             "G21 G91\nG0 X0 Y0\nG1 F100 @4\nM2\n",
             ("polar-origin", 3, 9),
         ),
+        // Under cutter compensation: not read yet (its look-ahead reads X
+        // and Y), an error rather than a wrong path.
+        (
+            "G21\nG0 X10 Y0\nG41 G1 F100 D1 ^90\nM2\n",
+            ("polar-words", 3, 16),
+        ),
     ] {
         assert_eq!(first_error_of(text), want, "{text}");
     }
