@@ -21,7 +21,7 @@ use crate::syntax::codes::{CannedCycle, CutterCompensation, NonModal, Plane};
 use crate::syntax::{Address, Block, Word};
 
 /// The two polar words.
-const POLAR: [Address; 2] = [Address::PolarRadius, Address::PolarAngle];
+const POLAR: [Address; 2] = [Address::PolarDist, Address::PolarAngle];
 
 /// A block's polar words: the value of each (the last one written, as
 /// rs274 reads a repeated one) and where the first polar word is.
@@ -158,7 +158,7 @@ impl Machine {
             }
         }
         Ok(Polar {
-            radius: last(Address::PolarRadius),
+            radius: last(Address::PolarDist),
             angle: last(Address::PolarAngle),
             span,
         })

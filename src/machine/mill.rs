@@ -46,7 +46,7 @@ impl Machine {
         // LinuxCNC's `@` `^` become the block's X and Y (behaviour 22.12);
         // only its profile reads them. Its G4 dwells, then moves by the
         // block's axis words (22.13).
-        if b.holds_any(&[Address::PolarRadius, Address::PolarAngle]) {
+        if b.holds_any(&[Address::PolarDist, Address::PolarAngle]) {
             return self.polar_block(b, out, ahead, program);
         }
         if self.dwell_moves(b)? {

@@ -47,7 +47,7 @@ pub enum Address {
     /// `,R`: corner rounding at the end of a G01 block.
     CommaR,
     /// `@`: LinuxCNC's polar distance of the XY end point (behaviour 22.12).
-    PolarRadius,
+    PolarDist,
     /// `^`: LinuxCNC's polar angle of the XY end point, degrees (behaviour 22.12).
     PolarAngle,
 }
@@ -72,35 +72,8 @@ impl Address {
     pub const ALL: [Address; Address::COUNT] = {
         use Address::*;
         [
-            D,
-            F,
-            G,
-            H,
-            I,
-            J,
-            K,
-            L,
-            M,
-            N,
-            O,
-            P,
-            Q,
-            R,
-            S,
-            T,
-            U,
-            W,
-            X,
-            Y,
-            Z,
-            A,
-            B,
-            C,
-            E,
-            CommaC,
-            CommaR,
-            PolarRadius,
-            PolarAngle,
+            D, F, G, H, I, J, K, L, M, N, O, P, Q, R, S, T, U, W, X, Y, Z, A, B, C, E, CommaC,
+            CommaR, PolarDist, PolarAngle,
         ]
     };
 
@@ -159,7 +132,7 @@ impl Address {
             b'B' => B,
             b'C' => C,
             b'E' => E,
-            b'@' => PolarRadius,
+            b'@' => PolarDist,
             b'^' => PolarAngle,
             _ => return None,
         })
@@ -207,7 +180,7 @@ impl Address {
             E => "E",
             CommaC => ",C",
             CommaR => ",R",
-            PolarRadius => "@",
+            PolarDist => "@",
             PolarAngle => "^",
         }
     }
@@ -235,8 +208,8 @@ impl Address {
         match self {
             G | M | N | O | T | D | H | S | P | L => WordKind::Integer,
             F => WordKind::Feed,
-            X | Y | Z | U | W | I | J | K | R | Q | A | B | C | E | CommaC | CommaR
-            | PolarRadius | PolarAngle => WordKind::Dimension,
+            X | Y | Z | U | W | I | J | K | R | Q | A | B | C | E | CommaC | CommaR | PolarDist
+            | PolarAngle => WordKind::Dimension,
         }
     }
 

@@ -287,7 +287,7 @@ impl Checks {
             _ => {
                 // rs274 takes the last of repeated `@` `^` (the machine says
                 // so; behaviour 22.12).
-                if block.holds(a) && !matches!(a, Address::PolarRadius | Address::PolarAngle) {
+                if block.holds(a) && !matches!(a, Address::PolarDist | Address::PolarAngle) {
                     return Err(Clash::Duplicate);
                 }
             }
