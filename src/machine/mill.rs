@@ -19,6 +19,13 @@ use crate::syntax::codes::{CannedCycle, Group, NonModal, PositionOffset};
 
 use super::words::MOTION_WORDS;
 
+// Modules of the machine's, declared here where their one call is (the
+// machine's module list is at its file's line limit).
+#[path = "linuxcnc_dwell.rs"]
+mod linuxcnc_dwell;
+#[path = "linuxcnc_polar.rs"]
+mod linuxcnc_polar;
+
 impl Machine {
     /// A mill block. `ahead` gives the blocks after it to the rules that need
     /// the next move: the chamfer and corner words `,C`/`,R` (`corner.rs`)
@@ -35,6 +42,15 @@ impl Machine {
         // block goes through the compensation below.
         if !self.special && b.holds_only(&MOTION_WORDS, &[Group::Motion]) {
             return self.motion_block(b, out);
+        }
+        // LinuxCNC's `@` `^` become the block's X and Y (behaviour 22.12);
+        // only its profile reads them. Its G4 dwells, then moves by the
+        // block's axis words (22.13).
+        if b.holds_any(&[Address::PolarDist, Address::PolarAngle]) {
+            return self.polar_block(b, out, ahead, program);
+        }
+        if self.dwell_moves(b)? {
+            return self.dwell_then_move(b, out, ahead, program);
         }
         if b.codes().non_modal() == Some(NonModal::Engraving) {
             // Haas G47 reads the text of its block's comment (behaviour 14.20).

@@ -46,6 +46,10 @@ pub enum Address {
     CommaC,
     /// `,R`: corner rounding at the end of a G01 block.
     CommaR,
+    /// `@`: LinuxCNC's polar distance of the XY end point (behaviour 22.12).
+    PolarDist,
+    /// `^`: LinuxCNC's polar angle of the XY end point, degrees (behaviour 22.12).
+    PolarAngle,
 }
 
 /// How a word's number is read.
@@ -62,14 +66,14 @@ pub enum WordKind {
 
 impl Address {
     /// Number of addresses.
-    pub const COUNT: usize = 27;
+    pub const COUNT: usize = 29;
 
     /// Every address, in declaration order (`ALL[a as usize] == a`).
     pub const ALL: [Address; Address::COUNT] = {
         use Address::*;
         [
             D, F, G, H, I, J, K, L, M, N, O, P, Q, R, S, T, U, W, X, Y, Z, A, B, C, E, CommaC,
-            CommaR,
+            CommaR, PolarDist, PolarAngle,
         ]
     };
 
@@ -90,6 +94,10 @@ impl Address {
             // ordinary blocks pay nothing for it.
             table[b'O' as usize] = None;
             table[b'o' as usize] = None;
+            // LinuxCNC's polar words are lexed only under its profile, in
+            // the two-pass reading (behaviour 22.12).
+            table[b'@' as usize] = None;
+            table[b'^' as usize] = None;
             table
         };
         BY_BYTE[usize::from(c)]
@@ -124,6 +132,8 @@ impl Address {
             b'B' => B,
             b'C' => C,
             b'E' => E,
+            b'@' => PolarDist,
+            b'^' => PolarAngle,
             _ => return None,
         })
     }
@@ -170,6 +180,8 @@ impl Address {
             E => "E",
             CommaC => ",C",
             CommaR => ",R",
+            PolarDist => "@",
+            PolarAngle => "^",
         }
     }
 
@@ -196,9 +208,8 @@ impl Address {
         match self {
             G | M | N | O | T | D | H | S | P | L => WordKind::Integer,
             F => WordKind::Feed,
-            X | Y | Z | U | W | I | J | K | R | Q | A | B | C | E | CommaC | CommaR => {
-                WordKind::Dimension
-            }
+            X | Y | Z | U | W | I | J | K | R | Q | A | B | C | E | CommaC | CommaR | PolarDist
+            | PolarAngle => WordKind::Dimension,
         }
     }
 

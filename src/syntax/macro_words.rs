@@ -420,6 +420,13 @@ pub(super) fn opens(bytes: &[u8], i: usize) -> bool {
         || comma_value(bytes, i)
 }
 
+/// A LinuxCNC polar word (`@`, `^`) with an expression or a parameter as
+/// its value at `i` (`@[#1*2]`, behaviour 22.12); the caller checks the
+/// profile.
+pub(super) fn opens_polar(bytes: &[u8], i: usize) -> bool {
+    matches!(bytes[i], b'@' | b'^') && macros::opens_value(bytes, lexer::skip_blanks(bytes, i + 1))
+}
+
 /// A comma word (`,C`, `,R`) with a macro value at `i`.
 fn comma_value(bytes: &[u8], i: usize) -> bool {
     bytes[i] == b','

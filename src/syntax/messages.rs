@@ -92,7 +92,10 @@ impl Blocks<'_> {
             }
             Refusal::Feed => (
                 "out-of-range",
-                format!("{text}: a feed rate is 0 to 999999"),
+                format!(
+                    "{text}: a feed rate is 0 to {}",
+                    super::words::max_feed(self.options.linuxcnc)
+                ),
             ),
             Refusal::Dimension => {
                 let units = self.units;

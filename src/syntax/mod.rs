@@ -287,7 +287,9 @@ impl Checks {
             }
             Address::M => self.admit_mcode(table.machine(), &word)?,
             _ => {
-                if block.holds(a) {
+                // rs274 takes the last of repeated `@` `^` (the machine says
+                // so; behaviour 22.12).
+                if block.holds(a) && !matches!(a, Address::PolarDist | Address::PolarAngle) {
                     return Err(Clash::Duplicate);
                 }
             }

@@ -177,9 +177,11 @@ impl Blocks<'_> {
             if c == b';' {
                 // Only a comment reaches here (`ends_block`).
                 i = line_end(bytes, i);
-            } else if super::macro_words::opens(bytes, i) {
+            } else if super::macro_words::opens(bytes, i)
+                || (self.options.linuxcnc && super::macro_words::opens_polar(bytes, i))
+            {
                 i = self.read_macro(start, i, line, block);
-            } else if c.is_ascii_alphabetic() || c == b':' {
+            } else if c.is_ascii_alphabetic() || c == b':' || (self.options.linuxcnc && polar(c)) {
                 let (word_end, _, number) = lexer::number(bytes, i + 1);
                 // `:` is the program number address in ISO code (behaviour 1.4).
                 let letter = match c {
@@ -302,6 +304,12 @@ impl Blocks<'_> {
         }
         (end, last)
     }
+}
+
+/// LinuxCNC's polar words `@` (distance) and `^` (angle) are words of its
+/// dialect (behaviour 22.12); every other control refuses the characters.
+fn polar(c: u8) -> bool {
+    matches!(c, b'@' | b'^')
 }
 
 /// Where the block from `i` ends, as the two-pass lexing finds it: at the

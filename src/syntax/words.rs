@@ -133,7 +133,7 @@ impl Blocks<'_> {
             }
             WordKind::Feed => {
                 let v = n.value();
-                if !(0.0..=999_999.0).contains(&v) {
+                if !(0.0..=max_feed(self.options.linuxcnc)).contains(&v) {
                     return Err(Refusal::Feed);
                 }
                 v
@@ -266,6 +266,17 @@ impl Blocks<'_> {
         msg: &str,
     ) {
         self.error_span(block, code, Span::new(start, end, line), msg);
+    }
+}
+
+/// The largest feed rate a word may give: 999999 on the Fanuc family;
+/// rs274 takes any positive F (`F1000000`, behaviour 22.13), so the LinuxCNC
+/// profile takes what the number reader reads, 15 digits.
+pub(super) fn max_feed(linuxcnc: bool) -> f64 {
+    if linuxcnc {
+        999_999_999_999_999.0
+    } else {
+        999_999.0
     }
 }
 

@@ -11,7 +11,7 @@ const KINDS = {
   m: 'tok-m', // M codes: spindle, coolant, stops
   n: 'tok-n', // N sequence numbers
   program: 'tok-program', // O program numbers and %
-  axis: 'tok-axis', // X Y Z U W I J K R: positions and arc words
+  axis: 'tok-axis', // X Y Z U W I J K R, LinuxCNC's @ ^: positions and arc words
   offset: 'tok-offset', // D and H: offset register words
   tool: 'tok-tool', // T: tool (and lathe offset) words
   feed: 'tok-feed', // F and S
@@ -100,6 +100,10 @@ export const gcodeLanguage = StreamLanguage.define({
     }
     // `,C` `,R` (chamfer and corner R, behaviour 2.30) and `,A`: one word.
     if (stream.match(/^,[A-Za-z][ \t]*[+-]?[ \t]*[0-9.]*/)) return 'param';
+    // LinuxCNC's polar words `@` (distance) and `^` (angle) of the XY end
+    // point (behaviour 22.12): axis words, as its o-words are highlighted
+    // whatever the control (the Fanuc-family profiles refuse them on the run).
+    if (stream.match(/^[@^][ \t]*[+-]?[ \t]*[0-9.]*/)) return 'axis';
     if (ch === '=' || ch === '*' || ch === '/' || ch === '+' || ch === '-' || ch === ',') {
       stream.next();
       return 'macroOperator';
