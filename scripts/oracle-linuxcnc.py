@@ -60,7 +60,11 @@ The
 var file's G54-G59 origins (#5221.. in steps of 20) become `work_offsets`,
 the G28 position #5161-#5163 `reference`, the G30 position #5181-#5183
 `second_reference`, and `start` is machine zero in G54 coordinates
-(LinuxCNC starts at machine 0 0 0); these are in the setup's mm.
+(LinuxCNC starts at machine 0 0 0).  With a var file the setup is in
+inches, rs274's machine units, and these are the var file's numbers
+unconverted (LinuxCNC's #5161, #5221 ... read them so, behaviour 22.10);
+the program must then name G20 or G21 on its first line, as offsetlab
+starts in its setup's units and rs274 in G21.  Without one it is in mm.
 Parameters it cannot pass on (a G92 offset #5211.., G59.1-G59.3, a work
 system other than G54 in #5220) make the program FAIL as "oracle cannot set
 up" rather than be compared wrongly.  `setup_document()` is the one place
@@ -330,10 +334,30 @@ def read_var(path):
     return params
 
 
-def setup_document(var):
-    """offsetlab's setup (mm) for rs274's var file (inches)."""
-    doc = {"version": 1, "machine": "mill", "units": "mm"}
+UNITS_WORD = re.compile(r"G\s*2\s*[01](?![0-9.])", re.I)
+
+
+def first_code_line(prog_lines):
+    """The program's first line with more than a comment."""
+    for raw in prog_lines:
+        text = re.sub(r"\([^)]*\)|;.*", "", raw).strip()
+        if text and text != "%":
+            return text
+    return ""
+
+
+def setup_document(var, prog_lines=()):
+    """offsetlab's setup for rs274's var file (inches).
+
+    The setup is in inches, rs274's machine units, so that the stored
+    positions LinuxCNC's parameters read (#5161…, #5221…, behaviour 22.10)
+    are the var file's numbers on both sides; as offsetlab starts in its
+    setup's units and rs274 in G21, such a program must name G20 or G21 on
+    its first line.  (The tool table goes to offsetlab as its file.)"""
+    doc = {"version": 1, "machine": "mill", "units": "inch"}
     if var:
+        if not UNITS_WORD.search(first_code_line(prog_lines)):
+            raise SetupError("with a var file the setup is in inches: the program's first line must name G20 or G21")
         p = read_var(var)
         for k, v in sorted(p.items()):
             if v == 0.0:
@@ -342,13 +366,13 @@ def setup_document(var):
                 raise SetupError("#%d = %g (a G92 offset or G59.1-G59.3): not passed to offsetlab" % (k, v))
             if k == 5220 and v != 1.0:
                 raise SetupError("#5220 = %g: offsetlab starts in G54" % v)
-        mm = lambda k: round(p.get(k, 0.0) * INCH, 6)
+        val = lambda k: round(p.get(k, 0.0), 6)
         systems = ["G54", "G55", "G56", "G57", "G58", "G59"]
         doc["work_offsets"] = {
-            g: {"x": mm(5221 + 20 * i), "y": mm(5222 + 20 * i), "z": mm(5223 + 20 * i)}
+            g: {"x": val(5221 + 20 * i), "y": val(5222 + 20 * i), "z": val(5223 + 20 * i)}
             for i, g in enumerate(systems)}
-        doc["reference"] = {"x": mm(5161), "y": mm(5162), "z": mm(5163)}
-        doc["second_reference"] = {"x": mm(5181), "y": mm(5182), "z": mm(5183)}
+        doc["reference"] = {"x": val(5161), "y": val(5162), "z": val(5163)}
+        doc["second_reference"] = {"x": val(5181), "y": val(5182), "z": val(5183)}
         doc["start"] = {a: -doc["work_offsets"]["G54"][a] for a in AXES}
     return doc
 
@@ -511,7 +535,7 @@ def check(prog, args):
         setup = own_setup
         if setup is None and var:
             try:
-                doc = setup_document(var)
+                doc = setup_document(var, prog_lines)
             except SetupError as e:
                 return False, "FAIL %s: oracle cannot set up offsetlab: %s" % (name, e)
             setup = os.path.join(tmp, "setup.json")

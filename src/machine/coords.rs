@@ -251,6 +251,9 @@ impl Machine {
     pub(super) fn g92_1(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
         let span = b.code_span(Group::NonModal);
         self.refuse_in_transforms(span, "G92.1")?;
+        if self.setup.settings.control == crate::setup::Control::Linuxcnc {
+            return self.g92_1_linuxcnc(b, out);
+        }
         let mut named = Vec::new();
         for (axis, (a, letter)) in AXES.iter().enumerate() {
             let Some(w) = b.get(*a) else { continue };
@@ -276,6 +279,51 @@ impl Machine {
         out.notes.push(format!(
             "G92.1: the G92 shift on {} is undone; zero at machine {}",
             named.join(", "),
+            self.show_point(self.state.coords.zero)
+        ));
+        Ok(())
+    }
+
+    /// How a G53 block moves: at rapid (Fanuc, 13.1); under LinuxCNC in
+    /// the motion mode, G0 or G1 (behaviour 22.11; rs274 refuses the
+    /// others).
+    fn g53_kind(&self, span: crate::diag::Span) -> Result<super::MoveKind, Diagnostic> {
+        use crate::syntax::codes::Motion;
+        if self.setup.settings.control != crate::setup::Control::Linuxcnc {
+            return Ok(super::MoveKind::Rapid);
+        }
+        match self.state.modal.motion {
+            Motion::Rapid => Ok(super::MoveKind::Rapid),
+            Motion::Linear if self.state.feed.is_some() => Ok(super::MoveKind::Feed),
+            Motion::Linear => Err(self.error(
+                "missing-feed",
+                span,
+                "G53 in G1 before any F: LinuxCNC refuses a feed move with no feed rate (\"Cannot do g1 with zero feed rate\")",
+            )),
+            _ => Err(self.error(
+                "g53-motion",
+                span,
+                "G53 moves in G0 or G1 under LinuxCNC (rs274: \"Must use g0 or g1 with g53\"); write G0 or G1 in the block",
+            )),
+        }
+    }
+
+    /// LinuxCNC's G92.1 (behaviour 22.11): the G92 offset cancelled and
+    /// zeroed on every axis. rs274 reads a G92.1 block's axis words as a
+    /// move in the motion mode, which offsetlab does not follow: an error.
+    fn g92_1_linuxcnc(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
+        if let Some(w) = AXES.iter().find_map(|(a, _)| b.get(*a)) {
+            return Err(self.error(
+                "g92-1-value",
+                w.span,
+                "G92.1 takes no axis words under LinuxCNC (rs274 cancels every axis and moves to the words in the motion mode, which offsetlab does not follow): write the move in a block of its own",
+            ));
+        }
+        self.state.coords.shift = [0.0; 3];
+        let zero = self.zero_now();
+        self.move_zero(zero);
+        out.notes.push(format!(
+            "G92.1: the G92 offset is cancelled and zeroed on every axis (#5211… 0, LinuxCNC); zero at machine {}",
             self.show_point(self.state.coords.zero)
         ));
         Ok(())
@@ -360,7 +408,8 @@ impl Machine {
                 self.state.length.vector_after(false, changed, setting)
             };
         }
-        self.emit(out, start, super::MoveKind::Rapid, false, None);
+        let kind = self.g53_kind(span)?;
+        self.emit(out, start, kind, false, None);
         let machine = add(self.actual(), self.state.coords.zero);
         let axes: Vec<String> = letters
             .iter()

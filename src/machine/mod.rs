@@ -31,6 +31,7 @@ pub mod program;
 mod reference;
 pub mod state;
 mod sysvars;
+mod sysvars_linuxcnc;
 mod sysvars_state;
 mod tool_table;
 mod transform;

@@ -78,7 +78,7 @@ fn read_only(n: u32) -> bool {
 
 impl Machine {
     /// A length in mm as the program reads it (its G20/G21).
-    fn in_program_units(&self, mm: f64) -> f64 {
+    pub(super) fn in_program_units(&self, mm: f64) -> f64 {
         clean(mm / self.units().mm())
     }
 

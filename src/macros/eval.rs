@@ -98,6 +98,15 @@ pub enum Outcome {
     OWord,
 }
 
+/// A LinuxCNC parameter setting read, not yet made (behaviour 22.10).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Setting {
+    /// `#number = value`.
+    Numbered(u32, Value),
+    /// `#<name> = value`.
+    Named(Box<str>, f64),
+}
+
 /// A value while evaluating: a number, or the truth of a comparison.
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Val {
@@ -120,6 +129,34 @@ impl<'v> Evaluator<'v> {
             vars,
             options,
             round_to: None,
+        }
+    }
+
+    /// The parameter and the value of LinuxCNC's setting `s`, read with
+    /// the parameters as they were before the line (behaviour 22.10).
+    pub fn setting(&mut self, s: &Statement) -> Result<(Setting, Span), Diagnostic> {
+        match &s.kind {
+            StatementKind::Assign {
+                target,
+                target_span,
+                value,
+            } => {
+                let number = self.index(target)?;
+                Ok((Setting::Numbered(number, self.value(value)?), *target_span))
+            }
+            StatementKind::AssignNamed {
+                name,
+                target_span,
+                value,
+            } => Ok((
+                Setting::Named(name.clone(), self.number(value)?),
+                *target_span,
+            )),
+            _ => Err(Diagnostic::error(
+                "internal",
+                s.span,
+                "a parameter setting was expected",
+            )),
         }
     }
 

@@ -14,10 +14,10 @@ mod store;
 mod value;
 
 pub use ast::{BinOp, CmpOp, Expr, ExprKind, Func, OLabel, OOp, OWord, Statement, StatementKind};
-pub use eval::{Evaluator, MAX_MAGNITUDE, Options, Outcome, Variables, compare};
+pub use eval::{Evaluator, MAX_MAGNITUDE, Options, Outcome, Setting, Variables, compare};
 pub use parse::{
     Dialect, MAX_NESTING, abbreviated, expression, expression_with, opens_statement, opens_value,
-    oword, statement, statement_with, value, value_with,
+    oword, setting, statement, statement_with, value, value_with,
 };
 pub use store::{Kind, Store, kind, no_variable, system_variable};
 pub use value::Value;

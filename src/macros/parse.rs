@@ -8,6 +8,7 @@ use super::ast::{BinOp, CmpOp, Expr, ExprKind, Func, Statement, StatementKind};
 use crate::diag::{Diagnostic, Span};
 
 mod linuxcnc;
+pub use linuxcnc::setting;
 
 /// Deepest bracket nesting, function brackets included (Fanuc: five
 /// levels, alarm PS0118 past them).

@@ -3,6 +3,7 @@
 //! vacant. System variables (#1000 on) belong to the machine: a store
 //! alone refuses them.
 
+use std::collections::BTreeMap;
 use std::sync::Arc;
 
 use super::alarm;
@@ -48,6 +49,9 @@ pub fn kind(n: u32) -> Kind {
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Store {
     values: Option<Arc<[Value; SIZE]>>,
+    /// LinuxCNC's parameters from #1000 on that the program set (behaviour
+    /// 22.10): few, so kept by number.
+    high: Option<Arc<BTreeMap<u32, f64>>>,
 }
 
 impl Store {
@@ -77,14 +81,51 @@ impl Store {
         true
     }
 
+    /// A LinuxCNC parameter the program keeps (#1 to #5601, behaviour
+    /// 22.10): never set, 0.
+    pub fn parameter(&self, n: u32) -> f64 {
+        match n as usize {
+            1..SIZE => self
+                .values
+                .as_ref()
+                .and_then(|t| t[n as usize].get())
+                .unwrap_or(0.0),
+            _ => self
+                .high
+                .as_ref()
+                .and_then(|m| m.get(&n).copied())
+                .unwrap_or(0.0),
+        }
+    }
+
+    /// Sets a LinuxCNC parameter the program keeps (#1 to #5601).
+    pub fn set_parameter(&mut self, n: u32, v: f64) {
+        match n as usize {
+            1..SIZE => {
+                let table = self
+                    .values
+                    .get_or_insert_with(|| Arc::new([Value::Vacant; SIZE]));
+                Arc::make_mut(table)[n as usize] = Value::Number(v);
+            }
+            _ => {
+                let map = self.high.get_or_insert_with(Default::default);
+                // Bounded: at most one entry per number up to #5601.
+                Arc::make_mut(map).insert(n, v);
+            }
+        }
+    }
+
     /// The variables that hold a value, in order of number.
     pub fn set_variables(&self) -> Vec<(u32, f64)> {
-        let Some(t) = &self.values else {
-            return Vec::new();
-        };
-        (0..SIZE as u32)
-            .filter_map(|n| t[n as usize].get().map(|v| (n, v)))
-            .collect()
+        let low = self
+            .values
+            .iter()
+            .flat_map(|t| (0..SIZE as u32).filter_map(|n| t[n as usize].get().map(|v| (n, v))));
+        let high = self
+            .high
+            .iter()
+            .flat_map(|m| m.iter().map(|(&n, &v)| (n, v)));
+        low.chain(high).collect()
     }
 }
 

@@ -10,7 +10,8 @@ use crate::diag::Span;
 use crate::machine::calls::{Jump, MacroJump};
 use crate::machine::{EventKind, Machine, Out, VariableSet};
 use crate::macros::{
-    self, Evaluator, Kind, Options, Outcome, StatementKind, Value, Variables, system_variable,
+    self, Evaluator, Kind, Options, Outcome, Setting, Statement, StatementKind, Value, Variables,
+    system_variable,
 };
 use crate::setup::{MacroAngles, MacroConditions};
 use crate::syntax::{self, Block, MacroBlock, ParseOptions};
@@ -34,12 +35,22 @@ pub(super) struct Vars<'a> {
     pub(super) message: Option<(u32, Value)>,
 }
 
+impl Vars<'_> {
+    fn linuxcnc(&self) -> bool {
+        self.machine.setup().settings.control == crate::setup::Control::Linuxcnc
+    }
+}
+
 impl Variables for Vars<'_> {
     fn read(&mut self, n: u32, span: Span) -> Result<Value, Diagnostic> {
-        if let ALARM | MESSAGE_STOP = n {
+        if let ALARM | MESSAGE_STOP = n
+            && !self.linuxcnc()
+        {
             return Err(flow::write_only(n, span));
         }
         let v = match macros::kind(n) {
+            // LinuxCNC's parameters: never set reads 0 (behaviour 22.10).
+            _ if self.linuxcnc() => Value::Number(self.machine.read_parameter(n, span)?),
             Kind::System => match self.machine.read_system(n, span)? {
                 Some(v) => Value::Number(v),
                 None => return Err(system_variable(n, span)),
@@ -52,11 +63,17 @@ impl Variables for Vars<'_> {
     }
 
     fn write(&mut self, n: u32, v: Value, span: Span) -> Result<(), Diagnostic> {
-        if let ALARM | MESSAGE_STOP = n {
+        if let ALARM | MESSAGE_STOP = n
+            && !self.linuxcnc()
+        {
             self.message = Some((n, v));
             return Ok(());
         }
         match macros::kind(n) {
+            _ if self.linuxcnc() => {
+                self.machine
+                    .write_parameter(n, v.number(), span, self.out)?;
+            }
             Kind::System => match self.machine.write_system(n, v.number(), span, self.out)? {
                 true => {}
                 false => return Err(system_variable(n, span)),
@@ -191,6 +208,17 @@ pub(super) fn resolve(
             Outcome::End(label) => machine.jump = Some(Jump::Flow(MacroJump::End(label))),
         }
     }
+    // LinuxCNC: the line's settings read their values with the
+    // parameters as they were, as its words do (behaviour 22.10).
+    let mut settings = Vec::with_capacity(m.settings.len());
+    for s in &m.settings {
+        let mut vars = Vars {
+            machine: &mut *machine,
+            out: &mut *out,
+            message: None,
+        };
+        settings.push((s, Evaluator::new(&mut vars, options).setting(s)?));
+    }
     let mut values = Vec::with_capacity(m.words.len());
     let increment = m.increment();
     for w in &m.words {
@@ -211,6 +239,9 @@ pub(super) fn resolve(
         }
         values.push(v.get());
     }
+    for (s, (setting, span)) in settings {
+        make_setting(s, setting, span, m, machine, out)?;
+    }
     if m.words.is_empty() && block.words.is_empty() {
         return Ok(empty(block));
     }
@@ -223,6 +254,56 @@ pub(super) fn resolve(
         out.warnings.push(d);
     }
     Ok(resolved)
+}
+
+/// Makes one of the line's LinuxCNC settings, after its values are read
+/// (behaviour 22.10): the note and event an assignment gives.
+fn make_setting(
+    s: &Statement,
+    setting: Setting,
+    span: Span,
+    m: &MacroBlock,
+    machine: &mut Machine,
+    out: &mut Out,
+) -> Result<(), Diagnostic> {
+    let written = match &s.kind {
+        StatementKind::Assign { value, .. } | StatementKind::AssignNamed { value, .. } => {
+            m.text_of(value)
+        }
+        _ => m.text_of_statement(s),
+    };
+    let mut vars = Vars {
+        machine,
+        out,
+        message: None,
+    };
+    match setting {
+        Setting::Numbered(number, value) => {
+            let was = vars.read(number, span).unwrap_or_default();
+            vars.write(number, value, span)?;
+            vars.out.notes.push(format!(
+                "#{number} = {value} ({written}), was {was}; set after the line's values are read (LinuxCNC)"
+            ));
+            vars.out.events.push(EventKind::VariableSet(VariableSet {
+                variable: number,
+                value: value.get(),
+                was: was.get(),
+            }));
+        }
+        Setting::Named(name, value) => {
+            let was = vars.read_named(&name, span).ok().flatten();
+            vars.write_named(&name, value, span)?;
+            let before = match was {
+                None => "was not set".to_string(),
+                Some(v) => format!("was {}", Value::Number(v)),
+            };
+            vars.out.notes.push(format!(
+                "#<{name}> = {} ({written}), {before}; set after the line's values are read (LinuxCNC)",
+                Value::Number(value)
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// A block of nothing in `block`'s place.

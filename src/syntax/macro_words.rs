@@ -16,6 +16,9 @@ use std::borrow::Cow;
 pub struct MacroBlock {
     /// A statement (`#1 = …`, `IF …`, `WHILE …`, `GOTO …`, `END …`).
     pub statement: Option<Statement>,
+    /// LinuxCNC's parameter settings (`#1 = 2` among the line's words),
+    /// made after the line's values are read (behaviour 22.10).
+    pub settings: Vec<Statement>,
     /// The words whose value is `#…` or `[…]`.
     pub words: Vec<MacroWord>,
     /// A macro call's code and arguments (G65, G66, G67: behaviour 21).
@@ -112,6 +115,7 @@ impl Blocks<'_> {
         block.macros.get_or_insert_with(|| {
             Box::new(MacroBlock {
                 statement: None,
+                settings: Vec::new(),
                 words: Vec::new(),
                 call: None,
                 source: self.text[start..end].to_string(),
@@ -184,6 +188,30 @@ impl Blocks<'_> {
             }
         }
         end
+    }
+
+    /// Reads LinuxCNC's parameter setting at `i` into the block (behaviour
+    /// 22.10); returns where the reading goes on: after it, among the
+    /// line's words, or at the line's end when it is refused.
+    fn read_setting(
+        &mut self,
+        block_start: usize,
+        i: usize,
+        line: u32,
+        block: &mut Block,
+    ) -> usize {
+        let end = self.block_end(i);
+        match macros::setting(self.text, i, end, line) {
+            Ok((s, after)) => {
+                self.macro_part(block, block_start).settings.push(s);
+                after
+            }
+            Err(d) => {
+                block.error = true;
+                self.report(d);
+                end
+            }
+        }
     }
 
     /// Reads a word's macro value at `value` (after the letter at `i`);
@@ -447,6 +475,9 @@ impl Blocks<'_> {
         block: &mut Block,
     ) -> usize {
         let bytes = self.text.as_bytes();
+        if self.options.linuxcnc && bytes[i] == b'#' {
+            return self.read_setting(start, i, line, block);
+        }
         if macros::opens_statement(bytes, i) {
             return self.read_statement(start, i, line, block);
         }

@@ -275,3 +275,41 @@ impl Parser<'_> {
         })
     }
 }
+
+/// Parses LinuxCNC's parameter setting at `start` (its `#`), up to `end`
+/// (behaviour 22.10): `#i = v` or `#<name> = v`, the value one operand as
+/// a word's is (a number, `#n`, `[…]`, a function, with signs: rs274
+/// refuses `#1 = 1 + 2`); the statement and the byte after it, where the
+/// line's other words and settings go on.
+pub fn setting(
+    text: &str,
+    start: usize,
+    end: usize,
+    line: u32,
+) -> Result<(Statement, usize), Diagnostic> {
+    let mut p = Parser::new(text, start, end, line);
+    p.linuxcnc = true;
+    p.blanks();
+    let start = p.pos;
+    let target = p.variable()?;
+    let target_span = target.span;
+    p.expect(b'=', "is where `=` must follow the parameter")?;
+    let value = p.unary(false)?;
+    let span = p.span(start, p.pos);
+    let kind = match target.kind {
+        ExprKind::Named(name) => StatementKind::AssignNamed {
+            name,
+            target_span,
+            value,
+        },
+        ExprKind::Var(index) => StatementKind::Assign {
+            target: *index,
+            target_span,
+            value,
+        },
+        _ => {
+            return Err(alarm::FORMAT.at(target_span, "a parameter must open the setting"));
+        }
+    };
+    Ok((Statement { kind, span }, p.pos))
+}
