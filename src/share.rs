@@ -20,7 +20,8 @@ use percent_encoding::{AsciiSet, CONTROLS, percent_decode_str, utf8_percent_enco
 
 use crate::document::{Document, ViewPlane, ViewState};
 use crate::setup::{
-    DecimalInput, LatheXOffset, LengthOffsetWithoutZ, MachineKind, Mirror, Position, Units,
+    DecimalInput, LatheXOffset, LengthOffsetWithoutZ, MachineKind, Mirror, Position, ToolTable,
+    Units,
 };
 
 /// The prefix of version 1 compact payloads.
@@ -475,18 +476,9 @@ fn decode_plain(fragment: &str) -> Result<Link, LinkError> {
             "offset" => offsets.push(v.to_string()),
             "tool" => tools.push(v.to_string()),
             "tool_table" => {
-                let (table, _) = crate::setup::ToolTable::parse(v).map_err(|e| {
-                    let p = &e[0];
-                    err(
-                        "link-plain",
-                        format!(
-                            "tool_table line {} column {}: {}",
-                            p.line, p.column, p.message
-                        ),
-                    )
-                })?;
                 let units = s.tool_table.as_ref().and_then(|t| t.units);
-                s.tool_table = Some(crate::setup::ToolTable { units, ..table });
+                let table = ToolTable::from_text(v).map_err(|e| err("link-plain", e))?;
+                s.tool_table = Some(ToolTable { units, ..table });
             }
             "tool_table_units" => {
                 let u = match v {
@@ -494,7 +486,7 @@ fn decode_plain(fragment: &str) -> Result<Link, LinkError> {
                     "inch" => Units::Inch,
                     _ => return Err(bad(key, v, "mm or inch")),
                 };
-                s.tool_table.get_or_insert_with(Default::default).units = Some(u);
+                s.tool_table.get_or_insert_with(ToolTable::default).units = Some(u);
             }
             "decimal_input" => {
                 s.settings.decimal_input = match v {

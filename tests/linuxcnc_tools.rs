@@ -229,3 +229,20 @@ fn behaviour22_9_linuxcnc_entry_is_a_corner_and_g40_alone_moves_nothing() {
     );
     same(r.moves.last().unwrap().to, [20.0, 0.0, 10.0]);
 }
+
+#[test]
+fn behaviour22_10_tool_parameters_read_the_spindle_tools_entry() {
+    // T1 M6: #5400 = 1, #5403 = its Z 1.0 and #5410 its diameter 0.25, as
+    // the inch table holds them, read into a G21 program's words as mm.
+    let r = ok(
+        "G21 G90\nT1 M6\nG0 X#5403 Y#5410 Z#5400\nT0 M6\nG0 X#5403 Y#5410 Z#5400\nM2\n",
+        &with_table(),
+    );
+    same(r.moves[0].to, [1.0, 0.25, 1.0]);
+    same(r.moves[1].to, [0.0, 0.0, 0.0]);
+    // Read only, as in LinuxCNC.
+    assert_eq!(
+        errors("G21\n#5403 = 2\nM2\n", &with_table()),
+        vec!["macro-system-variable"]
+    );
+}

@@ -88,6 +88,26 @@ impl Machine {
         }
     }
 
+    /// #5401–#5413: the offsets X…W, diameter, front and back angle and
+    /// orientation of the tool in the spindle, from the tool table.
+    fn spindle_entry(&self, n: u32) -> f64 {
+        let Some(t) = self
+            .setup
+            .tool_table
+            .as_ref()
+            .and_then(|t| t.tools.get(&self.state.tool))
+        else {
+            return 0.0;
+        };
+        match n {
+            5401..=5409 => t.offsets[(n - 5401) as usize],
+            5410 => t.diameter,
+            5411 => t.front_angle,
+            5412 => t.back_angle,
+            _ => f64::from(t.orientation),
+        }
+    }
+
     /// The value of LinuxCNC parameter `#n`.
     pub(crate) fn read_parameter(&self, n: u32, span: Span) -> Result<f64, Diagnostic> {
         if n == 0 || n > LAST {
@@ -105,17 +125,11 @@ impl Machine {
             Param::System => s.modal.work.index().map_or(0.0, |i| i as f64 + 1.0),
             Param::ReadOnly => match n {
                 5400 => f64::from(s.tool),
+                // The spindle tool's entry as the table holds it, in its
+                // units (rs274 -g, behaviour 22.9, 22.10); no table, 0.
+                5401..=5413 => self.spindle_entry(n),
                 5420..=5422 => self.in_program_units(s.programmed[(n - 5420) as usize]),
-                5423..=5428 => 0.0,
-                _ => {
-                    return Err(Diagnostic::error(
-                        "macro-system-variable",
-                        span,
-                        format!(
-                            "#{n} is the tool's offsets, diameter or orientation from LinuxCNC's tool table, which offsetlab does not read yet"
-                        ),
-                    ));
-                }
+                _ => 0.0,
             },
             Param::Unmodelled(what) => {
                 return Err(Diagnostic::error(

@@ -162,6 +162,20 @@ impl ToolTable {
         }
     }
 
+    /// The table of a file's text, or its first error as a sentence (a
+    /// plain link's `tool_table=`).
+    pub fn from_text(text: &str) -> Result<ToolTable, String> {
+        match ToolTable::parse(text) {
+            Ok((table, _)) => Ok(table),
+            Err(e) => Err(e.first().map_or_else(String::new, |p| {
+                format!(
+                    "tool_table line {} column {}: {}",
+                    p.line, p.column, p.message
+                )
+            })),
+        }
+    }
+
     /// The table as a LinuxCNC tool table file, one tool a line.
     pub fn to_file(&self) -> String {
         let mut out = String::new();
