@@ -246,3 +246,32 @@ fn behaviour22_10_tool_parameters_read_the_spindle_tools_entry() {
         vec!["macro-system-variable"]
     );
 }
+
+#[test]
+fn behaviour22_11_linuxcnc_g92_1_zeroes_the_offset_and_g53_moves_in_g0_or_g1() {
+    let l = {
+        let mut s = Setup::default();
+        s.settings.control = Control::Linuxcnc;
+        s
+    };
+    // G92 X0 at X10 shifts the zero by 10: G0 X1 is machine X11. G92.1
+    // alone cancels the shift on every axis: the tool, unmoved, reads X11,
+    // and G0 X5 goes from there to machine (and work) X5.
+    let r = ok("G21 G90\nG0 X10\nG92 X0\nG0 X1\nG92.1\nG0 X5\nM2\n", &l);
+    same(r.moves[1].to, [1.0, 0.0, 0.0]);
+    same(r.moves[2].from, [11.0, 0.0, 0.0]);
+    same(r.moves[2].to, [5.0, 0.0, 0.0]);
+    // With an axis word it is refused (rs274 would move with it).
+    assert_eq!(errors("G21\nG92.1 X0\nM2\n", &l), vec!["g92-1-value"]);
+    // G53 in G1 feeds; in G2 it is refused ("Must use g0 or g1 with g53").
+    let r = ok("G21 G90 F100\nG1 X1\nG53 X10\nM2\n", &l);
+    assert!(
+        matches!(r.moves[1].kind, offsetlab::MoveKind::Feed),
+        "{:?}",
+        r.moves[1].kind
+    );
+    assert_eq!(
+        errors("G21 F100\nG2 X1 Y1 R1\nG53 X10\nM2\n", &l),
+        vec!["g53-motion"]
+    );
+}
