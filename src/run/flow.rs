@@ -242,7 +242,7 @@ impl<'t> Runner<'t> {
         let Some(statement) = m.statement.clone() else {
             return Ok(());
         };
-        let (start, line) = (self.block.span.start, self.block.span.line);
+        let start = self.block.span.start;
         let depth = self.sequences.depth;
         let program = self.program_start();
         let key = program.offset();
@@ -392,8 +392,11 @@ impl<'t> Runner<'t> {
                             top.map_or(0, |t| t.label),
                             top.map_or(0, |t| t.span.line)
                         ),
+                        // No line in the sentence: the diagnostic has the
+                        // END's (a run resumed after an edit renumbers
+                        // diagnostics, not their text).
                         None => format!(
-                            "END {label} at line {line} has no DO {label} running: an END closes the loop its DO opened"
+                            "END {label} has no DO {label} running: an END closes the loop its DO opened"
                         ),
                     };
                     return Err(alarm::LOOP_NUMBER.at(statement.span, message));
