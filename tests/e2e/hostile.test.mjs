@@ -507,9 +507,10 @@ describe('the hostile corpus', () => {
         assert.deepEqual(await foreignElements(page), NO_FOREIGN, name);
       }
       assert.equal(dialogs.n, 0);
-      // Still usable.
-      await typeProgram(page, 'G90 G00 X0 Y0;\nG01 X10. Y10. F100.;\n');
-      assert.match(await page.locator('#summary').textContent(), /^2 blocks · 1 move · 0 errors/);
+      // Still usable (with M30: an opened file may have chosen LinuxCNC,
+      // which refuses a program without its end, behaviour 22.9).
+      await typeProgram(page, 'G90 G00 X0 Y0;\nG01 X10. Y10. F100.;\nM30;\n');
+      assert.match(await page.locator('#summary').textContent(), /^3 blocks · 1 move · 0 errors/);
       assert.ok(await drawn(page));
     }, { init: 'window.offsetlabTest = { budgetMs: 120000 };' });
   });

@@ -27,6 +27,7 @@ export function toolTableSection({ getSetup, change }) {
   text.setAttribute('aria-label', 'Tool table, LinuxCNC file format');
   const units = document.createElement('select');
   units.id = 'tool-table-units';
+  units.setAttribute('aria-label', 'Tool table lengths in');
   for (const [value, label] of [['', 'the setup’s units'], ['mm', 'mm'], ['inch', 'inch']]) {
     const o = document.createElement('option');
     o.value = value;
