@@ -10,12 +10,6 @@ use common::*;
 use offsetlab::setup::{Control, DecimalInput, DwellPDecimalPoint, Semicolon, Settings};
 use offsetlab::{Setup, run};
 
-fn linuxcnc() -> Setup {
-    let mut s = Setup::default();
-    s.settings.control = Control::Linuxcnc;
-    s
-}
-
 #[test]
 fn behaviour22_1_the_linuxcnc_profile_reads_numbers_as_values_and_starts_at_the_origin() {
     let mut s = Settings {
@@ -239,17 +233,6 @@ fn behaviour22_5_linuxcnc_fix_fup_round_mod_and_unrounded_words() {
     );
 }
 
-/// The first error's code and line.
-fn first_error(text: &str) -> (&'static str, u32) {
-    let r = run(text, &linuxcnc());
-    let d = r
-        .diagnostics
-        .iter()
-        .find(|d| d.is_error())
-        .unwrap_or_else(|| panic!("no error in {:#?}", r.diagnostics));
-    (d.code, d.span.line)
-}
-
 #[test]
 fn behaviour22_5_linuxcnc_power_chained_comparisons_and_logic_on_values() {
     // 2**3**2 is [2**3]**2 = 64, /8 = 8; -2**2 is 4 (the sign binds
@@ -276,16 +259,22 @@ fn behaviour22_6_named_parameters_local_to_their_level_global_with_an_underscore
     same(r.moves[1].to, [6.0, 7.0, 0.0]);
     // Reading a name never set is LinuxCNC's error, at its line.
     assert_eq!(
-        first_error("G21\n#<depth> = 1\nG0 Z#<dpeth>\nM2\n"),
+        error_line("G21\n#<depth> = 1\nG0 Z#<dpeth>\nM2\n", &linuxcnc()),
         ("named-parameter", 3)
     );
     // A main program's local is not the sub's.
     assert_eq!(
-        first_error("o2 sub\n  G0 X#<a>\no2 endsub\n#<a> = 1\no2 call\nM2\n"),
+        error_line(
+            "o2 sub\n  G0 X#<a>\no2 endsub\n#<a> = 1\no2 call\nM2\n",
+            &linuxcnc()
+        ),
         ("named-parameter", 2)
     );
     // A predefined parameter is read, never set.
-    assert_eq!(first_error("#<_x> = 1\nM2\n"), ("named-parameter", 1));
+    assert_eq!(
+        error_line("#<_x> = 1\nM2\n", &linuxcnc()),
+        ("named-parameter", 1)
+    );
 }
 
 #[test]
@@ -334,20 +323,29 @@ fn behaviour22_7_owords_branch_loop_and_call_as_rs274_runs_them() {
     // rs274's refusals: break in a repeat, a sub defined twice, a call to
     // no sub, a false if with no endif (reported at the file's end).
     assert_eq!(
-        first_error("o1 repeat [2]\n  o1 break\no1 endrepeat\nM2\n"),
+        error_line("o1 repeat [2]\n  o1 break\no1 endrepeat\nM2\n", &linuxcnc()),
         ("oword", 2)
     );
     assert_eq!(
-        first_error("o1 sub\no1 endsub\no1 call\no1 sub\no1 endsub\nM2\n"),
+        error_line(
+            "o1 sub\no1 endsub\no1 call\no1 sub\no1 endsub\nM2\n",
+            &linuxcnc()
+        ),
         ("oword", 4)
     );
-    assert_eq!(first_error("G21\no<nosuch> call\nM2\n"), ("oword", 2));
+    assert_eq!(
+        error_line("G21\no<nosuch> call\nM2\n", &linuxcnc()),
+        ("oword", 2)
+    );
     // `O1000 (NAME)` with no keyword is the program's number, as rs274
     // reads it; an unknown keyword is an error.
     let r = ok("%\nO1000 (NAME)\nG21\nG0 X1\nM2\n%\n", &linuxcnc());
     same(r.moves[0].to, [1.0, 0.0, 0.0]);
-    assert_eq!(first_error("o1 loop\nM2\n"), ("oword", 1));
-    assert_eq!(first_error("G21\no5 if [0]\nG0 X1\nM2\n"), ("oword", 4));
+    assert_eq!(error_line("o1 loop\nM2\n", &linuxcnc()), ("oword", 1));
+    assert_eq!(
+        error_line("G21\no5 if [0]\nG0 X1\nM2\n", &linuxcnc()),
+        ("oword", 4)
+    );
 }
 
 #[test]
@@ -367,7 +365,7 @@ fn behaviour22_7_a_runaway_oword_loop_stops_at_the_block_limit() {
         r.diagnostics
     );
     assert_eq!(
-        first_error("o1 sub\n  o1 call\no1 endsub\no1 call\nM2\n"),
+        error_line("o1 sub\n  o1 call\no1 endsub\no1 call\nM2\n", &linuxcnc()),
         ("oword", 2)
     );
 }

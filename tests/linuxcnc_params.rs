@@ -8,25 +8,7 @@
 
 mod common;
 use common::*;
-use offsetlab::setup::{Control, Position};
-use offsetlab::{Setup, run};
-
-fn linuxcnc() -> Setup {
-    let mut s = Setup::default();
-    s.settings.control = Control::Linuxcnc;
-    s
-}
-
-/// The first error's code and line.
-fn error_of(text: &str, setup: &Setup) -> (&'static str, u32) {
-    let r = run(text, setup);
-    let d = r
-        .diagnostics
-        .iter()
-        .find(|d| d.is_error())
-        .unwrap_or_else(|| panic!("no error in {:#?}", r.diagnostics));
-    (d.code, d.span.line)
-}
+use offsetlab::setup::Position;
 
 #[test]
 fn behaviour22_10_linuxcnc_parameters_past_30_are_global_and_read_0_unset() {
@@ -43,11 +25,11 @@ fn behaviour22_10_linuxcnc_parameters_past_30_are_global_and_read_0_unset() {
     // #0 and #5602 are out of LinuxCNC's range, read or set.
     let s = linuxcnc();
     assert_eq!(
-        error_of("G21\nG0 X[#0 + 1]\nM2\n", &s),
+        error_line("G21\nG0 X[#0 + 1]\nM2\n", &s),
         ("macro-variable-number", 2)
     );
     assert_eq!(
-        error_of("G21\n#5000 = 1\n#5602 = 1\nM2\n", &s),
+        error_line("G21\n#5000 = 1\n#5602 = 1\nM2\n", &s),
         ("macro-variable-number", 3)
     );
 }
@@ -67,7 +49,7 @@ fn behaviour22_10_linuxcnc_settings_take_effect_after_the_line() {
     same(r.moves[5].to, [12.5, 20.0, 0.0]);
     // A setting's value is one operand, as rs274 reads it: `1 + 2` needs
     // brackets.
-    assert_eq!(error_of("G21\n#1 = 1 + 2\nM2\n", &linuxcnc()).1, 2);
+    assert_eq!(error_line("G21\n#1 = 1 + 2\nM2\n", &linuxcnc()).1, 2);
 }
 
 #[test]
@@ -121,7 +103,7 @@ fn behaviour22_10_linuxcnc_control_parameters_read_the_machine_in_its_units() {
 #[test]
 fn behaviour22_10_linuxcnc_refuses_settings_it_cannot_honour() {
     let s = linuxcnc();
-    let e = |t: &str| error_of(t, &s);
+    let e = |t: &str| error_line(t, &s);
     // Read only in LinuxCNC ("Parameter is readonly").
     assert_eq!(e("G21\n#5420 = 1\nM2\n"), ("macro-system-variable", 2));
     assert_eq!(e("G21\n#5400 = 1\nM2\n"), ("macro-system-variable", 2));

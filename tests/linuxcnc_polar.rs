@@ -8,14 +8,8 @@
 mod common;
 use common::*;
 use offsetlab::machine::MoveKind;
-use offsetlab::setup::Control;
-use offsetlab::{Setup, run};
 
-fn linuxcnc() -> Setup {
-    let mut s = Setup::default();
-    s.settings.control = Control::Linuxcnc;
-    s
-}
+use offsetlab::{Setup, run};
 
 fn first_error_of(text: &str) -> (&'static str, u32, u32) {
     first_error(&run(text, &linuxcnc()))

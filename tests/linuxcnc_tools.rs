@@ -15,8 +15,7 @@ use offsetlab::{Setup, Units};
 const TABLE: &str = "T1 P1 Z1.0 D0.25 ;quarter inch\nT2 P2 Z-0.5 D0.5\nT3 P5 Z0.25 D0.125\n";
 
 fn with_table() -> Setup {
-    let mut s = Setup::default();
-    s.settings.control = Control::Linuxcnc;
+    let mut s = linuxcnc();
     let (mut table, warnings) = ToolTable::parse(TABLE).unwrap();
     assert!(warnings.is_empty());
     table.units = Some(Units::Inch);
@@ -157,8 +156,7 @@ fn behaviour22_9_a_linuxcnc_program_ends_with_m2_m30_or_a_closing_percent() {
 #[test]
 fn behaviour22_9_without_a_table_the_registers_stand_for_it() {
     // No table: T7 is accepted and G43 H1 reads register H01.
-    let mut s = Setup::default();
-    s.settings.control = Control::Linuxcnc;
+    let mut s = linuxcnc();
     s.set_register("01=5.").unwrap();
     let r = ok("G21\nT7 M6\nG43 H1\nG0 Z5\nM2\n", &s);
     same(r.moves[0].to, [0.0, 0.0, 10.0]);
@@ -249,11 +247,7 @@ fn behaviour22_10_tool_parameters_read_the_spindle_tools_entry() {
 
 #[test]
 fn behaviour22_11_linuxcnc_g92_1_zeroes_the_offset_and_g53_moves_in_g0_or_g1() {
-    let l = {
-        let mut s = Setup::default();
-        s.settings.control = Control::Linuxcnc;
-        s
-    };
+    let l = linuxcnc();
     // G92 X0 at X10 shifts the zero by 10: G0 X1 is machine X11. G92.1
     // alone cancels the shift on every axis: the tool, unmoved, reads X11,
     // and G0 X5 goes from there to machine (and work) X5.

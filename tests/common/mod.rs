@@ -114,6 +114,19 @@ pub fn first_error(r: &Run) -> (&'static str, u32, u32) {
     (d.code, d.line, d.column)
 }
 
+/// The code and line of the first error running `text` with `setup`.
+pub fn error_line(text: &str, setup: &Setup) -> (&'static str, u32) {
+    let (code, line, _) = first_error(&run(text, setup));
+    (code, line)
+}
+
+/// A mill setup under the linuxcnc profile (behaviour 22).
+pub fn linuxcnc() -> Setup {
+    let mut s = Setup::default();
+    s.settings.control = offsetlab::setup::Control::Linuxcnc;
+    s
+}
+
 /// The seconds of every dwell the run made, in order.
 pub fn dwells(r: &Run) -> Vec<f64> {
     r.events
