@@ -453,6 +453,11 @@ fn decode_plain(fragment: &str) -> Result<Link, LinkError> {
             .filter(|v| v.is_finite())
             .ok_or_else(|| bad(key, value, "a number"))
     };
+    let units = |key: &str, v: &str| match v {
+        "mm" => Ok(Units::Mm),
+        "inch" => Ok(Units::Inch),
+        _ => Err(bad(key, v, "mm or inch")),
+    };
     let s = &mut doc.setup;
     let mut settings = serde_json::Map::new();
     for (key, value) in &pairs {
@@ -466,13 +471,7 @@ fn decode_plain(fragment: &str) -> Result<Link, LinkError> {
                     _ => return Err(bad(key, v, "mill or lathe")),
                 }
             }
-            "units" => {
-                s.units = match v {
-                    "mm" => Units::Mm,
-                    "inch" => Units::Inch,
-                    _ => return Err(bad(key, v, "mm or inch")),
-                }
-            }
+            "units" => s.units = units(key, v)?,
             "offset" => offsets.push(v.to_string()),
             "tool" => tools.push(v.to_string()),
             "tool_table" => {
@@ -480,13 +479,15 @@ fn decode_plain(fragment: &str) -> Result<Link, LinkError> {
                 let table = ToolTable::from_text(v).map_err(|e| err("link-plain", e))?;
                 s.tool_table = Some(ToolTable { units, ..table });
             }
+            // Units alone would make an empty table that refuses every T.
+            "tool_table_units" if !seen.contains(&"tool_table") => {
+                return Err(err(
+                    "link-plain",
+                    "tool_table_units= gives the units of the link's tool table: give tool_table= too",
+                ));
+            }
             "tool_table_units" => {
-                let u = match v {
-                    "mm" => Units::Mm,
-                    "inch" => Units::Inch,
-                    _ => return Err(bad(key, v, "mm or inch")),
-                };
-                s.tool_table.get_or_insert_with(ToolTable::default).units = Some(u);
+                s.tool_table.get_or_insert_with(ToolTable::default).units = Some(units(key, v)?);
             }
             "decimal_input" => {
                 s.settings.decimal_input = match v {

@@ -185,6 +185,10 @@ fn behaviour22_9_links_keep_the_tool_table() {
     // Through the link, tool 1 still offsets Z5 to 30.4.
     let r = ok(&back.program, &back.setup);
     same(r.moves[0].to, [0.0, 0.0, 30.4]);
+    // Units without a table are refused at the link, not read as an empty
+    // table that would refuse every T of the program.
+    let e = decode("#program=M2&tool_table_units=inch").unwrap_err();
+    assert!(e.message.contains("give tool_table= too"), "{e:?}");
 }
 
 #[test]
@@ -255,8 +259,13 @@ fn behaviour22_11_linuxcnc_g92_1_zeroes_the_offset_and_g53_moves_in_g0_or_g1() {
     same(r.moves[1].to, [1.0, 0.0, 0.0]);
     same(r.moves[2].from, [11.0, 0.0, 0.0]);
     same(r.moves[2].to, [5.0, 0.0, 0.0]);
-    // With an axis word it is refused (rs274 would move with it).
-    assert_eq!(errors("G21\nG92.1 X0\nM2\n", &l), vec!["g92-1-value"]);
+    // With an axis word it is refused (rs274 would move with it in G0; in
+    // the G80 it starts in, rs274 refuses the axis word, 22.18).
+    assert_eq!(errors("G21 G0\nG92.1 X0\nM2\n", &l), vec!["g92-1-value"]);
+    assert_eq!(
+        errors("G21\nG92.1 X0\nM2\n", &l),
+        vec!["axis-without-motion"]
+    );
     // G53 in G1 feeds; in G2 it is refused ("Must use g0 or g1 with g53").
     let r = ok("G21 G90 F100\nG1 X1\nG53 X10\nM2\n", &l);
     assert!(

@@ -23,6 +23,8 @@ use super::words::MOTION_WORDS;
 // machine's module list is at its file's line limit).
 #[path = "linuxcnc_dwell.rs"]
 mod linuxcnc_dwell;
+#[path = "linuxcnc_motion.rs"]
+mod linuxcnc_motion;
 #[path = "linuxcnc_polar.rs"]
 mod linuxcnc_polar;
 
@@ -42,6 +44,9 @@ impl Machine {
         // block goes through the compensation below.
         if !self.special && b.holds_only(&MOTION_WORDS, &[Group::Motion]) {
             return self.motion_block(b, out);
+        }
+        if self.setup.settings.control == crate::setup::Control::Linuxcnc {
+            self.linuxcnc_motion_mode(b)?;
         }
         // LinuxCNC's `@` `^` become the block's X and Y (behaviour 22.12);
         // only its profile reads them. Its G4 dwells, then moves by the

@@ -257,7 +257,7 @@ impl Machine {
             turning: lathe::TurningData::default(),
             mrc: mrc::MrcData::default(),
             feed_warned: false,
-            special: false,
+            special: state.modal.motion_none,
             index: 0,
             line: 0,
             span: Span::default(),
@@ -287,7 +287,8 @@ impl Machine {
         // A copy reading ahead for the compensation runs plain moves by the
         // fast path: it wants their programmed moves only.
         self.special = self.state.modal.feed_mode == modal::FeedMode::InverseTime
-            || (self.state.cutter.engaged() && !self.reading_ahead);
+            || (self.state.cutter.engaged() && !self.reading_ahead)
+            || self.state.modal.motion_none;
     }
 
     /// The setup this machine runs with, with what G10 blocks have written

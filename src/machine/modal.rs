@@ -57,6 +57,9 @@ pub struct Modal {
     /// G90.1/G91.1 (mill), None until the program writes one (behaviour
     /// 13.12).
     pub arc_center: Option<ArcCenter>,
+    /// LinuxCNC's G80 motion mode (behaviour 22.18): no motion code is in
+    /// effect, at the start and after G80; `motion` keeps the last one.
+    pub motion_none: bool,
 }
 
 /// Haas G187's smoothness: a level and a corner tolerance (behaviour 14.6).
@@ -115,6 +118,8 @@ impl Modal {
             transforms: Transforms::default(),
             polar_coordinates: PolarMode::Cancel,
             arc_center: None,
+            motion_none: setup.settings.control == crate::setup::Control::Linuxcnc
+                && machine == MachineKind::Mill,
         }
     }
 
@@ -123,7 +128,10 @@ impl Modal {
         let table: CodeTable = table.into();
         let mill = table.machine() == MachineKind::Mill;
         ModalCodes {
-            motion: Code::Motion(self.motion).gcode(table),
+            motion: match self.motion_none {
+                true => CannedCycle::Cancel.gcode(),
+                false => Code::Motion(self.motion).gcode(table),
+            },
             plane: self.plane.gcode(),
             // The lathe has the distance codes in G-code systems B and C.
             distance: (mill || table.lathe_distance_codes()).then_some(self.distance.gcode()),
