@@ -2,7 +2,8 @@
 //! the interpreter starts in it, it ends G0–G3 as well as a canned cycle,
 //! and in it an axis word needs a code on its line that uses it. The
 //! move-by-move comparison with rs274 is `tests/linuxcnc/m01_*.ngc` and
-//! `tests/linuxcnc/refused/r08`, `r12`, `r34`, `r35`.
+//! `tests/linuxcnc/refused/r08`, `r12`, `r34`, `r35`; behaviour 22.19, the
+//! `%` lines: `m02_*.ngc`, `refused/r36`, `r37`.
 #![cfg(not(target_arch = "wasm32"))]
 
 mod common;
@@ -63,4 +64,31 @@ fn behaviour22_18_g10_g28_g92_and_g43_1_use_their_axis_words_in_g80() {
     // G10 L2 P2 X1 Y1 writes G55's origin and moves nothing.
     let r = ok("G21 G90\nG10 L2 P2 X1 Y1\nM2\n", &l);
     assert!(r.moves.is_empty(), "{:?}", r.moves);
+}
+
+#[test]
+fn behaviour22_19_a_percent_is_a_tape_mark_only_alone_and_first_or_closing() {
+    let l = linuxcnc();
+    // Blank lines before the opening `%`; the closing one ends the program
+    // without M2: G0 X1 is the one move, X5 after it is not read.
+    let r = ok("\n  \n%\nG21 G0 X1\n%\nG0 X5\n", &l);
+    assert_eq!(r.moves.len(), 1);
+    same(r.moves[0].to, [1.0, 0.0, 0.0]);
+    // A `%` after a block of a text that did not open with one; after a
+    // comment line; with text after it.
+    assert_eq!(
+        error_line("G21 G0 X1\n%\nG0 X2\nM2\n", &l),
+        ("bad-character", 2)
+    );
+    assert_eq!(
+        error_line("(plate)\n%\nG21 G0 X1\nM2\n", &l),
+        ("bad-character", 2)
+    );
+    assert_eq!(
+        error_line("% plate\nG21 G0 X1\nM2\n", &l),
+        ("bad-character", 1)
+    );
+    // The Fanuc family reads a `%` after blocks as the tape's end (1.3).
+    let r = ok("G21 G0 X1.\n%\nG0 X2.\n", &mill(&[]));
+    assert_eq!(r.moves.len(), 1);
 }

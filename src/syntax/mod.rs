@@ -17,6 +17,7 @@ mod lexer;
 mod macro_call;
 mod macro_words;
 mod messages;
+mod percent;
 mod program;
 mod read;
 mod resume;
@@ -591,6 +592,11 @@ impl<'a> Blocks<'a> {
             return (i, false);
         }
         if bytes[i] == b'%' {
+            if self.options.linuxcnc
+                && let Some(end) = self.linuxcnc_bad_percent(i, line, block)
+            {
+                return (end, true);
+            }
             // Tape start before any block, tape end after (behaviour 1.3); the rest
             // of the line is not read.
             self.tape = match self.tape {
