@@ -12,6 +12,7 @@ use crate::syntax::Block;
 // LinuxCNC's arc rules (behaviour 22.16), declared where they are called.
 #[path = "linuxcnc_arcs.rs"]
 mod linuxcnc_arcs;
+pub(in crate::machine) use linuxcnc_arcs::point_arc;
 
 impl Machine {
     /// Builds the circle of an arc move for both paths (behaviour 2.12, 4.8).

@@ -5,10 +5,10 @@
 //! and what `rs274 -g` does with `tests/linuxcnc/a*.ngc` and
 //! `refused/ra*.ngc`: where the two disagree the output is followed.
 
-use std::f64::consts::SQRT_2;
+use std::f64::consts::{SQRT_2, TAU};
 
-use super::Machine;
 use super::arc::P2;
+use super::{ArcInfo, Machine};
 use crate::diag::Diagnostic;
 use crate::geometry::{Xyz, to_units};
 use crate::setup::Units;
@@ -211,5 +211,21 @@ impl Machine {
             ));
         }
         Ok(())
+    }
+}
+
+/// The compensated arc rs274 sends when the tool's radius is the arc's and
+/// the tool is inside it: start, end and centre one point, the turns kept
+/// (`rs274 -g` on `tests/linuxcnc/a05_comp_arc_tool_radius.ngc`; the
+/// oracle reads a point arc as a full turn each, so the sweep is whole
+/// turns). Drawn, it is the helix's rise alone.
+pub(in crate::machine) fn point_arc(info: &ArcInfo, center: Xyz) -> ArcInfo {
+    let turns = 1.0 + (super::arc::extra_turns(info.programmed_sweep) / TAU).round();
+    ArcInfo {
+        center,
+        radius: 0.0,
+        sweep: (TAU * turns).copysign(info.programmed_sweep),
+        start_angle: info.programmed_start_angle,
+        ..*info
     }
 }
