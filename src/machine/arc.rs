@@ -26,7 +26,8 @@ pub struct Circle {
     pub radius: f64,
     /// Angle of the start point (radians).
     pub start_angle: f64,
-    /// Signed sweep (positive counter-clockwise), up to ±2π.
+    /// Signed sweep (positive counter-clockwise), up to ±2π but for
+    /// LinuxCNC's whole turns (G2/G3 P, behaviour 22.16).
     pub sweep: f64,
 }
 
@@ -78,6 +79,13 @@ fn sweep_between(start_angle: f64, end_angle: f64, ccw: bool, full: bool) -> f64
         let s = (start_angle - end_angle).rem_euclid(TAU);
         -(if s == 0.0 { TAU } else { s })
     }
+}
+
+/// The whole turns of a sweep beyond its first (radians, not signed): 0 up
+/// to a full circle, 2π for LinuxCNC's `P2` (behaviour 22.16).
+pub fn extra_turns(sweep: f64) -> f64 {
+    let turns = (sweep.abs() / TAU - 1e-9).ceil() - 1.0;
+    TAU * turns.max(0.0)
 }
 
 /// The arc from `start` to `end` around `center` (I/J/K form). Start = end is

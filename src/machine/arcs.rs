@@ -9,6 +9,11 @@ use crate::geometry::{Xyz, to_units};
 use crate::setup::MachineKind;
 use crate::syntax::Block;
 
+// LinuxCNC's arc rules (behaviour 22.16), declared where they are called.
+#[path = "linuxcnc_arcs.rs"]
+mod linuxcnc_arcs;
+pub(in crate::machine) use linuxcnc_arcs::point_arc;
+
 impl Machine {
     /// Builds the circle of an arc move for both paths (behaviour 2.12, 4.8).
     pub(super) fn arc_geometry(&self, b: &Block, req: &ArcRequest) -> Result<ArcInfo, Diagnostic> {
@@ -48,6 +53,15 @@ impl Machine {
         // nothing changed by G45–G48: nearly every arc), the actual circle is
         // the programmed one moved by that vector; solving it again would
         // only repeat the work.
+        if self.setup.settings.control == crate::setup::Control::Linuxcnc {
+            let centre = match req.radius {
+                Some((r, _)) => linuxcnc_arcs::Centre::Radius(r),
+                None => {
+                    linuxcnc_arcs::Centre::Point([p0[0] + req.center[ia], p0[1] + req.center[ib]])
+                }
+            };
+            self.linuxcnc_arc_check(b, p0, p1, centre)?;
+        }
         let shift = [a0[0] - p0[0], a0[1] - p0[1]];
         let moved = (a1[0] - p1[0] - shift[0]).abs() < 1e-9
             && (a1[1] - p1[1] - shift[1]).abs() < 1e-9
@@ -96,15 +110,21 @@ impl Machine {
                 ),
             }
         };
-        let prog: Circle =
+        let mut prog: Circle =
             prog.map_err(|e| self.error("arc-radius", b.span, say(e, "programmed")))?;
-        let act: Circle = act.map_err(|e| {
+        let mut act: Circle = act.map_err(|e| {
             let mut m = say(e, "actual");
             m.push_str(
                 ": the offsets make this arc impossible (seed 003: build the arc from quarter circles whose ends lie on the axes through the centre)",
             );
             self.error("arc-radius", b.span, m)
         })?;
+        // LinuxCNC's P: whole turns before the arc's own sweep (22.16).
+        if req.turns > 0 {
+            let extra = std::f64::consts::TAU * f64::from(req.turns);
+            prog.sweep += extra.copysign(prog.sweep);
+            act.sweep += extra.copysign(act.sweep);
+        }
         Ok(ArcInfo {
             plane,
             center: from_plane(act.center, act0),
@@ -135,4 +155,7 @@ pub(crate) struct ArcRequest {
     pub(super) center_change: Xyz,
     /// R (mm) and the change G45–G48 made to it.
     pub(super) radius: Option<(f64, f64)>,
+    /// LinuxCNC's G2/G3 P less 1: the whole turns made before the arc's
+    /// own sweep (behaviour 22.16); 0 elsewhere.
+    pub(super) turns: u32,
 }

@@ -481,6 +481,9 @@ impl Machine {
             target,
             ..ArcRequest::default()
         };
+        if self.setup.settings.control == crate::setup::Control::Linuxcnc {
+            req.turns = self.linuxcnc_arc_words(b, target)?;
+        }
         let (ia, ib, _) = self.state.modal.plane.axes();
         req.ccw = (direction == ArcDirection::Ccw) != (self.mirror[ia] != self.mirror[ib]);
         let framed = !self.plain_words;

@@ -46,30 +46,32 @@ impl Machine {
     ) -> Result<(), Diagnostic> {
         let c = b.codes();
         let mill = self.setup.machine == MachineKind::Mill;
+        let linuxcnc = self.setup.settings.control == crate::setup::Control::Linuxcnc;
         if let Some(mode) = c.cutting_mode()
+            && linuxcnc
+        {
+            self.linuxcnc_path_mode(b, out, mode)?;
+        } else if let Some(mode) = c.cutting_mode()
             && let Some(w) = b.get(Address::P).or_else(|| b.get(Address::Q))
         {
-            if mode == CuttingMode::Cutting
-                && self.setup.settings.control == crate::setup::Control::Linuxcnc
-            {
-                self.blending_tolerance(b, out)?;
-            } else {
-                return Err(self.error(
-                    "mode-words",
-                    w.span,
-                    format!(
-                        "{} takes no {} (a path tolerance G64 P… is LinuxCNC's, not a Fanuc, Haas or YASNAC word)",
-                        mode.gcode(),
-                        w.address.letter()
-                    ),
-                ));
-            }
+            return Err(self.error(
+                "mode-words",
+                w.span,
+                format!(
+                    "{} takes no {} (a path tolerance G64 P… is LinuxCNC's, not a Fanuc, Haas or YASNAC word)",
+                    mode.gcode(),
+                    w.address.letter()
+                ),
+            ));
         }
         if let Some(mode) = c.cutting_mode()
             && mode != before.cutting_mode
         {
             self.state.modal.cutting_mode = mode;
-            out.notes.push(cutting_mode_sentence(mode).to_string());
+            // LinuxCNC's sentence was said above, at every such block.
+            if !linuxcnc {
+                out.notes.push(cutting_mode_sentence(mode).to_string());
+            }
         }
         if mill
             && let Some(feed) = c.feed_mode()
@@ -481,11 +483,15 @@ impl Machine {
     }
 }
 
-/// The sentence of a new cutting mode (behaviour 14.2).
+/// The sentence of a new cutting mode (behaviour 14.2); LinuxCNC's are
+/// `linuxcnc_path_mode`'s (22.16).
 fn cutting_mode_sentence(mode: CuttingMode) -> &'static str {
     match mode {
         CuttingMode::ExactStop => {
             "G61 exact stop mode: every move comes to a full stop at its end point before the next starts; the path is unchanged"
+        }
+        CuttingMode::ExactPath | CuttingMode::ExactStopLinuxcnc => {
+            "LinuxCNC's G61 exact path or G61.1 exact stop: the path is unchanged"
         }
         CuttingMode::CornerOverride => {
             "G62 automatic corner override: the feed is reduced at inner corners under cutter compensation; the path is unchanged"
@@ -523,30 +529,76 @@ fn surface_speed_sentence(css: SurfaceSpeed) -> &'static str {
 }
 
 impl Machine {
-    /// LinuxCNC's G64 P (path blending tolerance) and Q (naive CAM
-    /// tolerance): kept by the control's trajectory planner, which rounds
-    /// corners within them; the interpreter's path, which `rs274 -g`
-    /// prints and offsetlab draws, keeps its corners (behaviour 22.4).
+    /// LinuxCNC's path control modes (behaviour 22.16; LinuxCNC 2.9
+    /// documentation, "G61, G61.1", "G64"; `interp_convert.cc`
+    /// `convert_control_mode`): G61 exact path, G61.1 exact stop, G64 with
+    /// P (blending tolerance) and Q (naive CAM tolerance). Each block that
+    /// names one is said, as rs274 sends SET_MOTION_CONTROL_MODE for each:
+    /// the trajectory planner follows them, while the path drawn is the
+    /// interpreter's, with its corners, as `rs274 -g` prints it.
     #[cold]
     #[inline(never)]
-    fn blending_tolerance(&mut self, b: &Block, out: &mut Out) -> Result<(), Diagnostic> {
-        let mut said = Vec::new();
-        for (a, what) in [(Address::P, "blending"), (Address::Q, "naive CAM")] {
-            if let Some(w) = b.get(a) {
-                if w.value < 0.0 {
-                    return Err(self.error(
-                        "mode-words",
-                        w.span,
-                        format!("G64 {}: a tolerance is not negative", a.letter()),
-                    ));
-                }
-                said.push(format!("{what} tolerance {}{}", a.letter(), w.value));
-            }
+    fn linuxcnc_path_mode(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+        mode: CuttingMode,
+    ) -> Result<(), Diagnostic> {
+        use crate::syntax::codes::CutterCompensation;
+        // rs274 runs G40–G42 before G61–G64 in a block.
+        let comp = b.codes().cutter().unwrap_or(self.state.cutter.mode);
+        if comp != CutterCompensation::Cancel {
+            return Err(self.error(
+                "cutter-path-mode",
+                b.code_span(Group::CuttingMode),
+                format!(
+                    "{} with cutter compensation on: LinuxCNC changes the path control mode only in G40 (rs274: \"Cannot change control mode with cutter radius compensation on\")",
+                    mode.gcode()
+                ),
+            ));
         }
-        out.notes.push(format!(
-            "G64 {}: LinuxCNC's planner may round each corner within it; the path drawn is the programmed one, as LinuxCNC's interpreter gives it",
-            said.join(", ")
-        ));
+        let value = |a: Address| b.get(a).map(|w| w.value);
+        let (p, q) = (value(Address::P), value(Address::Q));
+        if mode != CuttingMode::Cutting
+            && let Some(w) = b.get(Address::P).or_else(|| b.get(Address::Q))
+        {
+            return Err(self.error(
+                "mode-words",
+                w.span,
+                format!(
+                    "{} takes no {}: only G64 reads P and Q, its tolerances (rs274: \"{} word with no … G64 … to use it\")",
+                    mode.gcode(),
+                    w.address.letter(),
+                    w.address.letter()
+                ),
+            ));
+        }
+        let sentence = match mode {
+            CuttingMode::ExactPath => {
+                "G61 exact path: LinuxCNC's planner follows the programmed path exactly, slowing or stopping at each corner as it must; the path is the one drawn".to_string()
+            }
+            CuttingMode::ExactStopLinuxcnc => {
+                "G61.1 exact stop: LinuxCNC stops the tool at the end of every move; the path is the one drawn".to_string()
+            }
+            _ => {
+                // rs274: a P or Q below 0 is as none; Q left out is P.
+                let p = p.filter(|v| *v >= 0.0);
+                let q_given = q.filter(|v| *v >= 0.0);
+                let p_said = match p {
+                    Some(v) => format!("P{v}"),
+                    None => "none (the best speed, however far from the corner)".to_string(),
+                };
+                let q_said = match (q_given, p) {
+                    (Some(v), _) => format!("Q{v}"),
+                    (None, Some(v)) => format!("Q{v} (P's: no Q of its own)"),
+                    (None, None) => "none".to_string(),
+                };
+                format!(
+                    "G64 blending tolerance {p_said}, naive CAM tolerance {q_said}: LinuxCNC's planner may round each corner within the first and merge nearly collinear moves within the second; the path drawn is the programmed one, with its corners, as rs274's canonical moves give it"
+                )
+            }
+        };
+        out.notes.push(sentence);
         Ok(())
     }
 }

@@ -264,6 +264,12 @@ impl Machine {
         if c.work().is_some() {
             add(&[P]);
         }
+        // LinuxCNC's G2/G3 P, the number of turns (22.16).
+        if matches!(path, Path::Arc(_))
+            && self.setup.settings.control == crate::setup::Control::Linuxcnc
+        {
+            add(&[P]);
+        }
         // LinuxCNC's M61 reads Q, the tool now in the spindle (22.9).
         if b.holds(M)
             && self.setup.settings.control == crate::setup::Control::Linuxcnc

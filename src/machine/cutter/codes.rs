@@ -245,6 +245,29 @@ impl Machine {
             ));
             return Ok(());
         }
+        if self.setup.settings.control == crate::setup::Control::Linuxcnc
+            && b.holds_any(&[Address::X, Address::Y, Address::Z])
+        {
+            // LinuxCNC: the move after a G40 alone leaves the offset path
+            // even when it moves no axis of the plane or its programmed end
+            // is where it starts (rs274 -g on tests/linuxcnc/a06_comp_entry_arc.ngc
+            // and a07_comp_exit_z.ngc; behaviour 22.16).
+            let end = self.set_cutter_vector([0.0, 0.0]);
+            self.state.cutter.phase = Phase::Cancelling;
+            if out.moves.len() > moves_before
+                && let Some(m) = out.moves.last_mut()
+            {
+                m.to = end;
+            } else {
+                let kind = match self.state.modal.motion {
+                    Motion::Rapid => MoveKind::Rapid,
+                    _ => MoveKind::Feed,
+                };
+                self.emit(out, start, kind, kind == MoveKind::Feed, None);
+            }
+            out.note(|| format!("{code} cancel: the tool leaves the offset path for the programmed point, where this block's move already is"));
+            return Ok(());
+        }
         // Haas: the vector stays until the next move in the plane.
         self.state.cutter.phase = Phase::Offset;
         if here {

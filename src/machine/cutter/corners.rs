@@ -376,56 +376,87 @@ impl Machine {
             let (a0, a1) = (p(m.from), p(end));
             let (r0, r1) = (geo::dist(a0, c), geo::dist(a1, c));
             let tol = self.arc_tolerance();
-            if r0 < 1e-6 || r1 < 1e-6 {
-                return Err(self.error(
-                    "cutter-arc-center",
-                    b.span,
-                    format!(
-                        "the offset arc's {} is its centre: the tool radius equals the arc's radius {} (Fanuc alarm PS0038)",
-                        if r0 < 1e-6 { "start" } else { "end" },
-                        show(info.programmed_radius, self.units())
-                    ),
-                ));
-            }
-            if (r0 - r1).abs() > tol {
-                return Err(self.error(
-                    "cutter-arc-radius",
-                    b.span,
-                    format!(
-                        "the offset arc starts {} and ends {} from its centre (difference over {}): the compensation radius changed in an arc block (change D on a straight move)",
-                        show(r0, self.units()),
-                        show(r1, self.units()),
-                        show(tol, self.units())
-                    ),
-                ));
-            }
-            // Both radii measured and checked above.
-            let circle = arc::from_center_measured(a0, a1, c, r0, ccw);
-            let path = Path::Arc {
-                from: p(m.programmed_from),
-                to: p(m.programmed_to),
-                center: p(info.programmed_center),
-                ccw,
-            };
-            let offset_radius = path
-                .offset_radius(self.cutter_offset(self.state.cutter.mode, self.state.cutter.radius))
-                .unwrap_or(r0);
-            interferes = geo::arc_interferes(info.programmed_sweep, circle.sweep, offset_radius);
-            let mut center = m.from;
-            center[ia] = c[0] / s[0];
-            center[ib] = c[1] / s[1];
-            arc_info = Some(ArcInfo {
-                center,
-                radius: circle.radius,
-                sweep: circle.sweep,
-                start_angle: circle.start_angle,
-                ..*info
-            });
-            kind = if circle.sweep > 0.0 {
-                MoveKind::ArcCcw
+            let linuxcnc = self.setup.settings.control == crate::setup::Control::Linuxcnc;
+            let o = self.cutter_offset(self.state.cutter.mode, self.state.cutter.radius);
+            if linuxcnc && self.state.cutter.phase == Phase::StartUp {
+                let programmed_end = [
+                    m.programmed_to[ia] + shift[ia],
+                    m.programmed_to[ib] + shift[ib],
+                ];
+                let entry =
+                    self.linuxcnc_entry_arc(b, info, (m.from, end), (programmed_end, c), o)?;
+                kind = if entry.sweep > 0.0 {
+                    MoveKind::ArcCcw
+                } else {
+                    MoveKind::ArcCw
+                };
+                arc_info = Some(entry);
+                interferes = false;
+            } else if r0 < 1e-6 && r1 < 1e-6 && linuxcnc {
+                // rs274 runs an arc whose radius is the tool's with the tool
+                // inside: the tool stays on the centre (behaviour 22.16).
+                let mut center = m.from;
+                center[ia] = c[0] / s[0];
+                center[ib] = c[1] / s[1];
+                arc_info = Some(crate::machine::arcs::point_arc(info, center));
+                interferes = false;
             } else {
-                MoveKind::ArcCw
-            };
+                if r0 < 1e-6 || r1 < 1e-6 {
+                    return Err(self.error(
+                        "cutter-arc-center",
+                        b.span,
+                        format!(
+                            "the offset arc's {} is its centre: the tool radius equals the arc's radius {} (Fanuc alarm PS0038)",
+                            if r0 < 1e-6 { "start" } else { "end" },
+                            show(info.programmed_radius, self.units())
+                        ),
+                    ));
+                }
+                if (r0 - r1).abs() > tol {
+                    return Err(self.error(
+                        "cutter-arc-radius",
+                        b.span,
+                        format!(
+                            "the offset arc starts {} and ends {} from its centre (difference over {}): the compensation radius changed in an arc block (change D on a straight move)",
+                            show(r0, self.units()),
+                            show(r1, self.units()),
+                            show(tol, self.units())
+                        ),
+                    ));
+                }
+                // Both radii measured and checked above.
+                let mut circle = arc::from_center_measured(a0, a1, c, r0, ccw);
+                // LinuxCNC's P turns (22.16) are the programmed arc's and the
+                // offset one's alike.
+                circle.sweep += arc::extra_turns(info.programmed_sweep).copysign(circle.sweep);
+                let path = Path::Arc {
+                    from: p(m.programmed_from),
+                    to: p(m.programmed_to),
+                    center: p(info.programmed_center),
+                    ccw,
+                };
+                let offset_radius = path.offset_radius(o).unwrap_or(r0);
+                if linuxcnc && offset_radius < -1e-9 {
+                    return Err(self.tool_not_less(b, info.programmed_radius, o.abs()));
+                }
+                interferes =
+                    geo::arc_interferes(info.programmed_sweep, circle.sweep, offset_radius);
+                let mut center = m.from;
+                center[ia] = c[0] / s[0];
+                center[ib] = c[1] / s[1];
+                arc_info = Some(ArcInfo {
+                    center,
+                    radius: circle.radius,
+                    sweep: circle.sweep,
+                    start_angle: circle.start_angle,
+                    ..*info
+                });
+                kind = if circle.sweep > 0.0 {
+                    MoveKind::ArcCcw
+                } else {
+                    MoveKind::ArcCw
+                };
+            }
         } else {
             interferes = geo::line_reverses(
                 (p(m.programmed_from), p(m.programmed_to)),
@@ -489,6 +520,11 @@ impl Machine {
 
     /// The radius check's tolerance (behaviour 2.13).
     pub(in crate::machine) fn arc_tolerance(&self) -> f64 {
+        if self.setup.settings.control == crate::setup::Control::Linuxcnc {
+            // The most rs274 lets an end's radius differ (22.16); its
+            // finer rule is the arc block's own check.
+            return 100.0 * self.linuxcnc_spiral_tolerance();
+        }
         self.setup.arc_tolerance_mm(self.units())
     }
 }

@@ -17,6 +17,7 @@ mod ahead;
 mod checks;
 mod codes;
 mod corners;
+mod linuxcnc_entry;
 mod nose;
 
 use super::arc::P2;
@@ -359,6 +360,11 @@ impl Machine {
                 return Ok(());
             }
             if let Some((i, path)) = own {
+                if path.is_arc() && self.setup.settings.control == crate::setup::Control::Linuxcnc {
+                    // LinuxCNC enters on an arc (behaviour 22.16).
+                    self.linuxcnc_entry_checks(b, &out.moves[i], o)?;
+                    return self.start_up(b, out, ahead, (i, path), words);
+                }
                 if path.is_arc() {
                     return Err(self.error(
                         "cutter-arc",

@@ -566,6 +566,10 @@ pub enum CuttingMode {
     Tapping,
     /// G64: cutting mode (the start state).
     Cutting,
+    /// LinuxCNC's G61: exact path, the corners kept, no stop where none is needed.
+    ExactPath,
+    /// LinuxCNC's G61.1: exact stop at the end of every move.
+    ExactStopLinuxcnc,
 }
 
 impl CuttingMode {
@@ -576,6 +580,8 @@ impl CuttingMode {
             CuttingMode::CornerOverride => "G62",
             CuttingMode::Tapping => "G63",
             CuttingMode::Cutting => "G64",
+            CuttingMode::ExactPath => "G61",
+            CuttingMode::ExactStopLinuxcnc => "G61.1",
         }
     }
 }

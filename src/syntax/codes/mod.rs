@@ -153,8 +153,8 @@ pub enum CodeTable {
     Mill,
     /// The mill, G47 text engraving (Haas; setting g47, behaviour 7.60).
     MillEngraving,
-    /// The mill under LinuxCNC: its G41.1/G42.1, G43.1 and G43.2 besides
-    /// the Fanuc family's codes (behaviour 22.9).
+    /// The mill under LinuxCNC: its G41.1/G42.1, G43.1, G43.2 (behaviour
+    /// 22.9), G61 and G61.1 (22.16) besides the Fanuc family's codes.
     MillLinuxcnc,
     /// The lathe, G-code system A.
     LatheA,
@@ -329,6 +329,7 @@ impl Code {
                 52 => C::NonModal(NonModal::LocalCoordinates),
                 53 => C::NonModal(NonModal::MachineCoordinates),
                 54..=59 => C::Work(WorkCode::Standard(work_system(g.major))),
+                61 if table == CodeTable::MillLinuxcnc => C::CuttingMode(CuttingMode::ExactPath),
                 61 => C::CuttingMode(CuttingMode::ExactStop),
                 62 => C::CuttingMode(CuttingMode::CornerOverride),
                 63 => C::CuttingMode(CuttingMode::Tapping),
@@ -380,6 +381,7 @@ impl Code {
                 (42, 1) => return Some(C::CutterCompensation(CutterCompensation::Right)),
                 (43, 1) => return Some(C::Length(LengthOffset::Dynamic)),
                 (43, 2) => return Some(C::Length(LengthOffset::AddTool)),
+                (61, 1) => return Some(C::CuttingMode(CuttingMode::ExactStopLinuxcnc)),
                 _ => {}
             }
         }
@@ -742,9 +744,7 @@ fn unsupported_reason(table: CodeTable, g: GCode) -> String {
             (66, 1) => {
                 "the modal macro call G66.1 (a call at every block) is not modelled; G66 calls after each move (behaviour 21.5)"
             }
-            (61, 1) => {
-                "no Fanuc, Haas or YASNAC control has G61.1 (it is Mitsubishi's high-accuracy control and LinuxCNC's exact path); use G61 for exact stop mode"
-            }
+            (61, 1) => "G61.1 is LinuxCNC's exact stop (and Mitsubishi's); use G61 for exact stop",
             (31, _) => {
                 "the multi-step and high-speed skip codes are not modelled; G31 (with P1–P4) is"
             }
