@@ -33,6 +33,8 @@ describe('macro calls', () => {
     await withPage(async (page) => {
       await typeProgram(page, PROGRAM);
       // O1000, N10, N20; O9010, N1, N2; N30; O9010, N1, N2; N40.
+      // The run finishes after the typing: wait for its last report.
+      await page.waitForFunction(() => /all 11 blocks/.test(document.querySelector('#step-position').textContent));
       assert.match(await page.locator('#step-position').textContent(), /all 11 blocks/);
       await stepTo(page, 2);
       assert.equal(await stateText(page, 'block'), 'line 3: N20 G65 P9010 X10. Y5. R20. A45.');
