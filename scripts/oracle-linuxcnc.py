@@ -57,7 +57,7 @@ offsetlab gets the same tool table file rs274 gets (`--tool-table TBL
 is refused on both sides), and for a var file a setup document (units mm)
 the script writes. The
 The
-var file's G54-G59 origins (#5221.. in steps of 20) become `work_offsets`,
+var file's G54-G59.3 origins (#5221.. in steps of 20, to #5381) become `work_offsets`,
 the G28 position #5161-#5163 `reference`, the G30 position #5181-#5183
 `second_reference`, and `start` is machine zero in G54 coordinates
 (LinuxCNC starts at machine 0 0 0).  With a var file the setup is in
@@ -65,9 +65,9 @@ inches, rs274's machine units, and these are the var file's numbers
 unconverted (LinuxCNC's #5161, #5221 ... read them so, behaviour 22.10);
 the program must then name G20 or G21 on its first line, as offsetlab
 starts in its setup's units and rs274 in G21.  Without one it is in mm.
-Parameters it cannot pass on (a G92 offset #5211.., G59.1-G59.3, a work
-system other than G54 in #5220) make the program FAIL as "oracle cannot set
-up" rather than be compared wrongly.  `setup_document()` is the one place
+Parameters it cannot pass on (a G92 offset #5210-#5219 at start, an A-W
+axis or a system's rotation, a work system other than G54 in #5220) make
+the program FAIL as "oracle cannot set up" rather than be compared wrongly.  `setup_document()` is the one place
 to change if the profile comes to read tool tables or var files another
 way.
 
@@ -362,12 +362,16 @@ def setup_document(var, prog_lines=()):
         for k, v in sorted(p.items()):
             if v == 0.0:
                 continue
-            if 5211 <= k <= 5219 or (5341 <= k <= 5389):
-                raise SetupError("#%d = %g (a G92 offset or G59.1-G59.3): not passed to offsetlab" % (k, v))
+            if 5210 <= k <= 5219:
+                raise SetupError("#%d = %g (the G92 offset at start): not passed to offsetlab" % (k, v))
+            beyond_xyz = (5164 <= k <= 5169 or 5184 <= k <= 5189
+                          or (5221 <= k <= 5390 and 3 <= (k - 5221) % 20 <= 9))
+            if beyond_xyz:
+                raise SetupError("#%d = %g (an A-W axis or a rotation): not passed to offsetlab" % (k, v))
             if k == 5220 and v != 1.0:
                 raise SetupError("#5220 = %g: offsetlab starts in G54" % v)
         val = lambda k: round(p.get(k, 0.0), 6)
-        systems = ["G54", "G55", "G56", "G57", "G58", "G59"]
+        systems = ["G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3"]
         doc["work_offsets"] = {
             g: {"x": val(5221 + 20 * i), "y": val(5222 + 20 * i), "z": val(5223 + 20 * i)}
             for i, g in enumerate(systems)}

@@ -108,8 +108,12 @@ fn behaviour22_10_linuxcnc_refuses_settings_it_cannot_honour() {
     assert_eq!(e("G21\n#5420 = 1\nM2\n"), ("macro-system-variable", 2));
     assert_eq!(e("G21\n#5400 = 1\nM2\n"), ("macro-system-variable", 2));
     // Kept by LinuxCNC for later, which offsetlab does not model: the G92
-    // offset, the system in use, a G54 origin while G54 is in use.
-    assert_eq!(e("G21\n#5211 = 1\nM2\n"), ("macro-system-variable", 2));
+    // offset while it is on (22.14), the system in use, a G54 origin while
+    // G54 is in use.
+    assert_eq!(
+        e("G21\nG92 X1\n#5211 = 1\nM2\n"),
+        ("macro-system-variable", 3)
+    );
     assert_eq!(e("G21\n#5220 = 2\nM2\n"), ("macro-system-variable", 2));
     assert_eq!(
         e("G21\nG0 X1\n#5221 = 1\nM2\n"),

@@ -46,7 +46,7 @@ impl Machine {
 
     /// The zero of the current coordinate system from its three parts: the
     /// work system, the G92/G50 shift and the G52 local offset.
-    fn zero_now(&self) -> Xyz {
+    pub(super) fn zero_now(&self) -> Xyz {
         let c = &self.state.coords;
         add(add(self.work_zero(self.state.modal.work), c.shift), c.local)
     }
@@ -80,6 +80,14 @@ impl Machine {
         code: WorkCode,
         out: &mut Out,
     ) -> Result<(), Diagnostic> {
+        if self.setup.settings.control == crate::setup::Control::Linuxcnc {
+            // Even the system in use (behaviour 22.14).
+            self.refuse_in_compensation(
+                b,
+                "selects a work system",
+                "Cannot change coordinate systems with cutter radius compensation on",
+            )?;
+        }
         let setting = self.setup.settings.extended_work_offsets();
         let span = b.code_span(Group::Work);
         let p = b.get(Address::P);
@@ -320,6 +328,7 @@ impl Machine {
             ));
         }
         self.state.coords.shift = [0.0; 3];
+        self.keep_g92_parameters(false);
         let zero = self.zero_now();
         self.move_zero(zero);
         out.notes.push(format!(

@@ -376,6 +376,7 @@ impl Machine {
                 | NonModal::LocalCoordinates
                 | NonModal::MachineCoordinates
                 | NonModal::PresetCoordinates
+                | NonModal::Stored(_)
                 | NonModal::CornerArc
                 | NonModal::Repetitive(_)
                 | NonModal::DataSetting => "the block makes no G01 move of its own",

@@ -139,6 +139,8 @@ impl Machine {
         let lathe = self.setup.machine == MachineKind::Lathe;
         let l = b.get(L);
         match (l.map(Word::int), lathe) {
+            // LinuxCNC's nine systems, P0 the one in use (behaviour 22.14).
+            (Some(l @ (2 | 20)), false) if self.setup.settings.control == crate::setup::Control::Linuxcnc => self.g10_work_linuxcnc(b, l, out),
             (Some(2), _) => self.g10_work(b, false, out),
             (Some(20), _) => self.g10_work(b, true, out),
             (Some(l @ (1 | 10 | 11)), false) if self.has_tool_table() => self.g10_table(b, l, out),
@@ -196,7 +198,12 @@ impl Machine {
 
     /// Refuses every word of a G10 block outside `allowed` (behaviour 2.22,
     /// 17.10): `what` says what the form reads.
-    fn g10_only(&self, b: &Block, allowed: &[Address], what: &str) -> Result<(), Diagnostic> {
+    pub(super) fn g10_only(
+        &self,
+        b: &Block,
+        allowed: &[Address],
+        what: &str,
+    ) -> Result<(), Diagnostic> {
         match b.words.iter().find(|w| !allowed.contains(&w.address)) {
             Some(w) => Err(self.error(
                 "g10-words",
@@ -212,7 +219,7 @@ impl Machine {
     }
 
     /// The block's G10 words as written, for its sentence.
-    fn g10_text(&self, b: &Block) -> String {
+    pub(super) fn g10_text(&self, b: &Block) -> String {
         let d = self.units().decimals();
         b.words
             .iter()
@@ -257,7 +264,13 @@ impl Machine {
     }
 
     /// A value checked against the offset range (seed 001: ±999.999).
-    fn g10_value(&self, w: &Word, what: &str, v: f64, max: f64) -> Result<f64, Diagnostic> {
+    pub(super) fn g10_value(
+        &self,
+        w: &Word,
+        what: &str,
+        v: f64,
+        max: f64,
+    ) -> Result<f64, Diagnostic> {
         if v.is_finite() && v.abs() <= max + 1e-9 {
             // A control keeps whole least increments: G91's sums are exact
             // there, and a millionth is finer than any increment here.

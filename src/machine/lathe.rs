@@ -168,6 +168,7 @@ impl Machine {
             // the lathe.
             Some(
                 NonModal::DataSetting
+                | NonModal::Stored(_)
                 | NonModal::Dwell
                 | NonModal::PositionOffset(_)
                 | NonModal::ExactStop

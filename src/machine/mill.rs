@@ -25,6 +25,8 @@ use super::words::MOTION_WORDS;
 mod linuxcnc_dwell;
 #[path = "linuxcnc_motion.rs"]
 mod linuxcnc_motion;
+#[path = "linuxcnc_offsets.rs"]
+pub(super) mod linuxcnc_offsets;
 #[path = "linuxcnc_polar.rs"]
 mod linuxcnc_polar;
 
@@ -170,7 +172,22 @@ impl Machine {
         }
         match non_modal {
             Some(NonModal::Dwell) => return self.dwell(b, out),
-            Some(NonModal::SetCoordinates) => return self.g92(b),
+            Some(NonModal::SetCoordinates) => {
+                if linuxcnc {
+                    self.refuse_in_compensation(
+                        b,
+                        "sets the G92 offset",
+                        "Cannot change axis offsets with cutter radius comp",
+                    )?;
+                }
+                self.g92(b)?;
+                if linuxcnc {
+                    // #5210–#5213, what G92.3 takes back (behaviour 22.14).
+                    self.keep_g92_parameters(true);
+                }
+                return Ok(());
+            }
+            Some(NonModal::Stored(code)) => return self.stored_code(b, code, out),
             Some(code @ (NonModal::ReferenceReturn | NonModal::OtherReference)) => {
                 return self.mill_reference(b, code, out);
             }

@@ -107,6 +107,7 @@ impl Machine {
                 | NonModal::LocalCoordinates
                 | NonModal::MachineCoordinates
                 | NonModal::PresetCoordinates
+                | NonModal::Stored(_)
                 | NonModal::CornerArc
                 // G70–G76 are the lathe's; G10 takes no mode code's path.
                 | NonModal::Repetitive(_)
@@ -392,6 +393,7 @@ impl Machine {
                 | NonModal::LocalCoordinates
                 | NonModal::MachineCoordinates
                 | NonModal::PresetCoordinates
+                | NonModal::Stored(_)
                 // G70–G76 are the lathe's; G10 moves nothing.
                 | NonModal::Repetitive(_)
                 | NonModal::DataSetting,

@@ -23,10 +23,11 @@ pub(crate) const LAST: u32 = 5601;
 enum Param {
     /// A position the control stores and reads when it uses it, in the
     /// machine's units (the setup's): #5161… G28, #5181… G30, #5221… a
-    /// work system's origin (`p` 1 G54 … 6 G59), each axis X Y Z A B C U V
+    /// work system's origin (`p` 1 G54 … 6 G59, 7–9 G59.1–G59.3), each axis X Y Z A B C U V
     /// W (0–8; a work system's 9 is its R rotation).
     Stored(Stored, usize),
-    /// #5210 G92 on, #5211–#5219 the G92 offset.
+    /// #5210 G92 on, #5211–#5219 the G92 offset, as G92, G92.1, G92.2 and
+    /// G92.3 leave them (behaviour 22.14).
     G92(Option<usize>),
     /// #5220: the work system in use, 1 to 9.
     System,
@@ -79,12 +80,11 @@ fn get(p: &Position, axis: usize) -> f64 {
 }
 
 impl Machine {
-    fn stored(&self, s: Stored) -> Option<Position> {
+    fn stored(&self, s: Stored) -> Position {
         match s {
-            Stored::Home(n) => Some(self.setup.reference_point(n)),
-            Stored::Work(p) if p <= 6 => Some(self.setup.work_offsets.by_p(p)),
-            // G59.1–G59.3: no system offsetlab selects, so never set.
-            Stored::Work(_) => None,
+            Stored::Home(n) => self.setup.reference_point(n),
+            // G54 … G59.3 (behaviour 22.14).
+            Stored::Work(p) => self.setup.work_offsets.by_p(p),
         }
     }
 
@@ -116,12 +116,14 @@ impl Machine {
         let s = &self.state;
         // The stored positions are in the machine's units (rs274 keeps its
         // var file so), the current position in the program's.
-        let machine_units = |mm: f64| clean(mm / self.setup.units.mm());
         Ok(match param(n) {
             Param::Kept => self.variables.parameter(n),
-            Param::Stored(st, axis) => self.stored(st).map_or(0.0, |p| get(&p, axis)),
-            Param::G92(None) => f64::from(u8::from(s.coords.shift != [0.0; 3])),
-            Param::G92(Some(axis)) => s.coords.shift.get(axis).map_or(0.0, |&v| machine_units(v)),
+            Param::Stored(st, axis) => get(&self.stored(st), axis),
+            // As rs274 keeps them: set by G92, G92.1, G92.2, G92.3
+            // (behaviour 22.14), in the machine's units.
+            Param::G92(None) => self.variables.parameter(n),
+            Param::G92(Some(axis)) if axis < 3 => self.variables.parameter(n),
+            Param::G92(Some(_)) => 0.0,
             Param::System => s.modal.work.index().map_or(0.0, |i| i as f64 + 1.0),
             Param::ReadOnly => match n {
                 5400 => f64::from(s.tool),
@@ -166,7 +168,8 @@ impl Machine {
             Param::Unmodelled(what) => refuse(format!(
                 "#{n} is {what}, which offsetlab does not model: the setting cannot take effect"
             )),
-            Param::G92(_) | Param::System => refuse(format!(
+            Param::G92(Some(axis)) => self.write_g92(n, axis, v, span, out),
+            Param::G92(None) | Param::System => refuse(format!(
                 "#{n} is {}: LinuxCNC keeps the value for G92.3 and the next start, which offsetlab does not model; set the offset with G92 (the system with G54–G59)",
                 if n == 5220 {
                     "the work system in use"
@@ -188,11 +191,7 @@ impl Machine {
         out: &mut Out,
     ) -> Result<(), Diagnostic> {
         let refuse = |why: String| Err(Diagnostic::error("macro-system-variable", span, why));
-        let Some(mut p) = self.stored(st) else {
-            return refuse(format!(
-                "#{n} is G59.1–G59.3's origin, which offsetlab does not model yet"
-            ));
-        };
+        let mut p = self.stored(st);
         let name = AXIS.get(axis).copied().unwrap_or("?");
         if axis > 2 {
             if v == 0.0 {
@@ -216,18 +215,13 @@ impl Machine {
         }
         let was = get(&p, axis);
         super::sysvars::set_axis(&mut p, axis, v);
-        let setup = Arc::make_mut(&mut self.setup);
         let what = match st {
-            Stored::Home(1) => {
-                setup.reference = p;
-                "the G28 position's".to_string()
-            }
-            Stored::Home(_) => {
-                setup.second_reference = Some(p);
-                "the G30 position's".to_string()
+            Stored::Home(h) => {
+                self.set_home(h, p);
+                format!("the G{} position's", if h == 1 { 28 } else { 30 })
             }
             Stored::Work(w) => {
-                *setup.work_offsets.by_p_mut(w) = p;
+                *Arc::make_mut(&mut self.setup).work_offsets.by_p_mut(w) = p;
                 let key = crate::setup::WorkOffsets::name_of_p(w);
                 out.events.push(EventKind::DataSet(DataSet {
                     table: "work_offsets",
@@ -241,6 +235,50 @@ impl Machine {
         };
         out.notes.push(format!(
             "#{n} = {} is {what} {name} (was {}, machine units): LinuxCNC uses it when it next goes there or selects the system",
+            clean(v),
+            clean(was)
+        ));
+        Ok(())
+    }
+
+    /// #5211–#5219 set: the G92 offset LinuxCNC keeps for G92.3. While
+    /// the offset is off (#5210 0) the value waits for G92.3; while it is
+    /// on rs274 reads the parameters, not the offset in force, at the next
+    /// system selected or G10 L20, which offsetlab does not follow.
+    fn write_g92(
+        &mut self,
+        n: u32,
+        axis: usize,
+        v: f64,
+        span: Span,
+        out: &mut Out,
+    ) -> Result<(), Diagnostic> {
+        let refuse = |why: String| Err(Diagnostic::error("macro-system-variable", span, why));
+        let name = AXIS.get(axis).copied().unwrap_or("?");
+        if axis > 2 {
+            if v == 0.0 {
+                out.notes.push(format!(
+                    "#{n} = 0: the G92 {name} of a machine with X, Y and Z only, 0 already"
+                ));
+                return Ok(());
+            }
+            return refuse(format!(
+                "#{n} is the G92 offset's {name}: the machine has X, Y and Z only, so it stays 0"
+            ));
+        }
+        if self
+            .variables
+            .parameter(super::mill::linuxcnc_offsets::G92_ON)
+            != 0.0
+        {
+            return refuse(format!(
+                "#{n} is the G92 offset's {name} while the offset is on: LinuxCNC then reads the parameter apart from the offset in force, which offsetlab does not model; set it after G92.2 or G92.1, for G92.3"
+            ));
+        }
+        let was = self.variables.parameter(n);
+        self.variables.set_parameter(n, v);
+        out.notes.push(format!(
+            "#{n} = {} is the G92 offset's {name} kept for G92.3 (was {}, machine units)",
             clean(v),
             clean(was)
         ));

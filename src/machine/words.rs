@@ -153,7 +153,8 @@ impl Machine {
                 code @ (NonModal::ReferenceCheck
                 | NonModal::LocalCoordinates
                 | NonModal::MachineCoordinates
-                | NonModal::PresetCoordinates),
+                | NonModal::PresetCoordinates
+                | NonModal::Stored(_)),
             ) => return Path::Coordinates(Code::NonModal(code)),
             Some(NonModal::PositionOffset(p)) => {
                 let code = Code::NonModal(NonModal::PositionOffset(p));
@@ -219,7 +220,8 @@ impl Machine {
                 | NonModal::Cylindrical
                 | NonModal::CirclePocket(_)
                 | NonModal::Engraving
-                | NonModal::CornerArc,
+                | NonModal::CornerArc
+                | NonModal::Stored(_),
             )
             | None => {}
         }

@@ -415,7 +415,8 @@ fn moves(block: &Block) -> bool {
         | NonModal::DataSetting
         | NonModal::SetCoordinates
         | NonModal::LocalCoordinates
-        | NonModal::PresetCoordinates,
+        | NonModal::PresetCoordinates
+        | NonModal::Stored(_),
     ) = block.codes().non_modal()
     {
         return false;

@@ -175,10 +175,20 @@ pub struct WorkOffsets {
     #[serde(rename = "G59", skip_serializing_if = "is_default")]
     #[allow(missing_docs)]
     pub g59: Position,
+    /// LinuxCNC's G59.1–G59.3, the seventh to ninth systems (behaviour
+    /// 22.14); the other profiles select none of them.
+    #[serde(rename = "G59.1", skip_serializing_if = "is_default")]
+    pub g59_1: Position,
+    #[serde(rename = "G59.2", skip_serializing_if = "is_default")]
+    #[allow(missing_docs)]
+    pub g59_2: Position,
+    #[serde(rename = "G59.3", skip_serializing_if = "is_default")]
+    #[allow(missing_docs)]
+    pub g59_3: Position,
 }
 
 impl WorkOffsets {
-    /// The offset of G54 + `index` (0 = G54 … 5 = G59).
+    /// The offset of G54 + `index` (0 = G54 … 5 = G59, 6–8 = G59.1–G59.3).
     pub fn get(&self, index: usize) -> Position {
         match index {
             0 => self.g54,
@@ -186,10 +196,14 @@ impl WorkOffsets {
             2 => self.g56,
             3 => self.g57,
             4 => self.g58,
-            _ => self.g59,
+            5 => self.g59,
+            6 => self.g59_1,
+            7 => self.g59_2,
+            _ => self.g59_3,
         }
     }
-    /// The offset of P `p` of `G10 L2` (0 = EXT, 1 = G54 … 6 = G59).
+    /// The offset of P `p` of `G10 L2` (0 = EXT, 1 = G54 … 6 = G59, 7–9 =
+    /// LinuxCNC's G59.1–G59.3).
     pub fn by_p(&self, p: usize) -> Position {
         match p {
             0 => self.ext,
@@ -205,14 +219,20 @@ impl WorkOffsets {
             3 => &mut self.g56,
             4 => &mut self.g57,
             5 => &mut self.g58,
-            _ => &mut self.g59,
+            6 => &mut self.g59,
+            7 => &mut self.g59_1,
+            8 => &mut self.g59_2,
+            _ => &mut self.g59_3,
         }
     }
-    /// The name of P `p` of `G10 L2`: "EXT", "G54" … "G59".
+    /// The name of P `p` of `G10 L2`: "EXT", "G54" … "G59", "G59.1" …
+    /// "G59.3".
     pub fn name_of_p(p: usize) -> &'static str {
-        ["EXT", "G54", "G55", "G56", "G57", "G58", "G59"][p.min(6)]
+        [
+            "EXT", "G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3",
+        ][p.min(9)]
     }
-    fn all(&self) -> [(&'static str, Position); 7] {
+    fn all(&self) -> [(&'static str, Position); 10] {
         [
             ("EXT", self.ext),
             ("G54", self.g54),
@@ -221,6 +241,9 @@ impl WorkOffsets {
             ("G57", self.g57),
             ("G58", self.g58),
             ("G59", self.g59),
+            ("G59.1", self.g59_1),
+            ("G59.2", self.g59_2),
+            ("G59.3", self.g59_3),
         ]
     }
 }

@@ -61,6 +61,7 @@ fn returns(code: NonModal) -> bool {
         | NonModal::SetCoordinates
         | NonModal::LocalCoordinates
         | NonModal::PresetCoordinates
+        | NonModal::Stored(_)
         | NonModal::CornerArc
         | NonModal::Repetitive(_)
         | NonModal::DataSetting => false,

@@ -7,15 +7,19 @@
 //! never a silent skip).
 
 mod groups;
+mod linuxcnc;
 mod mcodes;
+mod work;
 
 pub use groups::{
     ArcCenter, ArcDirection, CannedCycle, CutterCompensation, CuttingMode, Cycle, Distance,
-    FeedMode, LatheCycle, LengthOffset, MAX_ADDITIONAL_WORK, MAX_HAAS_WORK, MirrorMode, Motion,
-    NonModal, Plane, Polar, PolarMode, PolarSpelling, PositionOffset, Repetitive, ReturnLevel,
-    RotationMode, ScalingMode, SurfaceSpeed, WorkCode, WorkSystem,
+    FeedMode, LatheCycle, LengthOffset, MirrorMode, Motion, NonModal, Plane, Polar, PolarMode,
+    PolarSpelling, PositionOffset, Repetitive, ReturnLevel, RotationMode, ScalingMode,
+    SurfaceSpeed,
 };
+pub use linuxcnc::Stored;
 pub use mcodes::MCode;
+pub use work::{MAX_ADDITIONAL_WORK, MAX_HAAS_WORK, WorkCode, WorkSystem};
 
 use crate::setup::{G47Code, GCodeSystem, MachineKind, Setup, Units};
 
@@ -374,16 +378,8 @@ impl Code {
     #[inline(never)]
     fn of_decimal(table: CodeTable, g: GCode) -> Option<Code> {
         use Code as C;
-        if table == CodeTable::MillLinuxcnc {
-            // LinuxCNC 2.9 documentation, "G41.1, G42.1" and "G43.1", "G43.2".
-            match (g.major, g.minor) {
-                (41, 1) => return Some(C::CutterCompensation(CutterCompensation::Left)),
-                (42, 1) => return Some(C::CutterCompensation(CutterCompensation::Right)),
-                (43, 1) => return Some(C::Length(LengthOffset::Dynamic)),
-                (43, 2) => return Some(C::Length(LengthOffset::AddTool)),
-                (61, 1) => return Some(C::CuttingMode(CuttingMode::ExactStopLinuxcnc)),
-                _ => {}
-            }
+        if let Some(code) = linuxcnc::decimal(table, g) {
+            return Some(code);
         }
         Some(match (table.machine(), g.major, g.minor) {
             (MachineKind::Mill, 5, 1) => C::NonModal(NonModal::AiContour),
