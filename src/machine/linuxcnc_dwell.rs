@@ -6,6 +6,7 @@
 //! (behaviour 2.9), so this is the LinuxCNC profile's reading only; and a
 //! LinuxCNC G4 needs its P.
 
+use super::linuxcnc_motion::AXIS_WORDS;
 use crate::diag::Diagnostic;
 use crate::machine::Machine;
 use crate::machine::program::ProgramText;
@@ -13,21 +14,15 @@ use crate::machine::{Ahead, Out};
 use crate::syntax::codes::NonModal;
 use crate::syntax::{Address, Block};
 
-/// The words the motion of a G4 block reads (axes, arc centre and radius,
-/// a cycle's repeat and peck; P stays the dwell's).
-const MOTION: [Address; 11] = [
-    Address::X,
-    Address::Y,
-    Address::Z,
-    Address::A,
-    Address::B,
-    Address::C,
-    Address::I,
-    Address::J,
-    Address::K,
-    Address::R,
-    Address::L,
-];
+/// Besides the six axes, the words the motion of a G4 block reads (arc
+/// centre and radius, a cycle's repeat and peck; P stays the dwell's).
+const CENTRE_AND_REPEAT: [Address; 5] =
+    [Address::I, Address::J, Address::K, Address::R, Address::L];
+
+/// `a` belongs to the motion of a G4 block.
+fn motion_word(a: Address) -> bool {
+    AXIS_WORDS[..6].contains(&a) || CENTRE_AND_REPEAT.contains(&a)
+}
 
 impl Machine {
     /// True for a LinuxCNC G4 block with an axis word; a LinuxCNC G4
@@ -45,7 +40,7 @@ impl Machine {
                 "LinuxCNC's G4 takes its time in seconds from P, and this G4 has none (rs274: \"Dwell time missing with g4\")",
             ));
         }
-        Ok(b.holds_any(&MOTION[..6]))
+        Ok(b.holds_any(&AXIS_WORDS[..6]))
     }
 
     /// The G4 block without its motion words (the dwell, with the block's
@@ -58,13 +53,13 @@ impl Machine {
         ahead: &mut dyn Ahead,
         program: &mut dyn ProgramText,
     ) -> Result<(), Diagnostic> {
-        let dwell = b.without(|w| MOTION.contains(&w.address));
+        let dwell = b.without(|w| motion_word(w.address));
         self.mill_block(&dwell, out, ahead, program)?;
         // rs274 gives P to an arc (its turns) and to a cycle (G82's dwell)
         // too: the motion block reads it by its own rules.
         let modal = self.state.modal;
         let p_too = modal.cycle.is_some() || modal.motion.is_arc();
-        let moves = |a: Address| MOTION.contains(&a) || (p_too && a == Address::P);
+        let moves = |a: Address| motion_word(a) || (p_too && a == Address::P);
         let mut motion = b.without(|_| true);
         motion.clear();
         motion.speaks = false;

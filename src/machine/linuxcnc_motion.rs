@@ -14,8 +14,9 @@ use crate::machine::Machine;
 use crate::syntax::codes::{CannedCycle, NonModal};
 use crate::syntax::{Address, Block};
 
-/// The words rs274 counts as axis values (polar `@` `^` become X and Y).
-const AXIS_WORDS: [Address; 8] = [
+/// The words rs274 counts as axis values (polar `@` `^` become X and Y);
+/// the six axes first, which the G4 block's motion reads too.
+pub(super) const AXIS_WORDS: [Address; 8] = [
     Address::X,
     Address::Y,
     Address::Z,

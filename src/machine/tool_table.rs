@@ -182,11 +182,7 @@ impl Machine {
         // move goes on from there and a G90 Z lands offset.
         let actual_z = self.state.programmed[2] + self.state.length.vector;
         let l = &mut self.state.length;
-        l.sign = sign;
-        l.h = u16::try_from(h_number).unwrap_or(u16::MAX);
-        l.value = value;
-        l.target = f64::from(sign) * value;
-        l.vector = l.target;
+        l.take_at_once(sign, u16::try_from(h_number).unwrap_or(u16::MAX), value);
         self.state.programmed[2] = actual_z - l.target;
         self.state.modal.length = code;
         Ok(old)

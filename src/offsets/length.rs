@@ -146,6 +146,18 @@ impl LengthState {
         };
     }
 
+    /// Sets the offset to `sign` × `value` from register `h` at once, the
+    /// vector with it: LinuxCNC's G43/G43.1/G43.2/G49, which move nothing
+    /// and read the position from the new tool tip (behaviour 22.9), and
+    /// where G43.1's offset has no register (`h` 0) yet applies.
+    pub fn take_at_once(&mut self, sign: i8, h: u16, value: f64) {
+        self.sign = sign;
+        self.h = h;
+        self.value = value;
+        self.target = f64::from(sign) * value;
+        self.vector = self.target;
+    }
+
     /// The active code: G43, G44 or G49, from the sign.
     pub fn mode(&self) -> LengthOffset {
         match self.sign.signum() {

@@ -224,16 +224,8 @@ impl Machine {
             && self.setup.settings.cutter_cancel_without_motion() == CutterCancelWithoutMotion::Move
         {
             let v = before.vector;
-            let end = self.set_cutter_vector([0.0, 0.0]);
-            self.state.cutter.phase = Phase::Cancelling;
-            if out.moves.len() > moves_before
-                && let Some(m) = out.moves.last_mut()
-            {
-                m.to = end;
-            } else {
-                let at_feed = self.state.modal.motion == Motion::Linear;
-                self.emit(out, start, MoveKind::Offset, at_feed, None);
-            }
+            let at_feed = self.state.modal.motion == Motion::Linear;
+            self.leave_offset_path(out, (start, moves_before), MoveKind::Offset, at_feed);
             let (ia, ib, _) = self.state.modal.plane.axes();
             let names = ['X', 'Y', 'Z'];
             out.note(|| format!(
@@ -252,19 +244,11 @@ impl Machine {
             // even when it moves no axis of the plane or its programmed end
             // is where it starts (rs274 -g on tests/linuxcnc/a06_comp_entry_arc.ngc
             // and a07_comp_exit_z.ngc; behaviour 22.16).
-            let end = self.set_cutter_vector([0.0, 0.0]);
-            self.state.cutter.phase = Phase::Cancelling;
-            if out.moves.len() > moves_before
-                && let Some(m) = out.moves.last_mut()
-            {
-                m.to = end;
-            } else {
-                let kind = match self.state.modal.motion {
-                    Motion::Rapid => MoveKind::Rapid,
-                    _ => MoveKind::Feed,
-                };
-                self.emit(out, start, kind, kind == MoveKind::Feed, None);
-            }
+            let kind = match self.state.modal.motion {
+                Motion::Rapid => MoveKind::Rapid,
+                _ => MoveKind::Feed,
+            };
+            self.leave_offset_path(out, (start, moves_before), kind, kind == MoveKind::Feed);
             out.note(|| format!("{code} cancel: the tool leaves the offset path for the programmed point, where this block's move already is"));
             return Ok(());
         }
@@ -276,6 +260,27 @@ impl Machine {
             ));
         }
         Ok(())
+    }
+
+    /// The vector comes off in a cancel without a move of its own in the
+    /// plane: the block's last move (if it made one) ends on the programmed
+    /// point, else a move of `kind` takes the tool there from `start`.
+    fn leave_offset_path(
+        &mut self,
+        out: &mut Out,
+        (start, moves_before): (Mark, usize),
+        kind: MoveKind,
+        at_feed: bool,
+    ) {
+        let end = self.set_cutter_vector([0.0, 0.0]);
+        self.state.cutter.phase = Phase::Cancelling;
+        if out.moves.len() > moves_before
+            && let Some(m) = out.moves.last_mut()
+        {
+            m.to = end;
+        } else {
+            self.emit(out, start, kind, at_feed, None);
+        }
     }
 
     /// G27, G28, G30 or G53 naming an axis of the plane in offset mode
