@@ -120,6 +120,34 @@ fn behaviour22_2_msg_and_debug_comments_are_notes_of_their_block() {
 }
 
 #[test]
+fn behaviour22_2_debug_is_silent_while_5599_is_0() {
+    // rs274 -g: no MESSAGE for a DEBUG after #5599=0, PRINT still prints,
+    // any other value speaks again; #5599 reads 1 before any setting.
+    let text =
+        "G21\n#1 = #5599\n#5599 = 0\n(DEBUG,quiet)\n(PRINT,loud)\n#5599 = 2.5\n(DEBUG,back)\nM2\n";
+    let r = ok(text, &linuxcnc());
+    let notes: Vec<(u32, &str)> = r
+        .blocks
+        .iter()
+        .flat_map(|b| b.notes.iter().map(move |n| (b.span.line, n.as_str())))
+        .filter(|(_, n)| n.starts_with('('))
+        .collect();
+    assert_eq!(
+        notes,
+        vec![
+            (
+                4,
+                "(DEBUG) silent: #5599 is 0, so LinuxCNC does not show \"quiet\""
+            ),
+            (5, "(PRINT) loud"),
+            (7, "(DEBUG) back"),
+        ]
+    );
+    let r = ok("G21\n#1 = #5599\nG0 X#1\nM2\n", &linuxcnc());
+    same(r.moves[0].to, [1.0, 0.0, 0.0]);
+}
+
+#[test]
 fn behaviour22_3_linuxcnc_offsets_at_the_next_z_pecks_back_0_254_mm_and_starts_in_g99() {
     use offsetlab::setup::LengthOffsetWithoutZ;
     let s = Settings {

@@ -61,10 +61,16 @@ impl ProgramText for NoText {
 impl super::Machine {
     /// LinuxCNC's comments that speak (behaviour 22.2): `(MSG,text)` shows
     /// its text to the operator, `(DEBUG,text)` and `(PRINT,text)` print it;
-    /// each is a note of its block. Other comments say nothing.
+    /// each is a note of its block, DEBUG's only while #5599 is not 0.
+    /// Other comments say nothing.
     #[cold]
     #[inline(never)]
-    pub(crate) fn comment_messages(b: &Block, out: &mut super::Out, program: &dyn ProgramText) {
+    pub(crate) fn comment_messages(
+        &self,
+        b: &Block,
+        out: &mut super::Out,
+        program: &dyn ProgramText,
+    ) {
         let Some(text) = program.block_text(b.span) else {
             return;
         };
@@ -82,6 +88,15 @@ impl super::Machine {
                 .into_iter()
                 .find(|k| head.eq_ignore_ascii_case(k));
             if let Some(kind) = what {
+                if kind == "DEBUG" && self.debug_switch() == 0.0 {
+                    out.note(|| {
+                        format!(
+                            "(DEBUG) silent: #5599 is 0, so LinuxCNC does not show \"{}\"",
+                            said.trim()
+                        )
+                    });
+                    continue;
+                }
                 let caveat = if kind != "MSG" && said.contains('#') {
                     " (offsetlab shows it as written, without the parameters' values)"
                 } else {

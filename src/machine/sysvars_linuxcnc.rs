@@ -33,8 +33,10 @@ enum Param {
     System,
     /// #5400–#5413, #5420–#5428: the tool and the position, read only.
     ReadOnly,
-    /// #5061–#5069 probe, #5399 M66, #5599 the DEBUG flag, #5600/#5601 the
-    /// tool changer's fault: what offsetlab does not model.
+    /// #5599: the DEBUG switch, 1 until the program sets it (behaviour 22.2).
+    Debug,
+    /// #5061–#5069 probe, #5399 M66, #5600/#5601 the tool changer's fault:
+    /// what offsetlab does not model.
     Unmodelled(&'static str),
     /// Any other number up to #5601: a parameter the program keeps.
     Kept,
@@ -60,7 +62,7 @@ fn param(n: u32) -> Param {
         5400..=5413 | 5420..=5428 => Param::ReadOnly,
         5061..=5069 => Param::Unmodelled("the probe's result (G38)"),
         5399 => Param::Unmodelled("M66's input"),
-        5599 => Param::Unmodelled("the DEBUG and PRINT switch"),
+        5599 => Param::Debug,
         5600 | 5601 => Param::Unmodelled("the tool changer's fault"),
         _ => Param::Kept,
     }
@@ -80,6 +82,13 @@ fn get(p: &Position, axis: usize) -> f64 {
 }
 
 impl Machine {
+    /// #5599: `(DEBUG,…)` speaks unless the program set it to 0; LinuxCNC
+    /// starts with 1 (its documentation, "Numbered Parameters"; rs274 -g
+    /// shows no MESSAGE for a DEBUG after `#5599=0`, PRINT still prints).
+    pub(crate) fn debug_switch(&self) -> f64 {
+        self.variables.parameter_written(5599).unwrap_or(1.0)
+    }
+
     fn stored(&self, s: Stored) -> Position {
         match s {
             Stored::Home(n) => self.setup.reference_point(n),
@@ -118,6 +127,7 @@ impl Machine {
         // var file so), the current position in the program's.
         Ok(match param(n) {
             Param::Kept => self.variables.parameter(n),
+            Param::Debug => self.debug_switch(),
             Param::Stored(st, axis) => get(&self.stored(st), axis),
             // As rs274 keeps them: set by G92, G92.1, G92.2, G92.3
             // (behaviour 22.14), in the machine's units.
@@ -158,7 +168,7 @@ impl Machine {
         }
         let refuse = |why: String| Err(Diagnostic::error("macro-system-variable", span, why));
         match param(n) {
-            Param::Kept => {
+            Param::Kept | Param::Debug => {
                 self.variables.set_parameter(n, v);
                 Ok(())
             }

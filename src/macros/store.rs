@@ -84,17 +84,14 @@ impl Store {
     /// A LinuxCNC parameter the program keeps (#1 to #5601, behaviour
     /// 22.10): never set, 0.
     pub fn parameter(&self, n: u32) -> f64 {
+        self.parameter_written(n).unwrap_or(0.0)
+    }
+
+    /// A LinuxCNC parameter's value if the program has set it.
+    pub fn parameter_written(&self, n: u32) -> Option<f64> {
         match n as usize {
-            1..SIZE => self
-                .values
-                .as_ref()
-                .and_then(|t| t[n as usize].get())
-                .unwrap_or(0.0),
-            _ => self
-                .high
-                .as_ref()
-                .and_then(|m| m.get(&n).copied())
-                .unwrap_or(0.0),
+            1..SIZE => self.values.as_ref().and_then(|t| t[n as usize].get()),
+            _ => self.high.as_ref().and_then(|m| m.get(&n).copied()),
         }
     }
 

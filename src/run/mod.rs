@@ -378,7 +378,7 @@ fn execute(
     match machine.execute(block, *index, out, ahead, program) {
         Ok(flow) => {
             if block.speaks {
-                Machine::comment_messages(block, out, program);
+                machine.comment_messages(block, out, program);
             }
             *index += 1;
             *move_count += out.moves.len();
