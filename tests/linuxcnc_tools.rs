@@ -233,6 +233,34 @@ fn behaviour22_9_linuxcnc_entry_is_a_corner_and_g40_alone_moves_nothing() {
 }
 
 #[test]
+fn behaviour22_9_m6_and_m61_after_g40_read_the_position_where_the_tool_is() {
+    // Tool 2 (r = 6.35) left of +X ends at (10, 6.35); G40 alone leaves the
+    // vector on. T2 M6 then takes the position from the tool: Z up stays at
+    // X10 Y6.35, and G0 X0 keeps that Y (rs274 -g, tests/linuxcnc/a08).
+    let text =
+        "G21 G17 G90 F100\nG0 X-20 Y0 Z5\nG41 D2 G1 X-10\nG1 X10\nG40\nT2 M6\nG0 Z20\nG0 X0\nM2\n";
+    let r = ok(text, &with_table());
+    same(r.moves[3].to, [10.0, 6.35, 20.0]);
+    same(r.moves[4].to, [0.0, 6.35, 20.0]);
+    let b = r.blocks.iter().find(|b| b.span.line == 6).unwrap();
+    same(b.state.programmed, [10.0, 6.35, 5.0]);
+    // M61 does the same; a T alone does not (the Z move leaves the path).
+    let r = ok(&text.replace("T2 M6", "M61 Q2"), &with_table());
+    same(r.moves[4].to, [0.0, 6.35, 20.0]);
+    let r = ok(&text.replace("T2 M6", "T2"), &with_table());
+    same(r.moves[3].to, [10.0, 0.0, 20.0]);
+    // M6 with G41 on is refused, on a G40 line too (the tool change comes
+    // first in LinuxCNC's order of execution).
+    for m6 in ["T2 M6", "G40 T2 M6"] {
+        let text = format!("G21 G17 G90 F100\nG0 X-20 Y0 Z5\nG41 D2\n{m6}\nM2\n");
+        assert_eq!(
+            error_line(&text, &with_table()),
+            ("tool-change-in-compensation", 4)
+        );
+    }
+}
+
+#[test]
 fn behaviour22_10_tool_parameters_read_the_spindle_tools_entry() {
     // T1 M6: #5400 = 1, #5403 = its Z 1.0 and #5410 its diameter 0.25, as
     // the inch table holds them, read into a G21 program's words as mm.

@@ -11,9 +11,10 @@ use std::sync::Arc;
 
 use super::{Machine, Out};
 use crate::diag::{Diagnostic, Span};
+use crate::offsets::cutter::Phase;
 use crate::offsets::length::LengthState;
-use crate::setup::{Control, OFFSET_AXES, TableTool};
-use crate::syntax::codes::{CutterCompensation, Group, LengthOffset};
+use crate::setup::{Control, MachineKind, OFFSET_AXES, TableTool};
+use crate::syntax::codes::{CutterCompensation, Group, LengthOffset, MCode};
 use crate::syntax::{Address, Block, Word};
 
 impl Machine {
@@ -91,6 +92,50 @@ impl Machine {
         self.state.tool = n;
         out.notes.push(format!(
             "M61 Q{n}: the spindle holds tool {n} from here, with no tool change (LinuxCNC)"
+        ));
+        Ok(())
+    }
+
+    /// M6 and M61 under linuxcnc (behaviour 22.9): M6 is refused while
+    /// G41/G42 is on; after a G40 that has not yet moved the tool off the
+    /// offset path, both take the position from where the tool is (rs274
+    /// re-reads the machine's position after a tool change), so the vector
+    /// ends there without a move and the next block starts from the offset
+    /// path's end.
+    pub(super) fn linuxcnc_tool_change_position(
+        &mut self,
+        b: &Block,
+        out: &mut Out,
+    ) -> Result<(), Diagnostic> {
+        let Some(m6) = b.mcodes(MachineKind::Mill).find_map(|m| match m {
+            MCode::ToolChange => Some(true),
+            MCode::Other(61) => Some(false),
+            _ => None,
+        }) else {
+            return Ok(());
+        };
+        let c = &mut self.state.cutter;
+        if c.mode != CutterCompensation::Cancel {
+            if m6 {
+                return Err(self.error(
+                    "tool-change-in-compensation",
+                    b.span,
+                    "M6 with G41/G42 on: LinuxCNC changes tools only with compensation off (rs274: \"Cannot change tools with cutter radius compensation on\"); give G40 and a move first",
+                ));
+            }
+            return Ok(());
+        }
+        if c.vector == [0.0; 3] {
+            return Ok(());
+        }
+        let v = std::mem::take(&mut c.vector);
+        c.phase = Phase::Cancel;
+        for (p, d) in self.state.programmed.iter_mut().zip(v) {
+            *p += d;
+        }
+        let m = if m6 { "M6" } else { "M61" };
+        out.notes.push(format!(
+            "{m} after G40: LinuxCNC reads the position again from where the tool is, on the offset path's end, so the compensation's vector ends here without a move and the next block starts from this point"
         ));
         Ok(())
     }

@@ -253,6 +253,9 @@ impl Machine {
         }
         if !plain {
             self.cutter_checks(b)?;
+            if self.setup.settings.control == crate::setup::Control::Linuxcnc {
+                self.linuxcnc_tool_change_position(b, out)?;
+            }
         }
         let before = self.state.cutter;
         let start = self.mark();
